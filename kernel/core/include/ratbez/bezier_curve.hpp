@@ -1,0 +1,56 @@
+#pragma once
+// Bézier curves, polynomial and rational in one class (000 §1.3–1.4). Control points are stored
+// homogeneously as P^w_i = (w_i P_i, w_i) so that the rational curve C(u) = H{C^w(u)} (Eq. 1.16–1.19)
+// is evaluated by the polynomial algorithms in 4D. A polynomial curve simply has every w_i = 1.
+// The parameter domain is [0, 1]; parameters outside it throw ratbez::Error.
+
+#include <utility>
+#include <vector>
+
+#include "ratbez/vec.hpp"
+
+namespace ratbez {
+
+class BezierCurve {
+public:
+    // Polynomial curve through control points P_0..P_n (n >= 0); throws on empty or non-finite input.
+    explicit BezierCurve(std::vector<Vec3> points);
+    // Rational curve; weights.size() == points.size(), every weight finite and > 0.
+    BezierCurve(std::vector<Vec3> points, std::vector<double> weights);
+    // From homogeneous points P^w (w > 0); `rational` records whether the curve is to be treated as rational.
+    static BezierCurve from_homogeneous(std::vector<Vec4> homogeneous_points, bool rational = true);
+
+    int degree() const { return static_cast<int>(pw_.size()) - 1; }
+    bool is_rational() const { return rational_; }
+    const std::vector<Vec4>& homogeneous_points() const { return pw_; }
+    std::vector<Vec3> points() const;    // the Euclidean control points P_i
+    std::vector<double> weights() const; // the w_i (all 1 for a polynomial curve)
+
+    // C(u) by A1.4 (Bernstein basis times homogeneous points, then H).
+    Vec3 point(double u) const;
+    // C(u) by deCasteljau in homogeneous space (A1.5 generalised by Eq. 1.19).
+    Vec3 point_de_casteljau(double u) const;
+    // C^w(u), the homogeneous point before projection.
+    Vec4 homogeneous_point(double u) const;
+    // The full deCasteljau triangle at u: rows[k][i] = P^w_{k,i}(u) (Table 1.4 of Ex1.14).
+    std::vector<std::vector<Vec4>> de_casteljau_table(double u) const;
+
+    // C^(k)(u) for k = 0..order, the rational derivatives by the quotient rule
+    // C^(k) = (A^(k) - sum_{i=1..k} C(k,i) w^(i) C^(k-i)) / w, with A = weighted part of C^w.
+    std::vector<Vec3> derivatives(double u, int order) const;
+    Vec3 derivative(double u, int order = 1) const;
+
+    // The two halves [0, u] and [u, 1], each reparameterised to [0, 1] (deCasteljau subdivision); 0 < u < 1.
+    std::pair<BezierCurve, BezierCurve> split(double u) const;
+    // The same curve with degree + 1 (degree elevation on P^w).
+    BezierCurve elevate() const;
+    // The same curve traversed backwards: C_2(u) = C_1(1 - u) (Exercise 1.11).
+    BezierCurve reversed() const;
+
+private:
+    BezierCurve(std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);
+    std::vector<Vec4> pw_;
+    bool rational_ = false;
+};
+
+}  // namespace ratbez

@@ -1,0 +1,104 @@
+#pragma once
+// Boundary representation: a Solid is a closed shell of Faces. Faces meet along Edges that are shared
+// objects (one Edge, used by exactly two face boundaries in opposite directions), so that anything
+// derived from an edge — its samples in a mesh, its TopoDS_Edge in OpenCASCADE — is computed once and
+// used by both faces. That sharing is what makes meshes watertight by construction.
+//
+// Two kinds of face:
+//  - surface: an untrimmed NURBS surface whose parameter rectangle's four sides are its boundary. A side
+//    may be a degenerate edge (a pole of a sphere, the apex of a cone, a point on a revolution axis).
+//  - planar: a plane patch trimmed by closed loops of edges (caps of cylinders and cones, the end
+//    faces of a partial revolution, the ends of an extrusion).
+// Orientation: for a surface face S_u x S_v points out of the solid; for a planar face the outer loop
+// runs counterclockwise seen from outside (from the tip of the outward normal), holes clockwise.
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "ratbez/nurbs_curve.hpp"
+#include "ratbez/nurbs_surface.hpp"
+#include "ratbez/vec.hpp"
+
+namespace ratbez {
+
+struct Vertex {
+    Vec3 point;
+};
+
+struct Edge {
+    NurbsCurve curve;                      // the 3D geometry; constant for a degenerate edge
+    std::shared_ptr<const Vertex> start;   // shared with the neighbouring edges of a loop;
+    std::shared_ptr<const Vertex> end;     // start == end for a closed edge (full circle, seam of a torus)
+    bool degenerate = false;               // collapses to a point (pole, apex)
+};
+
+using EdgePtr = std::shared_ptr<const Edge>;
+using VertexPtr = std::shared_ptr<const Vertex>;
+
+// One use of an edge by a face boundary; reversed: the face runs the edge against its parameter.
+struct Coedge {
+    EdgePtr edge;
+    bool reversed = false;
+};
+
+// A plane with an orthonormal frame; normal = cross(x_axis, y_axis).
+struct Plane {
+    Vec3 origin, x_axis, y_axis, normal;
+};
+
+// Index of the four sides of a surface face, counterclockwise around its parameter rectangle.
+enum class Side { v_min = 0, u_max = 1, v_max = 2, u_min = 3 };
+
+class Face {
+public:
+    enum class Kind { surface, planar };
+
+    // An untrimmed surface face. sides[Side::v_min] runs u increasing along v = v_min, sides[u_max] v increasing
+    // along u = u_max, sides[v_max] u decreasing along v = v_max, sides[u_min] v decreasing along u = u_min:
+    // counterclockwise in (u, v). The edge of a side is the surface's isocurve with the SAME parameter
+    // (edge parameter t = the surface's u on v sides, its v on u sides), so a coedge on v_min has
+    // reversed = false when the edge runs with u. Validated: each side's edge matches the surface there.
+    static Face from_surface(NurbsSurface surface, std::array<Coedge, 4> sides);
+    // A planar face bounded by loops (loops[0] outer, counterclockwise seen from plane.normal, which
+    // points out of the solid; further loops are holes). Its surface() is the bilinear plane patch
+    // spanning the loops' bounding rectangle in the plane frame, with S_u x S_v along plane.normal.
+    static Face planar(const Plane& plane, std::vector<std::vector<Coedge>> loops);
+
+    Kind kind() const { return kind_; }
+    const NurbsSurface& surface() const { return surface_; }
+    const std::array<Coedge, 4>& sides() const { return sides_; }           // surface faces
+    const std::vector<std::vector<Coedge>>& loops() const { return loops_; } // planar faces
+    const Plane& plane() const { return plane_; }                            // planar faces
+
+    Vec3 point(double u, double v) const { return surface_.point(u, v); }
+    Vec3 normal(double u, double v) const { return surface_.normal(u, v); }  // outward
+
+private:
+    Face(Kind kind, NurbsSurface surface) : kind_(kind), surface_(std::move(surface)) {}
+    Kind kind_;
+    NurbsSurface surface_;
+    std::array<Coedge, 4> sides_{};
+    std::vector<std::vector<Coedge>> loops_;
+    Plane plane_{};
+};
+
+class Solid {
+public:
+    // Validates closure: every non-degenerate edge is used exactly twice, once in each direction.
+    explicit Solid(std::vector<Face> faces);
+
+    const std::vector<Face>& faces() const { return faces_; }
+    std::vector<EdgePtr> edges() const;       // each distinct edge once, degenerate ones included
+    std::vector<VertexPtr> vertices() const;  // each distinct vertex once
+    // V - E + F with degenerate edges not counted (their vertex is counted): 2 for a ball, 0 for a torus.
+    int euler_characteristic() const;
+
+    double area() const;    // Gauss quadrature on the exact surfaces (properties.hpp)
+    double volume() const;  // divergence theorem, (1/3) of the integral of S . (S_u x S_v)
+
+private:
+    std::vector<Face> faces_;
+};
+
+}  // namespace ratbez

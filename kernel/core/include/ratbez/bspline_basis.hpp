@@ -1,0 +1,41 @@
+#pragma once
+// B-spline basis functions (001): knot vector validation, span search and Cox–de Boor evaluation with
+// the convention 0/0 := 0. Algorithm numbers follow the standard NURBS texts (A2.1–A2.4).
+//
+// A knot vector U = {u_0 .. u_m} for degree p and n+1 control points has m = n + p + 1, is
+// non-decreasing, has end knots of multiplicity at most p + 1 and interior knots (inside the domain) of
+// multiplicity at most p (more would break the curve apart), and the valid parameter domain is [u_p, u_{m-p}] with u_p < u_{m-p}. The last span is closed at its right end,
+// so N_{n,p}(u_{m-p}) = 1 for a clamped vector (endpoint interpolation).
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace ratbez {
+
+// Throws ratbez::Error naming `argument` unless `knots` is a valid knot vector for `degree` and
+// `control_point_count` control points (sizes, finiteness, non-decreasing, multiplicities, non-empty domain).
+void validate_knot_vector(int degree, std::span<const double> knots, int control_point_count,
+                          const std::string& argument = "knots");
+
+// N_{i,p}(u) by the Cox–de Boor recursion with 0/0 := 0 (001; A2.4). Validates its arguments.
+double bspline_basis(int i, int p, std::span<const double> knots, double u);
+
+// The span index k with u_k <= u < u_{k+1} inside the domain, the last non-empty span for u = u_{m-p} (A2.1).
+// Requires a validated knot vector and u inside the domain.
+int find_span(int degree, std::span<const double> knots, double u);
+
+// The p+1 non-vanishing basis functions N_{span-p,p}(u) .. N_{span,p}(u) (A2.2), written to `out`.
+void basis_functions(int span, double u, int degree, std::span<const double> knots, std::span<double> out);
+
+// ders[k][j] = k-th derivative of N_{span-p+j,p} at u, 0 <= k <= order (A2.3); derivatives above p are 0.
+std::vector<std::vector<double>> basis_function_derivatives(int span, double u, int degree,
+                                                            std::span<const double> knots, int order);
+
+// The domain [u_p, u_{m-p}] of a knot vector.
+struct Interval {
+    double min = 0, max = 0;
+};
+Interval knot_domain(int degree, std::span<const double> knots);
+
+}  // namespace ratbez

@@ -1,0 +1,17 @@
+#pragma once
+// The translational sweep of 004 §1.5: S(u, v) = C(u) + v * d, v in [0, 1].
+
+#include "ratbez/brep.hpp"
+#include "ratbez/nurbs_curve.hpp"
+#include "ratbez/nurbs_surface.hpp"
+#include "ratbez/profile.hpp"
+
+namespace ratbez {
+
+NurbsSurface extrude_surface(const NurbsCurve& curve, const Vec3& displacement);
+
+// A closed planar profile swept by distance along direction (not parallel to the profile's plane):
+// one lateral face per piece and two planar caps.
+Solid extrude(const Profile& profile, const Vec3& direction, double distance);
+
+}  // namespace ratbez

@@ -1,0 +1,24 @@
+#pragma once
+// A triangle mesh as vertex and face tables (004 §1.3): what tessellation hands out and every exporter
+// writes. Triangles are outward by the right-hand rule.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "ratbez/vec.hpp"
+
+namespace ratbez {
+
+struct Mesh {
+    std::vector<Vec3> vertices;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+
+    // Every undirected edge is used by exactly two triangles, in opposite directions.
+    bool is_closed() const;
+    // Signed volume by the divergence theorem (positive for an outward mesh), and the surface area.
+    double volume() const;
+    double area() const;
+};
+
+}  // namespace ratbez

@@ -1,0 +1,58 @@
+#pragma once
+// NURBS curves C(u) = H{ sum N_{i,p}(u) P^w_i } with homogeneous control points (the B-spline
+// generalisation of 000 §1.4; 001). Polynomial B-splines have all weights 1.
+
+#include <vector>
+
+#include "ratbez/bezier_curve.hpp"
+#include "ratbez/bspline_basis.hpp"
+#include "ratbez/vec.hpp"
+
+namespace ratbez {
+
+class NurbsCurve {
+public:
+    // Validates: degree >= 0 (degree >= 1 unless a single span), knots.size() == points.size() + degree + 1,
+    // finite points, a valid knot vector, and (when given) as many weights as points, each finite and > 0.
+    NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec3> points);
+    NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec3> points, std::vector<double> weights);
+    static NurbsCurve from_homogeneous(int degree, std::vector<double> knots, std::vector<Vec4> homogeneous_points,
+                                       bool rational = true);
+    // The Bézier curve as a NURBS on {0..0, 1..1} (001).
+    static NurbsCurve from_bezier(const BezierCurve& curve);
+
+    int degree() const { return degree_; }
+    const std::vector<double>& knots() const { return knots_; }
+    const std::vector<Vec4>& homogeneous_points() const { return pw_; }
+    std::vector<Vec3> points() const;
+    std::vector<double> weights() const;
+    bool is_rational() const { return rational_; }
+    Interval domain() const;
+
+    Vec3 point(double u) const;          // A4.1 (A3.1 on P^w, then H)
+    Vec4 homogeneous_point(double u) const;
+    // C^(k)(u), k = 0..order: A3.2 on P^w, then the rational quotient rule (A4.2).
+    std::vector<Vec3> derivatives(double u, int order) const;
+    Vec3 derivative(double u, int order = 1) const;
+
+    // Knot insertion (A5.1, Boehm): u inserted r more times; the curve is unchanged.
+    NurbsCurve insert_knot(double u, int times = 1) const;
+    // The Bézier segments of every non-empty knot span, in order (A5.6 / repeated insertion).
+    std::vector<BezierCurve> bezier_segments() const;
+    // The same curve run backwards, on the mirrored knot vector.
+    NurbsCurve reversed() const;
+    // The same curve on the domain [a, b] (affine knot map), a < b.
+    NurbsCurve reparameterized(double a, double b) const;
+
+    Vec3 start_point() const { return point(domain().min); }
+    Vec3 end_point() const { return point(domain().max); }
+
+private:
+    NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);
+    int degree_ = 0;
+    std::vector<double> knots_;
+    std::vector<Vec4> pw_;
+    bool rational_ = false;
+};
+
+}  // namespace ratbez

@@ -1,0 +1,66 @@
+#pragma once
+// Tensor-product NURBS surfaces S(u,v) = H{ sum_i sum_j N_{i,p}(u) N_{j,q}(v) P^w_ij }.
+// net[i][j]: i along u, j along v, as in BezierSurface; stored homogeneously, row-major.
+
+#include <vector>
+
+#include "ratbez/bezier_surface.hpp"
+#include "ratbez/bspline_basis.hpp"
+#include "ratbez/nurbs_curve.hpp"
+#include "ratbez/vec.hpp"
+
+namespace ratbez {
+
+class NurbsSurface {
+public:
+    NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
+                 std::vector<std::vector<Vec3>> net);
+    NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
+                 std::vector<std::vector<Vec3>> net, std::vector<std::vector<double>> weights);
+    // rows = knots_u.size() - degree_u - 1, columns = knots_v.size() - degree_v - 1; row-major P^w.
+    static NurbsSurface from_homogeneous(int degree_u, int degree_v, std::vector<double> knots_u,
+                                         std::vector<double> knots_v, std::vector<Vec4> homogeneous_points,
+                                         bool rational = true);
+    static NurbsSurface from_bezier(const BezierSurface& surface);
+
+    int degree_u() const { return degree_u_; }
+    int degree_v() const { return degree_v_; }
+    const std::vector<double>& knots_u() const { return knots_u_; }
+    const std::vector<double>& knots_v() const { return knots_v_; }
+    int rows() const { return rows_; }        // control points along u
+    int columns() const { return columns_; }  // control points along v
+    const std::vector<Vec4>& homogeneous_points() const { return pw_; }
+    const Vec4& homogeneous_point(int i, int j) const { return pw_[static_cast<std::size_t>(i * columns_ + j)]; }
+    std::vector<std::vector<Vec3>> points() const;
+    std::vector<std::vector<double>> weights() const;
+    bool is_rational() const { return rational_; }
+    Interval domain_u() const;
+    Interval domain_v() const;
+
+    Vec3 point(double u, double v) const;      // A4.3
+    Vec4 homogeneous_point(double u, double v) const;
+    // SKL[k][l] = d^{k+l}S/du^k dv^l for 0 <= k + l <= order (A3.6 on P^w, then A4.4).
+    std::vector<std::vector<Vec3>> derivatives(double u, double v, int order) const;
+    Vec3 derivative(double u, double v, int du, int dv) const;
+    // Unit normal; the limit direction where a partial vanishes (poles, apexes, points on the axis).
+    Vec3 normal(double u, double v) const;
+
+    NurbsCurve isocurve_u(double u0) const;  // the curve in v at fixed u = u0 (knots_v)
+    NurbsCurve isocurve_v(double v0) const;  // the curve in u at fixed v = v0 (knots_u)
+
+    NurbsSurface insert_knot_u(double u, int times = 1) const;  // A5.3
+    NurbsSurface insert_knot_v(double v, int times = 1) const;
+    // patches[a][b]: the Bézier patch of the a-th non-empty u span and b-th non-empty v span (A5.7).
+    std::vector<std::vector<BezierSurface>> bezier_patches() const;
+
+private:
+    NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
+                 std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);
+    int degree_u_ = 0, degree_v_ = 0;
+    std::vector<double> knots_u_, knots_v_;
+    int rows_ = 0, columns_ = 0;
+    std::vector<Vec4> pw_;
+    bool rational_ = false;
+};
+
+}  // namespace ratbez

@@ -1,0 +1,26 @@
+#pragma once
+// Adaptive, watertight tessellation of exact solids to an absolute chordal tolerance (004 §1.3 meshes).
+// Every shared edge is sampled once and both faces use those samples, so the mesh is closed by
+// construction; degenerate edges (poles, apexes) become fans; planar faces are triangulated from
+// their boundary loops.
+
+#include <cstddef>
+#include <optional>
+
+#include "ratbez/brep.hpp"
+#include "ratbez/mesh.hpp"
+
+namespace ratbez {
+
+struct TessellationOptions {
+    double tolerance = 0;                 // largest distance from any point of a triangle to the surface, > 0
+    std::optional<double> angle_deg;      // optional limit on the angle between neighbouring normals
+    std::size_t max_triangles = 20'000'000;  // budget: a finer request throws Error naming "tolerance"
+};
+
+Mesh tessellate(const Solid& solid, const TessellationOptions& options);
+inline Mesh tessellate(const Solid& solid, double tolerance, std::optional<double> angle_deg = std::nullopt) {
+    return tessellate(solid, TessellationOptions{tolerance, angle_deg});
+}
+
+}  // namespace ratbez

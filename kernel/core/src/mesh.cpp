@@ -1,0 +1,39 @@
+#include "ratbez/mesh.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+
+namespace ratbez {
+
+bool Mesh::is_closed() const {
+    // Each directed edge must appear exactly once and its reverse exactly once: sort the directed
+    // edges and look each one's twin up, O(E log E) with no hashing.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> directed;
+    directed.reserve(triangles.size() * 3);
+    for (const auto& t : triangles)
+        for (int k = 0; k < 3; ++k) directed.emplace_back(t[k], t[(k + 1) % 3]);
+    std::sort(directed.begin(), directed.end());
+    if (std::adjacent_find(directed.begin(), directed.end()) != directed.end()) return false;
+    for (const auto& [a, b] : directed) {
+        if (a == b) return false;
+        if (!std::binary_search(directed.begin(), directed.end(), std::make_pair(b, a))) return false;
+    }
+    return !triangles.empty();
+}
+
+double Mesh::volume() const {
+    double six_volume = 0;
+    for (const auto& t : triangles)
+        six_volume += dot(vertices[t[0]], cross(vertices[t[1]], vertices[t[2]]));
+    return six_volume / 6.0;
+}
+
+double Mesh::area() const {
+    double twice_area = 0;
+    for (const auto& t : triangles)
+        twice_area += norm(cross(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]));
+    return twice_area / 2.0;
+}
+
+}  // namespace ratbez
