@@ -94,6 +94,13 @@ public:
     // V - E + F with degenerate edges not counted (their vertex is counted): 2 for a ball, 0 for a torus.
     int euler_characteristic() const;
 
+    // Axis-aligned box of all control points: it contains the solid (convex hull property).
+    struct Box {
+        Vec3 min, max;
+        double diagonal() const { return norm(max - min); }
+    };
+    Box bounding_box() const;
+
     double area() const;    // Gauss quadrature on the exact surfaces (properties.hpp)
     double volume() const;  // divergence theorem, (1/3) of the integral of S . (S_u x S_v)
 

@@ -19,6 +19,8 @@ struct TessellationOptions {
 };
 
 Mesh tessellate(const Solid& solid, const TessellationOptions& options);
+// The tolerance used when the caller gives none: 1e-3 of the solid's bounding-box diagonal.
+double default_tolerance(const Solid& solid);
 inline Mesh tessellate(const Solid& solid, double tolerance, std::optional<double> angle_deg = std::nullopt) {
     return tessellate(solid, TessellationOptions{tolerance, angle_deg});
 }
