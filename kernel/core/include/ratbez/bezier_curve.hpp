@@ -18,6 +18,7 @@ public:
     // Rational curve; weights.size() == points.size(), every weight finite and > 0.
     BezierCurve(std::vector<Vec3> points, std::vector<double> weights);
     // From homogeneous points P^w (w > 0); `rational` records whether the curve is to be treated as rational.
+    // Evaluation always projects with H, so the curve is right whatever the flag says.
     static BezierCurve from_homogeneous(std::vector<Vec4> homogeneous_points, bool rational = true);
 
     int degree() const { return static_cast<int>(pw_.size()) - 1; }

@@ -40,6 +40,7 @@ public:
     std::vector<std::vector<Vec3>> derivatives(double u, double v, int order) const;
     // Unit normal S_u x S_v / |.|; where one partial vanishes (a collapsed edge) the limit direction
     // from the mixed and second partials is used, so poles and apexes still get the right normal.
+    // Throws Error naming "(u, v)" where no tangent plane exists (e.g. every control point the same).
     Vec3 normal(double u, double v) const;
 
     BezierCurve isocurve_u(double u0) const; // C_{u0}(v): the curve in v at fixed u = u0

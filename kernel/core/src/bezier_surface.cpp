@@ -1,0 +1,339 @@
+// Tensor-product Bézier surfaces, polynomial and rational (000 §1.5, Eq. 1.23, Eq. 1.27–1.28; 002 §25).
+// As for curves, everything runs on the homogeneous net P^w_{i,j} (S^w is a polynomial tensor-product
+// surface, Eq. 1.27) and projects with H at the end (Eq. 1.28).
+
+#include "ratbez/bezier_surface.hpp"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "ratbez/bernstein.hpp"
+#include "ratbez/error.hpp"
+
+namespace ratbez {
+
+namespace {
+
+std::size_t to_size(int value) { return static_cast<std::size_t>(value); }
+
+// A1.5 / Eq. 1.19 on `count` homogeneous points starting at `first`, `stride` apart; the scratch copy keeps
+// the net intact.
+Vec4 de_casteljau_strided(const Vec4* first, std::size_t count, std::size_t stride, double t) {
+    std::vector<Vec4> q(count);
+    for (std::size_t i = 0; i < count; ++i) q[i] = first[i * stride];
+    for (std::size_t k = 1; k < count; ++k)
+        for (std::size_t i = 0; i + k < count; ++i) q[i] = lerp(q[i], q[i + 1], t);
+    return q.front();
+}
+
+Vec4 de_casteljau(const std::vector<Vec4>& points, double t) {
+    return de_casteljau_strided(points.data(), points.size(), 1, t);
+}
+
+std::vector<double> binomial_row(int k) {
+    std::vector<double> row(to_size(k) + 1, 1.0);
+    for (int i = 1; i < k; ++i)
+        row[to_size(i)] = row[to_size(i - 1)] * static_cast<double>(k - i + 1) / static_cast<double>(i);
+    return row;
+}
+
+void validate_weight(double weight, const std::string& argument, const std::string& where) {
+    require(std::isfinite(weight), argument, "weight " + where + " is not a finite number");
+    require(weight > 0.0, argument, "weight " + where + " is " + std::to_string(weight) + " but must be > 0");
+}
+
+// "[i][j]", built by appending (GCC 12 reports a false -Wrestrict for "[" + std::to_string(i) at -O3).
+std::string index_pair(std::size_t i, std::size_t j) {
+    std::string text(1, '[');
+    text += std::to_string(i);
+    text += "][";
+    text += std::to_string(j);
+    text += ']';
+    return text;
+}
+
+// Checks that `net` is a non-empty rectangle of finite points; returns its columns.
+std::size_t validate_net(const std::vector<std::vector<Vec3>>& net) {
+    require(!net.empty(), "net", "a Bézier surface needs at least one row of control points");
+    const std::size_t columns = net.front().size();
+    require(columns > 0, "net", "row 0 is empty; every row needs at least one control point");
+    for (std::size_t i = 0; i < net.size(); ++i) {
+        require(net[i].size() == columns, "net",
+                "row " + std::to_string(i) + " has " + std::to_string(net[i].size()) + " points but row 0 has " +
+                    std::to_string(columns) + " (the net must be rectangular, not ragged)");
+        for (std::size_t j = 0; j < columns; ++j)
+            require(is_finite(net[i][j]), "net", "control point " + index_pair(i, j) + " has a non-finite coordinate");
+    }
+    return columns;
+}
+
+}  // namespace
+
+BezierSurface::BezierSurface(int rows, int columns, std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/)
+    : rows_(rows), columns_(columns), pw_(std::move(homogeneous_points)), rational_(rational) {}
+
+BezierSurface::BezierSurface(std::vector<std::vector<Vec3>> net) {
+    const std::size_t columns = validate_net(net);
+    rows_ = static_cast<int>(net.size());
+    columns_ = static_cast<int>(columns);
+    pw_.resize(net.size() * columns);
+    for (std::size_t i = 0; i < net.size(); ++i)
+        for (std::size_t j = 0; j < columns; ++j) pw_[i * columns + j] = homogenize(net[i][j], 1.0);
+    rational_ = false;
+}
+
+BezierSurface::BezierSurface(std::vector<std::vector<Vec3>> net, std::vector<std::vector<double>> weights) {
+    const std::size_t columns = validate_net(net);
+    require(weights.size() == net.size(), "weights",
+            "has " + std::to_string(weights.size()) + " rows but the net has " + std::to_string(net.size()) +
+                "; there must be exactly one weight per control point");
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        require(weights[i].size() == columns, "weights",
+                "row " + std::to_string(i) + " has " + std::to_string(weights[i].size()) +
+                    " weights but the net has " + std::to_string(columns) + " columns");
+        for (std::size_t j = 0; j < columns; ++j) validate_weight(weights[i][j], "weights", index_pair(i, j));
+    }
+    rows_ = static_cast<int>(net.size());
+    columns_ = static_cast<int>(columns);
+    pw_.resize(net.size() * columns);
+    for (std::size_t i = 0; i < net.size(); ++i)
+        for (std::size_t j = 0; j < columns; ++j) pw_[i * columns + j] = homogenize(net[i][j], weights[i][j]);
+    rational_ = true;
+}
+
+BezierSurface BezierSurface::from_homogeneous(int rows, int columns, std::vector<Vec4> homogeneous_points,
+                                              bool rational) {
+    require(rows >= 1, "rows", "must be >= 1, got " + std::to_string(rows));
+    require(columns >= 1, "columns", "must be >= 1, got " + std::to_string(columns));
+    require(homogeneous_points.size() == to_size(rows) * to_size(columns), "homogeneous_points",
+            "has " + std::to_string(homogeneous_points.size()) + " points but rows x columns = " +
+                std::to_string(to_size(rows) * to_size(columns)));
+    for (std::size_t i = 0; i < to_size(rows); ++i)
+        for (std::size_t j = 0; j < to_size(columns); ++j) {
+            const Vec4& p = homogeneous_points[i * to_size(columns) + j];
+            require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), "homogeneous_points",
+                    "control point " + index_pair(i, j) + " has a non-finite coordinate");
+            validate_weight(p.w, "homogeneous_points", index_pair(i, j));
+        }
+    return BezierSurface(rows, columns, std::move(homogeneous_points), rational, 0);
+}
+
+std::vector<std::vector<Vec3>> BezierSurface::points() const {
+    std::vector<std::vector<Vec3>> net(to_size(rows_), std::vector<Vec3>(to_size(columns_)));
+    for (int i = 0; i < rows_; ++i)
+        for (int j = 0; j < columns_; ++j) net[to_size(i)][to_size(j)] = project(homogeneous_point(i, j));
+    return net;
+}
+
+std::vector<std::vector<double>> BezierSurface::weights() const {
+    std::vector<std::vector<double>> result(to_size(rows_), std::vector<double>(to_size(columns_)));
+    for (int i = 0; i < rows_; ++i)
+        for (int j = 0; j < columns_; ++j) result[to_size(i)][to_size(j)] = homogeneous_point(i, j).w;
+    return result;
+}
+
+Vec3 BezierSurface::point(double u, double v) const { return point_basis(u, v); }
+
+Vec3 BezierSurface::point_basis(double u, double v) const {
+    // The row-then-column scheme of A1.6 with Bernstein bases (A1.3) in place of Horner: each row i collapses
+    // to b_i = sum_j B_{j,m}(v) P^w_{i,j}, then S^w = sum_i B_{i,n}(u) b_i (Eq. 1.27).
+    require_in_domain(u, 0.0, 1.0, "u");
+    require_in_domain(v, 0.0, 1.0, "v");  // all_bernstein would report a bad v as "u"
+    const std::vector<double> basis_u = all_bernstein(degree_u(), u);
+    const std::vector<double> basis_v = all_bernstein(degree_v(), v);
+    Vec4 sum;
+    for (std::size_t i = 0; i < to_size(rows_); ++i) {
+        Vec4 row_sum;
+        for (std::size_t j = 0; j < to_size(columns_); ++j) row_sum += basis_v[j] * pw_[i * to_size(columns_) + j];
+        sum += basis_u[i] * row_sum;
+    }
+    return project(sum);
+}
+
+Vec3 BezierSurface::point_u_first(double u, double v) const {
+    // A1.7, first branch: Q_j(u) = deCasteljau in u on column j are the control points of C_u(v) (Eq. 1.24).
+    require_in_domain(u, 0.0, 1.0, "u");
+    require_in_domain(v, 0.0, 1.0, "v");  // here, not inside the isocurve, which would call it "u"
+    return isocurve_u(u).point_de_casteljau(v);
+}
+
+Vec3 BezierSurface::point_v_first(double u, double v) const {
+    // A1.7, second branch: Q_i(v) = deCasteljau in v on row i are the control points of C_v(u).
+    require_in_domain(u, 0.0, 1.0, "u");
+    require_in_domain(v, 0.0, 1.0, "v");
+    return isocurve_v(v).point_de_casteljau(u);
+}
+
+Vec3 BezierSurface::point_one_step(double u, double v) const {
+    require_in_domain(u, 0.0, 1.0, "u");
+    require_in_domain(v, 0.0, 1.0, "v");
+    // 002 §25.4: p^{k+1}_{i,j} = (1-u)(1-v) p^k_{i,j} + (1-u)v p^k_{i,j+1} + u(1-v) p^k_{i+1,j} + uv p^k_{i+1,j+1}.
+    // Each bilinear step lowers both degrees by one; when n != m the min(n, m) bilinear steps leave a single
+    // row or column, which ordinary deCasteljau (A1.5) finishes in the remaining direction.
+    std::size_t rows = to_size(rows_), columns = to_size(columns_);
+    const std::size_t stride = columns;
+    std::vector<Vec4> q = pw_;
+    const double a = 1.0 - u, b = 1.0 - v;
+    while (rows > 1 && columns > 1) {
+        for (std::size_t i = 0; i + 1 < rows; ++i)
+            for (std::size_t j = 0; j + 1 < columns; ++j)
+                q[i * stride + j] = (a * b) * q[i * stride + j] + (a * v) * q[i * stride + j + 1] +
+                                    (u * b) * q[(i + 1) * stride + j] + (u * v) * q[(i + 1) * stride + j + 1];
+        --rows;
+        --columns;
+    }
+    if (rows > 1) return project(de_casteljau_strided(q.data(), rows, stride, u));
+    return project(de_casteljau_strided(q.data(), columns, 1, v));
+}
+
+BezierCurve BezierSurface::isocurve_u(double u0) const {
+    require_in_domain(u0, 0.0, 1.0, "u");
+    // Eq. 1.24: Q_j(u0) = sum_i B_{i,n}(u0) P^w_{i,j}, computed by deCasteljau down each column j.
+    std::vector<Vec4> q(to_size(columns_));
+    for (std::size_t j = 0; j < q.size(); ++j) q[j] = de_casteljau_strided(&pw_[j], to_size(rows_), to_size(columns_), u0);
+    return BezierCurve::from_homogeneous(std::move(q), rational_);
+}
+
+BezierCurve BezierSurface::isocurve_v(double v0) const {
+    require_in_domain(v0, 0.0, 1.0, "v");
+    // Q_i(v0) = sum_j B_{j,m}(v0) P^w_{i,j}, deCasteljau along each row i.
+    std::vector<Vec4> q(to_size(rows_));
+    for (std::size_t i = 0; i < q.size(); ++i) q[i] = de_casteljau_strided(&pw_[i * to_size(columns_)], to_size(columns_), 1, v0);
+    return BezierCurve::from_homogeneous(std::move(q), rational_);
+}
+
+std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, int order) const {
+    require_in_domain(u, 0.0, 1.0, "u");
+    require_in_domain(v, 0.0, 1.0, "v");
+    require(order >= 0, "order", "the derivative order must be >= 0, got " + std::to_string(order));
+    const std::size_t d = to_size(order);
+
+    // Homogeneous partials Aw[k][l] = d^{k+l} S^w / du^k dv^l. S^w is a polynomial tensor product, so the
+    // curve rule Eq. 1.9 applies in each direction: difference the net k times along u (factor n!/(n-k)!),
+    // collapse the columns by deCasteljau in u, difference those points l times along v (m!/(m-l)!), and
+    // evaluate by deCasteljau in v. Partials beyond the degree vanish.
+    std::vector<std::vector<Vec4>> aw(d + 1);
+    for (std::size_t k = 0; k <= d; ++k) aw[k].assign(d - k + 1, Vec4{});
+    const std::size_t columns = to_size(columns_);
+    std::vector<Vec4> net = pw_;
+    std::size_t rows = to_size(rows_);
+    double factor_u = 1.0;
+    for (std::size_t k = 0; k <= d && rows > 0; ++k) {
+        std::vector<Vec4> column_points(columns);
+        for (std::size_t j = 0; j < columns; ++j)
+            column_points[j] = de_casteljau_strided(&net[j], rows, columns, u);
+        double factor_v = 1.0;
+        for (std::size_t l = 0; k + l <= d && !column_points.empty(); ++l) {
+            aw[k][l] = (factor_u * factor_v) * de_casteljau(column_points, v);
+            factor_v *= static_cast<double>(column_points.size() - 1);
+            for (std::size_t j = 0; j + 1 < column_points.size(); ++j)
+                column_points[j] = column_points[j + 1] - column_points[j];
+            column_points.pop_back();
+        }
+        factor_u *= static_cast<double>(rows - 1);
+        for (std::size_t i = 0; i + 1 < rows; ++i)
+            for (std::size_t j = 0; j < columns; ++j)
+                net[i * columns + j] = net[(i + 1) * columns + j] - net[i * columns + j];
+        --rows;
+    }
+
+    // The quotient rule on A = w S, solved for S (A4.4, the surface form of Eq. 1.28 differentiated):
+    // SKL[k][l] = (A_{k,l} - sum_{j=1..l} C(l,j) w_{0,j} SKL[k][l-j] - sum_{i=1..k} C(k,i) w_{i,0} SKL[k-i][l]
+    //              - sum_{i=1..k} C(k,i) sum_{j=1..l} C(l,j) w_{i,j} SKL[k-i][l-j]) / w.
+    std::vector<std::vector<Vec3>> skl(d + 1);
+    for (std::size_t k = 0; k <= d; ++k) skl[k].assign(d - k + 1, Vec3{});
+    const double w = aw[0][0].w;
+    for (std::size_t k = 0; k <= d; ++k) {
+        const std::vector<double> binomial_k = binomial_row(static_cast<int>(k));
+        for (std::size_t l = 0; k + l <= d; ++l) {
+            const std::vector<double> binomial_l = binomial_row(static_cast<int>(l));
+            Vec3 numerator = weighted_part(aw[k][l]);
+            for (std::size_t j = 1; j <= l; ++j) numerator -= (binomial_l[j] * aw[0][j].w) * skl[k][l - j];
+            for (std::size_t i = 1; i <= k; ++i) {
+                numerator -= (binomial_k[i] * aw[i][0].w) * skl[k - i][l];
+                Vec3 mixed;
+                for (std::size_t j = 1; j <= l; ++j) mixed += (binomial_l[j] * aw[i][j].w) * skl[k - i][l - j];
+                numerator -= binomial_k[i] * mixed;
+            }
+            skl[k][l] = numerator / w;
+        }
+    }
+    return skl;
+}
+
+Vec3 BezierSurface::derivative(double u, double v, int du, int dv) const {
+    require(du >= 0, "du", "the derivative order must be >= 0, got " + std::to_string(du));
+    require(dv >= 0, "dv", "the derivative order must be >= 0, got " + std::to_string(dv));
+    return derivatives(u, v, du + dv)[to_size(du)][to_size(dv)];
+}
+
+Vec3 BezierSurface::normal(double u, double v) const {
+    // Eq. 1.4 where S_u x S_v does not vanish. Where it does (a collapsed edge: S_u = 0 along v = v0, the
+    // apex of a cone, a pole), Eq. 1.4 has no value but the tangent plane still exists (000 §1.1), and the
+    // normal is the limit of N along a path into the patch. Along (u, v) + t (a, b) write
+    //   S_u(t) = sum_p t^p U_p,  S_v(t) = sum_p t^p V_p,  U_p = (1/p!) sum_r C(p,r) a^r b^(p-r) S_{r+1,p-r},
+    // (V_p likewise with S_{r,p-r+1}); then S_u x S_v = sum_q t^q N_q with N_q = sum_p U_p x V_{q-p}, and the
+    // limit direction is that of the first N_q that does not vanish. For S_u = 0 along v = 0 this is
+    // N_1 = b S_uv x S_v (S_uu vanishes there too), the familiar S_uv x S_v; at v = 1, b < 0 flips it, as it must.
+    constexpr int max_taylor_order = 3;
+    const auto skl = derivatives(u, v, max_taylor_order + 1);  // validates u and v
+
+    // Path direction: towards the centre of the domain, so the path stays inside [0,1]^2 from any edge or corner.
+    double a = 0.5 - u, b = 0.5 - v;
+    const double length = std::sqrt(a * a + b * b);
+    if (length > 0.0) {
+        a /= length;
+        b /= length;
+    } else {
+        a = 1.0;
+        b = 0.0;
+    }
+
+    // Scale for deciding "vanishes": derivative magnitudes of each total order, floored by the control net's
+    // size so that rounding noise in an exactly vanishing partial is never mistaken for a direction.
+    Vec3 low = project(pw_.front()), high = low;
+    for (const Vec4& p : pw_) {
+        const Vec3 q = project(p);
+        low = {std::min(low.x, q.x), std::min(low.y, q.y), std::min(low.z, q.z)};
+        high = {std::max(high.x, q.x), std::max(high.y, q.y), std::max(high.z, q.z)};
+    }
+    const double net_size = norm(high - low);
+    std::array<double, max_taylor_order + 2> magnitude{};  // magnitude[k]: largest partial of total order k
+    for (std::size_t k = 1; k < magnitude.size(); ++k) {
+        magnitude[k] = net_size;
+        for (std::size_t r = 0; r <= k; ++r) magnitude[k] = std::max(magnitude[k], norm(skl[r][k - r]));
+    }
+
+    std::array<Vec3, max_taylor_order + 1> u_terms, v_terms;
+    double factorial = 1.0;
+    for (std::size_t p = 0; p < u_terms.size(); ++p) {
+        if (p > 0) factorial *= static_cast<double>(p);
+        const std::vector<double> binomial = binomial_row(static_cast<int>(p));
+        Vec3 up, vp;
+        for (std::size_t r = 0; r <= p; ++r) {
+            const double coefficient = binomial[r] * std::pow(a, static_cast<double>(r)) *
+                                       std::pow(b, static_cast<double>(p - r));
+            up += coefficient * skl[r + 1][p - r];
+            vp += coefficient * skl[r][p - r + 1];
+        }
+        u_terms[p] = up / factorial;
+        v_terms[p] = vp / factorial;
+    }
+
+    constexpr double relative_tolerance = 1e-10;
+    for (std::size_t q = 0; q <= to_size(max_taylor_order); ++q) {
+        Vec3 n;
+        double scale = 0.0;
+        for (std::size_t p = 0; p <= q; ++p) {
+            n += cross(u_terms[p], v_terms[q - p]);
+            scale = std::max(scale, magnitude[p + 1] * magnitude[q - p + 1]);
+        }
+        const double length_n = norm(n);
+        if (length_n > relative_tolerance * scale && length_n > 0.0) return n / length_n;
+    }
+    throw Error("(u, v): the surface has no tangent plane at (" + std::to_string(u) + ", " + std::to_string(v) +
+                "); its partial derivatives are parallel or zero to order " + std::to_string(max_taylor_order + 1));
+}
+
+}  // namespace ratbez

@@ -1,0 +1,92 @@
+// Power basis curves C(u) = sum a_i u^i (000 §1.2, Eq. 1.5), Horner's rule (A1.1), and the exact change of
+// basis between power and Bézier form of Exercise 1.14.
+
+#include "ratbez/power_basis.hpp"
+
+#include <string>
+
+#include "ratbez/error.hpp"
+
+namespace ratbez {
+
+namespace {
+
+// Pascal's triangle up to row n: binomial[r][c] = C(r, c). Built by additions only, so every entry is
+// exact while it stays below 2^53 (all rows up to n = 56).
+std::vector<std::vector<double>> pascal_triangle(int n) {
+    std::vector<std::vector<double>> binomial(static_cast<std::size_t>(n) + 1);
+    for (std::size_t r = 0; r < binomial.size(); ++r) {
+        binomial[r].assign(r + 1, 1.0);
+        for (std::size_t c = 1; c < r; ++c) binomial[r][c] = binomial[r - 1][c - 1] + binomial[r - 1][c];
+    }
+    return binomial;
+}
+
+void require_finite_points(const std::vector<Vec3>& points, const std::string& argument) {
+    require(!points.empty(), argument, "must not be empty");
+    for (std::size_t i = 0; i < points.size(); ++i)
+        require(is_finite(points[i]), argument, "element " + std::to_string(i) + " has a non-finite coordinate");
+}
+
+}  // namespace
+
+// Horner's rule is a plain polynomial evaluation, so it accepts any finite u: Exercise 1.9 evaluates a
+// power basis curve on [-1, 1], and reparameterisation (Exercise 1.15) needs other intervals too.
+double horner(const std::vector<double>& coefficients, double u) {
+    require(!coefficients.empty(), "coefficients", "must not be empty");
+    require_finite(coefficients, "coefficients");
+    require_finite(u, "u");
+    // A1.1
+    double value = coefficients.back();
+    for (std::size_t i = coefficients.size() - 1; i-- > 0;) value = value * u + coefficients[i];
+    return value;
+}
+
+Vec3 horner(const std::vector<Vec3>& coefficients, double u) {
+    require_finite_points(coefficients, "coefficients");
+    require_finite(u, "u");
+    // A1.1 on each coordinate at once.
+    Vec3 value = coefficients.back();
+    for (std::size_t i = coefficients.size() - 1; i-- > 0;) value = value * u + coefficients[i];
+    return value;
+}
+
+std::vector<std::vector<double>> bezier_to_power_matrix(int n) {
+    require(n >= 0, "n", "the degree must be >= 0, got " + std::to_string(n));
+    // B_{j,n}(u) = C(n,j) u^j (1-u)^{n-j} = sum_i (-1)^{i-j} C(n,j) C(n-j,i-j) u^i, and
+    // C(n,j) C(n-j,i-j) = C(n,i) C(i,j): the coefficient of u^i in B_{j,n} (Exercise 1.14).
+    const auto binomial = pascal_triangle(n);
+    const auto size = static_cast<std::size_t>(n) + 1;
+    std::vector<std::vector<double>> m(size, std::vector<double>(size, 0.0));
+    for (std::size_t i = 0; i < size; ++i)
+        for (std::size_t j = 0; j <= i; ++j) {
+            const double sign = ((i - j) % 2 == 0) ? 1.0 : -1.0;
+            m[i][j] = sign * binomial[size - 1][i] * binomial[i][j];
+        }
+    return m;
+}
+
+std::vector<Vec3> bezier_to_power(const std::vector<Vec3>& control_points) {
+    require_finite_points(control_points, "control_points");
+    // [a_i] = M [P_i] (Exercise 1.14).
+    const auto m = bezier_to_power_matrix(static_cast<int>(control_points.size()) - 1);
+    std::vector<Vec3> coefficients(control_points.size());
+    for (std::size_t i = 0; i < coefficients.size(); ++i)
+        for (std::size_t j = 0; j <= i; ++j) coefficients[i] += m[i][j] * control_points[j];
+    return coefficients;
+}
+
+std::vector<Vec3> power_to_bezier(const std::vector<Vec3>& coefficients) {
+    require_finite_points(coefficients, "coefficients");
+    // [P_i] = M^{-1} [a_i], with M^{-1}[i][j] = C(i,j) / C(n,j) for j <= i: the expansion
+    // u^j = sum_{i>=j} C(i,j)/C(n,j) B_{i,n}(u). Only positive terms, no matrix inversion.
+    const int n = static_cast<int>(coefficients.size()) - 1;
+    const auto binomial = pascal_triangle(n);
+    const auto& row_n = binomial[static_cast<std::size_t>(n)];
+    std::vector<Vec3> control_points(coefficients.size());
+    for (std::size_t i = 0; i < control_points.size(); ++i)
+        for (std::size_t j = 0; j <= i; ++j) control_points[i] += (binomial[i][j] / row_n[j]) * coefficients[j];
+    return control_points;
+}
+
+}  // namespace ratbez
