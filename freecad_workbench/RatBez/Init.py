@@ -1,0 +1,8 @@
+# RatBez workbench, application part (runs in FreeCAD and in freecadcmd, without a GUI).
+#
+# Nothing is imported eagerly here: the documents' proxies import ratbez_wb.features on demand, and
+# `import RatBez` gives scripts the make_* functions. This file has no __file__ under FreeCAD 0.20.
+
+import FreeCAD
+
+FreeCAD.addExportType("OpenSCAD polyhedron of a RatBez solid (*.scad)", "RatBez")

@@ -1,0 +1,212 @@
+"""RatBez: exact rational Bézier / NURBS solids as parametric FreeCAD objects.
+
+Scripting interface (works in freecadcmd, without the GUI):
+
+    import RatBez
+    cyl = RatBez.make_cylinder(Radius=2, Height=5)
+    rev = RatBez.make_revolve(Profile=sketch, Angle=270)
+    RatBez.export_openscad(cyl, "/tmp/cyl.scad", tolerance=0.01)
+    print(RatBez.check_occt(cyl))
+
+Every make_<thing>(doc=None, **properties) adds a Part::FeaturePython to `doc` (default: the active
+document, or a new one), sets the given FreeCAD-style properties, recomputes and returns the object.
+Bad property values do not raise here: the object is marked invalid and the kernel's message goes to
+the report view, exactly as when the value is typed into the property editor.
+"""
+
+import os
+import tempfile
+
+import FreeCAD as App
+import Part
+
+from ratbez_wb import conversion, features, kernel
+
+__all__ = ["make_bezier_curve", "make_bezier_surface", "make_cylinder", "make_cone", "make_sphere",
+           "make_torus", "make_revolve", "make_extrude", "is_solid", "solid_of", "export_openscad",
+           "check_occt", "format_check_report", "export"]
+
+_DEFAULT_NAMES = {
+    "bezier_curve": "BezierCurve", "bezier_surface": "BezierSurface", "cylinder": "Cylinder",
+    "cone": "Cone", "sphere": "Sphere", "torus": "Torus", "revolve": "Revolve", "extrude": "Extrude",
+}
+# Properties every Part::FeaturePython has that make_* also accepts.
+_COMMON_PROPERTIES = ("Label", "Placement")
+
+
+def _profile_link(doc, value):
+    """A PropertyLinkSub value from what a script naturally passes as a profile: a document object
+    (a sketch, a wire feature), (object, "Edge1") or (object, ["Edge1", ...]), or a bare Part shape
+    (an edge or wire, which is added to the document as a hidden Part::Feature)."""
+    if value is None:
+        return None
+    if isinstance(value, Part.Shape):
+        holder = doc.addObject("Part::Feature", "Profile")
+        holder.Shape = value
+        if App.GuiUp and holder.ViewObject:
+            holder.ViewObject.Visibility = False
+        return (holder, [])
+    if isinstance(value, (tuple, list)):
+        if len(value) != 2:
+            raise TypeError("Profile: expected an object or (object, sub-element names), got {!r}".format(value))
+        obj, subs = value
+        return (obj, [subs] if isinstance(subs, str) else list(subs))
+    return (value, [])
+
+
+def _make(kind, doc, properties):
+    cls = features.FEATURES[kind]
+    allowed = set(cls.property_names()) | set(_COMMON_PROPERTIES)
+    unknown = sorted(set(properties) - allowed)
+    if unknown:
+        raise TypeError("make_{}: unknown propert{} {}; valid: {}".format(
+            kind, "y" if len(unknown) == 1 else "ies", ", ".join(unknown),
+            ", ".join(sorted(allowed))))
+    if doc is None:
+        doc = App.ActiveDocument or App.newDocument()
+    obj = doc.addObject("Part::FeaturePython", _DEFAULT_NAMES[kind])
+    cls(obj)
+    if App.GuiUp:
+        from ratbez_wb import view_providers
+        view_providers.ViewProviderRatBez(obj.ViewObject)
+    # Degrees first, so that a net given together with them is not replaced by a default net.
+    ordered = sorted(properties.items(), key=lambda item: item[0] not in ("DegreeU", "DegreeV"))
+    for name, value in ordered:
+        if name == "Profile":
+            value = _profile_link(doc, value)
+            if App.GuiUp and value is not None and value[0] is not None and value[0].ViewObject:
+                value[0].ViewObject.Visibility = False
+        setattr(obj, name, value)
+    doc.recompute()
+    return obj
+
+
+def make_bezier_curve(doc=None, **properties):
+    """A rational Bézier curve. Properties: Poles (list of vectors), Weights (empty: polynomial)."""
+    return _make("bezier_curve", doc, properties)
+
+
+def make_bezier_surface(doc=None, **properties):
+    """A rational Bézier surface patch. Properties: DegreeU, DegreeV, Poles (row by row), Weights."""
+    return _make("bezier_surface", doc, properties)
+
+
+def make_cylinder(doc=None, **properties):
+    """A solid cylinder. Properties: Radius, Height, Center (base center), Axis."""
+    return _make("cylinder", doc, properties)
+
+
+def make_cone(doc=None, **properties):
+    """A solid (truncated) cone. Properties: Radius1, Radius2, Height, Center, Axis."""
+    return _make("cone", doc, properties)
+
+
+def make_sphere(doc=None, **properties):
+    """A solid sphere. Properties: Radius, Center."""
+    return _make("sphere", doc, properties)
+
+
+def make_torus(doc=None, **properties):
+    """A solid torus. Properties: MajorRadius, MinorRadius, Center, Axis."""
+    return _make("torus", doc, properties)
+
+
+def make_revolve(doc=None, **properties):
+    """A solid of revolution. Properties: Profile (sketch, wire, edge, (object, subnames) or a Part
+    shape), AxisPoint, AxisDirection, Angle (degrees)."""
+    return _make("revolve", doc, properties)
+
+
+def make_extrude(doc=None, **properties):
+    """A prism. Properties: Profile (closed and planar), Direction (zero: the profile's normal), Distance."""
+    return _make("extrude", doc, properties)
+
+
+# ---------------------------------------------------------------------------------------------------
+
+def is_solid(obj):
+    """True when obj is a RatBez solid feature (cylinder, cone, sphere, torus, revolve, extrude)."""
+    return features.is_solid_feature(obj)
+
+
+def solid_of(obj):
+    """The ratbez.Solid of a RatBez solid feature, rebuilt from its current properties, in the object's
+    local coordinates (its Placement not applied). Raises ratbez.Error / ValueError on bad input."""
+    if not is_solid(obj):
+        raise TypeError("'{}' is not a RatBez solid".format(getattr(obj, "Label", obj)))
+    return features.proxy_of(obj).build_solid(obj)
+
+
+def _placement_matrix_rows(placement):
+    m = placement.toMatrix()
+    return [[m.A11, m.A12, m.A13, m.A14], [m.A21, m.A22, m.A23, m.A24],
+            [m.A31, m.A32, m.A33, m.A34], [0.0, 0.0, 0.0, 1.0]]
+
+
+def export_openscad(obj, path, tolerance=None):
+    """Write the solid of a RatBez feature to `path` as an OpenSCAD polyhedron (ratbez.export_openscad,
+    a watertight mesh within `tolerance` of the exact surfaces; None: the kernel's default). A
+    non-identity Placement is kept as a multmatrix() around the polyhedron."""
+    solid = solid_of(obj)
+    rb = kernel.ratbez()
+    placement = obj.Placement
+    if placement.isIdentity():
+        rb.export_openscad(solid, path, tolerance)
+        return path
+    directory = os.path.dirname(os.path.abspath(path))
+    handle, temporary = tempfile.mkstemp(suffix=".scad", dir=directory)
+    os.close(handle)
+    try:
+        rb.export_openscad(solid, temporary, tolerance)
+        with open(temporary) as source:
+            body = source.read()
+    finally:
+        os.remove(temporary)
+    rows = ",\n  ".join("[" + ", ".join(repr(float(v)) for v in row) + "]"
+                        for row in _placement_matrix_rows(placement))
+    with open(path, "w") as target:
+        target.write("// RatBez '{}' with its FreeCAD Placement\nmultmatrix([\n  {}]) {{\n{}\n}}\n".format(
+            obj.Label, rows, body))
+    return path
+
+
+def check_occt(obj):
+    """ratbez.occt_check of the object's solid: a dict with at least valid, max_deviation, volume and
+    occt_volume."""
+    return dict(kernel.ratbez().occt_check(solid_of(obj)))
+
+
+def format_check_report(obj, report):
+    """A readable, multi-line text of a check_occt report."""
+    lines = ["RatBez OpenCASCADE check of '{}' ({}):".format(obj.Label, obj.Name)]
+    width = max((len(str(k)) for k in report), default=0)
+    for key, value in report.items():
+        if isinstance(value, float):
+            text = "{:.6g}".format(value)
+        elif isinstance(value, (list, tuple)):
+            text = "; ".join(str(v) for v in value) if value else "-"
+        else:
+            text = str(value)
+        lines.append("  {:<{}}  {}".format(str(key), width, text))
+    return "\n".join(lines) + "\n"
+
+
+def check_passed(report):
+    """Whether a check_occt report says the solid passed (valid, and 'passed' when present)."""
+    return bool(report.get("valid", False)) and bool(report.get("passed", True))
+
+
+def export(objects, filename):
+    """File > Export handler for *.scad (registered in Init.py): the first RatBez solid."""
+    solids = [o for o in objects if is_solid(o)]
+    if not solids:
+        App.Console.PrintError("RatBez: select a RatBez solid to export to OpenSCAD\n")
+        return
+    if len(solids) > 1:
+        App.Console.PrintWarning("RatBez: exporting only '{}'; export one solid per file\n".format(
+            solids[0].Label))
+    try:
+        export_openscad(solids[0], filename)
+        App.Console.PrintMessage("RatBez: wrote {}\n".format(filename))
+    except kernel.error_types() as error:
+        App.Console.PrintError("RatBez: export of '{}' failed: {}\n".format(solids[0].Label, error))

@@ -1,0 +1,37 @@
+"""Access to the compiled ratbez module.
+
+The module is installed next to this workbench (the Mod folder is on sys.path) or anywhere else on
+sys.path. It is imported on first use, so FreeCAD starts even when it is missing, and every feature
+then fails with one clear message instead of a traceback at start-up.
+"""
+
+_module = None
+
+
+class KernelMissing(ImportError):
+    pass
+
+
+def ratbez():
+    """The ratbez module; raises KernelMissing with an installation hint when it cannot be imported."""
+    global _module
+    if _module is None:
+        try:
+            import ratbez as module
+        except ImportError as error:
+            raise KernelMissing(
+                "the compiled kernel module 'ratbez' cannot be imported ({}). Install it with "
+                "'cmake --install <build> --component freecad' so that it lies next to the RatBez "
+                "workbench.".format(error)) from error
+        _module = module
+    return _module
+
+
+def error_types():
+    """The exception types that mean 'bad input' (reported to the user, not a bug)."""
+    types = [ValueError, TypeError, KernelMissing]
+    try:
+        types.insert(0, ratbez().Error)
+    except KernelMissing:
+        pass
+    return tuple(types)
