@@ -1,0 +1,321 @@
+// Checking a solid against OpenCASCADE (check.hpp): BRepCheck validity and closedness of the converted
+// B-rep, our evaluation against OCCT's evaluation of the converted geometry, our points against OCCT's
+// analytic surface of the primitive, and volumes and areas (ours, OCCT's BRepGProp, closed form).
+
+#include "ratbez/occt/check.hpp"
+
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepCheck_Shell.hxx>
+#include <BRepGProp.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <GeomAdaptor_Surface.hxx>
+#include <Geom_ConicalSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_Plane.hxx>
+#include <Geom_SphericalSurface.hxx>
+#include <Geom_SurfaceOfRevolution.hxx>
+#include <Geom_ToroidalSurface.hxx>
+#include <Precision.hxx>
+#include <ShapeAnalysis_FreeBounds.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Trsf.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <numbers>
+#include <sstream>
+
+#include "ratbez/error.hpp"
+#include "ratbez/occt/geometry.hpp"
+#include "ratbez/occt/topology.hpp"
+
+namespace ratbez::occt {
+namespace {
+
+constexpr double kPropertiesEps = 1e-9;  // BRepGProp's default is 4e-4 relative on B-spline faces (SETUP-NOTES)
+
+std::string number(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", value);
+    return buffer;
+}
+
+int count_edges(const TopoDS_Shape& shape) {
+    int n = 0;
+    for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next()) ++n;
+    return n;
+}
+
+// Closed: BRepCheck_Shell finds no free edge, and ShapeAnalysis_FreeBounds finds no free boundary.
+bool is_closed(const ConvertedSolid& converted) {
+    BRepCheck_Shell shell_check(converted.shell);
+    if (shell_check.Closed() != BRepCheck_NoError) return false;
+    ShapeAnalysis_FreeBounds free_bounds(converted.solid);
+    return count_edges(free_bounds.GetClosedWires()) == 0 && count_edges(free_bounds.GetOpenWires()) == 0;
+}
+
+// Samples t_0 .. t_{n-1} over [a, b], both ends included.
+double sample(double a, double b, int i, int n) { return i == n - 1 ? b : a + (b - a) * i / (n - 1); }
+
+// Largest |ours - OCCT D0| over the grid of every face and the samples of every edge.
+double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted, int grid) {
+    double worst = 0;
+    for (std::size_t f = 0; f < solid.faces().size(); ++f) {
+        const Face& face = solid.faces()[f];
+        const NurbsSurface& surface = face.surface();
+        const Interval du = surface.domain_u(), dv = surface.domain_v();
+        const Handle(Geom_Surface) occt_surface = BRep_Tool::Surface(converted.faces[f]);
+        const GeomAdaptor_Surface adaptor(occt_surface);
+        const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(occt_surface);
+        for (int i = 0; i < grid; ++i)
+            for (int j = 0; j < grid; ++j) {
+                const double u = sample(du.min, du.max, i, grid), v = sample(dv.min, dv.max, j, grid);
+                const Vec3 ours = surface.point(u, v);
+                if (face.kind() == Face::Kind::planar) {
+                    // Our plane patch against OCCT's plane: the distance from it (the patch's own (u, v)
+                    // are not the plane's).
+                    worst = std::max(worst, plane->Pln().Distance(to_occt_point(ours)));
+                } else {
+                    worst = std::max(worst, distance(ours, from_occt(adaptor.Value(u, v))));
+                }
+            }
+    }
+    for (const auto& [edge, occt_edge] : converted.edges) {
+        double first = 0, last = 0;
+        const Handle(Geom_Curve) curve = BRep_Tool::Curve(occt_edge, first, last);
+        const GeomAdaptor_Curve adaptor(curve, first, last);
+        for (int i = 0; i < grid; ++i) {
+            const double t = sample(first, last, i, grid);
+            worst = std::max(worst, distance(edge->curve.point(t), from_occt(adaptor.Value(t))));
+        }
+    }
+    return worst;
+}
+
+// The distance from a point to OCCT's analytic surface of the primitive. Closed forms in the surface's
+// own gp_Ax3 (exact for these quadrics and the torus); GeomAPI_ProjectPointOnSurf for revolutions.
+class AnalyticDistance {
+public:
+    explicit AnalyticDistance(const AnalyticShape& shape) : shape_(shape) {
+        const Vec3 axis = shape.axis / norm(shape.axis);
+        const gp_Ax3 frame(to_occt_point(shape.center), gp_Dir(axis.x, axis.y, axis.z));
+        switch (shape.kind) {
+            case AnalyticShape::Kind::cylinder:
+                surface_ = new Geom_CylindricalSurface(frame, shape.radius1);
+                break;
+            case AnalyticShape::Kind::cone:
+                if (shape.radius1 == shape.radius2) {
+                    surface_ = new Geom_CylindricalSurface(frame, shape.radius1);
+                } else {
+                    surface_ = new Geom_ConicalSurface(frame, std::atan2(shape.radius2 - shape.radius1, shape.height),
+                                                       shape.radius1);
+                }
+                break;
+            case AnalyticShape::Kind::sphere:
+                surface_ = new Geom_SphericalSurface(frame, shape.radius1);
+                break;
+            case AnalyticShape::Kind::torus:
+                surface_ = new Geom_ToroidalSurface(frame, shape.radius1, shape.radius2);
+                break;
+            case AnalyticShape::Kind::revolution:
+            case AnalyticShape::Kind::none:
+                break;
+        }
+        if (!surface_.IsNull()) {
+            const Handle(Geom_ElementarySurface) elementary = Handle(Geom_ElementarySurface)::DownCast(surface_);
+            to_local_.SetTransformation(elementary->Position());  // global -> the surface's frame
+        }
+    }
+
+    // For a revolution: the surface of revolution of the face's own profile (its isocurve at the start of
+    // the rotation, converted to OCCT) about the given axis.
+    void set_face(const Face& face) {
+        if (shape_.kind != AnalyticShape::Kind::revolution) return;
+        const NurbsSurface& surface = face.surface();
+        const Handle(Geom_Curve) profile = to_occt(surface.isocurve_u(surface.domain_u().min));
+        const Vec3 axis = shape_.axis / norm(shape_.axis);
+        surface_ = new Geom_SurfaceOfRevolution(profile, gp_Ax1(to_occt_point(shape_.center), gp_Dir(axis.x, axis.y, axis.z)));
+        double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+        surface_->Bounds(u0, u1, v0, v1);
+        projector_.emplace();
+        projector_->Init(surface_, u0, u1, v0, v1, Precision::Confusion());
+    }
+
+    // Distance of p to the analytic surface; nullopt when the projection fails.
+    std::optional<double> operator()(const Vec3& p) {
+        if (shape_.kind == AnalyticShape::Kind::revolution) {
+            projector_->Perform(to_occt_point(p));
+            if (!projector_->IsDone() || projector_->NbPoints() == 0) return std::nullopt;
+            return projector_->LowerDistance();
+        }
+        const gp_Pnt local = to_occt_point(p).Transformed(to_local_);
+        const double rho = std::hypot(local.X(), local.Y()), z = local.Z();
+        if (const auto cylinder = Handle(Geom_CylindricalSurface)::DownCast(surface_); !cylinder.IsNull())
+            return std::abs(rho - cylinder->Radius());
+        if (const auto cone = Handle(Geom_ConicalSurface)::DownCast(surface_); !cone.IsNull()) {
+            // In the meridian half-plane the cone is the line through (RefRadius, 0) along (sin a, cos a).
+            const double a = cone->SemiAngle();
+            return std::abs((rho - cone->RefRadius()) * std::cos(a) - z * std::sin(a));
+        }
+        if (const auto sphere = Handle(Geom_SphericalSurface)::DownCast(surface_); !sphere.IsNull())
+            return std::abs(std::hypot(rho, z) - sphere->Radius());
+        const auto torus = Handle(Geom_ToroidalSurface)::DownCast(surface_);
+        return std::abs(std::hypot(rho - torus->MajorRadius(), z) - torus->MinorRadius());
+    }
+
+private:
+    const AnalyticShape& shape_;
+    Handle(Geom_Surface) surface_;
+    gp_Trsf to_local_;
+    std::optional<GeomAPI_ProjectPointOnSurf> projector_;
+};
+
+std::optional<double> closed_form_volume(const AnalyticShape& shape) {
+    if (shape.closed_form_volume) return shape.closed_form_volume;
+    const double pi = std::numbers::pi;
+    switch (shape.kind) {
+        case AnalyticShape::Kind::cylinder:
+            return pi * shape.radius1 * shape.radius1 * shape.height;
+        case AnalyticShape::Kind::cone:
+            return pi * shape.height *
+                   (shape.radius1 * shape.radius1 + shape.radius1 * shape.radius2 + shape.radius2 * shape.radius2) / 3;
+        case AnalyticShape::Kind::sphere:
+            return 4.0 / 3.0 * pi * shape.radius1 * shape.radius1 * shape.radius1;
+        case AnalyticShape::Kind::torus:
+            return 2 * pi * pi * shape.radius1 * shape.radius2 * shape.radius2;
+        case AnalyticShape::Kind::revolution:
+        case AnalyticShape::Kind::none:
+            return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+void validate(const CheckOptions& options) {
+    require(options.grid >= 2, "options.grid", "must be at least 2");
+    require(std::isfinite(options.deviation_limit) && options.deviation_limit > 0, "options.deviation_limit",
+            "must be a finite number greater than 0");
+    require(std::isfinite(options.volume_limit) && options.volume_limit > 0, "options.volume_limit",
+            "must be a finite number greater than 0");
+    const AnalyticShape& a = options.analytic;
+    if (a.kind == AnalyticShape::Kind::none) return;
+    require(is_finite(a.center), "options.analytic.center", "must have finite coordinates");
+    require(is_finite(a.axis) && norm(a.axis) > 0, "options.analytic.axis", "must be a finite non-zero vector");
+    const bool needs_radius1 = a.kind != AnalyticShape::Kind::revolution;
+    if (needs_radius1)
+        require(std::isfinite(a.radius1) && (a.radius1 > 0 || (a.kind == AnalyticShape::Kind::cone && a.radius1 == 0)),
+                "options.analytic.radius1", "must be greater than 0");
+    if (a.kind == AnalyticShape::Kind::cone || a.kind == AnalyticShape::Kind::torus)
+        require(std::isfinite(a.radius2) && a.radius2 >= 0 && (a.kind == AnalyticShape::Kind::cone || a.radius2 > 0),
+                "options.analytic.radius2", "must be greater than 0");
+    if (a.kind == AnalyticShape::Kind::cylinder || a.kind == AnalyticShape::Kind::cone)
+        require(std::isfinite(a.height) && a.height > 0, "options.analytic.height", "must be greater than 0");
+}
+
+double relative_difference(double a, double b) { return std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
+
+}  // namespace
+
+CheckReport check(const Solid& solid, const CheckOptions& options) {
+    validate(options);
+    CheckReport report;
+    report.size = solid.bounding_box().diagonal();
+    const ConvertedSolid converted = convert(solid);
+
+    try {
+        report.valid = BRepCheck_Analyzer(converted.solid).IsValid();
+        report.closed = is_closed(converted);
+        report.max_deviation = evaluation_deviation(solid, converted, options.grid);
+
+        if (options.analytic.kind != AnalyticShape::Kind::none) {
+            AnalyticDistance analytic(options.analytic);
+            double worst = 0;
+            bool projected = true;
+            for (const Face& face : solid.faces()) {
+                if (face.kind() != Face::Kind::surface) continue;  // caps and end faces are planes
+                analytic.set_face(face);
+                const Interval du = face.surface().domain_u(), dv = face.surface().domain_v();
+                for (int i = 0; i < options.grid; ++i)
+                    for (int j = 0; j < options.grid; ++j) {
+                        const auto d = analytic(face.point(sample(du.min, du.max, i, options.grid),
+                                                           sample(dv.min, dv.max, j, options.grid)));
+                        if (d) worst = std::max(worst, *d);
+                        else projected = false;
+                    }
+            }
+            report.max_analytic_deviation = worst;
+            if (!projected) report.failures.push_back("analytic surface: the projection failed for some points");
+        }
+
+        GProp_GProps volume_properties, area_properties;
+        BRepGProp::VolumeProperties(converted.solid, volume_properties, kPropertiesEps);
+        BRepGProp::SurfaceProperties(converted.solid, area_properties, kPropertiesEps);
+        report.occt_volume = volume_properties.Mass();
+        report.occt_area = area_properties.Mass();
+    } catch (const Standard_Failure& failure) {
+        const char* message = failure.GetMessageString();
+        report.failures.push_back(std::string("OpenCASCADE raised ") + failure.DynamicType()->Name() +
+                                  (message && *message ? std::string(": ") + message : std::string()));
+    }
+    report.volume = solid.volume();
+    report.area = solid.area();
+    report.closed_form_volume = closed_form_volume(options.analytic);
+
+    const double deviation_limit = options.deviation_limit * report.size;
+    if (!report.valid) report.failures.push_back("BRepCheck_Analyzer: the converted B-rep is not valid");
+    if (!report.closed) report.failures.push_back("the converted shell is not closed (free edges)");
+    if (!(report.max_deviation <= deviation_limit))
+        report.failures.push_back("evaluation deviation " + number(report.max_deviation) + " exceeds " +
+                                  number(deviation_limit));
+    if (report.max_analytic_deviation && !(*report.max_analytic_deviation <= deviation_limit))
+        report.failures.push_back("analytic surface deviation " + number(*report.max_analytic_deviation) +
+                                  " exceeds " + number(deviation_limit));
+    if (!(relative_difference(report.volume, report.occt_volume) <= options.volume_limit))
+        report.failures.push_back("volume " + number(report.volume) + " differs from OCCT's " +
+                                  number(report.occt_volume));
+    if (!(relative_difference(report.area, report.occt_area) <= options.volume_limit))
+        report.failures.push_back("area " + number(report.area) + " differs from OCCT's " + number(report.occt_area));
+    if (report.closed_form_volume && !(relative_difference(report.volume, *report.closed_form_volume) <= options.volume_limit))
+        report.failures.push_back("volume " + number(report.volume) + " differs from the closed form " +
+                                  number(*report.closed_form_volume));
+    report.passed = report.failures.empty();
+    return report;
+}
+
+std::string format_report(const CheckReport& report) {
+    std::ostringstream out;
+    const auto row = [&](const std::string& name, const std::string& value, std::optional<bool> ok) {
+        out << "  " << name;
+        for (std::size_t k = name.size(); k < 30; ++k) out << ' ';
+        out << value;
+        for (std::size_t k = value.size(); k < 28; ++k) out << ' ';
+        out << (ok ? (*ok ? "PASS" : "FAIL") : "") << '\n';
+    };
+    const auto relative = [&](double a, double b) { return number(relative_difference(a, b)); };
+    out << "OpenCASCADE check: " << (report.passed ? "PASSED" : "FAILED") << '\n';
+    row("BRepCheck valid", report.valid ? "yes" : "no", report.valid);
+    row("shell closed", report.closed ? "yes" : "no", report.closed);
+    row("size (box diagonal)", number(report.size), std::nullopt);
+    row("max |ours - OCCT D0|", number(report.max_deviation), std::nullopt);
+    if (report.max_analytic_deviation) row("max analytic distance", number(*report.max_analytic_deviation), std::nullopt);
+    row("volume (ours)", number(report.volume), std::nullopt);
+    row("volume (OCCT)", number(report.occt_volume) + " rel " + relative(report.volume, report.occt_volume), std::nullopt);
+    if (report.closed_form_volume)
+        row("volume (closed form)",
+            number(*report.closed_form_volume) + " rel " + relative(report.volume, *report.closed_form_volume), std::nullopt);
+    row("area (ours)", number(report.area), std::nullopt);
+    row("area (OCCT)", number(report.occt_area) + " rel " + relative(report.area, report.occt_area), std::nullopt);
+    for (const std::string& failure : report.failures) out << "  FAIL: " << failure << '\n';
+    return out.str();
+}
+
+}  // namespace ratbez::occt

@@ -1,0 +1,96 @@
+// Writing solids through OpenCASCADE: STEP (AP214) and the native .brep text.
+
+#include "ratbez/occt/files.hpp"
+
+#include <BRepTools.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <STEPControl_StepModelType.hxx>
+#include <STEPControl_Writer.hxx>
+#include <Standard_Failure.hxx>
+
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+#include "ratbez/error.hpp"
+#include "ratbez/occt/topology.hpp"
+
+namespace ratbez::occt {
+namespace {
+
+// STEPControl_Writer prints statistics through the default messenger's stdout printer. Detach the
+// ostream printers while writing and put them back afterwards, so the caller's own OCCT messages are
+// not silenced for good (SETUP-NOTES). OCCT's messenger is global: one writer at a time.
+class QuietMessenger {
+public:
+    QuietMessenger() : lock_(mutex()) {
+        const Handle(Message_Messenger)& messenger = Message::DefaultMessenger();
+        for (Message_SequenceOfPrinters::Iterator it(messenger->Printers()); it.More(); it.Next())
+            if (it.Value()->IsKind(STANDARD_TYPE(Message_PrinterOStream))) removed_.Append(it.Value());
+        messenger->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+    }
+    ~QuietMessenger() {
+        const Handle(Message_Messenger)& messenger = Message::DefaultMessenger();
+        for (Message_SequenceOfPrinters::Iterator it(removed_); it.More(); it.Next()) messenger->AddPrinter(it.Value());
+    }
+    QuietMessenger(const QuietMessenger&) = delete;
+    QuietMessenger& operator=(const QuietMessenger&) = delete;
+
+private:
+    static std::mutex& mutex() {
+        static std::mutex m;
+        return m;
+    }
+    std::lock_guard<std::mutex> lock_;
+    Message_SequenceOfPrinters removed_;
+};
+
+// OCCT's writers report an unwritable file only as a status; check the path first to say why.
+void require_writable(const std::string& path) {
+    require(!path.empty(), "path", "must not be empty");
+    const std::filesystem::path p(path);
+    std::error_code ec;
+    require(!std::filesystem::is_directory(p, ec), "path", "'" + path + "' is a directory");
+    const std::filesystem::path parent = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+    require(std::filesystem::is_directory(parent, ec), "path",
+            "the directory of '" + path + "' does not exist");
+}
+
+}  // namespace
+
+void write_step(const Solid& solid, const std::string& path) {
+    require_writable(path);
+    const TopoDS_Solid shape = to_occt(solid);
+    QuietMessenger quiet;
+    try {
+        STEPControl_Writer writer;  // its constructor initialises the STEP statics (STEPControl_Controller::Init)
+        Interface_Static::SetCVal("write.step.schema", "AP214IS");
+        require(writer.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone, "solid",
+                "OpenCASCADE could not translate it to STEP");
+        require(writer.Write(path.c_str()) == IFSelect_RetDone, "path", "cannot write '" + path + "'");
+    } catch (const Standard_Failure& failure) {
+        throw Error(std::string("path: writing STEP to '") + path + "' failed: " + failure.GetMessageString());
+    }
+}
+
+void write_brep(const Solid& solid, const std::string& path) {
+    require_writable(path);
+    const TopoDS_Solid shape = to_occt(solid);
+    require(BRepTools::Write(shape, path.c_str()), "path", "cannot write '" + path + "'");
+}
+
+std::string brep_string(const Solid& solid) {
+    std::ostringstream out;
+    // BRepTools::Write(shape, file) starts the file with this line (the Draw shape tag) and the stream
+    // version does not; write it so the string is exactly the file's text. Both readers accept either.
+    out << "DBRep_DrawableShape\n";
+    BRepTools::Write(to_occt(solid), out);
+    return out.str();
+}
+
+}  // namespace ratbez::occt

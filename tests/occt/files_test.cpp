@@ -1,0 +1,135 @@
+// Writing solids: STEP round trip through STEPControl_Reader, .brep files and strings, and errors for
+// unwritable paths.
+
+#include <gtest/gtest.h>
+
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <STEPControl_Reader.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shape.hxx>
+
+#include <filesystem>
+#include <functional>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "occt_test_support.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/occt/files.hpp"
+#include "ratbez/primitives.hpp"
+#include "ratbez/profile.hpp"
+#include "ratbez/revolve.hpp"
+
+namespace ratbez::occt {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Files : public ::testing::Test {
+protected:
+    void SetUp() override {
+        directory_ = fs::temp_directory_path() /
+                     ("ratbez_occt_files_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::create_directories(directory_);
+    }
+    void TearDown() override { fs::remove_all(directory_); }
+    std::string path(const std::string& name) const { return (directory_ / name).string(); }
+
+    fs::path directory_;
+};
+
+double occt_volume(const TopoDS_Shape& shape) {
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(shape, props, 1e-9);
+    return props.Mass();
+}
+
+int count_solids(const TopoDS_Shape& shape) {
+    int n = 0;
+    for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) ++n;
+    return n;
+}
+
+std::vector<std::pair<std::string, Solid>> solids() {
+    std::vector<std::pair<std::string, Solid>> out;
+    out.emplace_back("sphere", sphere(2));
+    out.emplace_back("torus", torus(3, 1, {1, 2, 3}, {1, 0, 1}));
+    out.emplace_back("cone", cone(2, 0.5, 3));
+    out.emplace_back("vase 270", revolve(Profile::from_beziers({BezierCurve({{0, 0, 0}, {4, 0, 0.5}, {0.5, 0, 3}, {0, 0, 4}},
+                                                                             {1, 0.5, 2, 1})}),
+                                         {}, {0, 0, 1}, 270));
+    return out;
+}
+
+TEST_F(Files, StepRoundTripGivesTheSameValidSolid) {
+    testing::MaxTracker tracker("STEP round trip: max |V_read - V_ours| / V");
+    for (const auto& [name, solid] : solids()) {
+        const std::string file = path(name + ".step");
+        ::testing::internal::CaptureStdout();
+        write_step(solid, file);
+        const std::string printed = ::testing::internal::GetCapturedStdout();
+        EXPECT_EQ(printed, "") << "the STEP writer must be silent";
+        ASSERT_TRUE(fs::exists(file));
+
+        STEPControl_Reader reader;
+        ASSERT_EQ(reader.ReadFile(file.c_str()), IFSelect_RetDone) << name;
+        ASSERT_GT(reader.TransferRoots(), 0) << name;
+        const TopoDS_Shape shape = reader.OneShape();
+        ASSERT_EQ(count_solids(shape), 1) << name;
+        EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid()) << name;
+        const double volume = solid.volume();
+        tracker.add(std::abs(occt_volume(shape) - volume) / volume);
+        EXPECT_NEAR(occt_volume(shape), volume, 1e-6 * volume) << name;
+    }
+}
+
+TEST_F(Files, BrepFileAndStringReadBack) {
+    const Solid solid = torus(3, 1);
+    const std::string file = path("torus.brep");
+    write_brep(solid, file);
+    BRep_Builder builder;
+    TopoDS_Shape from_file;
+    ASSERT_TRUE(BRepTools::Read(from_file, file.c_str(), builder));
+    EXPECT_EQ(count_solids(from_file), 1);
+    EXPECT_TRUE(BRepCheck_Analyzer(from_file).IsValid());
+    EXPECT_NEAR(occt_volume(from_file), solid.volume(), 1e-6 * solid.volume());
+
+    const std::string text = brep_string(solid);
+    EXPECT_EQ(text.rfind("DBRep_DrawableShape", 0), 0u) << "OCCT's .brep header";
+    std::ifstream in(file);
+    std::stringstream whole;
+    whole << in.rdbuf();
+    EXPECT_EQ(text, whole.str()) << "the string is the file's text";
+    std::istringstream stream(text);
+    TopoDS_Shape from_string;
+    BRepTools::Read(from_string, stream, builder);
+    EXPECT_EQ(count_solids(from_string), 1);
+    EXPECT_NEAR(occt_volume(from_string), solid.volume(), 1e-6 * solid.volume());
+}
+
+void expect_path_error(const std::function<void()>& write) {
+    try {
+        write();
+        FAIL() << "an unwritable path must throw";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("path", 0), 0u) << e.what();
+    }
+}
+
+TEST_F(Files, UnwritablePathsThrowNamingPath) {
+    const Solid solid = sphere(1);
+    expect_path_error([&] { write_step(solid, path("missing/dir/out.step")); });
+    expect_path_error([&] { write_brep(solid, path("missing/dir/out.brep")); });
+    expect_path_error([&] { write_step(solid, directory_.string()); });
+    expect_path_error([&] { write_brep(solid, ""); });
+}
+
+}  // namespace
+}  // namespace ratbez::occt

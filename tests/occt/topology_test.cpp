@@ -1,0 +1,232 @@
+// Solids -> TopoDS_Solid: every primitive, full and partial revolutions of several profiles and
+// extrusions are BRepCheck-valid and closed, and OCCT's volume and area (BRepGProp, eps 1e-9) equal ours
+// to 1e-6 relative; OCCT's own primitives (BRepPrimAPI) have the same volumes.
+
+#include <gtest/gtest.h>
+
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepCheck_Shell.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <ShapeAnalysis_FreeBounds.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <gp_Ax2.hxx>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "occt_test_support.hpp"
+#include "ratbez/curves.hpp"
+#include "ratbez/extrude.hpp"
+#include "ratbez/occt/geometry.hpp"
+#include "ratbez/occt/topology.hpp"
+#include "ratbez/primitives.hpp"
+#include "ratbez/profile.hpp"
+#include "ratbez/revolve.hpp"
+
+namespace ratbez::occt {
+namespace {
+
+using testing::MaxTracker;
+constexpr double kPi = std::numbers::pi;
+constexpr double kPropertiesEps = 1e-9;
+
+MaxTracker& volume_tracker() {
+    static MaxTracker tracker("solids: max |V_ours - V_OCCT| / V");
+    return tracker;
+}
+MaxTracker& area_tracker() {
+    static MaxTracker tracker("solids: max |A_ours - A_OCCT| / A");
+    return tracker;
+}
+
+int count(const TopoDS_Shape& shape, TopAbs_ShapeEnum type) {
+    TopTools_IndexedMapOfShape map;
+    TopExp::MapShapes(shape, type, map);
+    return map.Extent();
+}
+
+double occt_volume(const TopoDS_Shape& shape) {
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(shape, props, kPropertiesEps);
+    return props.Mass();
+}
+
+double occt_area(const TopoDS_Shape& shape) {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(shape, props, kPropertiesEps);
+    return props.Mass();
+}
+
+// Everything a valid closed solid must satisfy in OCCT; returns OCCT's volume.
+double expect_valid_closed_solid(const Solid& solid, const std::string& name) {
+    SCOPED_TRACE(name);
+    const ConvertedSolid converted = convert(solid);
+    BRepCheck_Analyzer analyzer(converted.solid);
+    EXPECT_TRUE(analyzer.IsValid()) << name << ": BRepCheck_Analyzer reports an invalid shape";
+
+    BRepCheck_Shell shell_check(converted.shell);
+    EXPECT_EQ(shell_check.Closed(), BRepCheck_NoError);
+    EXPECT_EQ(shell_check.Orientation(), BRepCheck_NoError);
+    ShapeAnalysis_FreeBounds free_bounds(converted.solid);
+    EXPECT_EQ(count(free_bounds.GetClosedWires(), TopAbs_EDGE), 0);
+    EXPECT_EQ(count(free_bounds.GetOpenWires(), TopAbs_EDGE), 0);
+
+    // Topology one to one: faces, proper edges (+ one degenerate edge per degenerate side), vertices.
+    EXPECT_EQ(count(converted.solid, TopAbs_FACE), static_cast<int>(solid.faces().size()));
+    int degenerate_sides = 0;
+    for (const Face& face : solid.faces())
+        if (face.kind() == Face::Kind::surface)
+            for (const Coedge& c : face.sides()) degenerate_sides += c.edge->degenerate ? 1 : 0;
+    int proper_edges = 0;
+    for (const EdgePtr& e : solid.edges()) proper_edges += e->degenerate ? 0 : 1;
+    EXPECT_EQ(count(converted.solid, TopAbs_EDGE), proper_edges + degenerate_sides);
+    EXPECT_EQ(count(converted.solid, TopAbs_VERTEX), static_cast<int>(solid.vertices().size()));
+
+    // Outward: a point far away is outside, and OCCT's volume is positive.
+    const Solid::Box box = solid.bounding_box();
+    BRepClass3d_SolidClassifier classifier(converted.solid);
+    const Vec3 far = box.max + Vec3{1, 1, 1} * box.diagonal();
+    classifier.Perform(to_occt_point(far), 1e-7);
+    EXPECT_EQ(classifier.State(), TopAbs_OUT);
+
+    const double volume = solid.volume(), area = solid.area();
+    const double their_volume = occt_volume(converted.solid), their_area = occt_area(converted.solid);
+    volume_tracker().add(std::abs(volume - their_volume) / volume);
+    area_tracker().add(std::abs(area - their_area) / area);
+    EXPECT_NEAR(their_volume, volume, 1e-6 * volume);
+    EXPECT_NEAR(their_area, area, 1e-6 * area);
+    return their_volume;
+}
+
+double occt_primitive_volume(const TopoDS_Shape& shape) { return occt_volume(shape); }
+
+gp_Ax2 frame_of(const Vec3& center, const Vec3& axis) {
+    const Vec3 a = axis / norm(axis);
+    return gp_Ax2(to_occt_point(center), gp_Dir(a.x, a.y, a.z));
+}
+
+TEST(Topology, CylinderIsValidAndMatchesBRepPrimAPI) {
+    const Vec3 center{1, -2, 0.5}, axis{1, 2, 3};
+    const Solid ours = cylinder(2, 5, center, axis);
+    const double volume = expect_valid_closed_solid(ours, "cylinder");
+    EXPECT_NEAR(volume, kPi * 4 * 5, 1e-6 * volume);
+    const double theirs = occt_primitive_volume(BRepPrimAPI_MakeCylinder(frame_of(center, axis), 2, 5).Shape());
+    EXPECT_NEAR(ours.volume(), theirs, 1e-6 * theirs);
+}
+
+TEST(Topology, ConesAreValidAndMatchBRepPrimAPI) {
+    struct Case {
+        double r1, r2, h;
+    };
+    for (const Case c : {Case{2, 1, 3}, Case{1, 2.5, 2}, Case{2, 0, 3}, Case{0, 1.5, 2}}) {
+        const Vec3 center{0.5, 0, -1}, axis{0, 1, 1};
+        const Solid ours = cone(c.r1, c.r2, c.h, center, axis);
+        const std::string name = "cone r1=" + std::to_string(c.r1) + " r2=" + std::to_string(c.r2);
+        const double volume = expect_valid_closed_solid(ours, name);
+        const double closed_form = kPi * c.h * (c.r1 * c.r1 + c.r1 * c.r2 + c.r2 * c.r2) / 3;
+        EXPECT_NEAR(volume, closed_form, 1e-6 * closed_form) << name;
+        const double theirs = occt_primitive_volume(BRepPrimAPI_MakeCone(frame_of(center, axis), c.r1, c.r2, c.h).Shape());
+        EXPECT_NEAR(ours.volume(), theirs, 1e-6 * theirs) << name;
+    }
+}
+
+TEST(Topology, SphereIsValidWithPolesAndMatchesBRepPrimAPI) {
+    const Vec3 center{3, 1, -2};
+    const Solid ours = sphere(2.5, center);
+    const double volume = expect_valid_closed_solid(ours, "sphere");
+    EXPECT_NEAR(volume, 4.0 / 3.0 * kPi * std::pow(2.5, 3), 1e-6 * volume);
+    const double theirs = occt_primitive_volume(BRepPrimAPI_MakeSphere(to_occt_point(center), 2.5).Shape());
+    EXPECT_NEAR(ours.volume(), theirs, 1e-6 * theirs);
+
+    // One face, one seam and two degenerate pole edges, two vertices: OCCT's own sphere has the same.
+    const TopoDS_Solid solid = to_occt(ours);
+    EXPECT_EQ(count(solid, TopAbs_FACE), 1);
+    EXPECT_EQ(count(solid, TopAbs_EDGE), 3);
+    EXPECT_EQ(count(solid, TopAbs_VERTEX), 2);
+    int degenerated = 0;
+    for (TopExp_Explorer it(solid, TopAbs_EDGE); it.More(); it.Next())
+        degenerated += BRep_Tool::Degenerated(TopoDS::Edge(it.Current())) ? 1 : 0;
+    EXPECT_EQ(degenerated, 2) << "each pole edge appears once in the face's wire";
+}
+
+TEST(Topology, TorusIsValidWithTwoSeamsAndMatchesBRepPrimAPI) {
+    const Vec3 center{-1, 0, 2}, axis{0.3, -0.2, 1};
+    const Solid ours = torus(5, 1.5, center, axis);
+    const double volume = expect_valid_closed_solid(ours, "torus");
+    EXPECT_NEAR(volume, 2 * kPi * kPi * 5 * 1.5 * 1.5, 1e-6 * volume);
+    const double theirs = occt_primitive_volume(BRepPrimAPI_MakeTorus(frame_of(center, axis), 5, 1.5).Shape());
+    EXPECT_NEAR(ours.volume(), theirs, 1e-6 * theirs);
+    const TopoDS_Solid solid = to_occt(ours);
+    EXPECT_EQ(count(solid, TopAbs_FACE), 1);
+    EXPECT_EQ(count(solid, TopAbs_EDGE), 2);
+    EXPECT_EQ(count(solid, TopAbs_VERTEX), 1);
+    for (TopExp_Explorer it(solid, TopAbs_EDGE); it.More(); it.Next())
+        EXPECT_TRUE(BRep_Tool::IsClosed(TopoDS::Edge(it.Current()), TopoDS::Face(TopExp_Explorer(solid, TopAbs_FACE).Current())))
+            << "both torus edges are seams";
+}
+
+// A vase: a rational cubic Bézier from the axis out and back to the axis, in the xz plane.
+Profile vase_profile() {
+    return Profile::from_beziers({BezierCurve({{0, 0, 0}, {4, 0, 0.5}, {0.5, 0, 3}, {0, 0, 4}}, {1, 0.5, 2, 1})});
+}
+
+// A ring section: a closed profile of four pieces away from the axis (lines and a rational bulge).
+Profile ring_profile() {
+    return Profile({line_segment({2, 0, 0}, {4, 0, 0}),
+                    NurbsCurve::from_bezier(BezierCurve({{4, 0, 0}, {5.5, 0, 1}, {4, 0, 2}}, {1, 0.6, 1})),
+                    line_segment({4, 0, 2}, {2, 0, 2}), line_segment({2, 0, 2}, {2, 0, 0})});
+}
+
+TEST(Topology, FullAndPartialRevolutionsOfAVaseAreValid) {
+    const double full = expect_valid_closed_solid(revolve(vase_profile()), "vase 360");
+    for (double angle : {90.0, 180.0, 270.0}) {
+        const double partial = expect_valid_closed_solid(revolve(vase_profile(), {}, {0, 0, 1}, angle),
+                                                         "vase " + std::to_string(angle));
+        EXPECT_NEAR(partial, full * angle / 360.0, 1e-6 * full) << angle;
+    }
+}
+
+TEST(Topology, FullAndPartialRevolutionsOfAClosedMultiPieceProfileAreValid) {
+    const double full = expect_valid_closed_solid(revolve(ring_profile()), "ring 360");
+    for (double angle : {90.0, 180.0, 270.0}) {
+        const double partial = expect_valid_closed_solid(revolve(ring_profile(), {}, {0, 0, 1}, angle),
+                                                         "ring " + std::to_string(angle));
+        EXPECT_NEAR(partial, full * angle / 360.0, 1e-6 * full) << angle;
+    }
+    // A triangle ring: one piece per side, lines only.
+    const double triangle = expect_valid_closed_solid(
+        revolve(Profile({line_segment({2, 0, 0}, {4, 0, 0}), line_segment({4, 0, 0}, {3, 0, 2}),
+                         line_segment({3, 0, 2}, {2, 0, 0})}),
+                {0, 0, 0}, {0, 0, 1}, 360.0),
+        "triangle ring");
+    // Pappus: area of the triangle (2) times the path of its centroid (x = 3).
+    EXPECT_NEAR(triangle, 2.0 * 2 * kPi * 3.0, 1e-6 * triangle);
+}
+
+TEST(Topology, ExtrusionsAreValid) {
+    // A circle extruded obliquely: volume = base area times height along the normal.
+    const double cylinder_like =
+        expect_valid_closed_solid(extrude(Profile({circle(1.5, {0, 0, 0}, {0, 0, 1})}), {0.2, 0.1, 1}, 3), "extruded circle");
+    const Vec3 d = Vec3{0.2, 0.1, 1} / norm(Vec3{0.2, 0.1, 1}) * 3.0;
+    EXPECT_NEAR(cylinder_like, kPi * 1.5 * 1.5 * d.z, 1e-6 * cylinder_like);
+    // A multi-piece profile: a square with one rational side.
+    const Profile rounded({line_segment({0, 0, 0}, {2, 0, 0}),
+                           NurbsCurve::from_bezier(BezierCurve({{2, 0, 0}, {3, 1, 0}, {2, 2, 0}}, {1, 0.8, 1})),
+                           line_segment({2, 2, 0}, {0, 2, 0}), line_segment({0, 2, 0}, {0, 0, 0})});
+    expect_valid_closed_solid(extrude(rounded, {0, 0, 1}, 1.5), "extruded rounded square");
+}
+
+}  // namespace
+}  // namespace ratbez::occt
