@@ -48,6 +48,7 @@ public:
     Vec3 end_point() const { return point(domain().max); }
 
 private:
+    friend class NurbsSurface;  // builds its isocurves, columns and rows without re-validating them
     NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);
     int degree_ = 0;
     std::vector<double> knots_;
