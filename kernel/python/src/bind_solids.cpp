@@ -1,0 +1,231 @@
+// Bindings of exact curves, primitive solids, sweeps, the B-rep (Solid, Face), meshes and tessellation.
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <optional>
+#include <sstream>
+
+#include "convert.hpp"
+#include "ratbez/brep.hpp"
+#include "ratbez/curves.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/extrude.hpp"
+#include "ratbez/mesh.hpp"
+#include "ratbez/primitives.hpp"
+#include "ratbez/profile.hpp"
+#include "ratbez/revolve.hpp"
+#include "ratbez/tessellate.hpp"
+
+namespace ratbez::python {
+
+namespace {
+
+py::tuple origin() { return py::make_tuple(0.0, 0.0, 0.0); }
+py::tuple z_axis() { return py::make_tuple(0.0, 0.0, 1.0); }
+
+// One piece of a profile: a NurbsCurve as it is, a BezierCurve as the NURBS on {0..0, 1..1}.
+std::optional<NurbsCurve> profile_piece(py::handle value) {
+    if (py::isinstance<NurbsCurve>(value)) return value.cast<NurbsCurve>();
+    if (py::isinstance<BezierCurve>(value)) return NurbsCurve::from_bezier(value.cast<const BezierCurve&>());
+    return std::nullopt;
+}
+
+Profile to_profile(py::handle value, const std::string& argument) {
+    if (auto piece = profile_piece(value)) return Profile({std::move(*piece)});
+    const std::string expected = argument + ": expected a BezierCurve, a NurbsCurve or a list of them";
+    if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value)) throw Error(expected);
+    std::vector<NurbsCurve> pieces;
+    std::size_t index = 0;
+    for (py::handle item : value) {
+        auto piece = profile_piece(item);
+        if (!piece)
+            throw Error(argument + "[" + std::to_string(index) + "]: expected a BezierCurve or a NurbsCurve");
+        pieces.push_back(std::move(*piece));
+        ++index;
+    }
+    return Profile(std::move(pieces));  // validates: non-empty, pieces joined end to end
+}
+
+py::array_t<double> vertex_array(const Mesh& mesh) {
+    py::array_t<double> result({static_cast<py::ssize_t>(mesh.vertices.size()), py::ssize_t{3}});
+    auto out = result.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < out.shape(0); ++i) {
+        const Vec3& p = mesh.vertices[static_cast<std::size_t>(i)];
+        out(i, 0) = p.x;
+        out(i, 1) = p.y;
+        out(i, 2) = p.z;
+    }
+    return result;
+}
+
+py::array_t<std::int64_t> triangle_array(const Mesh& mesh) {
+    py::array_t<std::int64_t> result({static_cast<py::ssize_t>(mesh.triangles.size()), py::ssize_t{3}});
+    auto out = result.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < out.shape(0); ++i)
+        for (py::ssize_t k = 0; k < 3; ++k)
+            out(i, k) = mesh.triangles[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)];
+    return result;
+}
+
+// A mesh from Python tables; every index is checked, since Mesh itself trusts its triangles.
+Mesh make_mesh(const py::object& vertices, const py::object& triangles) {
+    Mesh mesh;
+    mesh.vertices = to_points(vertices, "vertices");
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+        if (!is_finite(mesh.vertices[i]))
+            throw Error("vertices[" + std::to_string(i) + "]: coordinates must be finite numbers");
+    std::size_t index = 0;
+    if (py::isinstance<py::str>(triangles) || !PySequence_Check(triangles.ptr()))
+        throw Error("triangles: expected a sequence of index triples");
+    for (py::handle row : triangles) {
+        const std::string name = "triangles[" + std::to_string(index) + "]";
+        if (py::isinstance<py::str>(row) || !PySequence_Check(row.ptr()) || py::len(row) != 3)
+            throw Error(name + ": expected 3 vertex indices");
+        std::array<std::uint32_t, 3> triangle{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const int vertex = to_int(row[py::int_(k)], name);
+            if (vertex < 0 || static_cast<std::size_t>(vertex) >= mesh.vertices.size())
+                throw Error(name + ": vertex index " + std::to_string(vertex) + " is out of range [0, " +
+                            std::to_string(mesh.vertices.size()) + ")");
+            triangle[k] = static_cast<std::uint32_t>(vertex);
+        }
+        mesh.triangles.push_back(triangle);
+        ++index;
+    }
+    return mesh;
+}
+
+NurbsCurve coedge_curve(const Coedge& coedge) {
+    return coedge.reversed ? coedge.edge->curve.reversed() : coedge.edge->curve;
+}
+
+}  // namespace
+
+void bind_solids(py::module_& m) {
+    m.def(
+        "line_segment",
+        [](const py::object& start, const py::object& end) {
+            return line_segment(to_vec3(start, "start"), to_vec3(end, "end"));
+        },
+        py::arg("start"), py::arg("end"), "The straight segment from start to end as a degree-1 NurbsCurve.");
+    m.def(
+        "circle",
+        [](double radius, const py::object& center, const py::object& normal) {
+            return circle(radius, to_vec3(center, "center"), to_vec3(normal, "normal"));
+        },
+        py::arg("radius"), py::arg("center") = origin(), py::arg("normal") = z_axis(),
+        "A full circle as a piecewise rational quadratic NurbsCurve, counterclockwise about normal.");
+    m.def(
+        "arc",
+        [](double radius, double start_deg, double end_deg, const py::object& center, const py::object& normal) {
+            return arc(radius, start_deg, end_deg, to_vec3(center, "center"), to_vec3(normal, "normal"));
+        },
+        py::arg("radius"), py::arg("start_deg"), py::arg("end_deg"), py::arg("center") = origin(),
+        py::arg("normal") = z_axis(), "A circular arc from start_deg to end_deg as an exact NurbsCurve.");
+    m.def(
+        "ellipse_arc",
+        [](double a, double b, double start_deg, double end_deg, const py::object& center, const py::object& normal) {
+            return ellipse_arc(a, b, start_deg, end_deg, to_vec3(center, "center"), to_vec3(normal, "normal"));
+        },
+        py::arg("a"), py::arg("b"), py::arg("start_deg"), py::arg("end_deg"), py::arg("center") = origin(),
+        py::arg("normal") = z_axis(), "An elliptical arc with semi-axes a and b as an exact NurbsCurve.");
+
+    py::class_<Mesh>(m, "Mesh", "A triangle mesh: vertex table and outward triangles (right-hand rule).")
+        .def(py::init(&make_mesh), py::arg("vertices"), py::arg("triangles"))
+        .def_property_readonly("vertices", &vertex_array, "N x 3 float64 array.")
+        .def_property_readonly("triangles", &triangle_array, "M x 3 int64 array of vertex indices.")
+        .def("is_closed", &Mesh::is_closed)
+        .def("volume", &Mesh::volume)
+        .def("area", &Mesh::area)
+        .def("__repr__", [](const Mesh& mesh) {
+            return "<ratbez.Mesh vertices=" + std::to_string(mesh.vertices.size()) +
+                   " triangles=" + std::to_string(mesh.triangles.size()) + ">";
+        });
+
+    py::class_<Face>(m, "Face", "A face of a Solid: an untrimmed NURBS surface, or a plane patch trimmed by loops.")
+        .def_property_readonly("kind", [](const Face& f) { return f.kind() == Face::Kind::planar ? "planar" : "surface"; })
+        .def_property_readonly("surface", &Face::surface)
+        .def_property_readonly(
+            "loops",
+            [](const Face& f) {
+                py::list loops;
+                for (const auto& loop : f.loops()) {
+                    py::list curves;
+                    for (const auto& coedge : loop) curves.append(coedge_curve(coedge));
+                    loops.append(curves);
+                }
+                return loops;
+            },
+            "Boundary loops of a planar face, each a list of NurbsCurve in loop order; [] for a surface face.")
+        .def("point", [](const Face& f, double u, double v) { return to_tuple(f.point(u, v)); }, py::arg("u"), py::arg("v"))
+        .def("normal", [](const Face& f, double u, double v) { return to_tuple(f.normal(u, v)); }, py::arg("u"),
+             py::arg("v"), "The outward unit normal.")
+        .def("__repr__", [](const Face& f) {
+            return std::string("<ratbez.Face ") + (f.kind() == Face::Kind::planar ? "planar" : "surface") + ">";
+        });
+
+    py::class_<Solid>(m, "Solid", "A closed shell of exact NURBS faces.")
+        .def_property_readonly("faces", &Solid::faces)
+        .def("volume", &Solid::volume, py::call_guard<py::gil_scoped_release>())
+        .def("area", &Solid::area, py::call_guard<py::gil_scoped_release>())
+        .def("euler_characteristic", &Solid::euler_characteristic)
+        .def("bounding_box", [](const Solid& s) {
+            const auto box = s.bounding_box();
+            return py::make_tuple(to_tuple(box.min), to_tuple(box.max));
+        })
+        .def(
+            "tessellate",
+            [](const Solid& s, double tolerance, std::optional<double> angle_deg) {
+                py::gil_scoped_release release;
+                return tessellate(s, tolerance, angle_deg);
+            },
+            py::arg("tolerance"), py::arg("angle_deg") = py::none(),
+            "A watertight mesh within `tolerance` of the exact surfaces (optionally also `angle_deg`).")
+        .def("__repr__", [](const Solid& s) { return "<ratbez.Solid faces=" + std::to_string(s.faces().size()) + ">"; });
+
+    m.def("default_tolerance", &default_tolerance, py::arg("solid"),
+          "The tessellation tolerance used when none is given: 1e-3 of the bounding-box diagonal.");
+
+    m.def(
+        "cylinder",
+        [](double radius, double height, const py::object& center, const py::object& axis) {
+            return cylinder(radius, height, to_vec3(center, "center"), to_vec3(axis, "axis"));
+        },
+        py::arg("radius"), py::arg("height"), py::arg("center") = origin(), py::arg("axis") = z_axis(),
+        "A cylinder; center is the base center.");
+    m.def(
+        "cone",
+        [](double radius1, double radius2, double height, const py::object& center, const py::object& axis) {
+            return cone(radius1, radius2, height, to_vec3(center, "center"), to_vec3(axis, "axis"));
+        },
+        py::arg("radius1"), py::arg("radius2"), py::arg("height"), py::arg("center") = origin(),
+        py::arg("axis") = z_axis(), "A cone or frustum; center is the base center, radius2 may be 0 (apex).");
+    m.def(
+        "sphere", [](double radius, const py::object& center) { return sphere(radius, to_vec3(center, "center")); },
+        py::arg("radius"), py::arg("center") = origin());
+    m.def(
+        "torus",
+        [](double major_radius, double minor_radius, const py::object& center, const py::object& axis) {
+            return torus(major_radius, minor_radius, to_vec3(center, "center"), to_vec3(axis, "axis"));
+        },
+        py::arg("major_radius"), py::arg("minor_radius"), py::arg("center") = origin(), py::arg("axis") = z_axis());
+    m.def(
+        "revolve",
+        [](const py::object& profile, const py::object& axis_point, const py::object& axis_dir, double angle) {
+            return revolve(to_profile(profile, "profile"), to_vec3(axis_point, "axis_point"),
+                           to_vec3(axis_dir, "axis_dir"), angle);
+        },
+        py::arg("profile"), py::arg("axis_point") = origin(), py::arg("axis_dir") = z_axis(), py::arg("angle") = 360.0,
+        "Revolve a profile (BezierCurve, NurbsCurve or a list of them joined end to end) by angle degrees.");
+    m.def(
+        "extrude",
+        [](const py::object& profile, const py::object& direction, double distance) {
+            return extrude(to_profile(profile, "profile"), to_vec3(direction, "direction"), distance);
+        },
+        py::arg("profile"), py::arg("direction"), py::arg("distance"),
+        "Sweep a closed planar profile by distance along direction.");
+}
+
+}  // namespace ratbez::python

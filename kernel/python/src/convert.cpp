@@ -1,0 +1,138 @@
+#include "convert.hpp"
+
+#include <Python.h>
+
+#include "ratbez/error.hpp"
+
+namespace ratbez::python {
+
+namespace {
+
+// The items of a list, tuple, numpy array or other sequence; strings are not sequences of numbers.
+std::vector<py::object> sequence_items(py::handle value, const std::string& argument, const char* what) {
+    if (value.is_none() || py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) ||
+        !PySequence_Check(value.ptr()))
+        throw Error(argument + ": expected " + what);
+    const Py_ssize_t size = PySequence_Size(value.ptr());
+    if (size < 0) {
+        PyErr_Clear();
+        throw Error(argument + ": expected " + what);
+    }
+    std::vector<py::object> items;
+    items.reserve(static_cast<std::size_t>(size));
+    for (Py_ssize_t i = 0; i < size; ++i) {
+        PyObject* item = PySequence_GetItem(value.ptr(), i);
+        if (item == nullptr) throw py::error_already_set();
+        items.push_back(py::reinterpret_steal<py::object>(item));
+    }
+    return items;
+}
+
+std::string element(const std::string& argument, std::size_t index) {
+    return argument + "[" + std::to_string(index) + "]";
+}
+
+}  // namespace
+
+double to_double(py::handle value, const std::string& argument) {
+    // Numbers and anything with __float__ (numpy scalars); not strings, not None.
+    if (value.is_none() || py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value))
+        throw Error(argument + ": expected a number");
+    const double result = PyFloat_AsDouble(value.ptr());
+    if (result == -1.0 && PyErr_Occurred()) {
+        PyErr_Clear();
+        throw Error(argument + ": expected a number");
+    }
+    return result;
+}
+
+int to_int(py::handle value, const std::string& argument) {
+    // Integers and anything with __index__ (numpy integers); 2.0 is refused rather than truncated.
+    if (value.is_none() || py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
+        throw Error(argument + ": expected an integer");
+    PyObject* index = PyNumber_Index(value.ptr());
+    if (index == nullptr) {
+        PyErr_Clear();
+        throw Error(argument + ": expected an integer");
+    }
+    const auto owner = py::reinterpret_steal<py::object>(index);
+    int overflow = 0;
+    const long long result = PyLong_AsLongLongAndOverflow(index, &overflow);
+    if (overflow != 0 || result < -1'000'000'000LL || result > 1'000'000'000LL)
+        throw Error(argument + ": integer out of range");
+    return static_cast<int>(result);
+}
+
+Vec3 to_vec3(py::handle value, const std::string& argument) {
+    const auto items = sequence_items(value, argument, "a point: a sequence of 2 or 3 numbers");
+    if (items.size() != 2 && items.size() != 3)
+        throw Error(argument + ": expected a point of 2 or 3 numbers, got " + std::to_string(items.size()));
+    Vec3 point{to_double(items[0], argument), to_double(items[1], argument),
+               items.size() == 3 ? to_double(items[2], argument) : 0.0};
+    return point;
+}
+
+std::vector<double> to_doubles(py::handle value, const std::string& argument) {
+    const auto items = sequence_items(value, argument, "a sequence of numbers");
+    std::vector<double> result;
+    result.reserve(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) result.push_back(to_double(items[i], element(argument, i)));
+    return result;
+}
+
+std::vector<Vec3> to_points(py::handle value, const std::string& argument) {
+    const auto items = sequence_items(value, argument, "a sequence of points");
+    std::vector<Vec3> result;
+    result.reserve(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) result.push_back(to_vec3(items[i], element(argument, i)));
+    return result;
+}
+
+std::vector<std::vector<Vec3>> to_net(py::handle value, const std::string& argument) {
+    const auto rows = sequence_items(value, argument, "a net: a sequence of rows of points");
+    std::vector<std::vector<Vec3>> result;
+    result.reserve(rows.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) result.push_back(to_points(rows[i], element(argument, i)));
+    return result;
+}
+
+std::vector<std::vector<double>> to_double_rows(py::handle value, const std::string& argument) {
+    const auto rows = sequence_items(value, argument, "a sequence of rows of numbers");
+    std::vector<std::vector<double>> result;
+    result.reserve(rows.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) result.push_back(to_doubles(rows[i], element(argument, i)));
+    return result;
+}
+
+std::string to_path(py::handle value, const std::string& argument) {
+    if (!py::isinstance<py::str>(value) && !PyObject_HasAttrString(value.ptr(), "__fspath__"))
+        throw Error(argument + ": expected a path (str or os.PathLike)");
+    PyObject* fspath = PyOS_FSPath(value.ptr());
+    if (fspath == nullptr) {
+        PyErr_Clear();
+        throw Error(argument + ": expected a path (str or os.PathLike)");
+    }
+    const auto path = py::reinterpret_steal<py::object>(fspath);
+    if (!py::isinstance<py::str>(path)) throw Error(argument + ": expected a str path, not bytes");
+    auto text = path.cast<std::string>();
+    if (text.empty()) throw Error(argument + ": must not be empty");
+    return text;
+}
+
+py::tuple to_tuple(const Vec3& point) { return py::make_tuple(point.x, point.y, point.z); }
+
+py::list to_list(const std::vector<Vec3>& points) {
+    py::list result;
+    for (const auto& p : points) result.append(to_tuple(p));
+    return result;
+}
+
+py::list to_list(const std::vector<std::vector<Vec3>>& net) {
+    py::list result;
+    for (const auto& row : net) result.append(to_list(row));
+    return result;
+}
+
+py::tuple to_tuple(const Interval& interval) { return py::make_tuple(interval.min, interval.max); }
+
+}  // namespace ratbez::python

@@ -1,0 +1,91 @@
+"""OpenSCAD / STL export (CGAL-checked) and STEP / BREP output and the OpenCASCADE check."""
+import math
+import struct
+
+import pytest
+
+import ratbez
+from conftest import needs_cgal, needs_occt, raises_naming
+
+
+@needs_cgal
+def test_export_openscad_solid_and_mesh(tmp_path):
+    sphere = ratbez.sphere(1.0)
+    path = tmp_path / "sphere.scad"
+    ratbez.export_openscad(sphere, str(path))
+    text = path.read_text()
+    assert "polyhedron(" in text and "points" in text and "faces" in text
+    # A pathlib.Path and an explicit tolerance, coarser than the default: a smaller file.
+    coarse = tmp_path / "coarse.scad"
+    ratbez.export_openscad(solid_or_mesh=sphere, path=coarse, tolerance=0.02)
+    assert 0 < coarse.stat().st_size < path.stat().st_size
+    mesh = ratbez.torus(2, 0.5).tessellate(0.01)
+    ratbez.export_openscad(mesh, tmp_path / "torus.scad")
+    assert "polyhedron(" in (tmp_path / "torus.scad").read_text()
+
+
+@needs_cgal
+def test_write_stl_is_binary_stl(tmp_path):
+    mesh = ratbez.cylinder(1, 2).tessellate(0.01)
+    path = tmp_path / "cylinder.stl"
+    ratbez.write_stl(mesh, path)
+    data = path.read_bytes()
+    (count,) = struct.unpack_from("<I", data, 80)
+    assert count == len(mesh.triangles) and len(data) == 84 + 50 * count
+    ratbez.write_stl(ratbez.cone(1, 0, 2), tmp_path / "cone.stl", tolerance=0.01)
+    assert (tmp_path / "cone.stl").stat().st_size > 84
+
+
+@needs_cgal
+def test_export_refuses_bad_input(tmp_path):
+    raises_naming("path", ratbez.export_openscad, ratbez.sphere(1), str(tmp_path / "sphere.txt"))
+    raises_naming("path", ratbez.export_openscad, ratbez.sphere(1), str(tmp_path / "no" / "such" / "dir.scad"))
+    raises_naming("path", ratbez.write_stl, ratbez.sphere(1), 42)
+    raises_naming("solid_or_mesh", ratbez.export_openscad, "sphere", str(tmp_path / "x.scad"))
+    raises_naming("tolerance", ratbez.write_stl, ratbez.sphere(1), str(tmp_path / "x.stl"), tolerance=-1.0)
+    # An open mesh is refused by the CGAL checks rather than written.
+    open_mesh = ratbez.Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)], [(0, 2, 1), (0, 1, 3), (0, 3, 2)])
+    with pytest.raises(ratbez.Error):
+        ratbez.export_openscad(open_mesh, str(tmp_path / "open.scad"))
+    assert not (tmp_path / "open.scad").exists()
+
+
+@needs_cgal
+def test_check_mesh():
+    report = ratbez.check_mesh(ratbez.sphere(1).tessellate(0.01))
+    assert report["ok"] and report["closed"] and report["manifold"] and report["outward"]
+    assert report["problems"] == []
+
+
+@needs_occt
+def test_step_and_brep(tmp_path):
+    solid = ratbez.cylinder(1, 2)
+    ratbez.write_step(solid, str(tmp_path / "c.step"))
+    assert "ISO-10303-21" in (tmp_path / "c.step").read_text()
+    ratbez.write_brep(solid=solid, path=tmp_path / "c.brep")
+    brep = (tmp_path / "c.brep").read_text()
+    assert "CASCADE Topology" in brep
+    text = ratbez.brep_string(solid)
+    assert isinstance(text, str) and "CASCADE Topology" in text
+    raises_naming("path", ratbez.write_step, solid, str(tmp_path / "no" / "such" / "c.step"))
+    raises_naming("solid", ratbez.write_brep, "cylinder", str(tmp_path / "x.brep"))
+
+
+@needs_occt
+@pytest.mark.parametrize("make, volume", [
+    (lambda: ratbez.sphere(1.5), 4 / 3 * math.pi * 1.5 ** 3),
+    (lambda: ratbez.cylinder(1, 2, axis=(1, 0, 1)), 2 * math.pi),
+    (lambda: ratbez.torus(3, 1), 6 * math.pi ** 2),
+])
+def test_occt_check(make, volume):
+    report = ratbez.occt_check(make())
+    for key in ("valid", "closed", "max_deviation", "volume", "occt_volume", "area", "occt_area", "passed",
+                "failures"):
+        assert key in report, key
+    assert report["valid"] is True and report["closed"] is True
+    assert report["passed"] is True, report["failures"]
+    assert report["failures"] == []
+    assert report["max_deviation"] < 1e-9
+    assert report["volume"] == pytest.approx(volume, rel=1e-8)
+    assert report["occt_volume"] == pytest.approx(volume, rel=1e-5)
+    assert isinstance(report["report"], str)
