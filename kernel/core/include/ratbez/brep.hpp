@@ -58,11 +58,21 @@ public:
     // along u = u_max, sides[v_max] u decreasing along v = v_max, sides[u_min] v decreasing along u = u_min:
     // counterclockwise in (u, v). The edge of a side is the surface's isocurve with the SAME parameter
     // (edge parameter t = the surface's u on v sides, its v on u sides), so a coedge on v_min has
-    // reversed = false when the edge runs with u. Validated: each side's edge matches the surface there.
+    // reversed = false when the edge runs with u. Validated: each side's edge matches the surface there
+    // (at 9 parameters, to 1e-9 of the surface's control-box diagonal; an edge running against the
+    // surface parameter must be the isocurve reparameterised by t -> a + b - t over the same domain),
+    // a side collapsed to a point carries a degenerate edge and only there, and consecutive sides meet
+    // in the same Vertex object, which lies at the surface's corner.
     static Face from_surface(NurbsSurface surface, std::array<Coedge, 4> sides);
     // A planar face bounded by loops (loops[0] outer, counterclockwise seen from plane.normal, which
     // points out of the solid; further loops are holes). Its surface() is the bilinear plane patch
     // spanning the loops' bounding rectangle in the plane frame, with S_u x S_v along plane.normal.
+    // The patch is parameterised by the plane coordinates themselves: S(u, v) = origin + u x_axis + v y_axis,
+    // its knots are {x0, x0, x1, x1} and {y0, y0, y1, y1} for the rectangle [x0, x1] x [y0, y1] that
+    // contains the loops' control points (convex hull property).
+    // Validated: an orthonormal right-handed plane frame; every loop closes through shared vertex
+    // objects; every loop curve lies in the plane; the outer loop encloses positive area seen from the
+    // normal and every hole negative area; no degenerate edges.
     static Face planar(const Plane& plane, std::vector<std::vector<Coedge>> loops);
 
     Kind kind() const { return kind_; }
@@ -85,7 +95,8 @@ private:
 
 class Solid {
 public:
-    // Validates closure: every non-degenerate edge is used exactly twice, once in each direction.
+    // Validates closure: every non-degenerate edge is used exactly twice, once in each direction, and
+    // orientation: the enclosed volume (a low-order quadrature, enough for its sign) is positive.
     explicit Solid(std::vector<Face> faces);
 
     const std::vector<Face>& faces() const { return faces_; }

@@ -1,0 +1,104 @@
+#pragma once
+// Private helpers shared by the primitive, revolution, extrusion, B-rep and property sources.
+// Not installed, not part of the public API.
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ratbez/brep.hpp"
+#include "ratbez/frame.hpp"
+#include "ratbez/nurbs_curve.hpp"
+#include "ratbez/nurbs_surface.hpp"
+#include "ratbez/vec.hpp"
+
+namespace ratbez::detail {
+
+// cos and sin of an angle in degrees, exact (0, ±1) at multiples of 90 degrees: the quadrant is
+// removed exactly before the radian conversion, so a quarter circle ends exactly on its axis.
+double cos_deg(double degrees);
+double sin_deg(double degrees);
+
+// The control structure of a circular arc of `sweep_deg` in (0, 360] starting at angle `start_deg`,
+// on the unit circle of a frame (the NURBS-book construction A7.1, generalising the rational quarter
+// circle of 000 §1.4 / Ex1.13): ceil(sweep / 90) segments of equal sweep 2θ, each a rational quadratic
+// whose middle control point is the tangents' intersection, (P_0 + P_2) / (1 + cos 2θ), with weight
+// cos θ; knots {0,0,0, 1/n,1/n, ..., 1,1,1}.
+struct ArcLayout {
+    std::vector<double> knots;
+    std::vector<double> cos_coefficient;  // control point i = cos_coefficient[i] x + sin_coefficient[i] y
+    std::vector<double> sin_coefficient;
+    std::vector<double> weights;
+};
+ArcLayout arc_layout(double start_deg, double sweep_deg);
+
+// The arc with centre frame.origin and the given radius (or the ellipse with semi-axes `radius_x`,
+// `radius_y`: the affine image of the circular arc, P1.14) in the plane of frame.x_axis, frame.y_axis.
+NurbsCurve arc_in_frame(const Frame& frame, double radius_x, double radius_y, double start_deg, double sweep_deg);
+
+// Gauss–Legendre nodes and weights on [0, 1] (nodes by Newton's method on P_n to machine precision).
+struct GaussRule {
+    std::vector<double> nodes, weights;
+};
+const GaussRule& gauss_legendre(int points);
+
+// The distinct knot values inside the domain [u_p, u_{m-p}]: the break points of the non-empty spans.
+std::vector<double> breakpoints(int degree, const std::vector<double>& knots);
+
+// Axis-aligned box of Euclidean control points.
+struct Box {
+    Vec3 min{1e300, 1e300, 1e300}, max{-1e300, -1e300, -1e300};
+    void add(const Vec3& p);
+    void add(const Box& b);
+    bool empty() const { return min.x > max.x; }
+    double diagonal() const { return empty() ? 0.0 : norm(max - min); }
+};
+Box control_box(const NurbsCurve& curve);
+Box control_box(const NurbsSurface& surface);
+
+// True when the first and the last p + 1 knots coincide (the curve interpolates its end control points).
+bool is_clamped(const NurbsCurve& curve);
+// The same curve on a clamped knot vector (break points of multiplicity p, ends p + 1); unchanged if clamped.
+NurbsCurve clamped(const NurbsCurve& curve);
+// A clamped curve with its first (at_end = false) or last control point moved to `point`, keeping its weight.
+NurbsCurve with_end_point(const NurbsCurve& curve, bool at_end, const Vec3& point);
+
+// Adaptive Gauss–Legendre quadrature of f over [a, b] (1D) or [u0, u1] x [v0, v1] (2D): a panel is
+// accepted when the rule on it and on its halves (quarters) agree to `absolute_tolerance`.
+double integrate(const std::function<double(double)>& f, double a, double b, double absolute_tolerance,
+                 int points = 16, int max_depth = 12);
+double integrate(const std::function<double(double, double)>& f, double u0, double u1, double v0, double v1,
+                 double absolute_tolerance, int points = 12, int max_depth = 6);
+
+// (1/2) ∮ (x dy - y dx) of a curve in a plane frame (x = (C - origin)·x_axis, y = (C - origin)·y_axis),
+// span by span: the signed area contribution of one loop piece (Green's theorem).
+double green_area(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
+                  double absolute_tolerance, int points = 16, int max_depth = 12);
+
+// Signed enclosed volume of closed faces; `quick` uses a fixed low-order rule (enough for the sign).
+double signed_volume(const std::vector<Face>& faces, bool quick);
+
+// The result of revolving profile pieces (joined end to end, already snapped) about an axis:
+// one face per piece, the joint edges (circles or arcs; degenerate on the axis), and the profile edges
+// at angle 0 and at the end angle (the same edges for a full turn). joint vertices index 0..m.
+struct RevolutionShell {
+    std::vector<Face> faces;
+    std::vector<EdgePtr> joint_edges;          // m + 1 entries (closed profile: the last is the first)
+    std::vector<EdgePtr> start_profile_edges;  // m entries
+    std::vector<EdgePtr> end_profile_edges;    // m entries
+    std::vector<VertexPtr> start_vertices;     // m + 1 entries
+    std::vector<VertexPtr> end_vertices;       // m + 1 entries
+};
+RevolutionShell build_revolution(const std::vector<NurbsCurve>& pieces, bool closed, const Vec3& axis_point,
+                                 const Vec3& unit_axis, double angle_deg);
+
+// Vertex of the control points' convex combination: a shared vertex object.
+inline VertexPtr make_vertex(const Vec3& p) { return std::make_shared<const Vertex>(Vertex{p}); }
+inline EdgePtr make_edge(NurbsCurve curve, VertexPtr start, VertexPtr end, bool degenerate = false) {
+    return std::make_shared<const Edge>(Edge{std::move(curve), std::move(start), std::move(end), degenerate});
+}
+
+std::string format_point(const Vec3& p);
+
+}  // namespace ratbez::detail

@@ -1,0 +1,60 @@
+#include "ratbez/profile.hpp"
+
+#include <string>
+
+#include "geometry_internal.hpp"
+#include "ratbez/error.hpp"
+
+namespace ratbez {
+
+namespace {
+// Relative joint tolerance: far above the rounding of any exact construction (~1e-16), far below any
+// gap a user would draw on purpose.
+constexpr double kRelativeJointTolerance = 1e-9;
+}  // namespace
+
+Profile::Profile(std::vector<NurbsCurve> pieces) {
+    require(!pieces.empty(), "profile", "must have at least one piece");
+    detail::Box box;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        require(pieces[k].degree() >= 1, "profile", "piece " + std::to_string(k) + " has degree 0 (a point)");
+        pieces[k] = detail::clamped(pieces[k]);
+        const detail::Box piece_box = detail::control_box(pieces[k]);
+        require(piece_box.diagonal() > 0, "profile", "piece " + std::to_string(k) + " is a single point");
+        box.add(piece_box);
+    }
+    size_ = box.diagonal();
+    tolerance_ = kRelativeJointTolerance * size_;
+
+    for (std::size_t k = 1; k < pieces.size(); ++k) {
+        const Vec3 previous_end = pieces[k - 1].end_point();
+        const double gap = distance(previous_end, pieces[k].start_point());
+        require(gap <= tolerance_, "profile",
+                "piece " + std::to_string(k) + " starts at " + detail::format_point(pieces[k].start_point()) +
+                    ", " + std::to_string(gap) + " away from the end " + detail::format_point(previous_end) +
+                    " of piece " + std::to_string(k - 1) + " (pieces must meet)");
+        pieces[k] = detail::with_end_point(pieces[k], false, previous_end);
+    }
+    closed_ = distance(pieces.back().end_point(), pieces.front().start_point()) <= tolerance_;
+    if (closed_) pieces.back() = detail::with_end_point(pieces.back(), true, pieces.front().start_point());
+    pieces_ = std::move(pieces);
+}
+
+Profile Profile::from_beziers(const std::vector<BezierCurve>& pieces) {
+    std::vector<NurbsCurve> nurbs;
+    nurbs.reserve(pieces.size());
+    for (const BezierCurve& piece : pieces) nurbs.push_back(NurbsCurve::from_bezier(piece));
+    return Profile(std::move(nurbs));
+}
+
+Vec3 Profile::start_point() const { return pieces_.front().start_point(); }
+Vec3 Profile::end_point() const { return pieces_.back().end_point(); }
+
+Profile Profile::reversed() const {
+    std::vector<NurbsCurve> pieces;
+    pieces.reserve(pieces_.size());
+    for (auto it = pieces_.rbegin(); it != pieces_.rend(); ++it) pieces.push_back(it->reversed());
+    return Profile(std::move(pieces));
+}
+
+}  // namespace ratbez
