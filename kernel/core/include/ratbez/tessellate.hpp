@@ -14,7 +14,8 @@ namespace ratbez {
 
 struct TessellationOptions {
     double tolerance = 0;                 // largest distance from any point of a triangle to the surface, > 0
-    std::optional<double> angle_deg;      // optional limit on the angle between neighbouring normals
+    std::optional<double> angle_deg;      // optional, in (0, 180): the exact surface normals at the two ends
+                                          // of any mesh edge inside a curved face differ by at most this
     std::size_t max_triangles = 20'000'000;  // budget: a finer request throws Error naming "tolerance"
 };
 

@@ -1,0 +1,429 @@
+// Mesh-to-solid deviation (deviation.hpp).
+//
+// Every triangle is sampled on a barycentric lattice and each sample's distance to the solid's boundary
+// is measured by point inversion: the nearest seed of a precomputed surface sampling (found through a
+// uniform spatial grid) starts Newton's method on the two orthogonality conditions
+// (S - P) . S_u = (S - P) . S_v = 0 (Piegl and Tiller, The NURBS Book, §6.1, Eq. 6.6–6.8), clamped to the
+// face's domain, with a step-halving line search so it never walks uphill. Planar faces are handled
+// exactly: the distance to the trimmed plane region is the distance to the plane where the foot lies
+// inside the loops, else the distance to the nearest boundary curve (Newton on the curve).
+//
+// Only the maximum is wanted, so most samples are settled cheaply: the distance to any point of the
+// surface bounds the true distance from above, and a warm start from the previous sample's foot gives
+// such a point after a step or two. When that bound is already below the running maximum, the sample
+// cannot raise it and the global search is skipped; the result is still exact.
+
+#include "ratbez/deviation.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "polygon_triangulation.hpp"
+#include "ratbez/error.hpp"
+#include "surface_evaluator.hpp"
+
+namespace ratbez {
+namespace {
+
+struct Foot {
+    double u = 0, v = 0, distance = std::numeric_limits<double>::infinity();
+};
+
+// Newton's point inversion on a surface from (u, v); stops early once the distance is at most
+// `good_enough` (the caller only needs to know that), or after `max_iterations`.
+Foot invert_on_surface(const detail::SurfaceEvaluator& s, const Vec3& p, double u, double v, int max_iterations,
+                       double good_enough = -1) {
+    const Interval du = s.domain_u(), dv = s.domain_v();
+    Foot best{u, v, distance(s.point(u, v), p)};
+    for (int iteration = 0; iteration < max_iterations && best.distance > good_enough; ++iteration) {
+        const detail::SurfaceJet d = s.jet(best.u, best.v);
+        const Vec3 r = d.s - p;
+        const Vec3 &su = d.su, &sv = d.sv;
+        const double f = dot(r, su), g = dot(r, sv);
+        double a = dot(su, su) + dot(r, d.suu);
+        double b = dot(su, sv) + dot(r, d.suv);
+        double c = dot(sv, sv) + dot(r, d.svv);
+        if (a <= 0 || c <= 0 || a * c - b * b <= 0) {
+            // Not a minimum's neighbourhood (or a pole, where S_u vanishes): Gauss–Newton, always a descent.
+            a = dot(su, su), b = dot(su, sv), c = dot(sv, sv);
+        }
+        // Levenberg damping keeps the 2x2 solve finite where a partial vanishes (poles, apexes).
+        const double damping = 1e-12 * (a + c) + 1e-300;
+        a += damping, c += damping;
+        const double det = a * c - b * b;
+        if (!(det > 0)) break;
+        double step_u = -(c * f - b * g) / det, step_v = -(a * g - b * f) / det;
+        bool improved = false;
+        for (int halving = 0; halving < 12; ++halving) {
+            const double nu = std::clamp(best.u + step_u, du.min, du.max);
+            const double nv = std::clamp(best.v + step_v, dv.min, dv.max);
+            const double dist = distance(s.point(nu, nv), p);
+            if (dist < best.distance) {
+                const double moved = std::abs(nu - best.u) + std::abs(nv - best.v);
+                best = {nu, nv, dist};
+                improved = moved > 1e-15 * ((du.max - du.min) + (dv.max - dv.min));
+                break;
+            }
+            step_u *= 0.5, step_v *= 0.5;
+        }
+        if (!improved) break;
+    }
+    return best;
+}
+
+// Newton on a curve for the nearest point to p, clamped to the domain.
+double invert_on_curve(const NurbsCurve& curve, const Vec3& p, double t) {
+    const Interval d = curve.domain();
+    double best_t = t, best = distance(curve.point(t), p);
+    for (int iteration = 0; iteration < 30; ++iteration) {
+        const auto der = curve.derivatives(best_t, 2);
+        const Vec3 r = der[0] - p;
+        const double f = dot(r, der[1]);
+        double fp = dot(der[1], der[1]) + dot(r, der[2]);
+        if (fp <= 0) fp = dot(der[1], der[1]);
+        if (!(fp > 0)) break;
+        double step = -f / fp;
+        bool improved = false;
+        for (int halving = 0; halving < 12; ++halving) {
+            const double nt = std::clamp(best_t + step, d.min, d.max);
+            const double dist = distance(curve.point(nt), p);
+            if (dist < best) {
+                improved = std::abs(nt - best_t) > 1e-15 * (d.max - d.min);
+                best = dist, best_t = nt;
+                break;
+            }
+            step *= 0.5;
+        }
+        if (!improved) break;
+    }
+    return best_t;
+}
+
+// A planar face: the plane, its boundary curves in loop order and a fine polyline of them that locates
+// the nearest curve quickly.
+struct PlanarRegion {
+    struct Curve {
+        const NurbsCurve* curve;
+        bool reversed;
+        std::size_t loop, next, previous;  // neighbours in loop order (indices into curves)
+    };
+    struct Segment {
+        detail::Point2 a, b;
+        std::size_t curve;
+        double ta, tb;
+    };
+    Plane plane;
+    std::vector<Curve> curves;
+    std::vector<Segment> segments;
+
+    detail::Point2 to_plane(const Vec3& p) const {
+        const Vec3 d = p - plane.origin;
+        return {dot(d, plane.x_axis), dot(d, plane.y_axis)};
+    }
+    // The loop's direction of travel at parameter t of a curve, in plane coordinates.
+    detail::Point2 loop_tangent(std::size_t c, double t) const {
+        const Vec3 d = curves[c].curve->derivative(t, 1) * (curves[c].reversed ? -1.0 : 1.0);
+        return {dot(d, plane.x_axis), dot(d, plane.y_axis)};
+    }
+
+    double distance_to(const Vec3& p) const {
+        const double height = dot(p - plane.origin, plane.normal);
+        const detail::Point2 q = to_plane(p);
+        double best = std::numeric_limits<double>::infinity();
+        const Segment* nearest = nullptr;
+        double fraction = 0;
+        for (const Segment& s : segments) {
+            const double ex = s.b.x - s.a.x, ey = s.b.y - s.a.y;
+            const double len2 = ex * ex + ey * ey;
+            double f = len2 > 0 ? ((q.x - s.a.x) * ex + (q.y - s.a.y) * ey) / len2 : 0;
+            f = std::clamp(f, 0.0, 1.0);
+            const double dx = s.a.x + f * ex - q.x, dy = s.a.y + f * ey - q.y;
+            const double d2 = dx * dx + dy * dy;
+            if (d2 < best) best = d2, nearest = &s, fraction = f;
+        }
+        if (nearest == nullptr) return std::abs(height);
+        const Curve& curve = curves[nearest->curve];
+        const Interval dom = curve.curve->domain();
+        const double t = invert_on_curve(*curve.curve, p, nearest->ta + fraction * (nearest->tb - nearest->ta));
+        const Vec3 foot = curve.curve->point(t);
+        const detail::Point2 f2 = to_plane(foot);
+        const detail::Point2 offset{q.x - f2.x, q.y - f2.y};
+        auto left_of = [&](const detail::Point2& tangent) { return tangent.x * offset.y - tangent.y * offset.x >= 0; };
+        const double end_tolerance = 1e-12 * (dom.max - dom.min);
+        const bool at_start = t <= dom.min + end_tolerance, at_end = t >= dom.max - end_tolerance;
+        bool inside;
+        if (!at_start && !at_end) {
+            inside = left_of(loop_tangent(nearest->curve, t));
+        } else {
+            // At a corner: the region is the intersection (convex corner) or union (reflex corner) of the
+            // half-planes left of the incoming and outgoing directions.
+            const bool loop_start = at_start != curve.reversed;  // the loop arrives at this curve's first point
+            std::size_t in_curve, out_curve;
+            double t_in, t_out;
+            if (loop_start) {
+                in_curve = curve.previous, out_curve = nearest->curve;
+                const Interval d_in = curves[in_curve].curve->domain();
+                t_in = curves[in_curve].reversed ? d_in.min : d_in.max;
+                t_out = t;
+            } else {
+                in_curve = nearest->curve, out_curve = curve.next;
+                const Interval d_out = curves[out_curve].curve->domain();
+                t_in = t;
+                t_out = curves[out_curve].reversed ? d_out.max : d_out.min;
+            }
+            const detail::Point2 tin = loop_tangent(in_curve, t_in), tout = loop_tangent(out_curve, t_out);
+            const bool convex = tin.x * tout.y - tin.y * tout.x >= 0;
+            inside = convex ? (left_of(tin) && left_of(tout)) : (left_of(tin) || left_of(tout));
+        }
+        return inside ? std::abs(height) : distance(p, foot);
+    }
+};
+
+PlanarRegion make_region(const Face& face) {
+    PlanarRegion region;
+    region.plane = face.plane();
+    for (std::size_t l = 0; l < face.loops().size(); ++l) {
+        const auto& loop = face.loops()[l];
+        const std::size_t first = region.curves.size();
+        for (const Coedge& coedge : loop) {
+            if (coedge.edge->degenerate) continue;
+            region.curves.push_back({&coedge.edge->curve, coedge.reversed, l, 0, 0});
+        }
+        const std::size_t count = region.curves.size() - first;
+        for (std::size_t k = 0; k < count; ++k) {
+            region.curves[first + k].next = first + (k + 1) % count;
+            region.curves[first + k].previous = first + (k + count - 1) % count;
+        }
+    }
+    for (std::size_t c = 0; c < region.curves.size(); ++c) {
+        const NurbsCurve& curve = *region.curves[c].curve;
+        const Interval d = curve.domain();
+        // 64 segments per knot span: fine enough that the nearest segment lies on the nearest curve.
+        std::vector<double> params;
+        std::vector<double> breaks;
+        for (double k : curve.knots())
+            if (k >= d.min && k <= d.max && (breaks.empty() || k > breaks.back())) breaks.push_back(k);
+        for (std::size_t b = 0; b + 1 < breaks.size(); ++b)
+            for (int i = 0; i < 64; ++i) params.push_back(breaks[b] + (breaks[b + 1] - breaks[b]) * i / 64.0);
+        params.push_back(d.max);
+        for (std::size_t k = 0; k + 1 < params.size(); ++k)
+            region.segments.push_back({region.to_plane(curve.point(params[k])), region.to_plane(curve.point(params[k + 1])), c,
+                                       params[k], params[k + 1]});
+    }
+    return region;
+}
+
+struct Seed {
+    Vec3 point;
+    std::uint32_t face;
+    double u, v;
+};
+
+// Uniform grid over the seeds: nearest-seed and radius queries visit only nearby cells.
+class SeedGrid {
+public:
+    SeedGrid(std::vector<Seed> seeds, double cell) : seeds_(std::move(seeds)) {
+        lo_ = hi_ = seeds_.front().point;
+        for (const Seed& s : seeds_) {
+            lo_ = {std::min(lo_.x, s.point.x), std::min(lo_.y, s.point.y), std::min(lo_.z, s.point.z)};
+            hi_ = {std::max(hi_.x, s.point.x), std::max(hi_.y, s.point.y), std::max(hi_.z, s.point.z)};
+        }
+        const double extent = std::max({hi_.x - lo_.x, hi_.y - lo_.y, hi_.z - lo_.z, 1e-300});
+        cell_ = std::max(cell, extent / 128);
+        for (int a = 0; a < 3; ++a) dims_[a] = 1 + static_cast<int>(((&hi_.x)[a] - (&lo_.x)[a]) / cell_);
+        start_.assign(static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]) + 1, 0);
+        for (const Seed& s : seeds_) ++start_[flat(cell_of(s.point)) + 1];
+        for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
+        order_.resize(seeds_.size());
+        std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+        for (std::size_t k = 0; k < seeds_.size(); ++k) order_[fill[flat(cell_of(seeds_[k].point))]++] = k;
+    }
+
+    // Calls visit(seed) for every seed in the cells overlapping the box of half-width r around p.
+    template <class Visit>
+    void for_each_near(const Vec3& p, double r, Visit&& visit) const {
+        std::array<int, 3> a{}, b{};
+        for (int k = 0; k < 3; ++k) {
+            a[k] = std::clamp(static_cast<int>(std::floor(((&p.x)[k] - r - (&lo_.x)[k]) / cell_)), 0, dims_[k] - 1);
+            b[k] = std::clamp(static_cast<int>(std::floor(((&p.x)[k] + r - (&lo_.x)[k]) / cell_)), 0, dims_[k] - 1);
+        }
+        for (int x = a[0]; x <= b[0]; ++x)
+            for (int y = a[1]; y <= b[1]; ++y)
+                for (int z = a[2]; z <= b[2]; ++z) {
+                    const std::size_t c = flat({x, y, z});
+                    for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) visit(seeds_[order_[k]]);
+                }
+    }
+
+    // The distance from p to its nearest seed (grows the search box until it holds the answer).
+    double nearest_distance(const Vec3& p) const {
+        for (double r = cell_;; r *= 2) {
+            double best = std::numeric_limits<double>::infinity();
+            for_each_near(p, r, [&](const Seed& s) { best = std::min(best, distance(s.point, p)); });
+            if (best <= r || r > 4 * (norm(hi_ - lo_) + distance(p, 0.5 * (lo_ + hi_)) + cell_)) return best;
+        }
+    }
+
+private:
+    std::array<int, 3> cell_of(const Vec3& p) const {
+        std::array<int, 3> c{};
+        for (int k = 0; k < 3; ++k)
+            c[k] = std::clamp(static_cast<int>(std::floor(((&p.x)[k] - (&lo_.x)[k]) / cell_)), 0, dims_[k] - 1);
+        return c;
+    }
+    std::size_t flat(const std::array<int, 3>& c) const {
+        return static_cast<std::size_t>((c[0] * dims_[1] + c[1]) * dims_[2] + c[2]);
+    }
+    std::vector<Seed> seeds_;
+    std::vector<std::size_t> start_, order_;
+    Vec3 lo_, hi_;
+    double cell_ = 1;
+    std::array<int, 3> dims_{1, 1, 1};
+};
+
+class DeviationMeter {
+public:
+    explicit DeviationMeter(const Solid& solid) : solid_(solid) {
+        std::vector<Seed> seeds;
+        double spacing = 0;
+        const auto& faces = solid.faces();
+        regions_.resize(faces.size());
+        evaluators_.resize(faces.size());
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            const Face& face = faces[f];
+            const auto id = static_cast<std::uint32_t>(f);
+            if (face.kind() == Face::Kind::surface) evaluators_[f] = std::make_unique<detail::SurfaceEvaluator>(face.surface());
+            if (face.kind() == Face::Kind::planar) {
+                regions_[f] = make_region(face);
+                for (const auto& s : regions_[f].segments) {
+                    seeds.push_back({regions_[f].curves[s.curve].curve->point(s.ta), id, 0, 0});
+                    spacing = std::max(spacing, std::hypot(s.b.x - s.a.x, s.b.y - s.a.y));
+                }
+            }
+            // Surface faces, and the plane patch of planar faces (its interior seeds lie in the region's box).
+            const NurbsSurface& s = face.surface();
+            const int nu = seed_count(s.knots_u(), s.degree_u()), nv = seed_count(s.knots_v(), s.degree_v());
+            const Interval du = s.domain_u(), dv = s.domain_v();
+            std::vector<Vec3> row_previous;
+            for (int i = 0; i <= nu; ++i) {
+                std::vector<Vec3> row;
+                for (int j = 0; j <= nv; ++j) {
+                    // The last sample is the domain's end exactly (min + (max - min) may round past it).
+                    const double u = i == nu ? du.max : du.min + (du.max - du.min) * i / nu;
+                    const double v = j == nv ? dv.max : dv.min + (dv.max - dv.min) * j / nv;
+                    const Vec3 p = s.point(u, v);
+                    // No seeds on a collapsed row (a pole): there every u gives the same point, Newton
+                    // cannot turn u, and the seeds of the first ring around it start better.
+                    const bool collapsed_u = (i > 0 && p == row_previous[static_cast<std::size_t>(j)]) ||
+                                             (i == 0 && p == s.point(du.min + (du.max - du.min) / nu, v));
+                    const bool collapsed_v = !row.empty() && p == row.back();
+                    if (!collapsed_u && !collapsed_v) seeds.push_back({p, id, u, v});
+                    if (j > 0) spacing = std::max(spacing, distance(p, row.back()));
+                    if (i > 0) spacing = std::max(spacing, distance(p, row_previous[static_cast<std::size_t>(j)]));
+                    row.push_back(p);
+                }
+                row_previous = std::move(row);
+            }
+        }
+        spacing_ = spacing;
+        grid_ = std::make_unique<SeedGrid>(std::move(seeds), spacing);
+    }
+
+    // The exact distance from p to the solid's boundary; `warm` is set to the winning face and foot.
+    double distance_to_solid(const Vec3& p, std::uint32_t& face, Foot& warm) const {
+        const double nearest = grid_->nearest_distance(p);
+        const double radius = nearest + 2 * spacing_;
+        // The few best seeds of every face with a seed within reach of the nearest one. Several, not one:
+        // at a seam the nearest seed may sit on the far side of the parameter domain (u = 0 for a point at
+        // u = 0.98), where Newton's step is clamped away; a neighbouring seed starts on the right side.
+        constexpr std::size_t kSeedsPerFace = 4;
+        std::vector<std::vector<std::pair<double, const Seed*>>> best(solid_.faces().size());
+        grid_->for_each_near(p, radius, [&](const Seed& s) {
+            const double d = distance(s.point, p);
+            if (d > radius) return;
+            auto& list = best[s.face];
+            if (list.size() == kSeedsPerFace && d >= list.back().first) return;
+            if (list.size() == kSeedsPerFace) list.pop_back();
+            list.insert(std::upper_bound(list.begin(), list.end(), std::make_pair(d, &s),
+                                         [](const auto& a, const auto& b) { return a.first < b.first; }),
+                        {d, &s});
+        });
+        double result = std::numeric_limits<double>::infinity();
+        for (std::size_t f = 0; f < best.size(); ++f) {
+            if (best[f].empty()) continue;
+            if (!regions_[f].curves.empty()) {
+                const double d = regions_[f].distance_to(p);
+                if (d < result) result = d, face = static_cast<std::uint32_t>(f), warm = Foot{0, 0, d};
+                continue;
+            }
+            for (const auto& [seed_distance, seed] : best[f]) {
+                const Foot foot = invert_on_surface(*evaluators_[f], p, seed->u, seed->v, 50);
+                if (foot.distance < result) result = foot.distance, face = static_cast<std::uint32_t>(f), warm = foot;
+            }
+        }
+        return result;
+    }
+
+    // An upper bound of the distance from p to the solid, cheap when the warm start is close: the
+    // distance to the face `face` reached from `warm` (refined in place), stopping at `enough`.
+    double upper_bound(const Vec3& p, std::uint32_t face, Foot& warm, double enough) const {
+        if (!regions_[face].curves.empty()) return regions_[face].distance_to(p);
+        warm = invert_on_surface(*evaluators_[face], p, warm.u, warm.v, 4, enough);
+        return warm.distance;
+    }
+
+private:
+    static int seed_count(const std::vector<double>& knots, int degree) {
+        int spans = 0;
+        for (std::size_t k = 1; k < knots.size(); ++k)
+            if (knots[k] > knots[k - 1]) ++spans;
+        return std::clamp(spans * std::max(degree, 1) * 3, 12, 96);
+    }
+
+    const Solid& solid_;
+    std::vector<PlanarRegion> regions_;
+    std::vector<std::unique_ptr<detail::SurfaceEvaluator>> evaluators_;  // surface faces
+    std::unique_ptr<SeedGrid> grid_;
+    double spacing_ = 0;
+};
+
+}  // namespace
+
+double max_deviation(const Solid& solid, const Mesh& mesh, const DeviationOptions& options) {
+    require(options.samples_per_edge >= 1 && options.samples_per_edge <= 1000, "options.samples_per_edge",
+            "must be in [1, 1000]");
+    for (const Vec3& v : mesh.vertices) require(is_finite(v), "mesh", "has a vertex with non-finite coordinates");
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (std::uint32_t index : mesh.triangles[t])
+            require(index < mesh.vertices.size(), "mesh",
+                    "triangle " + std::to_string(t) + " refers to vertex " + std::to_string(index) + " of " +
+                        std::to_string(mesh.vertices.size()));
+    if (mesh.triangles.empty()) return 0;
+
+    const DeviationMeter meter(solid);
+    const int n = options.samples_per_edge;
+    double worst = 0;
+    std::uint32_t face = 0;
+    Foot warm;
+    bool have_warm = false;
+    for (const auto& t : mesh.triangles) {
+        const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j) {
+                const double wb = static_cast<double>(i) / n, wc = static_cast<double>(j) / n;
+                const Vec3 p = a * (1 - wb - wc) + b * wb + c * wc;
+                if (have_warm && meter.upper_bound(p, face, warm, worst) <= worst) continue;
+                worst = std::max(worst, meter.distance_to_solid(p, face, warm));
+                have_warm = true;
+            }
+    }
+    return worst;
+}
+
+}  // namespace ratbez

@@ -1,0 +1,121 @@
+#include "surface_evaluator.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "ratbez/error.hpp"
+
+namespace ratbez::detail {
+namespace {
+
+constexpr int kMaxDegree = 15;
+
+// B_{i,n}(s) and its first two derivatives for i = 0..n, by the triangular scheme (A1.3) kept at the
+// degrees n-2, n-1 and n that the derivative formulas need.
+void bernstein_with_derivatives(int n, double s, double* b, double* db, double* ddb) {
+    std::array<double, kMaxDegree + 1> row{};
+    std::array<double, kMaxDegree + 1> lower1{}, lower2{};
+    row[0] = 1;
+    const double t = 1 - s;
+    for (int degree = 1; degree <= n; ++degree) {
+        // row holds degree - 1 here: keep the two rows the derivative formulas need.
+        if (degree - 1 == n - 2) lower2 = row;
+        if (degree - 1 == n - 1) lower1 = row;
+        double saved = 0;
+        for (int k = 0; k < degree; ++k) {
+            const double temp = row[static_cast<std::size_t>(k)];
+            row[static_cast<std::size_t>(k)] = saved + t * temp;
+            saved = s * temp;
+        }
+        row[static_cast<std::size_t>(degree)] = saved;
+    }
+    auto at = [](const std::array<double, kMaxDegree + 1>& a, int i, int size) { return i < 0 || i >= size ? 0.0 : a[static_cast<std::size_t>(i)]; };
+    for (int i = 0; i <= n; ++i) {
+        b[i] = row[static_cast<std::size_t>(i)];
+        db[i] = n >= 1 ? n * (at(lower1, i - 1, n) - at(lower1, i, n)) : 0.0;
+        ddb[i] = n >= 2 ? n * (n - 1) * (at(lower2, i - 2, n - 1) - 2 * at(lower2, i - 1, n - 1) + at(lower2, i, n - 1)) : 0.0;
+    }
+}
+
+std::vector<double> distinct_knots(const std::vector<double>& knots, Interval domain) {
+    std::vector<double> b;
+    for (double k : knots)
+        if (k >= domain.min && k <= domain.max && (b.empty() || k > b.back())) b.push_back(k);
+    return b;
+}
+
+}  // namespace
+
+SurfaceEvaluator::SurfaceEvaluator(const NurbsSurface& surface)
+    : degree_u_(surface.degree_u()), degree_v_(surface.degree_v()) {
+    require(degree_u_ <= kMaxDegree && degree_v_ <= kMaxDegree, "surface", "degree above 15 is not supported by the evaluator");
+    breaks_u_ = distinct_knots(surface.knots_u(), surface.domain_u());
+    breaks_v_ = distinct_knots(surface.knots_v(), surface.domain_v());
+    const auto patches = surface.bezier_patches();
+    require(patches.size() + 1 == breaks_u_.size() && !patches.empty() && patches[0].size() + 1 == breaks_v_.size(), "surface",
+            "Bézier patches do not match the knot spans");
+    for (const auto& row : patches)
+        for (const BezierSurface& patch : row) patches_.insert(patches_.end(), patch.homogeneous_points().begin(), patch.homogeneous_points().end());
+}
+
+SurfaceEvaluator::Located SurfaceEvaluator::locate(double u, double v) const {
+    auto span = [](const std::vector<double>& breaks, double x) {
+        const auto it = std::upper_bound(breaks.begin() + 1, breaks.end() - 1, x);
+        return static_cast<std::size_t>(it - breaks.begin()) - 1;
+    };
+    const std::size_t a = span(breaks_u_, u), b = span(breaks_v_, v);
+    const double hu = breaks_u_[a + 1] - breaks_u_[a], hv = breaks_v_[b + 1] - breaks_v_[b];
+    const std::size_t patch_size = static_cast<std::size_t>((degree_u_ + 1) * (degree_v_ + 1));
+    return {&patches_[(a * (breaks_v_.size() - 1) + b) * patch_size], std::clamp((u - breaks_u_[a]) / hu, 0.0, 1.0),
+            std::clamp((v - breaks_v_[b]) / hv, 0.0, 1.0), 1 / hu, 1 / hv};
+}
+
+Vec3 SurfaceEvaluator::point(double u, double v) const {
+    const Located l = locate(u, v);
+    std::array<double, kMaxDegree + 1> bu{}, dbu{}, ddbu{}, bv{}, dbv{}, ddbv{};
+    bernstein_with_derivatives(degree_u_, l.s, bu.data(), dbu.data(), ddbu.data());
+    bernstein_with_derivatives(degree_v_, l.t, bv.data(), dbv.data(), ddbv.data());
+    Vec4 sum;
+    for (int i = 0; i <= degree_u_; ++i) {
+        Vec4 row;
+        for (int j = 0; j <= degree_v_; ++j) row += l.net[i * (degree_v_ + 1) + j] * bv[static_cast<std::size_t>(j)];
+        sum += row * bu[static_cast<std::size_t>(i)];
+    }
+    return project(sum);
+}
+
+SurfaceJet SurfaceEvaluator::jet(double u, double v) const {
+    const Located l = locate(u, v);
+    std::array<double, kMaxDegree + 1> bu{}, dbu{}, ddbu{}, bv{}, dbv{}, ddbv{};
+    bernstein_with_derivatives(degree_u_, l.s, bu.data(), dbu.data(), ddbu.data());
+    bernstein_with_derivatives(degree_v_, l.t, bv.data(), dbv.data(), ddbv.data());
+    // Homogeneous sums A^w and their partials (in the local parameters).
+    Vec4 h, hu, hv, huu, huv, hvv;
+    for (int i = 0; i <= degree_u_; ++i) {
+        Vec4 r0, r1, r2;  // the row summed against B(t), B'(t), B''(t)
+        for (int j = 0; j <= degree_v_; ++j) {
+            const Vec4& p = l.net[i * (degree_v_ + 1) + j];
+            r0 += p * bv[static_cast<std::size_t>(j)];
+            r1 += p * dbv[static_cast<std::size_t>(j)];
+            r2 += p * ddbv[static_cast<std::size_t>(j)];
+        }
+        const auto k = static_cast<std::size_t>(i);
+        h += r0 * bu[k], hv += r1 * bu[k], hvv += r2 * bu[k];
+        hu += r0 * dbu[k], huv += r1 * dbu[k], huu += r0 * ddbu[k];
+    }
+    // Quotient rule: S = A / w and its partials.
+    const double w = h.w;
+    SurfaceJet j;
+    j.s = weighted_part(h) / w;
+    j.su = (weighted_part(hu) - j.s * hu.w) / w;
+    j.sv = (weighted_part(hv) - j.s * hv.w) / w;
+    j.suu = (weighted_part(huu) - j.su * (2 * hu.w) - j.s * huu.w) / w;
+    j.suv = (weighted_part(huv) - j.su * hv.w - j.sv * hu.w - j.s * huv.w) / w;
+    j.svv = (weighted_part(hvv) - j.sv * (2 * hv.w) - j.s * hvv.w) / w;
+    // Chain rule to the surface's own parameters.
+    j.su *= l.scale_u, j.sv *= l.scale_v;
+    j.suu *= l.scale_u * l.scale_u, j.suv *= l.scale_u * l.scale_v, j.svv *= l.scale_v * l.scale_v;
+    return j;
+}
+
+}  // namespace ratbez::detail

@@ -1,0 +1,44 @@
+#pragma once
+// A fast evaluator for a NURBS surface, for the inner loops of tessellation and deviation measurement
+// (millions of evaluations): the surface is split once into its rational Bézier patches (A5.7, via
+// NurbsSurface::bezier_patches), and each evaluation finds the patch by binary search, evaluates the
+// Bernstein basis and its derivatives directly (000 §1.3; derivative of B_{i,n} = n (B_{i-1,n-1} -
+// B_{i,n-1})) and applies the rational quotient rule to the homogeneous sums (Eq. 1.28 generalised).
+// No allocation per call. Same geometry as NurbsSurface::point / derivatives.
+
+#include <vector>
+
+#include "ratbez/nurbs_surface.hpp"
+#include "ratbez/vec.hpp"
+
+namespace ratbez::detail {
+
+// S and its partial derivatives up to order two at one (u, v).
+struct SurfaceJet {
+    Vec3 s, su, sv, suu, suv, svv;
+};
+
+class SurfaceEvaluator {
+public:
+    explicit SurfaceEvaluator(const NurbsSurface& surface);
+
+    Interval domain_u() const { return {breaks_u_.front(), breaks_u_.back()}; }
+    Interval domain_v() const { return {breaks_v_.front(), breaks_v_.back()}; }
+    // (u, v) must lie in the domain (callers clamp); no validation in the hot path.
+    Vec3 point(double u, double v) const;
+    SurfaceJet jet(double u, double v) const;
+
+private:
+    struct Located {
+        const Vec4* net;  // the patch's (p+1) x (q+1) homogeneous points, row-major
+        double s, t;      // local parameters in [0, 1]
+        double scale_u, scale_v;  // d(s)/du, d(t)/dv
+    };
+    Located locate(double u, double v) const;
+
+    int degree_u_ = 0, degree_v_ = 0;
+    std::vector<double> breaks_u_, breaks_v_;
+    std::vector<Vec4> patches_;  // patch (a, b) at ((a * spans_v + b) * (p+1) * (q+1))
+};
+
+}  // namespace ratbez::detail

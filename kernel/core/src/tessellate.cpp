@@ -1,0 +1,900 @@
+// Adaptive watertight tessellation (tessellate.hpp).
+//
+// Surface faces get a tensor grid of parameter lines chosen per direction from the second fundamental
+// form: linear interpolation of a surface over a cell of size h_u x h_v errs by about
+// (|L| h_u^2 + |N| h_v^2) / 8 at the midpoint of the diagonal where L = S_uu . n and N = S_vv . n have the
+// same sign (Gauss curvature > 0), and by max(|L| h_u^2, |N| h_v^2) / 8 where they differ (the classic
+// bound for piecewise-linear interpolation, e.g. Filip, Magedson and Markot, "Surface algorithms using
+// bounds on derivatives", CAGD 1986). Lines in the first direction are equidistributed for a share of the
+// tolerance; the second direction gets what that leaves at each place (so a sphere's latitude lines
+// spread out towards the poles, where the longitude chords are short). Both orders and several shares
+// are tried and the grid with fewest cells kept. Each cell is then checked on the real surface (the
+// distance from sample points of its triangles to the surface point with the same barycentric (u, v) is
+// an upper bound of the distance to the surface), and the grid refined where a cell fails.
+//
+// Edges are sampled once: an edge used by surface faces takes the union of their lines along it, an
+// edge of planar faces only is sampled by its own chordal deviation. Cells along a boundary whose edge
+// carries extra samples (from the neighbouring face) are closed with a zipper strip; degenerate sides
+// collapse to their single vertex, so cells at a pole become fan triangles.
+
+#include "ratbez/tessellate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "polygon_triangulation.hpp"
+#include "ratbez/error.hpp"
+#include "strip_zipper.hpp"
+#include "surface_evaluator.hpp"
+
+namespace ratbez {
+namespace {
+
+using Id = std::uint32_t;
+
+struct Settings {
+    double tolerance = 0;
+    double angle_rad = 0;  // 0: no angle limit
+    std::size_t max_triangles = 0;
+};
+
+[[noreturn]] void throw_over_budget(double estimate, std::size_t budget) {
+    throw Error("tolerance: too fine for max_triangles: the mesh would need about " +
+                std::to_string(static_cast<long long>(std::min(estimate, 9e18))) + " triangles, more than " +
+                std::to_string(budget));
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Mesh assembly: one mesh vertex per B-rep vertex and per edge sample, so nothing needs welding.
+
+class MeshAssembler {
+public:
+    Id add_point(const Vec3& p) {
+        mesh_.vertices.push_back(p);
+        return static_cast<Id>(mesh_.vertices.size() - 1);
+    }
+    Id vertex_id(const VertexPtr& vertex) {
+        const auto [it, inserted] = vertex_ids_.try_emplace(vertex.get(), 0);
+        if (inserted) it->second = add_point(vertex->point);
+        return it->second;
+    }
+    void add_triangle(Id a, Id b, Id c) {
+        if (a == b || b == c || c == a) return;  // a collapsed side: no zero-area triangle
+        mesh_.triangles.push_back({a, b, c});
+    }
+    const Vec3& point(Id id) const { return mesh_.vertices[id]; }
+    Mesh take() { return std::move(mesh_); }
+
+private:
+    Mesh mesh_;
+    std::map<const Vertex*, Id> vertex_ids_;
+};
+
+// ---------------------------------------------------------------------------------------------------------
+// The four sides of a surface face and how the face's parameter maps to the edge's.
+
+constexpr std::array<Side, 4> kSides{Side::v_min, Side::u_max, Side::v_max, Side::u_min};
+int index(Side s) { return static_cast<int>(s); }
+bool runs_along_u(Side s) { return s == Side::v_min || s == Side::v_max; }
+
+struct SideMap {
+    const Edge* edge = nullptr;
+    bool degenerate = false;
+    bool flipped = false;  // the edge runs against the face parameter (tolerated, brep.hpp says it does not)
+    double p0 = 0, p1 = 1;  // the face's parameter range along the side
+    double t0 = 0, t1 = 1;  // the edge's domain
+
+    double to_edge(double p) const {
+        if (p == p0) return flipped ? t1 : t0;
+        if (p == p1) return flipped ? t0 : t1;
+        const double s = (p - p0) / (p1 - p0);
+        return flipped ? t1 - s * (t1 - t0) : t0 + s * (t1 - t0);
+    }
+    double to_face(double t) const {
+        if (t == t0) return flipped ? p1 : p0;
+        if (t == t1) return flipped ? p0 : p1;
+        const double s = (t - t0) / (t1 - t0);
+        return flipped ? p1 - s * (p1 - p0) : p0 + s * (p1 - p0);
+    }
+};
+
+SideMap map_side(const Face& face, Side side) {
+    const Coedge& coedge = face.sides()[static_cast<std::size_t>(index(side))];
+    require(coedge.edge != nullptr, "solid", "a surface face has a side without an edge");
+    const NurbsSurface& s = face.surface();
+    const Interval du = s.domain_u(), dv = s.domain_v();
+    SideMap m;
+    m.edge = coedge.edge.get();
+    m.degenerate = coedge.edge->degenerate;
+    const bool along_u = runs_along_u(side);
+    m.p0 = along_u ? du.min : dv.min;
+    m.p1 = along_u ? du.max : dv.max;
+    const Interval dt = coedge.edge->curve.domain();
+    m.t0 = dt.min, m.t1 = dt.max;
+    if (!m.degenerate) {
+        // The edge is the isocurve with the same parameter; compare an interior point of each run
+        // direction so that closed edges (start == end) are decided too.
+        const double fixed = side == Side::v_min ? dv.min : side == Side::v_max ? dv.max : side == Side::u_min ? du.min : du.max;
+        auto surface_at = [&](double p) { return along_u ? s.point(p, fixed) : s.point(fixed, p); };
+        const Vec3 edge_quarter = coedge.edge->curve.point(m.t0 + 0.25 * (m.t1 - m.t0));
+        const double same = distance(edge_quarter, surface_at(m.p0 + 0.25 * (m.p1 - m.p0)));
+        const double opposite = distance(edge_quarter, surface_at(m.p0 + 0.75 * (m.p1 - m.p0)));
+        m.flipped = opposite < same;
+    }
+    return m;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Curvature data of a surface face on a fine sample grid, and the parameter lines derived from it.
+
+// The distinct knots of a knot vector inside its domain (the span boundaries).
+std::vector<double> breakpoints(const std::vector<double>& knots, Interval domain) {
+    std::vector<double> b;
+    for (double k : knots)
+        if (k >= domain.min && k <= domain.max && (b.empty() || k > b.back())) b.push_back(k);
+    if (b.empty() || b.front() != domain.min) b.insert(b.begin(), domain.min);
+    if (b.back() != domain.max) b.push_back(domain.max);
+    return b;
+}
+
+std::vector<double> sample_params(const std::vector<double>& breaks) {
+    const std::size_t spans = breaks.size() - 1;
+    const std::size_t per_span = std::max<std::size_t>(2, std::min<std::size_t>(16, 1024 / spans));
+    std::vector<double> s;
+    for (std::size_t k = 0; k < spans; ++k)
+        for (std::size_t i = 0; i < per_span; ++i)
+            s.push_back(breaks[k] + (breaks[k + 1] - breaks[k]) * static_cast<double>(i) / static_cast<double>(per_span));
+    s.push_back(breaks.back());
+    return s;
+}
+
+struct CurvatureSamples {
+    std::vector<double> us, vs;
+    std::vector<double> L, N;      // S_uu . n and S_vv . n, index i * vs.size() + j
+    std::vector<Vec3> normals;
+    std::size_t at(std::size_t i, std::size_t j) const { return i * vs.size() + j; }
+};
+
+CurvatureSamples sample_curvature(const NurbsSurface& s, const detail::SurfaceEvaluator& e) {
+    CurvatureSamples c;
+    c.us = sample_params(breakpoints(s.knots_u(), s.domain_u()));
+    c.vs = sample_params(breakpoints(s.knots_v(), s.domain_v()));
+    c.L.resize(c.us.size() * c.vs.size());
+    c.N.resize(c.L.size());
+    c.normals.resize(c.L.size());
+    for (std::size_t i = 0; i < c.us.size(); ++i)
+        for (std::size_t j = 0; j < c.vs.size(); ++j) {
+            const detail::SurfaceJet d = e.jet(c.us[i], c.vs[j]);
+            const Vec3 cross_product = cross(d.su, d.sv);
+            const double length = norm(cross_product);
+            // Where a partial vanishes (poles, apexes) the surface's own limit normal.
+            const Vec3 n = length > 1e-10 * (dot(d.su, d.su) + dot(d.sv, d.sv)) ? cross_product / length : s.normal(c.us[i], c.vs[j]);
+            c.L[c.at(i, j)] = dot(d.suu, n);
+            c.N[c.at(i, j)] = dot(d.svv, n);
+            c.normals[c.at(i, j)] = n;
+        }
+    return c;
+}
+
+// A view of the samples with the chosen direction first: first(a, b) indexes direction `a` sample a and
+// the other direction's sample b.
+struct DirectionView {
+    const CurvatureSamples& c;
+    bool u_first;
+    const std::vector<double>& first() const { return u_first ? c.us : c.vs; }
+    const std::vector<double>& second() const { return u_first ? c.vs : c.us; }
+    std::size_t at(std::size_t a, std::size_t b) const { return u_first ? c.at(a, b) : c.at(b, a); }
+    double k_first(std::size_t a, std::size_t b) const { return u_first ? c.L[at(a, b)] : c.N[at(a, b)]; }
+    double k_second(std::size_t a, std::size_t b) const { return u_first ? c.N[at(a, b)] : c.L[at(a, b)]; }
+    const Vec3& normal(std::size_t a, std::size_t b) const { return c.normals[at(a, b)]; }
+};
+
+// Lines over the samples' range with density rho (per sample interval, lines per unit parameter),
+// equidistributed: each line interval carries the same integral of rho. Every piece between two
+// consecutive `breaks` gets its own whole number of intervals, at least one.
+std::vector<double> place_lines(const std::vector<double>& samples, const std::vector<double>& rho,
+                                const std::vector<double>& breaks) {
+    std::vector<double> lines{samples.front()};
+    std::size_t a = 0;
+    for (std::size_t piece = 0; piece + 1 < breaks.size(); ++piece) {
+        const std::size_t first = a;
+        double total = 0;
+        while (a + 1 < samples.size() && samples[a] < breaks[piece + 1]) {
+            total += rho[a] * (samples[a + 1] - samples[a]);
+            ++a;
+        }
+        const std::size_t last = a;  // sample index of the piece's end
+        const auto count = static_cast<std::size_t>(std::max(1.0, std::ceil(total * (1 - 1e-12))));
+        const double step = total / static_cast<double>(count);
+        double acc = 0;
+        std::size_t k = first;
+        for (std::size_t line = 1; line < count; ++line) {
+            const double target = step * static_cast<double>(line);
+            while (k + 1 < last && acc + rho[k] * (samples[k + 1] - samples[k]) < target) {
+                acc += rho[k] * (samples[k + 1] - samples[k]);
+                ++k;
+            }
+            const double within = rho[k] > 0 ? (target - acc) / rho[k] : 0;
+            lines.push_back(std::min(samples[k] + within, samples[k + 1]));
+        }
+        lines.push_back(samples[last]);
+    }
+    return lines;
+}
+
+// The parameter lines of one direction: the spacing the share `budget8` (= 8 x allowed error) allows,
+// the angle limit, and a floor of `min_segments` over the whole range. `budget8_at(a, b)` is the budget at
+// each sample pair; curvature is `k(a, b)`.
+template <class Budget, class Curvature, class Normal>
+std::vector<double> lines_for(const std::vector<double>& samples, std::size_t other_count, Budget&& budget8_at,
+                              Curvature&& k, Normal&& normal, double angle_rad, int min_segments,
+                              const std::vector<double>& breaks, double max_lines) {
+    std::vector<double> rho(samples.size() - 1, 0.0);
+    const double floor_density = min_segments / (samples.back() - samples.front());
+    double total = 0;
+    for (std::size_t a = 0; a + 1 < samples.size(); ++a) {
+        double r = floor_density;
+        const double h = samples[a + 1] - samples[a];
+        for (std::size_t b = 0; b < other_count; ++b) {
+            for (std::size_t e : {a, a + 1}) r = std::max(r, std::sqrt(std::abs(k(e, b)) / budget8_at(e, b)));
+            // Normals at the ends of any mesh edge within angle: sqrt(2) for the cell diagonal.
+            if (angle_rad > 0) r = std::max(r, distance(normal(a + 1, b), normal(a, b)) / h * std::numbers::sqrt2 / angle_rad);
+        }
+        rho[a] = r;
+        total += r * h;
+    }
+    if (total > max_lines) return {};
+    return place_lines(samples, rho, breaks);
+}
+
+// The spacing of the line interval containing parameter t (the larger of the two at a line).
+double spacing_at(const std::vector<double>& lines, double t) {
+    const auto it = std::upper_bound(lines.begin() + 1, lines.end() - 1, t);
+    const auto k = static_cast<std::size_t>(it - lines.begin()) - 1;  // lines[k] <= t <= lines[k + 1]
+    double h = lines[k + 1] - lines[k];
+    if (k > 0 && lines[k] == t) h = std::max(h, lines[k] - lines[k - 1]);
+    return h;
+}
+
+struct Grid {
+    std::vector<double> u, v;
+    double cells() const { return static_cast<double>(u.size() - 1) * static_cast<double>(v.size() - 1); }
+};
+
+// The economical grid for an error target: both direction orders and several shares of the tolerance
+// for the first direction; the grid with the fewest cells wins. Empty grid: over `max_cells`.
+Grid choose_grid(const CurvatureSamples& c, double target, double angle_rad, std::array<int, 2> min_segments,
+                 const std::array<std::vector<double>, 2>& creases, double max_cells) {
+    Grid best;
+    double best_cells = std::numeric_limits<double>::infinity();
+    for (bool u_first : {true, false}) {
+        const DirectionView view{c, u_first};
+        const int min_first = min_segments[u_first ? 0 : 1], min_second = min_segments[u_first ? 1 : 0];
+        const auto& creases_first = creases[u_first ? 0 : 1];
+        const auto& creases_second = creases[u_first ? 1 : 0];
+        for (double share : {0.3, 0.4, 0.5, 0.6, 0.7, 0.8}) {
+            const auto first = lines_for(
+                view.first(), view.second().size(), [&](std::size_t, std::size_t) { return 8 * share * target; },
+                [&](std::size_t a, std::size_t b) { return view.k_first(a, b); },
+                [&](std::size_t a, std::size_t b) { return view.normal(a, b); }, angle_rad, min_first, creases_first,
+                max_cells);
+            if (first.empty()) continue;
+            // What the first direction's actual chords leave of the budget where the curvatures add up.
+            std::vector<double> h_first(view.first().size());
+            for (std::size_t a = 0; a < h_first.size(); ++a) h_first[a] = spacing_at(first, view.first()[a]);
+            auto remaining = [&](std::size_t b, std::size_t a) {
+                const double k1 = view.k_first(a, b), k2 = view.k_second(a, b);
+                const double used = k1 * k2 > 0 ? std::abs(k1) * h_first[a] * h_first[a] : 0.0;
+                return std::max(8 * target - used, 0.05 * 8 * target);
+            };
+            const auto second = lines_for(
+                view.second(), view.first().size(), remaining,
+                [&](std::size_t b, std::size_t a) { return view.k_second(a, b); },
+                [&](std::size_t b, std::size_t a) { return view.normal(a, b); }, angle_rad, min_second,
+                creases_second, max_cells / static_cast<double>(first.size() - 1));
+            if (second.empty()) continue;
+            const double cells = static_cast<double>(first.size() - 1) * static_cast<double>(second.size() - 1);
+            if (cells < best_cells) {
+                best_cells = cells;
+                best.u = u_first ? first : second;
+                best.v = u_first ? second : first;
+            }
+        }
+    }
+    return best;
+}
+
+// Knot lines across which the surface has a crease (C0 in geometry, not only in parameter: the rational
+// circle's double knots are G1 and need no line). Detected by normals just either side of the knot.
+std::vector<double> crease_lines(const NurbsSurface& s, bool along_u) {
+    const Interval d = along_u ? s.domain_u() : s.domain_v();
+    const Interval other = along_u ? s.domain_v() : s.domain_u();
+    const auto breaks = breakpoints(along_u ? s.knots_u() : s.knots_v(), d);
+    std::vector<double> result{d.min};
+    const double delta = 1e-7 * (d.max - d.min);
+    for (std::size_t k = 1; k + 1 < breaks.size(); ++k) {
+        bool crease = false;
+        for (int q = 1; q <= 5 && !crease; ++q) {
+            const double w = other.min + (other.max - other.min) * q / 6.0;
+            const Vec3 before = along_u ? s.normal(breaks[k] - delta, w) : s.normal(w, breaks[k] - delta);
+            const Vec3 after = along_u ? s.normal(breaks[k] + delta, w) : s.normal(w, breaks[k] + delta);
+            crease = distance(before, after) > 1e-4;
+        }
+        if (crease) result.push_back(breaks[k]);
+    }
+    result.push_back(d.max);
+    return result;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Cells: a grid rectangle whose sides may carry extra boundary samples and may be collapsed (degenerate).
+
+struct CellVertex {
+    double u = 0, v = 0;
+    Vec3 point;
+    Id id = 0;
+    // A pole: a degenerate side collapsed to this vertex, free in u (bottom/top) or in v (left/right).
+    enum class Free : unsigned char { none, u, v } free = Free::none;
+};
+
+// The deviation at the midpoint of a candidate diagonal: how far the chord strays from the surface.
+double diagonal_deviation(const detail::SurfaceEvaluator& s, const CellVertex& a, const CellVertex& b) {
+    return distance(s.point(0.5 * (a.u + b.u), 0.5 * (a.v + b.v)), 0.5 * (a.point + b.point));
+}
+
+// Rails of a cell: bottom and top (left to right) when its left and right sides are plain, else left and
+// right (bottom to top). A collapsed rail is one vertex. Returns triangles of CellVertex pointers,
+// counterclockwise in (u, v).
+using CellTriangle = std::array<const CellVertex*, 3>;
+
+void zip(const detail::SurfaceEvaluator& s, const std::vector<CellVertex>& lower, const std::vector<CellVertex>& upper,
+         std::vector<CellTriangle>& out) {
+    auto cost = [&](std::size_t i, std::size_t j) {
+        // Prefer the smaller chordal deviation; between equal ones (flat directions), the shorter diagonal.
+        return diagonal_deviation(s, lower[i], upper[j]) + 1e-9 * distance(lower[i].point, upper[j].point);
+    };
+    for (const auto& t : detail::zip_rails(lower.size(), upper.size(), cost)) {
+        CellTriangle tri;
+        for (int k = 0; k < 3; ++k)
+            tri[static_cast<std::size_t>(k)] = t[static_cast<std::size_t>(k)] < lower.size()
+                                                   ? &lower[t[static_cast<std::size_t>(k)]]
+                                                   : &upper[t[static_cast<std::size_t>(k)] - lower.size()];
+        out.push_back(tri);
+    }
+}
+
+// A rail collapsed to its single vertex when the side is degenerate; its u (or v) is the side's middle,
+// which keeps the parameter triangle of a pole fan tight for the error bound.
+std::vector<CellVertex> collapse(std::vector<CellVertex> rail, CellVertex::Free free) {
+    if (rail.size() > 1 && std::all_of(rail.begin(), rail.end(), [&](const CellVertex& c) { return c.id == rail[0].id; })) {
+        CellVertex mid = rail.front();
+        mid.free = free;
+        mid.u = 0.5 * (rail.front().u + rail.back().u);
+        mid.v = 0.5 * (rail.front().v + rail.back().v);
+        return {mid};
+    }
+    return rail;
+}
+
+// Triangulates one cell given its four side chains (each including both of its corners, in
+// counterclockwise-compatible direction: bottom and top left to right, left and right bottom to top).
+// `center` (when the cell has extra samples on two adjacent sides) is filled by the callback.
+template <class MakeCenter>
+void triangulate_cell(const detail::SurfaceEvaluator& s, const std::vector<CellVertex>& bottom, const std::vector<CellVertex>& right,
+                      const std::vector<CellVertex>& top, const std::vector<CellVertex>& left,
+                      std::vector<CellVertex>& storage_lower, std::vector<CellVertex>& storage_upper,
+                      CellVertex& center_storage, MakeCenter&& make_center, std::vector<CellTriangle>& out) {
+    const bool plain_left = left.size() == 2, plain_right = right.size() == 2;
+    const bool plain_bottom = bottom.size() == 2, plain_top = top.size() == 2;
+    if (plain_left && plain_right) {
+        storage_lower = collapse(bottom, CellVertex::Free::u);
+        storage_upper = collapse(top, CellVertex::Free::u);
+        zip(s, storage_lower, storage_upper, out);
+    } else if (plain_bottom && plain_top) {
+        storage_lower = collapse(right, CellVertex::Free::v);
+        storage_upper = collapse(left, CellVertex::Free::v);
+        zip(s, storage_lower, storage_upper, out);
+    } else {
+        // Extra samples on adjacent sides: a fan from the cell's center never makes a degenerate triangle.
+        storage_lower.clear();
+        auto append = [&](const std::vector<CellVertex>& chain, bool forward) {
+            for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+                const CellVertex& c = forward ? chain[k] : chain[chain.size() - 1 - k];
+                if (storage_lower.empty() || storage_lower.back().id != c.id) storage_lower.push_back(c);
+            }
+        };
+        append(bottom, true);
+        append(right, true);
+        append(top, false);
+        append(left, false);
+        while (storage_lower.size() > 1 && storage_lower.back().id == storage_lower.front().id) storage_lower.pop_back();
+        center_storage = make_center();
+        for (std::size_t k = 0; k < storage_lower.size(); ++k)
+            out.push_back({&center_storage, &storage_lower[k], &storage_lower[(k + 1) % storage_lower.size()]});
+    }
+}
+
+// The parameters of the barycentric point b of a cell triangle: the same combination of the vertices'
+// (u, v), except that a pole's free parameter is taken from the other two vertices (the collapsed
+// bilinear map of Duffy, SIAM J. Numer. Anal. 1982), so that the edge from a pole to a ring vertex maps
+// onto that vertex's isoparametric line: the meridian the chord actually spans.
+std::pair<double, double> triangle_parameters(const CellTriangle& t, const std::array<double, 3>& b) {
+    double u = 0, v = 0;
+    for (std::size_t k = 0; k < 3; ++k) u += b[k] * t[k]->u, v += b[k] * t[k]->v;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (t[k]->free == CellVertex::Free::none) continue;
+        const std::size_t i = (k + 1) % 3, j = (k + 2) % 3;
+        const double rest = b[i] + b[j];
+        if (rest <= 0) continue;
+        if (t[k]->free == CellVertex::Free::u) u = (b[i] * t[i]->u + b[j] * t[j]->u) / rest;
+        else v = (b[i] * t[i]->v + b[j] * t[j]->v) / rest;
+    }
+    return {u, v};
+}
+
+// The distance from p to the surface point at (u, v), improved (when above `good_enough`) by up to two
+// Gauss–Newton steps towards the foot of p: every value is the distance to a point of the surface, so
+// an upper bound of the distance to the surface. The steps matter where the parameterisation shears
+// (near poles the barycentric (u, v) lands beside the chord's point, not across it).
+double distance_bound(const detail::SurfaceEvaluator& s, const Vec3& p, double u, double v, double good_enough) {
+    double best = distance(s.point(u, v), p);
+    const Interval du = s.domain_u(), dv = s.domain_v();
+    for (int step = 0; step < 2 && best > good_enough; ++step) {
+        const detail::SurfaceJet d = s.jet(u, v);
+        const Vec3 r = p - d.s;
+        const double a = dot(d.su, d.su), b = dot(d.su, d.sv), c = dot(d.sv, d.sv);
+        const double det = a * c - b * b;
+        if (!(det > 1e-30 * (a * c + 1e-300))) break;
+        const double f = dot(r, d.su), g = dot(r, d.sv);
+        u = std::clamp(u + (c * f - b * g) / det, du.min, du.max);
+        v = std::clamp(v + (a * g - b * f) / det, dv.min, dv.max);
+        best = std::min(best, distance(s.point(u, v), p));
+    }
+    return best;
+}
+
+// Upper bound of the chordal error of a triangle at the edge midpoints, the centroid and the points
+// halfway from the centroid to the vertices (each by distance_bound from triangle_parameters);
+// refinement towards the true distance stops once a sample is within `good_enough`.
+double triangle_error(const detail::SurfaceEvaluator& s, const CellTriangle& t, double good_enough) {
+    static constexpr std::array<std::array<double, 3>, 7> kBarycentric{{{0.5, 0.5, 0},
+                                                                        {0, 0.5, 0.5},
+                                                                        {0.5, 0, 0.5},
+                                                                        {1 / 3.0, 1 / 3.0, 1 / 3.0},
+                                                                        {2 / 3.0, 1 / 6.0, 1 / 6.0},
+                                                                        {1 / 6.0, 2 / 3.0, 1 / 6.0},
+                                                                        {1 / 6.0, 1 / 6.0, 2 / 3.0}}};
+    double worst = 0;
+    for (const auto& b : kBarycentric) {
+        const auto [u, v] = triangle_parameters(t, b);
+        const Vec3 p = b[0] * t[0]->point + b[1] * t[1]->point + b[2] * t[2]->point;
+        worst = std::max(worst, distance_bound(s, p, u, v, good_enough));
+    }
+    return worst;
+}
+
+double angle_between(const Vec3& a, const Vec3& b) {
+    return std::atan2(norm(cross(a, b)), dot(a, b));
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// The plan of a surface face: its sides and grid.
+
+struct SurfacePlan {
+    const Face* face = nullptr;
+    std::shared_ptr<const detail::SurfaceEvaluator> evaluator;
+    std::array<SideMap, 4> sides;
+    Grid grid;
+    std::array<int, 2> min_segments{1, 1};
+    std::array<std::vector<double>, 2> creases;
+};
+
+std::array<int, 2> minimum_segments(const std::array<SideMap, 4>& sides) {
+    // A direction closed on itself (both sides the same edge) needs three intervals to enclose anything;
+    // one bounded by two degenerate sides needs two (one interval would join pole to pole).
+    auto minimum = [&](Side a, Side b) {
+        const SideMap &sa = sides[static_cast<std::size_t>(index(a))], &sb = sides[static_cast<std::size_t>(index(b))];
+        if (sa.edge == sb.edge && !sa.degenerate) return 3;
+        if (sa.degenerate && sb.degenerate) return 2;
+        return 1;
+    };
+    return {minimum(Side::u_min, Side::u_max), minimum(Side::v_min, Side::v_max)};
+}
+
+// The corner vertices of a grid cell for the error check (edge samples not yet known): degenerate
+// sides share one pseudo id so that they collapse like in the final mesh.
+struct CheckResult {
+    double worst_ratio = 0;
+    std::vector<char> refine_u, refine_v;  // per grid interval
+};
+
+CheckResult check_grid(const SurfacePlan& plan, const Settings& settings) {
+    const detail::SurfaceEvaluator& s = *plan.evaluator;
+    const Grid& g = plan.grid;
+    const std::size_t nu = g.u.size(), nv = g.v.size();
+    std::vector<Vec3> points(nu * nv), normals;
+    for (std::size_t i = 0; i < nu; ++i)
+        for (std::size_t j = 0; j < nv; ++j) points[i * nv + j] = s.point(g.u[i], g.v[j]);
+    if (settings.angle_rad > 0) {
+        normals.resize(nu * nv);
+        for (std::size_t i = 0; i < nu; ++i)
+            for (std::size_t j = 0; j < nv; ++j) normals[i * nv + j] = plan.face->normal(g.u[i], g.v[j]);
+    }
+    const Id pole_base = static_cast<Id>(nu * nv);
+    auto id_of = [&](std::size_t i, std::size_t j) -> Id {
+        if (j == 0 && plan.sides[0].degenerate) return pole_base + 0;
+        if (i == nu - 1 && plan.sides[1].degenerate) return pole_base + 1;
+        if (j == nv - 1 && plan.sides[2].degenerate) return pole_base + 2;
+        if (i == 0 && plan.sides[3].degenerate) return pole_base + 3;
+        return static_cast<Id>(i * nv + j);
+    };
+    auto vertex = [&](std::size_t i, std::size_t j) { return CellVertex{g.u[i], g.v[j], points[i * nv + j], id_of(i, j)}; };
+
+    CheckResult result;
+    result.refine_u.assign(nu - 1, 0);
+    result.refine_v.assign(nv - 1, 0);
+    std::vector<CellVertex> lower, upper;
+    CellVertex center;
+    std::vector<CellTriangle> triangles;
+    for (std::size_t i = 0; i + 1 < nu; ++i)
+        for (std::size_t j = 0; j + 1 < nv; ++j) {
+            triangles.clear();
+            const CellVertex c00 = vertex(i, j), c10 = vertex(i + 1, j), c11 = vertex(i + 1, j + 1), c01 = vertex(i, j + 1);
+            triangulate_cell(s, {c00, c10}, {c10, c11}, {c01, c11}, {c00, c01}, lower, upper, center,
+                             [] { return CellVertex{}; }, triangles);
+            double error = 0;
+            for (const auto& t : triangles) error = std::max(error, triangle_error(s, t, 0.5 * settings.tolerance));
+            const double ratio = error / settings.tolerance;
+            bool angle_failed = false;
+            double angle_u = 0, angle_v = 0;
+            if (settings.angle_rad > 0) {
+                const Vec3 &n00 = normals[i * nv + j], &n10 = normals[(i + 1) * nv + j];
+                const Vec3 &n01 = normals[i * nv + j + 1], &n11 = normals[(i + 1) * nv + j + 1];
+                angle_u = std::max(angle_between(n00, n10), angle_between(n01, n11));
+                angle_v = std::max(angle_between(n00, n01), angle_between(n10, n11));
+                const double diagonal = std::max(angle_between(n00, n11), angle_between(n10, n01));
+                angle_failed = std::max({angle_u, angle_v, diagonal}) > settings.angle_rad;
+            }
+            result.worst_ratio = std::max(result.worst_ratio, ratio);
+            if (ratio > 1 || angle_failed) {
+                // Split the direction whose chords err more (both when comparable).
+                const double chord_u = std::max(diagonal_deviation(s, c00, c10), diagonal_deviation(s, c01, c11));
+                const double chord_v = std::max(diagonal_deviation(s, c00, c01), diagonal_deviation(s, c10, c11));
+                bool split_u = chord_u >= 0.5 * chord_v, split_v = chord_v >= 0.5 * chord_u;
+                if (angle_failed && ratio <= 1) split_u = angle_u >= 0.5 * angle_v, split_v = angle_v >= 0.5 * angle_u;
+                if (split_u) result.refine_u[i] = 1;
+                if (split_v) result.refine_v[j] = 1;
+                if (angle_failed) result.worst_ratio = std::max(result.worst_ratio, 1.0 + 1e-9);
+            }
+        }
+    return result;
+}
+
+std::vector<double> bisect_marked(const std::vector<double>& lines, const std::vector<char>& marked) {
+    std::vector<double> out{lines.front()};
+    for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
+        if (marked[k]) out.push_back(0.5 * (lines[k] + lines[k + 1]));
+        out.push_back(lines[k + 1]);
+    }
+    return out;
+}
+
+// Model grid, then the check on the real surface: a small global rescale when the model was a little
+// optimistic everywhere, local bisection of the failing intervals otherwise.
+void refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Settings& settings, double max_cells) {
+    double target = settings.tolerance;
+    for (int iteration = 0; iteration < 40; ++iteration) {
+        if (plan.grid.cells() * 2 > static_cast<double>(settings.max_triangles))
+            throw_over_budget(plan.grid.cells() * 2, settings.max_triangles);
+        const CheckResult check = check_grid(plan, settings);
+        if (check.worst_ratio <= 1) return;
+        const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
+                                     std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;
+        if (iteration < 3 && check.worst_ratio < 1.5) {
+            target *= 0.99 / check.worst_ratio;
+            Grid g = choose_grid(curvature, target, settings.angle_rad, plan.min_segments, plan.creases, max_cells);
+            if (g.u.empty()) throw_over_budget(max_cells * 2, settings.max_triangles);
+            plan.grid = std::move(g);
+        } else if (some_marked) {
+            plan.grid.u = bisect_marked(plan.grid.u, check.refine_u);
+            plan.grid.v = bisect_marked(plan.grid.v, check.refine_v);
+        } else {
+            return;
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Edge samples: parameters on the edge's own curve and the mesh vertex of each.
+
+struct EdgeSamples {
+    std::vector<double> params;
+    std::vector<Id> ids;
+};
+
+// Chordal sampling of a curve on its own (edges of planar faces only): recursive bisection of each knot
+// span until the chord is within tolerance of the curve at five interior points.
+void sample_curve(const NurbsCurve& curve, double a, double b, const Vec3& pa, const Vec3& pb, double tolerance,
+                  int depth, std::vector<double>& out) {
+    double worst = 0;
+    const Vec3 chord = pb - pa;
+    const double chord_length2 = dot(chord, chord);
+    for (int k = 1; k <= 5; ++k) {
+        const Vec3 p = curve.point(a + (b - a) * k / 6.0);
+        double s = chord_length2 > 0 ? dot(p - pa, chord) / chord_length2 : 0;
+        s = std::clamp(s, 0.0, 1.0);
+        worst = std::max(worst, distance(p, pa + chord * s));
+    }
+    if (worst > tolerance && depth < 40) {
+        const double m = 0.5 * (a + b);
+        const Vec3 pm = curve.point(m);
+        sample_curve(curve, a, m, pa, pm, tolerance, depth + 1, out);
+        sample_curve(curve, m, b, pm, pb, tolerance, depth + 1, out);
+    } else {
+        out.push_back(b);
+    }
+}
+
+std::vector<double> sample_curve(const NurbsCurve& curve, double tolerance) {
+    const auto breaks = breakpoints(curve.knots(), curve.domain());
+    std::vector<double> params{breaks.front()};
+    for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
+        sample_curve(curve, breaks[k], breaks[k + 1], curve.point(breaks[k]), curve.point(breaks[k + 1]), tolerance, 0,
+                     params);
+    return params;
+}
+
+// Sorted, with values closer than a relative 1e-12 of the domain merged (the ends kept exact).
+std::vector<double> merge_params(std::vector<double> params, double t0, double t1) {
+    params.push_back(t0);
+    params.push_back(t1);
+    std::sort(params.begin(), params.end());
+    const double eps = 1e-12 * (t1 - t0);
+    std::vector<double> out;
+    for (double t : params) {
+        if (t < t0 || t > t1) continue;
+        if (!out.empty() && t - out.back() <= eps) continue;
+        out.push_back(t);
+    }
+    if (out.back() != t1) {
+        if (t1 - out.back() <= eps && out.size() > 1) out.back() = t1;
+        else out.push_back(t1);
+    }
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+
+class Tessellator {
+public:
+    Tessellator(const Solid& solid, const Settings& settings) : solid_(solid), settings_(settings) {}
+
+    Mesh run() {
+        plan_surfaces();
+        sample_edges();
+        for (const SurfacePlan& plan : plans_) mesh_surface(plan);
+        for (const Face& face : solid_.faces())
+            if (face.kind() == Face::Kind::planar) mesh_planar(face);
+        return assembler_.take();
+    }
+
+private:
+    void plan_surfaces() {
+        std::vector<CurvatureSamples> curvatures;
+        const double max_cells = static_cast<double>(settings_.max_triangles) / 2;
+        for (const Face& face : solid_.faces()) {
+            if (face.kind() != Face::Kind::surface) continue;
+            SurfacePlan plan;
+            plan.face = &face;
+            plan.evaluator = std::make_shared<const detail::SurfaceEvaluator>(face.surface());
+            for (Side side : kSides) plan.sides[static_cast<std::size_t>(index(side))] = map_side(face, side);
+            plan.min_segments = minimum_segments(plan.sides);
+            plan.creases = {crease_lines(face.surface(), true), crease_lines(face.surface(), false)};
+            curvatures.push_back(sample_curvature(face.surface(), *plan.evaluator));
+            plan.grid = choose_grid(curvatures.back(), settings_.tolerance, settings_.angle_rad, plan.min_segments,
+                                    plan.creases, max_cells);
+            if (plan.grid.u.empty()) throw_over_budget(max_cells * 2 + 1, settings_.max_triangles);
+            plans_.push_back(std::move(plan));
+        }
+        // The estimate for the whole solid before any mesh is built: two triangles per cell, plus the
+        // planar faces (about one triangle per boundary sample, bounded by the cells along their edges).
+        double estimate = 0;
+        for (const SurfacePlan& plan : plans_) estimate += 2 * plan.grid.cells() + 2.0 * static_cast<double>(plan.grid.u.size() + plan.grid.v.size());
+        if (estimate > static_cast<double>(settings_.max_triangles)) throw_over_budget(estimate, settings_.max_triangles);
+        for (std::size_t k = 0; k < plans_.size(); ++k) refine_grid(plans_[k], curvatures[k], settings_, max_cells);
+    }
+
+    void sample_edges() {
+        std::map<const Edge*, std::vector<double>> from_surfaces;
+        for (const SurfacePlan& plan : plans_)
+            for (Side side : kSides) {
+                const SideMap& m = plan.sides[static_cast<std::size_t>(index(side))];
+                if (m.degenerate) continue;
+                auto& params = from_surfaces[m.edge];
+                for (double p : runs_along_u(side) ? plan.grid.u : plan.grid.v) params.push_back(m.to_edge(p));
+            }
+        for (const EdgePtr& edge : solid_.edges()) {
+            EdgeSamples samples;
+            if (edge->degenerate) {
+                samples.ids = {assembler_.vertex_id(edge->start)};
+                samples.params = {edge->curve.domain().min};
+            } else {
+                const Interval d = edge->curve.domain();
+                const auto it = from_surfaces.find(edge.get());
+                samples.params = merge_params(it != from_surfaces.end() ? it->second : sample_curve(edge->curve, settings_.tolerance),
+                                              d.min, d.max);
+                samples.ids.reserve(samples.params.size());
+                for (std::size_t k = 0; k < samples.params.size(); ++k) {
+                    if (k == 0) samples.ids.push_back(assembler_.vertex_id(edge->start));
+                    else if (k + 1 == samples.params.size()) samples.ids.push_back(assembler_.vertex_id(edge->end));
+                    else samples.ids.push_back(assembler_.add_point(edge->curve.point(samples.params[k])));
+                }
+            }
+            edge_samples_.emplace(edge.get(), std::move(samples));
+        }
+    }
+
+    const EdgeSamples& samples_of(const Edge* edge) const {
+        const auto it = edge_samples_.find(edge);
+        require(it != edge_samples_.end(), "solid", "a face uses an edge the solid does not list");
+        return it->second;
+    }
+
+    void mesh_surface(const SurfacePlan& plan) {
+        const detail::SurfaceEvaluator& s = *plan.evaluator;
+        const Grid& g = plan.grid;
+        const std::size_t nu = g.u.size(), nv = g.v.size();
+
+        // Per side: (face parameter, id) of every edge sample, ascending in the face parameter.
+        std::array<std::vector<std::pair<double, Id>>, 4> side_samples;
+        for (Side side : kSides) {
+            const SideMap& m = plan.sides[static_cast<std::size_t>(index(side))];
+            const EdgeSamples& e = samples_of(m.edge);
+            auto& list = side_samples[static_cast<std::size_t>(index(side))];
+            if (m.degenerate) continue;
+            for (std::size_t k = 0; k < e.params.size(); ++k) list.emplace_back(m.to_face(e.params[k]), e.ids[k]);
+            std::sort(list.begin(), list.end());
+        }
+        auto side_id = [&](Side side, double p) -> std::pair<bool, Id> {
+            const SideMap& m = plan.sides[static_cast<std::size_t>(index(side))];
+            if (m.degenerate) return {true, samples_of(m.edge).ids[0]};
+            const auto& list = side_samples[static_cast<std::size_t>(index(side))];
+            auto it = std::lower_bound(list.begin(), list.end(), std::make_pair(p, Id{0}),
+                                       [](const auto& a, const auto& b) { return a.first < b.first; });
+            // The grid line is one of the samples (union), up to the rounding of the parameter maps.
+            if (it == list.end() || (it != list.begin() && std::abs(std::prev(it)->first - p) < std::abs(it->first - p))) --it;
+            return {false, it->second};
+        };
+
+        std::vector<Id> ids(nu * nv);
+        for (std::size_t i = 0; i < nu; ++i)
+            for (std::size_t j = 0; j < nv; ++j) {
+                std::vector<std::pair<bool, Id>> candidates;  // (degenerate, id) from the sides through the point
+                if (j == 0) candidates.push_back(side_id(Side::v_min, g.u[i]));
+                if (i == nu - 1) candidates.push_back(side_id(Side::u_max, g.v[j]));
+                if (j == nv - 1) candidates.push_back(side_id(Side::v_max, g.u[i]));
+                if (i == 0) candidates.push_back(side_id(Side::u_min, g.v[j]));
+                if (candidates.empty()) {
+                    ids[i * nv + j] = assembler_.add_point(s.point(g.u[i], g.v[j]));
+                } else {
+                    std::stable_sort(candidates.begin(), candidates.end());  // a non-degenerate side first
+                    ids[i * nv + j] = candidates.front().second;
+                }
+            }
+
+        auto vertex = [&](std::size_t i, std::size_t j) {
+            const Id id = ids[i * nv + j];
+            return CellVertex{g.u[i], g.v[j], assembler_.point(id), id};
+        };
+        // Extra samples strictly inside (p0, p1) on a side, ascending.
+        auto extras = [&](Side side, double p0, double p1, double fixed, std::vector<CellVertex>& chain) {
+            const SideMap& m = plan.sides[static_cast<std::size_t>(index(side))];
+            if (m.degenerate) return;
+            const double eps = 1e-9 * (m.p1 - m.p0);
+            for (const auto& [p, id] : side_samples[static_cast<std::size_t>(index(side))]) {
+                if (p <= p0 + eps || p >= p1 - eps) continue;
+                const bool along_u = runs_along_u(side);
+                chain.push_back(CellVertex{along_u ? p : fixed, along_u ? fixed : p, assembler_.point(id), id});
+            }
+        };
+
+        std::vector<CellVertex> bottom, right, top, left, lower, upper;
+        CellVertex center;
+        std::vector<CellTriangle> triangles;
+        for (std::size_t i = 0; i + 1 < nu; ++i)
+            for (std::size_t j = 0; j + 1 < nv; ++j) {
+                const CellVertex c00 = vertex(i, j), c10 = vertex(i + 1, j), c11 = vertex(i + 1, j + 1), c01 = vertex(i, j + 1);
+                bottom = {c00};
+                if (j == 0) extras(Side::v_min, g.u[i], g.u[i + 1], g.v[0], bottom);
+                bottom.push_back(c10);
+                right = {c10};
+                if (i + 2 == nu) extras(Side::u_max, g.v[j], g.v[j + 1], g.u[nu - 1], right);
+                right.push_back(c11);
+                top = {c01};
+                if (j + 2 == nv) extras(Side::v_max, g.u[i], g.u[i + 1], g.v[nv - 1], top);
+                top.push_back(c11);
+                left = {c00};
+                if (i == 0) extras(Side::u_min, g.v[j], g.v[j + 1], g.u[0], left);
+                left.push_back(c01);
+                triangles.clear();
+                triangulate_cell(
+                    s, bottom, right, top, left, lower, upper, center,
+                    [&] {
+                        const double u = 0.5 * (g.u[i] + g.u[i + 1]), v = 0.5 * (g.v[j] + g.v[j + 1]);
+                        const Vec3 p = s.point(u, v);
+                        return CellVertex{u, v, p, assembler_.add_point(p)};
+                    },
+                    triangles);
+                for (const auto& t : triangles) assembler_.add_triangle(t[0]->id, t[1]->id, t[2]->id);
+            }
+    }
+
+    void mesh_planar(const Face& face) {
+        const Plane& plane = face.plane();
+        std::vector<std::vector<detail::Point2>> loops;
+        std::vector<Id> flat_ids;
+        for (const auto& loop : face.loops()) {
+            std::vector<Id> ids;
+            for (const Coedge& coedge : loop) {
+                const EdgeSamples& e = samples_of(coedge.edge.get());
+                if (coedge.edge->degenerate) continue;
+                const std::size_t n = e.ids.size();
+                for (std::size_t k = 0; k + 1 < n; ++k) ids.push_back(coedge.reversed ? e.ids[n - 1 - k] : e.ids[k]);
+            }
+            std::vector<Id> cleaned;
+            for (Id id : ids)
+                if (cleaned.empty() || cleaned.back() != id) cleaned.push_back(id);
+            while (cleaned.size() > 1 && cleaned.back() == cleaned.front()) cleaned.pop_back();
+            require(cleaned.size() >= 3, "solid", "a planar face has a loop with fewer than three distinct points");
+            std::vector<detail::Point2> points;
+            for (Id id : cleaned) {
+                const Vec3 d = assembler_.point(id) - plane.origin;
+                points.push_back({dot(d, plane.x_axis), dot(d, plane.y_axis)});
+            }
+            loops.push_back(std::move(points));
+            flat_ids.insert(flat_ids.end(), cleaned.begin(), cleaned.end());
+        }
+        // Counterclockwise in the (x, y) frame is along x × y; flip if the frame is left-handed to the normal.
+        const bool flip = dot(cross(plane.x_axis, plane.y_axis), plane.normal) < 0;
+        for (const auto& t : detail::triangulate_polygon(loops)) {
+            if (flip) assembler_.add_triangle(flat_ids[t[0]], flat_ids[t[2]], flat_ids[t[1]]);
+            else assembler_.add_triangle(flat_ids[t[0]], flat_ids[t[1]], flat_ids[t[2]]);
+        }
+    }
+
+    const Solid& solid_;
+    Settings settings_;
+    std::vector<SurfacePlan> plans_;
+    std::map<const Edge*, EdgeSamples> edge_samples_;
+    MeshAssembler assembler_;
+};
+
+}  // namespace
+
+double default_tolerance(const Solid& solid) { return 1e-3 * solid.bounding_box().diagonal(); }
+
+Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
+    require(std::isfinite(options.tolerance) && options.tolerance > 0, "tolerance",
+            "must be a finite number > 0 (got " + std::to_string(options.tolerance) + ")");
+    Settings settings;
+    settings.tolerance = options.tolerance;
+    if (options.angle_deg) {
+        require(std::isfinite(*options.angle_deg) && *options.angle_deg > 0 && *options.angle_deg < 180, "angle_deg",
+                "must be in (0, 180) degrees (got " + std::to_string(*options.angle_deg) + ")");
+        settings.angle_rad = *options.angle_deg * std::numbers::pi / 180.0;
+    }
+    require(options.max_triangles > 0, "max_triangles", "must be positive");
+    settings.max_triangles = options.max_triangles;
+    return Tessellator(solid, settings).run();
+}
+
+}  // namespace ratbez

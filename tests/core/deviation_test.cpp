@@ -1,0 +1,115 @@
+// max_deviation (deviation.hpp) against analytic values for meshes built by hand: it must be right
+// for any mesh, not only ours.
+
+#include "ratbez/deviation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "ratbez/error.hpp"
+#include "ratbez/primitives.hpp"
+
+namespace ratbez {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Mesh octahedron(double r) {
+    Mesh m;
+    m.vertices = {{r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}};
+    m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    return m;
+}
+
+TEST(MaxDeviation, OctahedronInscribedInSphere) {
+    // The face centers are the points nearest the center: R / sqrt(3) from it, R (1 - 1/sqrt(3)) inside.
+    // samples_per_edge = 6 puts a sample exactly on each center.
+    const double r = 2.5;
+    EXPECT_NEAR(max_deviation(sphere(r), octahedron(r)), r * (1 - 1 / std::sqrt(3.0)), 1e-9);
+}
+
+TEST(MaxDeviation, ScaledOctahedronAroundSphere) {
+    // Vertices at 1.5 R outside: the farthest points are the vertices, 0.5 R off; the centers are at
+    // 1.5 R / sqrt(3) = 0.866 R, 0.134 R inside.
+    const double r = 1.0;
+    EXPECT_NEAR(max_deviation(sphere(r), octahedron(1.5 * r)), 0.5 * r, 1e-9);
+}
+
+TEST(MaxDeviation, SphereOffCenterAndSampleCount) {
+    Mesh m = octahedron(1.0);
+    for (Vec3& v : m.vertices) v += Vec3{1, 2, 3};
+    // With one sample per edge only the vertices are sampled: they lie on the sphere.
+    EXPECT_NEAR(max_deviation(sphere(1.0, {1, 2, 3}), m, {1}), 0.0, 1e-9);
+    EXPECT_NEAR(max_deviation(sphere(1.0, {1, 2, 3}), m, {3}), 1 - 1 / std::sqrt(3.0), 1e-9);
+}
+
+// A prism over a regular n-gon, between z = 0 and z = h, with its vertices at radius `rho`.
+Mesh prism(int n, double rho, double h) {
+    Mesh m;
+    for (int k = 0; k < n; ++k) {
+        const double a = 2 * kPi * k / n;
+        m.vertices.push_back({rho * std::cos(a), rho * std::sin(a), 0});
+        m.vertices.push_back({rho * std::cos(a), rho * std::sin(a), h});
+    }
+    auto lo = [&](int k) { return static_cast<std::uint32_t>(2 * (k % n)); };
+    auto hi = [&](int k) { return static_cast<std::uint32_t>(2 * (k % n) + 1); };
+    for (int k = 0; k < n; ++k) {
+        m.triangles.push_back({lo(k), lo(k + 1), hi(k + 1)});
+        m.triangles.push_back({lo(k), hi(k + 1), hi(k)});
+    }
+    for (int k = 1; k + 1 < n; ++k) {
+        m.triangles.push_back({lo(0), lo(k + 1), lo(k)});
+        m.triangles.push_back({hi(0), hi(k), hi(k + 1)});
+    }
+    return m;
+}
+
+TEST(MaxDeviation, InscribedPrismInCylinder) {
+    // The side midlines of the lateral rectangles are the farthest: 1 - cos(pi / n) inside. The caps
+    // lie in the cap planes inside the circle: distance 0 there.
+    const int n = 12;
+    const Mesh m = prism(n, 1.0, 2.0);
+    ASSERT_TRUE(m.is_closed());
+    EXPECT_NEAR(max_deviation(cylinder(1.0, 2.0), m), 1 - std::cos(kPi / n), 1e-9);
+}
+
+TEST(MaxDeviation, CircumscribedPrismCornersOutsideTheCaps) {
+    // Vertices at 1 / cos(pi / n): the cap corners lie in the cap plane but outside the disc, so their
+    // distance is to the rim circle, 1 / cos(pi / n) - 1; the lateral midlines touch the cylinder.
+    const int n = 8;
+    const Mesh m = prism(n, 1.0 / std::cos(kPi / n), 2.0);
+    EXPECT_NEAR(max_deviation(cylinder(1.0, 2.0), m), 1.0 / std::cos(kPi / n) - 1.0, 1e-9);
+}
+
+TEST(MaxDeviation, PointsAboveACapMeasureToThePlane) {
+    // A flat triangle hovering 0.3 above the top cap, well inside the rim: distance 0.3 everywhere.
+    Mesh m;
+    m.vertices = {{0, 0, 2.3}, {0.3, 0, 2.3}, {0, 0.3, 2.3}};
+    m.triangles = {{0, 1, 2}};
+    EXPECT_NEAR(max_deviation(cylinder(1.0, 2.0), m), 0.3, 1e-12);
+}
+
+TEST(MaxDeviation, TorusTubeCircle) {
+    // A tiny triangle at the torus center (0, 0, 0): the nearest surface points are on the inner
+    // equator, R - r = 2 away.
+    Mesh m;
+    m.vertices = {{0, 0, 0}, {1e-3, 0, 0}, {0, 1e-3, 0}};
+    m.triangles = {{0, 1, 2}};
+    EXPECT_NEAR(max_deviation(torus(3.0, 1.0), m), 2.0, 1e-9);
+}
+
+TEST(MaxDeviation, EmptyMeshIsZeroAndBadInputIsRejected) {
+    EXPECT_EQ(max_deviation(sphere(1.0), Mesh{}), 0.0);
+    Mesh bad = octahedron(1.0);
+    bad.triangles.push_back({0, 1, 17});
+    EXPECT_THROW(max_deviation(sphere(1.0), bad), Error);
+    EXPECT_THROW(max_deviation(sphere(1.0), octahedron(1.0), {0}), Error);
+    Mesh nan_mesh = octahedron(1.0);
+    nan_mesh.vertices[0].x = std::nan("");
+    EXPECT_THROW(max_deviation(sphere(1.0), nan_mesh), Error);
+}
+
+}  // namespace
+}  // namespace ratbez

@@ -1,0 +1,323 @@
+// Adaptive watertight tessellation (tessellate.hpp): closed outward meshes within the chordal tolerance
+// (measured by max_deviation, independently of the mesher), volumes within the bound the tolerance
+// implies, no degenerate triangles, and triangle counts no higher than a uniform (u, v) grid or
+// OpenSCAD's sphere($fn) that just meets the same tolerance.
+
+#include "ratbez/tessellate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <tuple>
+#include <cstdint>
+#include <functional>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "ratbez/bezier_curve.hpp"
+#include "ratbez/curves.hpp"
+#include "ratbez/deviation.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/extrude.hpp"
+#include "ratbez/primitives.hpp"
+#include "ratbez/profile.hpp"
+#include "ratbez/revolve.hpp"
+
+namespace ratbez {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A vase: the base disc's radius, a rational cubic Bézier wall, the rim back to the axis (x-z plane).
+Profile vase_profile() {
+    return Profile::from_beziers({BezierCurve({{0, 0, 0}, {1, 0, 0}}),
+                                  BezierCurve({{1, 0, 0}, {2.2, 0, 0.8}, {0.2, 0, 1.6}, {0.8, 0, 2.4}}, {1, 2, 0.5, 1}),
+                                  BezierCurve({{0.8, 0, 2.4}, {0, 0, 2.4}})});
+}
+
+// A closed D-shaped section (a segment and a rational cubic bulge) away from the axis: revolved, a ring.
+Profile ring_profile() {
+    return Profile::from_beziers({BezierCurve({{2, 0, 0.5}, {2, 0, -0.5}}),
+                                  BezierCurve({{2, 0, -0.5}, {3, 0, -0.5}, {3, 0, 0.5}, {2, 0, 0.5}}, {1, 0.5, 0.5, 1})});
+}
+
+// A closed planar profile in the x-y plane: a half disc (circular arc and its diameter).
+Profile half_disc_profile() {
+    return Profile({arc(1.0, -90.0, 90.0), line_segment({0, 1, 0}, {0, -1, 0})});
+}
+
+struct Shape {
+    std::string name;
+    std::function<Solid()> make;
+    double size;  // the tolerances are fractions of this
+};
+
+std::vector<Shape> shapes() {
+    return {
+        {"sphere", [] { return sphere(1.0); }, 1.0},
+        {"cylinder", [] { return cylinder(1.0, 2.0); }, 2.0},
+        {"cone", [] { return cone(1.0, 0.4, 1.5); }, 1.5},
+        {"cone_apex", [] { return cone(1.0, 0.0, 1.5); }, 1.5},
+        {"torus", [] { return torus(3.0, 1.0); }, 4.0},
+        {"vase", [] { return revolve(vase_profile()); }, 2.4},
+        {"ring", [] { return revolve(ring_profile()); }, 3.0},
+        {"vase_270", [] { return revolve(vase_profile(), {0, 0, 0}, {0, 0, 1}, 270.0); }, 2.4},
+        {"extruded_half_disc", [] { return extrude(half_disc_profile(), {0, 0, 1}, 1.5); }, 1.5},
+    };
+}
+
+double smallest_triangle_area(const Mesh& m) {
+    double smallest = 1e300;
+    for (const auto& t : m.triangles)
+        smallest = std::min(smallest, 0.5 * norm(cross(m.vertices[t[1]] - m.vertices[t[0]], m.vertices[t[2]] - m.vertices[t[0]])));
+    return smallest;
+}
+
+class TessellateShape : public ::testing::TestWithParam<std::tuple<int, double>> {};
+
+TEST_P(TessellateShape, ClosedOutwardWithinToleranceAndVolumeBound) {
+    const auto [index, fraction] = GetParam();
+    const Shape shape = shapes()[static_cast<std::size_t>(index)];
+    const Solid solid = shape.make();
+    const double tolerance = fraction * shape.size;
+    const Mesh mesh = tessellate(solid, tolerance);
+    SCOPED_TRACE(shape.name + " at tolerance " + std::to_string(tolerance));
+
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_GT(mesh.volume(), 0.0);
+    EXPECT_GT(smallest_triangle_area(mesh), 1e-12 * shape.size * shape.size);
+    const double deviation = max_deviation(solid, mesh);
+    EXPECT_LE(deviation, tolerance);
+    EXPECT_GT(deviation, 0.05 * tolerance);  // not absurdly finer than asked
+    const double exact_volume = solid.volume();
+    EXPECT_LE(std::abs(mesh.volume() - exact_volume), tolerance * solid.area());
+    // The mesh is inscribed (vertices on the surface), so a convex shape loses volume, never gains.
+    if (shape.name == "sphere" || shape.name == "cylinder" || shape.name == "cone") {
+        EXPECT_LT(mesh.volume(), exact_volume);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllShapes, TessellateShape,
+                         ::testing::Combine(::testing::Range(0, 9), ::testing::Values(1e-2, 1e-3, 1e-4)),
+                         [](const auto& info) {
+                             const int exponent = static_cast<int>(std::lround(-std::log10(std::get<1>(info.param))));
+                             return shapes()[static_cast<std::size_t>(std::get<0>(info.param))].name + "_tolerance_1e_minus_" +
+                                    std::to_string(exponent);
+                         });
+
+TEST(Tessellate, SharedVerticesAreOneMeshVertex) {
+    // No two mesh vertices coincide: poles, seams and cap circles are shared, not welded afterwards.
+    for (const auto& make : {std::function<Solid()>([] { return sphere(1.0); }), std::function<Solid()>([] { return cylinder(1.0, 2.0); }),
+                             std::function<Solid()>([] { return torus(3.0, 1.0); })}) {
+        const Mesh mesh = tessellate(make(), 1e-2);
+        std::vector<Vec3> sorted = mesh.vertices;
+        std::sort(sorted.begin(), sorted.end(), [](const Vec3& a, const Vec3& b) {
+            return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+        });
+        for (std::size_t k = 1; k < sorted.size(); ++k) EXPECT_GT(distance(sorted[k], sorted[k - 1]), 1e-9);
+    }
+}
+
+TEST(Tessellate, SpherePolesAreFans) {
+    const Mesh mesh = tessellate(sphere(2.0), 1e-3);
+    for (const Vec3 pole : {Vec3{0, 0, 2}, Vec3{0, 0, -2}}) {
+        int pole_vertices = 0;
+        std::uint32_t pole_index = 0;
+        for (std::uint32_t k = 0; k < mesh.vertices.size(); ++k)
+            if (distance(mesh.vertices[k], pole) < 1e-12) ++pole_vertices, pole_index = k;
+        ASSERT_EQ(pole_vertices, 1);
+        int fan = 0;
+        for (const auto& t : mesh.triangles)
+            if (t[0] == pole_index || t[1] == pole_index || t[2] == pole_index) ++fan;
+        EXPECT_GE(fan, 3);
+    }
+}
+
+TEST(Tessellate, AngleLimitIsHonoured) {
+    const Solid solid = torus(3.0, 1.0);
+    const double angle_deg = 5.0;
+    const Mesh coarse = tessellate(solid, 0.1);
+    const Mesh mesh = tessellate(solid, 0.1, angle_deg);
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_GT(mesh.triangles.size(), coarse.triangles.size());
+    // The exact normals at the two ends of every mesh edge differ by at most the limit (torus normals
+    // are known in closed form: from the tube's center circle to the point).
+    auto normal = [](const Vec3& p) {
+        const double r = std::hypot(p.x, p.y);
+        const Vec3 center{3 * p.x / r, 3 * p.y / r, 0};
+        return (p - center) / norm(p - center);
+    };
+    double worst = 0;
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 a = normal(mesh.vertices[t[k]]), b = normal(mesh.vertices[t[(k + 1) % 3]]);
+            worst = std::max(worst, std::atan2(norm(cross(a, b)), dot(a, b)) * 180 / kPi);
+        }
+    EXPECT_LE(worst, angle_deg * 1.0001);
+}
+
+TEST(Tessellate, RejectsBadToleranceAndAngle) {
+    const Solid solid = sphere(1.0);
+    for (double bad : {0.0, -1e-3, std::nan(""), std::numeric_limits<double>::infinity()}) {
+        try {
+            tessellate(solid, bad);
+            ADD_FAILURE() << "accepted tolerance " << bad;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("tolerance"), std::string::npos);
+        }
+    }
+    for (double bad : {0.0, 180.0, -5.0, 200.0, std::nan("")}) {
+        try {
+            tessellate(solid, 1e-2, bad);
+            ADD_FAILURE() << "accepted angle " << bad;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("angle"), std::string::npos);
+        }
+    }
+}
+
+TEST(Tessellate, TriangleBudgetIsCheckedBeforeMeshing) {
+    const Solid solid = torus(3.0, 1.0);
+    // 1e-12 of the size would need ~1e13 triangles: refused up front, not by running out of memory.
+    for (const std::size_t budget : {std::size_t{20'000'000}, std::size_t{1000}}) {
+        const double tolerance = budget == 1000 ? 1e-3 : 4e-12;
+        try {
+            tessellate(solid, TessellationOptions{tolerance, std::nullopt, budget});
+            ADD_FAILURE() << "no budget error";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("tolerance"), std::string::npos) << e.what();
+        }
+    }
+    // Within the budget the same request succeeds.
+    EXPECT_NO_THROW(tessellate(solid, TessellationOptions{1e-2, std::nullopt, 100'000}));
+}
+
+TEST(Tessellate, DefaultToleranceIsAThousandthOfTheDiagonal) {
+    const Solid solid = cylinder(1.0, 2.0);
+    EXPECT_DOUBLE_EQ(default_tolerance(solid), 1e-3 * solid.bounding_box().diagonal());
+}
+
+// ---- economy ----------------------------------------------------------------------------------------
+
+// A uniform nu x nv grid on the single face of a sphere or torus, with the seam and pole vertices shared.
+Mesh uniform_grid(const Face& face, int nu, int nv) {
+    const NurbsSurface& s = face.surface();
+    const Interval du = s.domain_u(), dv = s.domain_v();
+    Mesh m;
+    for (int i = 0; i <= nu; ++i)
+        for (int j = 0; j <= nv; ++j)
+            m.vertices.push_back(s.point(i == nu ? du.max : du.min + (du.max - du.min) * i / nu,
+                                         j == nv ? dv.max : dv.min + (dv.max - dv.min) * j / nv));
+    auto id = [&](int i, int j) { return static_cast<std::uint32_t>(i * (nv + 1) + j); };
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return m;
+}
+
+// Triangles of a uniform grid that are not degenerate (a pole row has one fan triangle per cell).
+std::size_t proper_triangles(const Mesh& m) {
+    std::size_t n = 0;
+    for (const auto& t : m.triangles)
+        if (norm(cross(m.vertices[t[1]] - m.vertices[t[0]], m.vertices[t[2]] - m.vertices[t[0]])) > 1e-14) ++n;
+    return n;
+}
+
+// The fewest triangles of any uniform grid meeting the tolerance: more u lines never need more v lines,
+// so one sweep with nu up and nv down visits every candidate pair once.
+std::size_t smallest_uniform_grid(const Solid& solid, double tolerance, int nu_min, int nu_max, int nv_start) {
+    const Face& face = solid.faces().front();
+    std::size_t best = SIZE_MAX;
+    int nv = nv_start;
+    for (int nu = nu_min; nu <= nu_max; ++nu) {
+        if (max_deviation(solid, uniform_grid(face, nu, nv)) > tolerance) continue;
+        while (nv > 2 && max_deviation(solid, uniform_grid(face, nu, nv - 1)) <= tolerance) --nv;
+        best = std::min(best, proper_triangles(uniform_grid(face, nu, nv)));
+    }
+    return best;
+}
+
+TEST(TessellateEconomy, SphereNeedsNoMoreTrianglesThanTheBestUniformGrid) {
+    const Solid solid = sphere(1.0);
+    const double tolerance = 1e-2;
+    const Mesh mesh = tessellate(solid, tolerance);
+    const std::size_t uniform = smallest_uniform_grid(solid, tolerance, 12, 40, 40);
+    ASSERT_NE(uniform, SIZE_MAX);
+    RecordProperty("adaptive_triangles", static_cast<int>(mesh.triangles.size()));
+    RecordProperty("uniform_grid_triangles", static_cast<int>(uniform));
+    EXPECT_LE(mesh.triangles.size(), uniform);
+}
+
+TEST(TessellateEconomy, TorusNeedsNoMoreTrianglesThanTheBestUniformGrid) {
+    const Solid solid = torus(3.0, 1.0);
+    const double tolerance = 4e-2;
+    const Mesh mesh = tessellate(solid, tolerance);
+    const std::size_t uniform = smallest_uniform_grid(solid, tolerance, 16, 60, 40);
+    ASSERT_NE(uniform, SIZE_MAX);
+    RecordProperty("adaptive_triangles", static_cast<int>(mesh.triangles.size()));
+    RecordProperty("uniform_grid_triangles", static_cast<int>(uniform));
+    EXPECT_LE(mesh.triangles.size(), uniform);
+}
+
+// OpenSCAD 2021's sphere(r, $fn): rings = (fn + 1) / 2, ring i at polar angle 180 (i + 0.5) / rings,
+// fn points per ring, the flat end rings closed by polygons (fn - 2 triangles each).
+Mesh openscad_sphere(double r, int fn) {
+    const int rings = (fn + 1) / 2;
+    Mesh m;
+    for (int i = 0; i < rings; ++i) {
+        const double phi = kPi * (i + 0.5) / rings;
+        for (int j = 0; j < fn; ++j) {
+            const double theta = 2 * kPi * j / fn;
+            m.vertices.push_back({r * std::sin(phi) * std::cos(theta), r * std::sin(phi) * std::sin(theta), r * std::cos(phi)});
+        }
+    }
+    auto id = [&](int i, int j) { return static_cast<std::uint32_t>(i * fn + (j % fn)); };
+    for (int i = 0; i + 1 < rings; ++i)
+        for (int j = 0; j < fn; ++j) {
+            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    for (int j = 1; j + 1 < fn; ++j) {
+        m.triangles.push_back({id(0, 0), id(0, j), id(0, j + 1)});
+        m.triangles.push_back({id(rings - 1, 0), id(rings - 1, j + 1), id(rings - 1, j)});
+    }
+    return m;
+}
+
+TEST(TessellateEconomy, OpenScadSphereMeshIsClosedAndOutward) {
+    const Mesh m = openscad_sphere(1.0, 12);
+    EXPECT_TRUE(m.is_closed());
+    EXPECT_GT(m.volume(), 0);
+}
+
+TEST(TessellateEconomy, SphereNeedsNoMoreTrianglesThanOpenScadSphere) {
+    const Solid solid = sphere(1.0);
+    for (const double tolerance : {1e-2, 1e-3}) {
+        // The smallest $fn whose sphere meets the tolerance (the deviation falls as $fn grows).
+        int lo = 3, hi = 8;
+        while (max_deviation(solid, openscad_sphere(1.0, hi)) > tolerance) lo = hi + 1, hi *= 2;
+        while (lo < hi) {
+            const int fn = (lo + hi) / 2;
+            if (max_deviation(solid, openscad_sphere(1.0, fn)) <= tolerance) hi = fn;
+            else lo = fn + 1;
+        }
+        const int fn = lo;
+        ASSERT_LE(max_deviation(solid, openscad_sphere(1.0, fn)), tolerance);
+        ASSERT_GT(max_deviation(solid, openscad_sphere(1.0, fn - 1)), tolerance);
+        const Mesh mesh = tessellate(solid, tolerance);
+        EXPECT_LE(mesh.triangles.size(), openscad_sphere(1.0, fn).triangles.size()) << "$fn = " << fn;
+        const std::string suffix = tolerance == 1e-2 ? "_1e-2" : "_1e-3";
+        RecordProperty("openscad_fn" + suffix, fn);
+        RecordProperty("openscad_triangles" + suffix, static_cast<int>(openscad_sphere(1.0, fn).triangles.size()));
+        RecordProperty("adaptive_triangles" + suffix, static_cast<int>(mesh.triangles.size()));
+    }
+}
+
+}  // namespace
+}  // namespace ratbez
