@@ -15,87 +15,15 @@
 
 #include <cmath>
 
-#include "ratbez/bezier_surface.hpp"
 
 #include "geometry_internal.hpp"
+#include "surface_evaluator.hpp"
 
 namespace ratbez {
 
 namespace {
 
 constexpr double kRelativeQuadratureTolerance = 1e-14;
-
-// S, S_u and S_v on one Bézier patch of a face (A5.7 extraction), from its homogeneous net: the
-// Bernstein values of degree n - 1 by the triangular scheme (A1.3), one more step for degree n, their
-// derivatives n (B_{i-1,n-1} - B_{i,n-1}) (003), the homogeneous sums A, A_u, A_v, w, w_u, w_v and the
-// quotient rule S_u = (A_u - w_u S) / w. The quadrature evaluates thousands of points per span, so this
-// avoids the general k-th-order machinery and every allocation per point.
-struct FirstDerivatives {
-    Vec3 point, du, dv;
-};
-
-class PatchEvaluator {
-public:
-    PatchEvaluator(const BezierSurface& patch, double u0, double u1, double v0, double v1)
-        : patch_(patch), u0_(u0), v0_(v0), inverse_du_(1.0 / (u1 - u0)), inverse_dv_(1.0 / (v1 - v0)),
-          bu_(static_cast<std::size_t>(patch.degree_u() + 1)), dbu_(bu_.size()),
-          bv_(static_cast<std::size_t>(patch.degree_v() + 1)), dbv_(bv_.size()) {}
-
-    FirstDerivatives operator()(double u, double v) const {
-        bernstein_with_derivatives((u - u0_) * inverse_du_, bu_, dbu_);
-        bernstein_with_derivatives((v - v0_) * inverse_dv_, bv_, dbv_);
-        Vec4 a{}, a_u{}, a_v{};
-        for (std::size_t i = 0; i < bu_.size(); ++i) {
-            Vec4 row{}, row_v{};
-            for (std::size_t j = 0; j < bv_.size(); ++j) {
-                const Vec4& pw = patch_.homogeneous_point(static_cast<int>(i), static_cast<int>(j));
-                row += pw * bv_[j];
-                row_v += pw * dbv_[j];
-            }
-            a += row * bu_[i];
-            a_u += row * dbu_[i];
-            a_v += row_v * bu_[i];
-        }
-        a_u *= inverse_du_;
-        a_v *= inverse_dv_;
-        const Vec3 point = project(a);
-        return {point, (weighted_part(a_u) - point * a_u.w) / a.w, (weighted_part(a_v) - point * a_v.w) / a.w};
-    }
-
-private:
-    static void bernstein_with_derivatives(double t, std::vector<double>& b, std::vector<double>& db) {
-        const std::size_t n = b.size() - 1;
-        // Degree n - 1 first (A1.3), kept in b[0..n-1].
-        b[0] = 1.0;
-        for (std::size_t k = 1; k < n; ++k) {
-            double saved = 0.0;
-            for (std::size_t i = 0; i < k; ++i) {
-                const double temp = b[i];
-                b[i] = saved + (1.0 - t) * temp;
-                saved = t * temp;
-            }
-            b[k] = saved;
-        }
-        const double degree = static_cast<double>(n);
-        for (std::size_t i = 0; i <= n; ++i) {
-            const double left = i > 0 ? b[i - 1] : 0.0, right = i < n ? b[i] : 0.0;
-            db[i] = degree * (left - right);
-        }
-        // One more step to degree n.
-        double saved = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const double temp = b[i];
-            b[i] = saved + (1.0 - t) * temp;
-            saved = t * temp;
-        }
-        b[n] = saved;
-        if (n == 0) { b[0] = 1.0; db[0] = 0.0; }
-    }
-
-    const BezierSurface& patch_;
-    double u0_, v0_, inverse_du_, inverse_dv_;
-    mutable std::vector<double> bu_, dbu_, bv_, dbv_;
-};
 
 struct SpanGrid {
     std::vector<double> u, v;
@@ -106,16 +34,18 @@ SpanGrid spans(const NurbsSurface& s) {
 }
 
 // The integral of integrand(S, S_u, S_v) over the face's parameter rectangle, span by span.
-double integrate_over_spans(const NurbsSurface& surface, const std::function<double(const FirstDerivatives&)>& integrand,
+// The quadrature evaluates thousands of points per span: detail::SurfaceEvaluator works on the Bézier
+// patches (A5.7) directly, without the general k-th-order machinery or any allocation per point.
+double integrate_over_spans(const NurbsSurface& surface,
+                            const std::function<double(const detail::SurfaceFirstDerivatives&)>& integrand,
                             double absolute_tolerance, int points, int max_depth) {
     const SpanGrid grid = spans(surface);
-    const auto patches = surface.bezier_patches();
+    const detail::SurfaceEvaluator evaluator(surface);
     const std::size_t span_count = (grid.u.size() - 1) * (grid.v.size() - 1);
     double total = 0;
     for (std::size_t a = 0; a + 1 < grid.u.size(); ++a)
         for (std::size_t b = 0; b + 1 < grid.v.size(); ++b) {
-            const PatchEvaluator evaluate(patches[a][b], grid.u[a], grid.u[a + 1], grid.v[b], grid.v[b + 1]);
-            total += detail::integrate([&](double u, double v) { return integrand(evaluate(u, v)); }, grid.u[a],
+            total += detail::integrate([&](double u, double v) { return integrand(evaluator.first_derivatives(u, v)); }, grid.u[a],
                                        grid.u[a + 1], grid.v[b], grid.v[b + 1],
                                        absolute_tolerance / static_cast<double>(span_count), points, max_depth);
         }
@@ -147,7 +77,7 @@ double face_area(const Face& face, double absolute_tolerance, int points, int ma
     const NurbsSurface& s = face.surface();
     return integrate_over_spans(
         s,
-        [](const FirstDerivatives& d) { return norm(cross(d.du, d.dv)); },
+        [](const detail::SurfaceFirstDerivatives& d) { return norm(cross(d.su, d.sv)); },
         absolute_tolerance, points, max_depth);
 }
 
@@ -167,7 +97,7 @@ double volume_of_faces(const std::vector<Face>& faces, int points, int max_depth
             const NurbsSurface& s = face.surface();
             volume += integrate_over_spans(
                           s,
-                          [&c](const FirstDerivatives& d) { return dot(d.point - c, cross(d.du, d.dv)); },
+                          [&c](const detail::SurfaceFirstDerivatives& d) { return dot(d.s - c, cross(d.su, d.sv)); },
                           volume_tolerance, points, max_depth) /
                       3.0;
         }

@@ -8,7 +8,8 @@
 namespace ratbez::detail {
 namespace {
 
-constexpr int kMaxDegree = 15;
+// OpenCASCADE's Geom_BSplineSurface::MaxDegree(): nothing we hand over can be higher anyway.
+constexpr int kMaxDegree = 25;
 
 // B_{i,n}(s) and its first two derivatives for i = 0..n, by the triangular scheme (A1.3) kept at the
 // degrees n-2, n-1 and n that the derivative formulas need.
@@ -48,7 +49,7 @@ std::vector<double> distinct_knots(const std::vector<double>& knots, Interval do
 
 SurfaceEvaluator::SurfaceEvaluator(const NurbsSurface& surface)
     : degree_u_(surface.degree_u()), degree_v_(surface.degree_v()) {
-    require(degree_u_ <= kMaxDegree && degree_v_ <= kMaxDegree, "surface", "degree above 15 is not supported by the evaluator");
+    require(degree_u_ <= kMaxDegree && degree_v_ <= kMaxDegree, "surface", "degree above 25 is not supported (OpenCASCADE's limit too)");
     breaks_u_ = distinct_knots(surface.knots_u(), surface.domain_u());
     breaks_v_ = distinct_knots(surface.knots_v(), surface.domain_v());
     const auto patches = surface.bezier_patches();
@@ -70,51 +71,68 @@ SurfaceEvaluator::Located SurfaceEvaluator::locate(double u, double v) const {
             std::clamp((v - breaks_v_[b]) / hv, 0.0, 1.0), 1 / hu, 1 / hv};
 }
 
-Vec3 SurfaceEvaluator::point(double u, double v) const {
-    const Located l = locate(u, v);
+// S^w = sum B_i(s) B_j(t) P^w_ij: the net is contracted in t row by row, then in s.
+template <int Order>
+SurfaceEvaluator::HomogeneousJet SurfaceEvaluator::homogeneous_jet(const Located& l) const {
     std::array<double, kMaxDegree + 1> bu{}, dbu{}, ddbu{}, bv{}, dbv{}, ddbv{};
     bernstein_with_derivatives(degree_u_, l.s, bu.data(), dbu.data(), ddbu.data());
     bernstein_with_derivatives(degree_v_, l.t, bv.data(), dbv.data(), ddbv.data());
-    Vec4 sum;
-    for (int i = 0; i <= degree_u_; ++i) {
-        Vec4 row;
-        for (int j = 0; j <= degree_v_; ++j) row += l.net[i * (degree_v_ + 1) + j] * bv[static_cast<std::size_t>(j)];
-        sum += row * bu[static_cast<std::size_t>(i)];
-    }
-    return project(sum);
-}
-
-SurfaceJet SurfaceEvaluator::jet(double u, double v) const {
-    const Located l = locate(u, v);
-    std::array<double, kMaxDegree + 1> bu{}, dbu{}, ddbu{}, bv{}, dbv{}, ddbv{};
-    bernstein_with_derivatives(degree_u_, l.s, bu.data(), dbu.data(), ddbu.data());
-    bernstein_with_derivatives(degree_v_, l.t, bv.data(), dbv.data(), ddbv.data());
-    // Homogeneous sums A^w and their partials (in the local parameters).
-    Vec4 h, hu, hv, huu, huv, hvv;
+    HomogeneousJet jet;
     for (int i = 0; i <= degree_u_; ++i) {
         Vec4 r0, r1, r2;  // the row summed against B(t), B'(t), B''(t)
         for (int j = 0; j <= degree_v_; ++j) {
             const Vec4& p = l.net[i * (degree_v_ + 1) + j];
-            r0 += p * bv[static_cast<std::size_t>(j)];
-            r1 += p * dbv[static_cast<std::size_t>(j)];
-            r2 += p * ddbv[static_cast<std::size_t>(j)];
+            const auto k = static_cast<std::size_t>(j);
+            r0 += p * bv[k];
+            if constexpr (Order >= 1) r1 += p * dbv[k];
+            if constexpr (Order >= 2) r2 += p * ddbv[k];
         }
         const auto k = static_cast<std::size_t>(i);
-        h += r0 * bu[k], hv += r1 * bu[k], hvv += r2 * bu[k];
-        hu += r0 * dbu[k], huv += r1 * dbu[k], huu += r0 * ddbu[k];
+        jet.h += r0 * bu[k];
+        if constexpr (Order >= 1) {
+            jet.hu += r0 * dbu[k];
+            jet.hv += r1 * bu[k];
+        }
+        if constexpr (Order >= 2) {
+            jet.huu += r0 * ddbu[k];
+            jet.huv += r1 * dbu[k];
+            jet.hvv += r2 * bu[k];
+        }
     }
-    // Quotient rule: S = A / w and its partials.
-    const double w = h.w;
+    return jet;
+}
+
+Vec3 SurfaceEvaluator::point(double u, double v) const { return project(homogeneous_jet<0>(locate(u, v)).h); }
+
+SurfaceFirstDerivatives SurfaceEvaluator::first_derivatives(double u, double v) const {
+    const Located l = locate(u, v);
+    const HomogeneousJet h = homogeneous_jet<1>(l);
+    // Quotient rule S_u = (A_u - w_u S) / w, then the chain rule to the surface's own parameters.
+    SurfaceFirstDerivatives d;
+    d.s = project(h.h);
+    d.su = (weighted_part(h.hu) - d.s * h.hu.w) * (l.scale_u / h.h.w);
+    d.sv = (weighted_part(h.hv) - d.s * h.hv.w) * (l.scale_v / h.h.w);
+    return d;
+}
+
+SurfaceJet SurfaceEvaluator::jet(double u, double v) const {
+    const Located l = locate(u, v);
+    const HomogeneousJet h = homogeneous_jet<2>(l);
+    // Quotient rule: S = A / w and its partials (Leibniz on A = w S).
+    const double w = h.h.w;
     SurfaceJet j;
-    j.s = weighted_part(h) / w;
-    j.su = (weighted_part(hu) - j.s * hu.w) / w;
-    j.sv = (weighted_part(hv) - j.s * hv.w) / w;
-    j.suu = (weighted_part(huu) - j.su * (2 * hu.w) - j.s * huu.w) / w;
-    j.suv = (weighted_part(huv) - j.su * hv.w - j.sv * hu.w - j.s * huv.w) / w;
-    j.svv = (weighted_part(hvv) - j.sv * (2 * hv.w) - j.s * hvv.w) / w;
+    j.s = weighted_part(h.h) / w;
+    j.su = (weighted_part(h.hu) - j.s * h.hu.w) / w;
+    j.sv = (weighted_part(h.hv) - j.s * h.hv.w) / w;
+    j.suu = (weighted_part(h.huu) - j.su * (2 * h.hu.w) - j.s * h.huu.w) / w;
+    j.suv = (weighted_part(h.huv) - j.su * h.hv.w - j.sv * h.hu.w - j.s * h.huv.w) / w;
+    j.svv = (weighted_part(h.hvv) - j.sv * (2 * h.hv.w) - j.s * h.hvv.w) / w;
     // Chain rule to the surface's own parameters.
-    j.su *= l.scale_u, j.sv *= l.scale_v;
-    j.suu *= l.scale_u * l.scale_u, j.suv *= l.scale_u * l.scale_v, j.svv *= l.scale_v * l.scale_v;
+    j.su *= l.scale_u;
+    j.sv *= l.scale_v;
+    j.suu *= l.scale_u * l.scale_u;
+    j.suv *= l.scale_u * l.scale_v;
+    j.svv *= l.scale_v * l.scale_v;
     return j;
 }
 

@@ -13,6 +13,11 @@
 
 namespace ratbez::detail {
 
+// S and its first partial derivatives at one (u, v).
+struct SurfaceFirstDerivatives {
+    Vec3 s, su, sv;
+};
+
 // S and its partial derivatives up to order two at one (u, v).
 struct SurfaceJet {
     Vec3 s, su, sv, suu, suv, svv;
@@ -26,6 +31,7 @@ public:
     Interval domain_v() const { return {breaks_v_.front(), breaks_v_.back()}; }
     // (u, v) must lie in the domain (callers clamp); no validation in the hot path.
     Vec3 point(double u, double v) const;
+    SurfaceFirstDerivatives first_derivatives(double u, double v) const;
     SurfaceJet jet(double u, double v) const;
 
 private:
@@ -35,6 +41,12 @@ private:
         double scale_u, scale_v;  // d(s)/du, d(t)/dv
     };
     Located locate(double u, double v) const;
+    // The homogeneous sum S^w of the located patch and its partials up to Order in local parameters.
+    struct HomogeneousJet {
+        Vec4 h, hu, hv, huu, huv, hvv;
+    };
+    template <int Order>
+    HomogeneousJet homogeneous_jet(const Located& located) const;
 
     int degree_u_ = 0, degree_v_ = 0;
     std::vector<double> breaks_u_, breaks_v_;
