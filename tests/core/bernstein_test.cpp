@@ -10,11 +10,7 @@
 namespace ratbez {
 namespace {
 
-using testing::bernstein_exact;
-using testing::error_message;
-using testing::RandomInput;
-using testing::Rational;
-using testing::starts_with;
+using namespace test;
 
 constexpr double kExact = 1e-14;
 

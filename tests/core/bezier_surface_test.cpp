@@ -13,28 +13,9 @@
 namespace ratbez {
 namespace {
 
-using testing::bezier_surface_exact;
-using testing::error_message;
-using testing::homogeneous;
-using testing::RandomInput;
-using testing::Rational;
-using testing::RationalPoint;
-using testing::starts_with;
+using namespace test;
 
 constexpr double kExact = 1e-14;
-
-void expect_near(const Vec3& actual, const Vec3& expected, double tolerance, const std::string& what = "") {
-    EXPECT_NEAR(actual.x, expected.x, tolerance) << what;
-    EXPECT_NEAR(actual.y, expected.y, tolerance) << what;
-    EXPECT_NEAR(actual.z, expected.z, tolerance) << what;
-}
-
-void expect_near(const Vec4& actual, const Vec4& expected, double tolerance, const std::string& what = "") {
-    EXPECT_NEAR(actual.x, expected.x, tolerance) << what;
-    EXPECT_NEAR(actual.y, expected.y, tolerance) << what;
-    EXPECT_NEAR(actual.z, expected.z, tolerance) << what;
-    EXPECT_NEAR(actual.w, expected.w, tolerance) << what;
-}
 
 // Every way the surface can evaluate a point must give `expected`.
 void expect_all_evaluations(const BezierSurface& s, double u, double v, const Vec3& expected, double tolerance) {

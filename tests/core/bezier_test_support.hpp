@@ -13,10 +13,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "ratbez/error.hpp"
 #include "ratbez/vec.hpp"
+#include "test_support.hpp"
 
-namespace ratbez::testing {
+namespace ratbez::test {
 
 // 128-bit intermediates so a product of two 64-bit terms is exact before reduction (__extension__ keeps
 // -Wpedantic quiet about the GCC/Clang builtin type).
@@ -128,20 +128,6 @@ inline RationalPoint bezier_surface_exact(const std::vector<std::vector<Rational
     return sum;
 }
 
-// The message of the ratbez::Error that `f` throws, or a marker when it throws none (any other exception
-// type propagates and fails the test).
-template <class F>
-std::string error_message(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "<no ratbez::Error thrown>";
-}
-
-inline bool starts_with(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
-
 // Fixed-seed random input for the property tests: every run sees the same 1,000+ cases.
 class RandomInput {
 public:
@@ -165,4 +151,4 @@ private:
     std::mt19937_64 engine_;
 };
 
-}  // namespace ratbez::testing
+}  // namespace ratbez::test

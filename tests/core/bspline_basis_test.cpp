@@ -12,13 +12,8 @@
 namespace ratbez {
 namespace {
 
-using nurbs_testing::Rng;
-using nurbs_testing::throws_naming;
-using nurbs_testing::uniform;
-using nurbs_testing::uniform_int;
+using namespace test;
 
-constexpr double nan_value = std::numeric_limits<double>::quiet_NaN();
-constexpr double inf_value = std::numeric_limits<double>::infinity();
 
 std::vector<double> all_basis(int degree, const std::vector<double>& knots, double u) {
     std::vector<double> values(static_cast<std::size_t>(degree) + 1);
@@ -159,7 +154,7 @@ TEST(BsplineBasis, PartitionOfUnityAndNonNegativityOnRandomKnots) {
         const int p = uniform_int(rng, 0, 5);
         const int count = p + 1 + (p == 0 ? 0 : uniform_int(rng, 0, 8));
         const bool clamped = trial % 2 == 0;
-        const std::vector<double> knots = nurbs_testing::random_knots(rng, p, count, clamped);
+        const std::vector<double> knots = test::random_knots(rng, p, count, clamped);
         const Interval d = knot_domain(p, knots);
         const double u = trial % 7 == 0 ? d.max : trial % 7 == 1 ? d.min : uniform(rng, d.min, d.max);
         const std::vector<double> values = all_basis(p, knots, u);
@@ -187,7 +182,7 @@ TEST(BsplineBasis, OneBasisFunctionAgreesWithAllBasisFunctions) {
     for (int trial = 0; trial < 1000; ++trial) {
         const int p = uniform_int(rng, 1, 5);
         const int count = p + 1 + uniform_int(rng, 0, 8);
-        const std::vector<double> knots = nurbs_testing::random_knots(rng, p, count, trial % 2 == 0);
+        const std::vector<double> knots = test::random_knots(rng, p, count, trial % 2 == 0);
         const Interval d = knot_domain(p, knots);
         double u = uniform(rng, d.min, d.max);
         if (trial % 5 == 0) u = knots[static_cast<std::size_t>(uniform_int(rng, p, count))];  // a knot in the domain
@@ -206,8 +201,8 @@ TEST(BsplineBasis, DerivativesAgreeWithCentralDifferences) {
     for (int trial = 0; trial < 1000; ++trial) {
         const int p = uniform_int(rng, 1, 5);
         const int count = p + 1 + uniform_int(rng, 0, 8);
-        const std::vector<double> knots = nurbs_testing::random_knots(rng, p, count, trial % 2 == 0);
-        const auto where = nurbs_testing::random_interior_parameter(rng, p, knots);
+        const std::vector<double> knots = test::random_knots(rng, p, count, trial % 2 == 0);
+        const auto where = test::random_interior_parameter(rng, p, knots);
         const double u = where.value, h = 1e-4 * (where.span_max - where.span_min);
         const int span = find_span(p, knots, u);
         const auto ders = basis_function_derivatives(span, u, p, knots, p + 1);

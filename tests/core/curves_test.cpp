@@ -11,10 +11,7 @@
 namespace ratbez {
 namespace {
 
-using test::pi;
-using test::random_point;
-using test::random_unit;
-using test::uniform;
+using namespace test;
 
 TEST(Curves, QuarterCircleHasTheControlPolygonOfEx1_13AndWeightCos45) {
     const NurbsCurve quarter = arc(1.0, 0.0, 90.0);

@@ -11,10 +11,7 @@
 namespace ratbez {
 namespace {
 
-using test::pi;
-using test::random_point;
-using test::random_unit;
-using test::uniform;
+using namespace test;
 
 // A rounded rectangle (w x h, corner radius r) of lines and quarter arcs in the plane of `frame`,
 // counterclockwise about frame.z_axis when ccw is true.

@@ -9,7 +9,7 @@
 namespace ratbez {
 namespace {
 
-using test::random_point;
+using namespace test;
 
 TEST(Frame, IsRightHandedOrthonormalWithZAlongTheAxis) {
     for (int k = 0; k < 1000; ++k) {

@@ -2,16 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 namespace ratbez {
 namespace {
 
-// The unit tetrahedron, outward by the right-hand rule.
-Mesh tetrahedron() {
-    Mesh m;
-    m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-    return m;
-}
+using test::tetrahedron;
 
 TEST(Mesh, TetrahedronIsClosedWithExactVolumeAndArea) {
     const Mesh m = tetrahedron();

@@ -11,14 +11,8 @@
 namespace ratbez {
 namespace {
 
-using nurbs_testing::near;
-using nurbs_testing::Rng;
-using nurbs_testing::throws_naming;
-using nurbs_testing::uniform;
-using nurbs_testing::uniform_int;
+using namespace test;
 
-constexpr double nan_value = std::numeric_limits<double>::quiet_NaN();
-constexpr double inf_value = std::numeric_limits<double>::infinity();
 
 double net_size(const NurbsCurve& c) {
     double size = 0;
@@ -85,8 +79,8 @@ TEST(NurbsCurve, RationalBasisIsAPartitionOfUnityAndNonNegative) {
     // With P_k = e_x and every other point 0, x(u) = R_k(u), the k-th rational basis function.
     Rng rng(3001);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsCurve c = nurbs_testing::random_curve(rng, true, trial % 2 == 0);
-        const double u = nurbs_testing::random_parameter(rng, c.domain());
+        const NurbsCurve c = test::random_curve(rng, true, trial % 2 == 0);
+        const double u = test::random_parameter(rng, c.domain());
         const std::vector<double> weights = c.weights();
         double sum = 0;
         for (std::size_t k = 0; k < weights.size(); ++k) {
@@ -105,7 +99,7 @@ TEST(NurbsCurve, RationalBasisIsAPartitionOfUnityAndNonNegative) {
 TEST(NurbsCurve, ClampedCurvesInterpolateTheirEndPoints) {
     Rng rng(3002);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsCurve c = nurbs_testing::random_curve(rng, trial % 2 == 0, true);
+        const NurbsCurve c = test::random_curve(rng, trial % 2 == 0, true);
         const std::vector<Vec3> points = c.points();
         EXPECT_TRUE(near(c.start_point(), points.front(), 1e-14 * net_size(c)));
         EXPECT_TRUE(near(c.end_point(), points.back(), 1e-14 * net_size(c)));
@@ -117,13 +111,13 @@ TEST(NurbsCurve, CurveLiesInTheConvexHullOfItsSpanPoints) {
     // every direction d its extent is bounded by theirs.
     Rng rng(3003);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsCurve c = nurbs_testing::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
-        const double u = nurbs_testing::random_parameter(rng, c.domain());
+        const NurbsCurve c = test::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
+        const double u = test::random_parameter(rng, c.domain());
         const int span = find_span(c.degree(), c.knots(), u);
         const std::vector<Vec3> points = c.points();
         const Vec3 x = c.point(u);
         for (int direction = 0; direction < 8; ++direction) {
-            Vec3 d = nurbs_testing::random_point(rng);
+            Vec3 d = test::random_point(rng);
             if (norm(d) == 0) continue;
             d = d / norm(d);
             double highest = -1e300;
@@ -138,8 +132,8 @@ TEST(NurbsCurve, DerivativesAgreeWithCentralDifferences) {
     // (where lower continuity is allowed). Error model: h^2 |C^(k+2)| for the difference, rounding otherwise.
     Rng rng(3004);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsCurve c = nurbs_testing::random_curve(rng, trial % 4 != 0, trial % 2 == 0);
-        const auto where = nurbs_testing::random_interior_parameter(rng, c.degree(), c.knots());
+        const NurbsCurve c = test::random_curve(rng, trial % 4 != 0, trial % 2 == 0);
+        const auto where = test::random_interior_parameter(rng, c.degree(), c.knots());
         const double length = where.span_max - where.span_min;
         const double h = 1e-4 * length;
         const auto at = c.derivatives(where.value, 5);
@@ -159,12 +153,12 @@ TEST(NurbsCurve, DerivativesAgreeWithCentralDifferences) {
 TEST(NurbsCurve, KnotInsertionKeepsTheCurve) {
     Rng rng(3005);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsCurve c = nurbs_testing::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
+        const NurbsCurve c = test::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
         const Interval d = c.domain();
         // Insert at a random parameter or at an existing knot (including an unclamped domain end).
         double u = uniform(rng, d.min, d.max);
         if (trial % 3 == 0) {
-            const auto breaks = nurbs_testing::break_points(c.degree(), c.knots());
+            const auto breaks = test::break_points(c.degree(), c.knots());
             u = breaks[std::size_t(uniform_int(rng, 0, int(breaks.size()) - 1))];
         }
         const int multiplicity = int(std::count(c.knots().begin(), c.knots().end(), u));
@@ -190,8 +184,8 @@ TEST(NurbsCurve, KnotInsertionKeepsTheCurve) {
 TEST(NurbsCurve, BezierSegmentsReproduceTheCurvePiecewise) {
     Rng rng(3006);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsCurve c = nurbs_testing::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
-        const std::vector<double> breaks = nurbs_testing::break_points(c.degree(), c.knots());
+        const NurbsCurve c = test::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
+        const std::vector<double> breaks = test::break_points(c.degree(), c.knots());
         const std::vector<BezierCurve> segments = c.bezier_segments();
         ASSERT_EQ(segments.size(), breaks.size() - 1) << "trial " << trial;
         for (std::size_t s = 0; s < segments.size(); ++s) {
@@ -218,8 +212,8 @@ TEST(NurbsCurve, BezierKnotVectorEqualsTheBezierCurve) {
         std::vector<Vec3> points(std::size_t(n) + 1);
         std::vector<double> weights(points.size());
         for (std::size_t i = 0; i < points.size(); ++i) {
-            points[i] = nurbs_testing::random_point(rng);
-            weights[i] = nurbs_testing::random_weight(rng);
+            points[i] = test::random_point(rng);
+            weights[i] = test::random_weight(rng);
         }
         const bool rational = trial % 2 == 0;
         const BezierCurve bezier = rational ? BezierCurve(points, weights) : BezierCurve(points);
@@ -244,7 +238,7 @@ TEST(NurbsCurve, BezierKnotVectorEqualsTheBezierCurve) {
 TEST(NurbsCurve, ReversedRunsTheSameCurveBackwards) {
     Rng rng(3008);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsCurve c = nurbs_testing::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
+        const NurbsCurve c = test::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
         const NurbsCurve r = c.reversed();
         const Interval d = c.domain();
         EXPECT_EQ(r.domain().min, d.min);
@@ -255,7 +249,7 @@ TEST(NurbsCurve, ReversedRunsTheSameCurveBackwards) {
         const double mirrored = std::clamp(d.min + d.max - u, d.min, d.max);
         EXPECT_TRUE(near(r.point(u), c.point(mirrored), 1e-12 * net_size(c)));
         // Away from knots the derivative flips sign.
-        const auto where = nurbs_testing::random_interior_parameter(rng, c.degree(), c.knots());
+        const auto where = test::random_interior_parameter(rng, c.degree(), c.knots());
         const double back = d.min + d.max - where.value;
         EXPECT_TRUE(near(r.derivative(back), -1.0 * c.derivative(where.value), 1e-9 * (norm(c.derivative(where.value)) + 1)));
         EXPECT_TRUE(near(r.reversed().point(u), c.point(u), 1e-12 * net_size(c)));
@@ -265,7 +259,7 @@ TEST(NurbsCurve, ReversedRunsTheSameCurveBackwards) {
 TEST(NurbsCurve, ReparameterizedIsTheSameCurveOnANewDomain) {
     Rng rng(3009);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsCurve c = nurbs_testing::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
+        const NurbsCurve c = test::random_curve(rng, trial % 2 == 0, trial % 3 != 0);
         const double a = uniform(rng, -5, 5), b = a + uniform(rng, 0.5, 10);
         const NurbsCurve r = c.reparameterized(a, b);
         EXPECT_EQ(r.domain().min, a);
@@ -274,7 +268,7 @@ TEST(NurbsCurve, ReparameterizedIsTheSameCurveOnANewDomain) {
         const double scale = (d.max - d.min) / (b - a);
         EXPECT_TRUE(near(r.start_point(), c.start_point(), 1e-14 * net_size(c)));
         EXPECT_TRUE(near(r.end_point(), c.end_point(), 1e-14 * net_size(c)));
-        const auto where = nurbs_testing::random_interior_parameter(rng, c.degree(), c.knots());
+        const auto where = test::random_interior_parameter(rng, c.degree(), c.knots());
         const double t = a + (where.value - d.min) / scale;
         EXPECT_TRUE(near(r.point(t), c.point(where.value), 1e-12 * net_size(c)));
         // First and second derivatives scale by the chain rule.

@@ -11,13 +11,8 @@
 namespace ratbez {
 namespace {
 
-using nurbs_testing::near;
-using nurbs_testing::Rng;
-using nurbs_testing::throws_naming;
-using nurbs_testing::uniform;
-using nurbs_testing::uniform_int;
+using namespace test;
 
-constexpr double nan_value = std::numeric_limits<double>::quiet_NaN();
 const double r2 = std::sqrt(0.5);  // the weight of a quarter circle's middle control point
 
 double net_size(const NurbsSurface& s) {
@@ -156,9 +151,9 @@ TEST(NurbsSurface, BilinearPatchValuesAndPartials) {
 TEST(NurbsSurface, RationalBasisIsAPartitionOfUnityAndNonNegative) {
     Rng rng(4002);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsSurface s = nurbs_testing::random_surface(rng, true, trial % 2 == 0, 3);
-        const double u = nurbs_testing::random_parameter(rng, s.domain_u());
-        const double v = nurbs_testing::random_parameter(rng, s.domain_v());
+        const NurbsSurface s = test::random_surface(rng, true, trial % 2 == 0, 3);
+        const double u = test::random_parameter(rng, s.domain_u());
+        const double v = test::random_parameter(rng, s.domain_v());
         // A net of e_x everywhere gives x = sum R_ij = 1; a net with e_x at (i, j) alone gives x = R_ij >= 0.
         std::vector<std::vector<Vec3>> ones(std::size_t(s.rows()), std::vector<Vec3>(std::size_t(s.columns()), {1, 0, 0}));
         const NurbsSurface unity(s.degree_u(), s.degree_v(), s.knots_u(), s.knots_v(), ones, s.weights());
@@ -192,9 +187,9 @@ TEST(NurbsSurface, RationalBasisIsAPartitionOfUnityAndNonNegative) {
 TEST(NurbsSurface, DerivativesAgreeWithCentralDifferences) {
     Rng rng(4003);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsSurface s = nurbs_testing::random_surface(rng, trial % 4 != 0, trial % 2 == 0);
-        const auto wu = nurbs_testing::random_interior_parameter(rng, s.degree_u(), s.knots_u());
-        const auto wv = nurbs_testing::random_interior_parameter(rng, s.degree_v(), s.knots_v());
+        const NurbsSurface s = test::random_surface(rng, trial % 4 != 0, trial % 2 == 0);
+        const auto wu = test::random_interior_parameter(rng, s.degree_u(), s.knots_u());
+        const auto wv = test::random_interior_parameter(rng, s.degree_v(), s.knots_v());
         const double length_u = wu.span_max - wu.span_min, length_v = wv.span_max - wv.span_min;
         const double hu = 1e-4 * length_u, hv = 1e-4 * length_v;
         const double u = wu.value, v = wv.value;
@@ -224,14 +219,14 @@ TEST(NurbsSurface, DerivativesAgreeWithCentralDifferences) {
 TEST(NurbsSurface, KnotInsertionInUAndVKeepsTheSurface) {
     Rng rng(4004);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsSurface s = nurbs_testing::random_surface(rng, trial % 2 == 0, trial % 3 != 0, 4);
+        const NurbsSurface s = test::random_surface(rng, trial % 2 == 0, trial % 3 != 0, 4);
         const bool in_u = trial % 2 == 0;
         const int degree = in_u ? s.degree_u() : s.degree_v();
         const std::vector<double>& knots = in_u ? s.knots_u() : s.knots_v();
         const Interval d = in_u ? s.domain_u() : s.domain_v();
         double t = uniform(rng, d.min, d.max);
         if (trial % 3 == 0) {
-            const auto breaks = nurbs_testing::break_points(degree, knots);
+            const auto breaks = test::break_points(degree, knots);
             t = breaks[std::size_t(uniform_int(rng, 0, int(breaks.size()) - 1))];
         }
         const int multiplicity = int(std::count(knots.begin(), knots.end(), t));
@@ -252,9 +247,9 @@ TEST(NurbsSurface, KnotInsertionInUAndVKeepsTheSurface) {
 TEST(NurbsSurface, BezierPatchesReproduceTheSurfacePiecewise) {
     Rng rng(4005);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsSurface s = nurbs_testing::random_surface(rng, trial % 2 == 0, trial % 3 != 0, 4);
-        const auto breaks_u = nurbs_testing::break_points(s.degree_u(), s.knots_u());
-        const auto breaks_v = nurbs_testing::break_points(s.degree_v(), s.knots_v());
+        const NurbsSurface s = test::random_surface(rng, trial % 2 == 0, trial % 3 != 0, 4);
+        const auto breaks_u = test::break_points(s.degree_u(), s.knots_u());
+        const auto breaks_v = test::break_points(s.degree_v(), s.knots_v());
         const auto patches = s.bezier_patches();
         ASSERT_EQ(patches.size(), breaks_u.size() - 1);
         for (std::size_t a = 0; a < patches.size(); ++a) {
@@ -284,9 +279,9 @@ TEST(NurbsSurface, BezierKnotVectorsEqualTheBezierSurface) {
         std::vector<std::vector<Vec3>> net(std::size_t(n + 1), std::vector<Vec3>(std::size_t(m + 1)));
         std::vector<std::vector<double>> weights(net.size(), std::vector<double>(net.front().size()));
         for (auto& row : net)
-            for (Vec3& p : row) p = nurbs_testing::random_point(rng);
+            for (Vec3& p : row) p = test::random_point(rng);
         for (auto& row : weights)
-            for (double& w : row) w = nurbs_testing::random_weight(rng);
+            for (double& w : row) w = test::random_weight(rng);
         const bool rational = trial % 2 == 0;
         const BezierSurface bezier = rational ? BezierSurface(net, weights) : BezierSurface(net);
         auto bezier_knots = [](int degree) {
@@ -316,9 +311,9 @@ TEST(NurbsSurface, BezierKnotVectorsEqualTheBezierSurface) {
 TEST(NurbsSurface, IsocurvesAreExact) {
     Rng rng(4007);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsSurface s = nurbs_testing::random_surface(rng, trial % 2 == 0, trial % 3 != 0);
-        const double u0 = nurbs_testing::random_parameter(rng, s.domain_u());
-        const double v0 = nurbs_testing::random_parameter(rng, s.domain_v());
+        const NurbsSurface s = test::random_surface(rng, trial % 2 == 0, trial % 3 != 0);
+        const double u0 = test::random_parameter(rng, s.domain_u());
+        const double v0 = test::random_parameter(rng, s.domain_v());
         const NurbsCurve along_v = s.isocurve_u(u0);
         const NurbsCurve along_u = s.isocurve_v(v0);
         EXPECT_EQ(along_v.degree(), s.degree_v());
@@ -326,8 +321,8 @@ TEST(NurbsSurface, IsocurvesAreExact) {
         EXPECT_EQ(along_u.degree(), s.degree_u());
         EXPECT_EQ(along_u.knots(), s.knots_u());
         EXPECT_EQ(along_v.is_rational(), s.is_rational());
-        const double u = nurbs_testing::random_parameter(rng, s.domain_u());
-        const double v = nurbs_testing::random_parameter(rng, s.domain_v());
+        const double u = test::random_parameter(rng, s.domain_u());
+        const double v = test::random_parameter(rng, s.domain_v());
         EXPECT_TRUE(near(along_v.point(v), s.point(u0, v), 1e-13 * net_size(s)));
         EXPECT_TRUE(near(along_u.point(u), s.point(u, v0), 1e-13 * net_size(s)));
         EXPECT_TRUE(near(along_v.derivative(v), s.derivative(u0, v, 0, 1), 1e-11 * (norm(s.derivative(u0, v, 0, 1)) + 1)));
@@ -338,9 +333,9 @@ TEST(NurbsSurface, IsocurvesAreExact) {
 TEST(NurbsSurface, NormalIsTheUnitCrossProductOnRegularPoints) {
     Rng rng(4008);
     for (int trial = 0; trial < 1000; ++trial) {
-        const NurbsSurface s = nurbs_testing::random_surface(rng, trial % 2 == 0, trial % 2 == 0);
-        const double u = nurbs_testing::random_parameter(rng, s.domain_u());
-        const double v = nurbs_testing::random_parameter(rng, s.domain_v());
+        const NurbsSurface s = test::random_surface(rng, trial % 2 == 0, trial % 2 == 0);
+        const double u = test::random_parameter(rng, s.domain_u());
+        const double v = test::random_parameter(rng, s.domain_v());
         const Vec3 n = cross(s.derivative(u, v, 1, 0), s.derivative(u, v, 0, 1));
         if (norm(n) < 1e-6) continue;  // a random net may fold; those points are not what this test is about
         EXPECT_TRUE(near(s.normal(u, v), n / norm(n), 1e-12)) << "trial " << trial;

@@ -1,7 +1,6 @@
 #pragma once
 // Test support for the B-spline / NURBS suites (bspline_basis, nurbs_curve, nurbs_surface): seeded random
-// knot vectors with multiplicities (clamped and unclamped), random curves and surfaces, and helpers that
-// check an Error names the argument it is about.
+// knot vectors with multiplicities (clamped and unclamped), random curves and surfaces.
 
 #include <gtest/gtest.h>
 
@@ -17,8 +16,9 @@
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/nurbs_surface.hpp"
 #include "ratbez/vec.hpp"
+#include "test_support.hpp"
 
-namespace ratbez::nurbs_testing {
+namespace ratbez::test {
 
 using Rng = std::mt19937_64;
 
@@ -110,26 +110,4 @@ inline InteriorParameter random_interior_parameter(Rng& rng, int degree, const s
     return {a + uniform(rng, 0.1, 0.9) * (b - a), a, b};
 }
 
-inline ::testing::AssertionResult near(const Vec3& actual, const Vec3& expected, double tolerance) {
-    const double d = distance(actual, expected);
-    if (d <= tolerance) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "(" << actual.x << ", " << actual.y << ", " << actual.z << ") vs ("
-                                         << expected.x << ", " << expected.y << ", " << expected.z
-                                         << "): distance " << d << " > " << tolerance;
-}
-
-// The call throws ratbez::Error whose message starts with "<argument>:".
-inline ::testing::AssertionResult throws_naming(const std::function<void()>& call, const std::string& argument) {
-    try {
-        call();
-    } catch (const Error& e) {
-        const std::string message = e.what();
-        if (message.rfind(argument + ":", 0) == 0) return ::testing::AssertionSuccess();
-        return ::testing::AssertionFailure() << "message \"" << message << "\" does not name " << argument;
-    } catch (const std::exception& e) {
-        return ::testing::AssertionFailure() << "threw a non-ratbez exception: " << e.what();
-    }
-    return ::testing::AssertionFailure() << "did not throw";
-}
-
-}  // namespace ratbez::nurbs_testing
+}  // namespace ratbez::test

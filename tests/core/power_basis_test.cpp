@@ -12,17 +12,9 @@
 namespace ratbez {
 namespace {
 
-using testing::error_message;
-using testing::RandomInput;
-using testing::starts_with;
+using namespace test;
 
 constexpr double kExact = 1e-14;
-
-void expect_near(const Vec3& actual, const Vec3& expected, double tolerance) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
 
 TEST(Horner, A11EvaluatesScalarAndVectorPolynomials) {
     // 3 - 2u + u^3 at u = 2: 3 - 4 + 8 = 7; at u = -1 (Exercise 1.9 uses [-1, 1]): 3 + 2 - 1 = 4.

@@ -11,9 +11,7 @@
 namespace ratbez {
 namespace {
 
-using test::random_point;
-using test::random_unit;
-using test::uniform;
+using namespace test;
 
 struct Placement {
     Vec3 center, axis;

@@ -12,7 +12,7 @@
 namespace ratbez {
 namespace {
 
-using test::pi;
+using namespace test;
 
 struct Expected {
     std::string name;

@@ -12,10 +12,7 @@
 namespace ratbez {
 namespace {
 
-using test::pi;
-using test::random_point;
-using test::random_unit;
-using test::uniform;
+using namespace test;
 
 // The angle of arc parameter u for a revolution by `angle_deg` (see curves_test: inside segment k of
 // sweep 2θ, tan(α / 2) = tan(θ / 2) (2t - 1) from the segment's bisector).

@@ -15,6 +15,7 @@
 #include "ratbez/error.hpp"
 #include "ratbez/frame.hpp"
 #include "ratbez/vec.hpp"
+#include "test_support.hpp"
 
 namespace ratbez::test {
 
@@ -80,27 +81,5 @@ inline void expect_outward(const Solid& solid, const std::function<bool(const Ve
         }
     }
 }
-
-// The message of the Error thrown by `action` (fails the test when nothing or something else is thrown).
-template <class F>
-std::string error_message(F&& action) {
-    try {
-        action();
-    } catch (const Error& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "threw a non-ratbez exception: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "did not throw";
-    return {};
-}
-
-// Asserts that `action` throws ratbez::Error whose message starts with "<argument>:".
-#define EXPECT_ERROR_NAMING(action, argument)                                              \
-    do {                                                                                  \
-        const std::string message_ = ::ratbez::test::error_message([&] { (void)(action); }); \
-        EXPECT_EQ(message_.rfind(std::string(argument) + ":", 0), 0u) << message_;         \
-    } while (false)
 
 }  // namespace ratbez::test

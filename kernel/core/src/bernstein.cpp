@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
 
 namespace ratbez {
@@ -71,18 +72,13 @@ std::vector<double> all_bernstein_derivatives(int n, int k, double u) {
     double falling_factorial = 1.0;  // n (n-1) ... (n-k+1)
     for (int r = 0; r < k; ++r) falling_factorial *= static_cast<double>(n - r);
 
-    std::vector<double> binomial_k(static_cast<std::size_t>(k) + 1, 1.0);  // C(k, j), Pascal's row
-    for (int j = 1; j < k; ++j)
-        binomial_k[static_cast<std::size_t>(j)] =
-            binomial_k[static_cast<std::size_t>(j - 1)] * static_cast<double>(k - j + 1) / static_cast<double>(j);
-
     for (int i = 0; i <= n; ++i) {
         double sum = 0.0;
         for (int j = 0; j <= k; ++j) {
             const int r = i - j;
             if (r < 0 || r > n - k) continue;
             const double sign = ((k - j) % 2 == 0) ? 1.0 : -1.0;
-            sum += sign * binomial_k[static_cast<std::size_t>(j)] * lower[static_cast<std::size_t>(r)];
+            sum += sign * detail::binomial(k, j) * lower[static_cast<std::size_t>(r)];
         }
         derivatives[static_cast<std::size_t>(i)] = falling_factorial * sum;
     }

@@ -9,6 +9,7 @@
 
 #include "ratbez/bernstein.hpp"
 #include "ratbez/error.hpp"
+#include "rational_derivatives.hpp"
 
 namespace ratbez {
 
@@ -38,15 +39,6 @@ Vec4 de_casteljau(std::vector<Vec4> q, double u) {
     for (std::size_t k = 1; k < q.size(); ++k)
         for (std::size_t i = 0; i + k < q.size(); ++i) q[i] = lerp(q[i], q[i + 1], u);
     return q.front();
-}
-
-// C(k, i) for i = 0..k by Pascal's row (exact for every order anyone evaluates).
-std::vector<double> binomial_row(int k) {
-    std::vector<double> row(static_cast<std::size_t>(k) + 1, 1.0);
-    for (int i = 1; i < k; ++i)
-        row[static_cast<std::size_t>(i)] =
-            row[static_cast<std::size_t>(i - 1)] * static_cast<double>(k - i + 1) / static_cast<double>(i);
-    return row;
 }
 
 }  // namespace
@@ -141,16 +133,10 @@ std::vector<Vec3> BezierCurve::derivatives(double u, int order) const {
         differences.pop_back();
     }
 
-    // Quotient rule on A = w C (A4.2): A^(k) = sum_i C(k,i) w^(i) C^(k-i), so
-    // C^(k) = (A^(k) - sum_{i=1..k} C(k,i) w^(i) C^(k-i)) / w. w > 0 on [0,1] because all w_i > 0.
+    // Quotient rule on A = w C (A4.2): A^(k) = sum_i C(k,i) w^(i) C^(k-i), solved for C^(k).
+    // w > 0 on [0,1] because all w_i > 0.
     std::vector<Vec3> result(count);
-    const double w = homogeneous[0].w;
-    for (std::size_t k = 0; k < count; ++k) {
-        const std::vector<double> binomial = binomial_row(static_cast<int>(k));
-        Vec3 numerator = weighted_part(homogeneous[k]);
-        for (std::size_t i = 1; i <= k; ++i) numerator -= (binomial[i] * homogeneous[i].w) * result[k - i];
-        result[k] = numerator / w;
-    }
+    detail::rational_curve_derivatives(homogeneous, result);
     return result;
 }
 

@@ -6,16 +6,21 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstddef>
 #include <string>
 
+#include "limit_normal.hpp"
+#include "numeric_internal.hpp"
 #include "ratbez/bernstein.hpp"
 #include "ratbez/error.hpp"
+#include "rational_derivatives.hpp"
 
 namespace ratbez {
 
 namespace {
 
-std::size_t to_size(int value) { return static_cast<std::size_t>(value); }
+using detail::to_size;
 
 // A1.5 / Eq. 1.19 on `count` homogeneous points starting at `first`, `stride` apart; the scratch copy keeps
 // the net intact.
@@ -29,13 +34,6 @@ Vec4 de_casteljau_strided(const Vec4* first, std::size_t count, std::size_t stri
 
 Vec4 de_casteljau(const std::vector<Vec4>& points, double t) {
     return de_casteljau_strided(points.data(), points.size(), 1, t);
-}
-
-std::vector<double> binomial_row(int k) {
-    std::vector<double> row(to_size(k) + 1, 1.0);
-    for (int i = 1; i < k; ++i)
-        row[to_size(i)] = row[to_size(i - 1)] * static_cast<double>(k - i + 1) / static_cast<double>(i);
-    return row;
 }
 
 void validate_weight(double weight, const std::string& argument, const std::string& where) {
@@ -212,9 +210,9 @@ std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, in
     // Homogeneous partials Aw[k][l] = d^{k+l} S^w / du^k dv^l. S^w is a polynomial tensor product, so the
     // curve rule Eq. 1.9 applies in each direction: difference the net k times along u (factor n!/(n-k)!),
     // collapse the columns by deCasteljau in u, difference those points l times along v (m!/(m-l)!), and
-    // evaluate by deCasteljau in v. Partials beyond the degree vanish.
-    std::vector<std::vector<Vec4>> aw(d + 1);
-    for (std::size_t k = 0; k <= d; ++k) aw[k].assign(d - k + 1, Vec4{});
+    // evaluate by deCasteljau in v. Partials beyond the degree vanish. Flat: aw[k * stride + l].
+    const std::size_t stride = d + 1;
+    std::vector<Vec4> aw(stride * stride);
     const std::size_t columns = to_size(columns_);
     std::vector<Vec4> net = pw_;
     std::size_t rows = to_size(rows_);
@@ -225,7 +223,7 @@ std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, in
             column_points[j] = de_casteljau_strided(&net[j], rows, columns, u);
         double factor_v = 1.0;
         for (std::size_t l = 0; k + l <= d && !column_points.empty(); ++l) {
-            aw[k][l] = (factor_u * factor_v) * de_casteljau(column_points, v);
+            aw[k * stride + l] = (factor_u * factor_v) * de_casteljau(column_points, v);
             factor_v *= static_cast<double>(column_points.size() - 1);
             for (std::size_t j = 0; j + 1 < column_points.size(); ++j)
                 column_points[j] = column_points[j + 1] - column_points[j];
@@ -238,27 +236,12 @@ std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, in
         --rows;
     }
 
-    // The quotient rule on A = w S, solved for S (A4.4, the surface form of Eq. 1.28 differentiated):
-    // SKL[k][l] = (A_{k,l} - sum_{j=1..l} C(l,j) w_{0,j} SKL[k][l-j] - sum_{i=1..k} C(k,i) w_{i,0} SKL[k-i][l]
-    //              - sum_{i=1..k} C(k,i) sum_{j=1..l} C(l,j) w_{i,j} SKL[k-i][l-j]) / w.
+    // The quotient rule on A = w S, solved for S (A4.4, rational_derivatives.hpp).
+    std::vector<Vec3> flat(stride * stride);
+    detail::rational_surface_derivatives(aw, flat, stride);
     std::vector<std::vector<Vec3>> skl(d + 1);
-    for (std::size_t k = 0; k <= d; ++k) skl[k].assign(d - k + 1, Vec3{});
-    const double w = aw[0][0].w;
-    for (std::size_t k = 0; k <= d; ++k) {
-        const std::vector<double> binomial_k = binomial_row(static_cast<int>(k));
-        for (std::size_t l = 0; k + l <= d; ++l) {
-            const std::vector<double> binomial_l = binomial_row(static_cast<int>(l));
-            Vec3 numerator = weighted_part(aw[k][l]);
-            for (std::size_t j = 1; j <= l; ++j) numerator -= (binomial_l[j] * aw[0][j].w) * skl[k][l - j];
-            for (std::size_t i = 1; i <= k; ++i) {
-                numerator -= (binomial_k[i] * aw[i][0].w) * skl[k - i][l];
-                Vec3 mixed;
-                for (std::size_t j = 1; j <= l; ++j) mixed += (binomial_l[j] * aw[i][j].w) * skl[k - i][l - j];
-                numerator -= binomial_k[i] * mixed;
-            }
-            skl[k][l] = numerator / w;
-        }
-    }
+    for (std::size_t k = 0; k <= d; ++k) skl[k].assign(flat.begin() + static_cast<std::ptrdiff_t>(k * stride),
+                                                       flat.begin() + static_cast<std::ptrdiff_t>(k * stride + d - k + 1));
     return skl;
 }
 
@@ -269,15 +252,14 @@ Vec3 BezierSurface::derivative(double u, double v, int du, int dv) const {
 }
 
 Vec3 BezierSurface::normal(double u, double v) const {
-    // Eq. 1.4 where S_u x S_v does not vanish. Where it does (a collapsed edge: S_u = 0 along v = v0, the
-    // apex of a cone, a pole), Eq. 1.4 has no value but the tangent plane still exists (000 §1.1), and the
-    // normal is the limit of N along a path into the patch. Along (u, v) + t (a, b) write
-    //   S_u(t) = sum_p t^p U_p,  S_v(t) = sum_p t^p V_p,  U_p = (1/p!) sum_r C(p,r) a^r b^(p-r) S_{r+1,p-r},
-    // (V_p likewise with S_{r,p-r+1}); then S_u x S_v = sum_q t^q N_q with N_q = sum_p U_p x V_{q-p}, and the
-    // limit direction is that of the first N_q that does not vanish. For S_u = 0 along v = 0 this is
-    // N_1 = b S_uv x S_v (S_uu vanishes there too), the familiar S_uv x S_v; at v = 1, b < 0 flips it, as it must.
-    constexpr int max_taylor_order = 3;
-    const auto skl = derivatives(u, v, max_taylor_order + 1);  // validates u and v
+    // Eq. 1.4 where S_u x S_v does not vanish; where it does (a collapsed edge: S_u = 0 along v = v0, the
+    // apex of a cone, a pole) the limit of N along a path into the patch (limit_normal.hpp). Its first term
+    // N_0 = S_u x S_v is Eq. 1.4 itself, so the regular case needs no separate test.
+    constexpr std::size_t stride = detail::limit_normal_stride;
+    const auto derivatives_uv = derivatives(u, v, static_cast<int>(stride) - 1);  // validates u and v
+    detail::LimitNormalPartials skl;
+    for (std::size_t k = 0; k < stride; ++k)
+        for (std::size_t l = 0; k + l < stride; ++l) skl[k * stride + l] = derivatives_uv[k][l];
 
     // Path direction: towards the centre of the domain, so the path stays inside [0,1]^2 from any edge or corner.
     double a = 0.5 - u, b = 0.5 - v;
@@ -290,50 +272,18 @@ Vec3 BezierSurface::normal(double u, double v) const {
         b = 0.0;
     }
 
-    // Scale for deciding "vanishes": derivative magnitudes of each total order, floored by the control net's
-    // size so that rounding noise in an exactly vanishing partial is never mistaken for a direction.
+    // "Vanishes" is measured against the control net's size, for derivatives of every order: rounding noise in
+    // an exactly vanishing partial is never mistaken for a direction. (a, b) is a unit vector: path scale 1.
     Vec3 low = project(pw_.front()), high = low;
     for (const Vec4& p : pw_) {
         const Vec3 q = project(p);
         low = {std::min(low.x, q.x), std::min(low.y, q.y), std::min(low.z, q.z)};
         high = {std::max(high.x, q.x), std::max(high.y, q.y), std::max(high.z, q.z)};
     }
-    const double net_size = norm(high - low);
-    std::array<double, max_taylor_order + 2> magnitude{};  // magnitude[k]: largest partial of total order k
-    for (std::size_t k = 1; k < magnitude.size(); ++k) {
-        magnitude[k] = net_size;
-        for (std::size_t r = 0; r <= k; ++r) magnitude[k] = std::max(magnitude[k], norm(skl[r][k - r]));
-    }
-
-    std::array<Vec3, max_taylor_order + 1> u_terms, v_terms;
-    double factorial = 1.0;
-    for (std::size_t p = 0; p < u_terms.size(); ++p) {
-        if (p > 0) factorial *= static_cast<double>(p);
-        const std::vector<double> binomial = binomial_row(static_cast<int>(p));
-        Vec3 up, vp;
-        for (std::size_t r = 0; r <= p; ++r) {
-            const double coefficient = binomial[r] * std::pow(a, static_cast<double>(r)) *
-                                       std::pow(b, static_cast<double>(p - r));
-            up += coefficient * skl[r + 1][p - r];
-            vp += coefficient * skl[r][p - r + 1];
-        }
-        u_terms[p] = up / factorial;
-        v_terms[p] = vp / factorial;
-    }
-
-    constexpr double relative_tolerance = 1e-10;
-    for (std::size_t q = 0; q <= to_size(max_taylor_order); ++q) {
-        Vec3 n;
-        double scale = 0.0;
-        for (std::size_t p = 0; p <= q; ++p) {
-            n += cross(u_terms[p], v_terms[q - p]);
-            scale = std::max(scale, magnitude[p + 1] * magnitude[q - p + 1]);
-        }
-        const double length_n = norm(n);
-        if (length_n > relative_tolerance * scale && length_n > 0.0) return n / length_n;
-    }
-    throw Error("(u, v): the surface has no tangent plane at (" + std::to_string(u) + ", " + std::to_string(v) +
-                "); its partial derivatives are parallel or zero to order " + std::to_string(max_taylor_order + 1));
+    std::array<double, stride> floors{};
+    std::fill(floors.begin() + 1, floors.end(), norm(high - low));
+    if (const auto n = detail::limit_normal(skl, a, b, floors, 1.0)) return *n;
+    detail::throw_no_tangent_plane(std::to_string(u), std::to_string(v));
 }
 
 }  // namespace ratbez

@@ -11,55 +11,38 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <sstream>
 
+#include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
 
 namespace ratbez {
 namespace {
 
-std::string number(double value) {
-    std::ostringstream out;
-    out.precision(12);
-    out << value;
-    return out.str();
-}
+using detail::number;
+using detail::to_size;
 
-std::size_t to_size(int value) { return static_cast<std::size_t>(value); }
-
-// Work space on the stack for every practical degree (the hot path of evaluation), on the heap beyond.
-class Scratch {
-public:
-    explicit Scratch(std::size_t size) : size_(size) {
-        if (size > fixed_.size()) heap_.resize(size);
-    }
-    Scratch(const Scratch&) = delete;
-    Scratch& operator=(const Scratch&) = delete;
-    double& operator[](std::size_t i) { return size_ > fixed_.size() ? heap_[i] : fixed_[i]; }
-
-private:
-    std::size_t size_;
-    std::array<double, 384> fixed_;  // (p+1)^2 + 2(p+1) for p <= 17; every entry is written before it is read
-    std::vector<double> heap_;
-};
+// Work space on the stack for every practical degree: (p+1)^2 + 2(p+1) <= 384 for p <= 17.
+using Scratch = detail::Scratch<double, 384>;
 
 void require_degree(int degree) {
-    require(degree >= 0, "degree", "must be >= 0, got " + std::to_string(degree));
+    require(degree >= 0, "degree", [&] { return "must be >= 0, got " + std::to_string(degree); });
 }
 
 // The checks shared by A2.2 and A2.3: a span index inside the domain whose span is not empty, so that
 // every knot difference the algorithms divide by is positive and every index they touch exists.
 void require_evaluable_span(int span, double u, int degree, std::span<const double> knots) {
     require_degree(degree);
-    require(knots.size() >= 2 * to_size(degree) + 2, "knots",
-            "a degree-" + std::to_string(degree) + " basis needs at least " + std::to_string(2 * degree + 2) +
-                " knots, got " + std::to_string(knots.size()));
+    require(knots.size() >= 2 * to_size(degree) + 2, "knots", [&] {
+        return "a degree-" + std::to_string(degree) + " basis needs at least " + std::to_string(2 * degree + 2) +
+               " knots, got " + std::to_string(knots.size());
+    });
     const int last_span = static_cast<int>(knots.size()) - degree - 2;
-    require(span >= degree && span <= last_span, "span",
-            "must lie in [" + std::to_string(degree) + ", " + std::to_string(last_span) + "], got " +
-                std::to_string(span));
+    require(span >= degree && span <= last_span, "span", [&] {
+        return "must lie in [" + std::to_string(degree) + ", " + std::to_string(last_span) + "], got " +
+               std::to_string(span);
+    });
     require(knots[to_size(span)] < knots[to_size(span) + 1], "span",
-            "knot span " + std::to_string(span) + " is empty");
+            [&] { return "knot span " + std::to_string(span) + " is empty"; });
     require_finite(u, "u");
 }
 
@@ -117,9 +100,10 @@ void validate_knot_vector(int degree, std::span<const double> knots, int control
 
 Interval knot_domain(int degree, std::span<const double> knots) {
     require_degree(degree);
-    require(knots.size() >= 2 * to_size(degree) + 2, "knots",
-            "a degree-" + std::to_string(degree) + " knot vector needs at least " + std::to_string(2 * degree + 2) +
-                " knots, got " + std::to_string(knots.size()));
+    require(knots.size() >= 2 * to_size(degree) + 2, "knots", [&] {
+        return "a degree-" + std::to_string(degree) + " knot vector needs at least " + std::to_string(2 * degree + 2) +
+               " knots, got " + std::to_string(knots.size());
+    });
     return {knots[to_size(degree)], knots[knots.size() - 1 - to_size(degree)]};
 }
 
@@ -175,7 +159,7 @@ double bspline_basis(int i, int p, std::span<const double> knots, double u) {
 int find_span(int degree, std::span<const double> knots, double u) {
     const Interval domain = knot_domain(degree, knots);
     require(domain.min < domain.max, "knots",
-            "the domain [" + number(domain.min) + ", " + number(domain.max) + "] is empty");
+            [&] { return "the domain [" + number(domain.min) + ", " + number(domain.max) + "] is empty"; });
     require_in_domain(u, domain.min, domain.max, "u");
     // A2.1 by binary search over the knots of the domain: the span k with u_k <= u < u_{k+1}; at the right
     // end the last non-empty span [u_k, u_{m-p}] (closed), which lower_bound finds past repeated knots.
@@ -188,7 +172,7 @@ int find_span(int degree, std::span<const double> knots, double u) {
 void basis_functions(int span, double u, int degree, std::span<const double> knots, std::span<double> out) {
     require_evaluable_span(span, u, degree, knots);
     require(out.size() >= to_size(degree) + 1, "out",
-            "needs room for " + std::to_string(degree + 1) + " values, has " + std::to_string(out.size()));
+            [&] { return "needs room for " + std::to_string(degree + 1) + " values, has " + std::to_string(out.size()); });
     // A2.2 with left[j] = u - u_{span+1-j} and right[j] = u_{span+j} - u read straight from the knots
     // (no work arrays); the triangle of 001 is computed in place in `out`.
     const std::size_t s = to_size(span);
@@ -209,12 +193,12 @@ void basis_functions(int span, double u, int degree, std::span<const double> kno
 void basis_function_derivatives(int span, double u, int degree, std::span<const double> knots, int order,
                                 std::span<double> out) {
     require_evaluable_span(span, u, degree, knots);
-    require(order >= 0, "order", "the derivative order must be >= 0, got " + std::to_string(order));
+    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
     const std::size_t p = to_size(degree);
     const std::size_t width = p + 1;
     const std::size_t rows = to_size(order) + 1;
     require(out.size() >= rows * width, "out",
-            "needs room for " + std::to_string(rows * width) + " values, has " + std::to_string(out.size()));
+            [&] { return "needs room for " + std::to_string(rows * width) + " values, has " + std::to_string(out.size()); });
 
     // A2.3 (DersBasisFuns). ndu holds the basis functions of every degree (upper triangle) and the knot
     // differences (lower triangle); a holds two rows of the coefficients a_{k,j}.
@@ -275,7 +259,7 @@ void basis_function_derivatives(int span, double u, int degree, std::span<const 
 
 std::vector<std::vector<double>> basis_function_derivatives(int span, double u, int degree,
                                                             std::span<const double> knots, int order) {
-    require(order >= 0, "order", "the derivative order must be >= 0, got " + std::to_string(order));
+    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
     require_degree(degree);
     const std::size_t width = to_size(degree) + 1;
     std::vector<double> flat((to_size(order) + 1) * width);

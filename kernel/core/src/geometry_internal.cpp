@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "ratbez/error.hpp"
 
@@ -94,23 +95,8 @@ const GaussRule& gauss_legendre(int points) {
         std::array<GaussRule, max_points + 1> all{};
         for (int n = 1; n <= max_points; ++n) {
             GaussRule& rule = all[static_cast<std::size_t>(n)];
-            for (int i = 0; i < n; ++i) {
-                // Newton's method on P_n from the classical initial guess; P_n by its three-term recurrence.
-                double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
-                double derivative = 1.0;
-                for (int iteration = 0; iteration < 100; ++iteration) {
-                    double p0 = 1.0, p1 = x;
-                    for (int k = 2; k <= n; ++k) {
-                        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                        p0 = p1;
-                        p1 = p2;
-                    }
-                    if (n == 1) p0 = 1.0;
-                    derivative = n * (x * p1 - p0) / (x * x - 1.0);
-                    const double step = p1 / derivative;
-                    x -= step;
-                    if (std::abs(step) < 1e-16) break;
-                }
+            // P_n(x) by its three-term recurrence and P_n'(x) = n (x P_n - P_{n-1}) / (x^2 - 1).
+            const auto legendre = [n](double x) {
                 double p0 = 1.0, p1 = x;
                 for (int k = 2; k <= n; ++k) {
                     const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
@@ -118,7 +104,18 @@ const GaussRule& gauss_legendre(int points) {
                     p1 = p2;
                 }
                 if (n == 1) p0 = 1.0;
-                derivative = n * (x * p1 - p0) / (x * x - 1.0);
+                return std::pair<double, double>{p1, n * (x * p1 - p0) / (x * x - 1.0)};
+            };
+            for (int i = 0; i < n; ++i) {
+                // Newton's method on P_n from the classical initial guess.
+                double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
+                for (int iteration = 0; iteration < 100; ++iteration) {
+                    const auto [value, slope] = legendre(x);
+                    const double step = value / slope;
+                    x -= step;
+                    if (std::abs(step) < 1e-16) break;
+                }
+                const double derivative = legendre(x).second;
                 rule.nodes.push_back((1.0 - x) / 2.0);
                 rule.weights.push_back(1.0 / ((1.0 - x * x) * derivative * derivative));  // 2/(...) halved for [0, 1]
             }

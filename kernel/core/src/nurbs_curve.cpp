@@ -8,43 +8,19 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <sstream>
 
+#include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
+#include "rational_derivatives.hpp"
 
 namespace ratbez {
 namespace {
 
-std::size_t to_size(int value) { return static_cast<std::size_t>(value); }
+using detail::number;
+using detail::to_size;
 
-std::string number(double value) {
-    std::ostringstream out;
-    out.precision(12);
-    out << value;
-    return out.str();
-}
-
-// Basis values on the stack for degree <= 31, on the heap beyond: evaluation is the tessellator's hot path.
-class BasisScratch {
-public:
-    explicit BasisScratch(std::size_t size) : size_(size) {
-        if (size > fixed_.size()) heap_.resize(size);
-    }
-    BasisScratch(const BasisScratch&) = delete;
-    BasisScratch& operator=(const BasisScratch&) = delete;
-    std::span<double> values() { return {size_ > fixed_.size() ? heap_.data() : fixed_.data(), size_}; }
-
-private:
-    std::size_t size_;
-    std::array<double, 32> fixed_;  // written by basis_functions before it is read
-    std::vector<double> heap_;
-};
-
-double binomial(int n, int k) {
-    double result = 1.0;
-    for (int i = 1; i <= k; ++i) result = result * static_cast<double>(n - k + i) / static_cast<double>(i);
-    return result;
-}
+// Basis values on the stack for degree <= 31, on the heap beyond (written by basis_functions before read).
+using BasisScratch = detail::Scratch<double, 32>;
 
 void require_weight(double w, std::size_t index, const std::string& argument) {
     require(std::isfinite(w) && w > 0.0, argument,
@@ -223,15 +199,7 @@ std::vector<Vec3> NurbsCurve::derivatives(double u, int order) const {
         for (std::size_t k = 0; k < result.size(); ++k) result[k] = weighted_part(ckw[k]);
         return result;
     }
-    // A4.2, the quotient rule on A = w C solved for C^(k):
-    // C^(k) = (A^(k) - sum_{i=1..k} C(k,i) w^(i) C^(k-i)) / w.
-    const double w = ckw[0].w;
-    for (std::size_t k = 0; k < result.size(); ++k) {
-        Vec3 numerator = weighted_part(ckw[k]);
-        for (std::size_t i = 1; i <= k; ++i)
-            numerator -= (binomial(static_cast<int>(k), static_cast<int>(i)) * ckw[i].w) * result[k - i];
-        result[k] = numerator / w;
-    }
+    detail::rational_curve_derivatives(ckw, result);  // A4.2
     return result;
 }
 

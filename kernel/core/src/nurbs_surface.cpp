@@ -10,44 +10,19 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <sstream>
 
+#include "limit_normal.hpp"
+#include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
+#include "rational_derivatives.hpp"
 
 namespace ratbez {
 namespace {
 
-std::size_t to_size(int value) { return static_cast<std::size_t>(value); }
+using detail::number;
+using detail::to_size;
 
-std::string number(double value) {
-    std::ostringstream out;
-    out.precision(12);
-    out << value;
-    return out.str();
-}
-
-double binomial(int n, int k) {
-    double result = 1.0;
-    for (int i = 1; i <= k; ++i) result = result * static_cast<double>(n - k + i) / static_cast<double>(i);
-    return result;
-}
-
-// Small work arrays on the stack (evaluation is the tessellator's hot path), on the heap when large.
-template <class T, std::size_t N>
-class Scratch {
-public:
-    explicit Scratch(std::size_t size) : size_(size) {
-        if (size > N) heap_.resize(size);
-    }
-    Scratch(const Scratch&) = delete;
-    Scratch& operator=(const Scratch&) = delete;
-    std::span<T> values() { return {size_ > N ? heap_.data() : fixed_.data(), size_}; }
-
-private:
-    std::size_t size_;
-    std::array<T, N> fixed_{};
-    std::vector<T> heap_;
-};
+using detail::Scratch;  // small work arrays on the stack, on the heap when large
 
 void require_weight(double w, const std::string& where, const std::string& argument) {
     require(std::isfinite(w) && w > 0.0, argument,
@@ -65,7 +40,7 @@ std::string index_pair(std::size_t i, std::size_t j) {
 }
 
 // The span of t in its domain (A2.1), validated under the caller's parameter name ("u" or "v").
-int span_of(int degree, const std::vector<double>& knots, double t, const std::string& name) {
+int span_of(int degree, const std::vector<double>& knots, double t, std::string_view name) {
     const Interval d = knot_domain(degree, knots);
     require_in_domain(t, d.min, d.max, name);
     return find_span(degree, knots, t);
@@ -278,35 +253,19 @@ void surface_partials(const NurbsSurface& s, double u, double v, int span_u, int
         }
     }
 
-    // A4.4, the quotient rule on A = w S solved for S:
-    // SKL = (A_kl - sum_{j=1..l} C(l,j) w_0j SKL_{k,l-j} - sum_{i=1..k} C(k,i) w_i0 SKL_{k-i,l}
-    //        - sum_{i=1..k} C(k,i) sum_{j=1..l} C(l,j) w_ij SKL_{k-i,l-j}) / w_00.
-    const bool rational = s.is_rational();
-    const double w = aw[0].w;
-    for (std::size_t k = 0; k < stride; ++k) {
-        for (std::size_t l = 0; k + l < stride; ++l) {
-            Vec3 numerator = weighted_part(aw[k * stride + l]);
-            if (rational) {
-                for (std::size_t j = 1; j <= l; ++j)
-                    numerator -= (binomial(static_cast<int>(l), static_cast<int>(j)) * aw[j].w) * skl[k * stride + l - j];
-                for (std::size_t i = 1; i <= k; ++i) {
-                    Vec3 mixed = aw[i * stride].w * skl[(k - i) * stride + l];
-                    for (std::size_t j = 1; j <= l; ++j)
-                        mixed += (binomial(static_cast<int>(l), static_cast<int>(j)) * aw[i * stride + j].w) *
-                                 skl[(k - i) * stride + l - j];
-                    numerator -= binomial(static_cast<int>(k), static_cast<int>(i)) * mixed;
-                }
-                numerator = numerator / w;
-            }
-            skl[k * stride + l] = numerator;
-        }
+    // A4.4 (rational_derivatives.hpp); a polynomial surface has w = 1 identically and no quotient to form.
+    if (s.is_rational()) {
+        detail::rational_surface_derivatives(aw, skl, stride);
+        return;
     }
+    for (std::size_t k = 0; k < stride; ++k)
+        for (std::size_t l = 0; k + l < stride; ++l) skl[k * stride + l] = weighted_part(aw[k * stride + l]);
 }
 
 }  // namespace
 
 std::vector<std::vector<Vec3>> NurbsSurface::derivatives(double u, double v, int order) const {
-    require(order >= 0, "order", "the derivative order must be >= 0, got " + std::to_string(order));
+    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
     const int span_u = span_of(degree_u_, knots_u_, u, "u");
     const int span_v = span_of(degree_v_, knots_v_, v, "v");
     const std::size_t stride = to_size(order) + 1;
@@ -322,8 +281,8 @@ std::vector<std::vector<Vec3>> NurbsSurface::derivatives(double u, double v, int
 }
 
 Vec3 NurbsSurface::derivative(double u, double v, int du, int dv) const {
-    require(du >= 0, "du", "the derivative order must be >= 0, got " + std::to_string(du));
-    require(dv >= 0, "dv", "the derivative order must be >= 0, got " + std::to_string(dv));
+    require(du >= 0, "du", [&] { return "the derivative order must be >= 0, got " + std::to_string(du); });
+    require(dv >= 0, "dv", [&] { return "the derivative order must be >= 0, got " + std::to_string(dv); });
     return derivatives(u, v, du + dv)[to_size(du)][to_size(dv)];
 }
 
@@ -360,13 +319,9 @@ Vec3 NurbsSurface::normal(double u, double v) const {
             return n / length;
     }
 
-    // A collapsed edge (S_u = 0 along a pole row, S_v = 0 at an apex) or a cusp: Eq. 1.4 has no value but the
-    // tangent plane exists and the normal is the limit of N along a path into the surface. Along
-    // (u, v) + t (a, b), t > 0, expand S_u(t) = sum_p t^p U_p and S_v(t) = sum_p t^p V_p with
-    //   U_p = (1/p!) sum_r C(p,r) a^r b^(p-r) S_{r+1,p-r},  V_p = (1/p!) sum_r C(p,r) a^r b^(p-r) S_{r,p-r+1};
-    // then S_u x S_v = sum_q t^q N_q, N_q = sum_p U_p x V_{q-p}, and the limit direction is the first N_q that
-    // does not vanish (for S_u = 0 along v = v0: N_1 = b S_uv x S_v, the familiar pole formula). The path
-    // heads for the middle of the domain, so it stays inside from every edge and corner.
+    // A collapsed edge (S_u = 0 along a pole row, S_v = 0 at an apex) or a cusp: the limit of N along a path
+    // into the surface (limit_normal.hpp). The path heads for the middle of the domain, so it stays inside
+    // from every edge and corner.
     const Interval du = domain_u(), dv = domain_v();
     double a = (du.min + du.max) / 2 - u, b = (dv.min + dv.max) / 2 - v;
     const double path_length = std::hypot(a / (du.max - du.min), b / (dv.max - dv.min));
@@ -381,48 +336,17 @@ Vec3 NurbsSurface::normal(double u, double v) const {
     const int path_span_u = span_towards(degree_u_, knots_u_, u, a);
     const int path_span_v = span_towards(degree_v_, knots_v_, v, b);
 
-    constexpr int max_taylor_order = 3;
-    constexpr int order = max_taylor_order + 1;
-    constexpr std::size_t stride = static_cast<std::size_t>(order) + 1;
+    constexpr std::size_t stride = detail::limit_normal_stride;
     std::array<Vec4, stride * stride> aw;
-    std::array<Vec3, stride * stride> skl;
-    surface_partials(*this, u, v, path_span_u, path_span_v, order, aw, skl);
+    detail::LimitNormalPartials skl;
+    surface_partials(*this, u, v, path_span_u, path_span_v, static_cast<int>(stride) - 1, aw, skl);
 
-    // magnitude[k]: the largest partial of total order k, floored by the rounding scale above.
-    std::array<double, stride> magnitude{};
-    for (std::size_t k = 1; k < stride; ++k) {
-        magnitude[k] = extent / std::pow(span_length, static_cast<double>(k));
-        for (std::size_t r = 0; r <= k; ++r) magnitude[k] = std::max(magnitude[k], norm(skl[r * stride + (k - r)]));
-    }
-    const double scale_ab = std::max(std::abs(a), std::abs(b));
-
-    std::array<Vec3, max_taylor_order + 1> u_terms, v_terms;
-    double factorial = 1.0;
-    for (std::size_t p = 0; p < u_terms.size(); ++p) {
-        if (p > 0) factorial *= static_cast<double>(p);
-        Vec3 up, vp;
-        for (std::size_t r = 0; r <= p; ++r) {
-            const double coefficient = binomial(static_cast<int>(p), static_cast<int>(r)) *
-                                       std::pow(a, static_cast<double>(r)) * std::pow(b, static_cast<double>(p - r));
-            up += coefficient * skl[(r + 1) * stride + (p - r)];
-            vp += coefficient * skl[r * stride + (p - r + 1)];
-        }
-        u_terms[p] = up / factorial;
-        v_terms[p] = vp / factorial;
-    }
-    for (std::size_t q = 0; q <= to_size(max_taylor_order); ++q) {
-        Vec3 n;
-        double scale = 0.0;
-        for (std::size_t p = 0; p <= q; ++p) {
-            n += cross(u_terms[p], v_terms[q - p]);
-            scale = std::max(scale, magnitude[p + 1] * magnitude[q - p + 1] *
-                                        std::pow(scale_ab, static_cast<double>(q)));
-        }
-        const double length = norm(n);
-        if (length > relative_tolerance * scale && length > 0.0) return n / length;
-    }
-    throw Error("(u, v): the surface has no tangent plane at (" + number(u) + ", " + number(v) +
-                "); its partial derivatives are parallel or zero to order " + std::to_string(order));
+    // Partials of total order k below extent / span_length^k are rounding noise (see above); the path is
+    // not a unit vector, so N_q scales with max(|a|, |b|)^q.
+    std::array<double, stride> floors{};
+    for (std::size_t k = 1; k < stride; ++k) floors[k] = extent / std::pow(span_length, static_cast<double>(k));
+    if (const auto n = detail::limit_normal(skl, a, b, floors, std::max(std::abs(a), std::abs(b)))) return *n;
+    detail::throw_no_tangent_plane(number(u), number(v));
 }
 
 // ---- isocurves -----------------------------------------------------------------------------------------

@@ -5,22 +5,14 @@
 
 #include <string>
 
+#include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
 
 namespace ratbez {
 
 namespace {
 
-// Pascal's triangle up to row n: binomial[r][c] = C(r, c). Built by additions only, so every entry is
-// exact while it stays below 2^53 (all rows up to n = 56).
-std::vector<std::vector<double>> pascal_triangle(int n) {
-    std::vector<std::vector<double>> binomial(static_cast<std::size_t>(n) + 1);
-    for (std::size_t r = 0; r < binomial.size(); ++r) {
-        binomial[r].assign(r + 1, 1.0);
-        for (std::size_t c = 1; c < r; ++c) binomial[r][c] = binomial[r - 1][c - 1] + binomial[r - 1][c];
-    }
-    return binomial;
-}
+using detail::binomial;  // exact while C(n, k) < 2^53 (every n <= 56)
 
 void require_finite_points(const std::vector<Vec3>& points, const std::string& argument) {
     require(!points.empty(), argument, "must not be empty");
@@ -55,13 +47,12 @@ std::vector<std::vector<double>> bezier_to_power_matrix(int n) {
     require(n >= 0, "n", "the degree must be >= 0, got " + std::to_string(n));
     // B_{j,n}(u) = C(n,j) u^j (1-u)^{n-j} = sum_i (-1)^{i-j} C(n,j) C(n-j,i-j) u^i, and
     // C(n,j) C(n-j,i-j) = C(n,i) C(i,j): the coefficient of u^i in B_{j,n} (Exercise 1.14).
-    const auto binomial = pascal_triangle(n);
     const auto size = static_cast<std::size_t>(n) + 1;
     std::vector<std::vector<double>> m(size, std::vector<double>(size, 0.0));
-    for (std::size_t i = 0; i < size; ++i)
-        for (std::size_t j = 0; j <= i; ++j) {
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= i; ++j) {
             const double sign = ((i - j) % 2 == 0) ? 1.0 : -1.0;
-            m[i][j] = sign * binomial[size - 1][i] * binomial[i][j];
+            m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = sign * binomial(n, i) * binomial(i, j);
         }
     return m;
 }
@@ -81,11 +72,11 @@ std::vector<Vec3> power_to_bezier(const std::vector<Vec3>& coefficients) {
     // [P_i] = M^{-1} [a_i], with M^{-1}[i][j] = C(i,j) / C(n,j) for j <= i: the expansion
     // u^j = sum_{i>=j} C(i,j)/C(n,j) B_{i,n}(u). Only positive terms, no matrix inversion.
     const int n = static_cast<int>(coefficients.size()) - 1;
-    const auto binomial = pascal_triangle(n);
-    const auto& row_n = binomial[static_cast<std::size_t>(n)];
     std::vector<Vec3> control_points(coefficients.size());
-    for (std::size_t i = 0; i < control_points.size(); ++i)
-        for (std::size_t j = 0; j <= i; ++j) control_points[i] += (binomial[i][j] / row_n[j]) * coefficients[j];
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= i; ++j)
+            control_points[static_cast<std::size_t>(i)] +=
+                (binomial(i, j) / binomial(n, j)) * coefficients[static_cast<std::size_t>(j)];
     return control_points;
 }
 

@@ -388,6 +388,84 @@ bool use_avx2() {
     return available && !use_portable_kernels.load(std::memory_order_relaxed);
 }
 
+// S and its partials up to order two on the grid (GridOutput::second_partials). For the moderate grids it
+// serves (curvature sampling), a plain loop: A2.3 (order 2) once per parameter, the u contraction of the
+// net (and of its first and second u derivatives) once per row, then per point (q+1)-term sums of six
+// homogeneous 4-vectors and the rational quotient rule (A4.4 to order two, as SurfaceEvaluator::jet).
+void evaluate_second_partials(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
+                              SurfaceGrid& result) {
+    const int p = surface.degree_u(), q = surface.degree_v();
+    const std::size_t wu = to_size(p) + 1, wv = to_size(q) + 1;
+    DirectionBasis u_spans, v_spans;  // only `first` is used: the span of every parameter
+    compute_basis(p, surface.knots_u(), surface.rows(), us, false, u_spans);
+    compute_basis(q, surface.knots_v(), surface.columns(), vs, false, v_spans);
+    auto derivatives_of = [](int degree, std::span<const double> knots, const DirectionBasis& spans,
+                             std::span<const double> ts) {
+        const std::size_t width = to_size(degree) + 1;
+        std::vector<double> ders(3 * width * ts.size());
+        for (std::size_t k = 0; k < ts.size(); ++k)
+            basis_function_derivatives(spans.first[k] + degree, ts[k], degree, knots, 2,
+                                       std::span<double>(ders).subspan(3 * width * k, 3 * width));
+        return ders;
+    };
+    const std::vector<double> nu = derivatives_of(p, surface.knots_u(), u_spans, us);
+    const std::vector<double> nv = derivatives_of(q, surface.knots_v(), v_spans, vs);
+    const std::size_t columns = to_size(surface.columns());
+    const std::size_t c0 = to_size(v_spans.first.front()), c1 = to_size(v_spans.first.back()) + wv;
+    const Vec4* net = surface.homogeneous_points().data();
+    const bool rational = surface.is_rational();
+    std::vector<Vec4> rows(3 * columns);  // Q, Q_u, Q_uu of the row's isocurve
+    Vec4 *q0 = rows.data(), *q1 = q0 + columns, *q2 = q1 + columns;
+    for (std::size_t i = 0; i < us.size(); ++i) {
+        for (std::size_t c = c0; c < c1; ++c) q0[c] = q1[c] = q2[c] = Vec4{};
+        const double* b = nu.data() + 3 * wu * i;
+        for (std::size_t r = 0; r < wu; ++r) {
+            const Vec4* row = net + (to_size(u_spans.first[i]) + r) * columns;
+            for (std::size_t c = c0; c < c1; ++c) {
+                q0[c] += b[r] * row[c];
+                q1[c] += b[wu + r] * row[c];
+                q2[c] += b[2 * wu + r] * row[c];
+            }
+        }
+        for (std::size_t j = 0; j < vs.size(); ++j) {
+            const double* e = nv.data() + 3 * wv * j;
+            const std::size_t first = to_size(v_spans.first[j]);
+            Vec4 a, au, av, auu, auv, avv;
+            for (std::size_t l = 0; l < wv; ++l) {
+                const std::size_t c = first + l;
+                a += e[l] * q0[c];
+                au += e[l] * q1[c];
+                auu += e[l] * q2[c];
+                av += e[wv + l] * q0[c];
+                auv += e[wv + l] * q1[c];
+                avv += e[2 * wv + l] * q0[c];
+            }
+            Vec3 s = weighted_part(a), su = weighted_part(au), sv = weighted_part(av);
+            Vec3 suu = weighted_part(auu), suv = weighted_part(auv), svv = weighted_part(avv);
+            if (rational) {
+                // Leibniz on A = w S: S = A / w, S_u = (A_u - w_u S) / w, S_uu = (A_uu - 2 w_u S_u - w_uu S) / w, ...
+                const double r = 1.0 / a.w;
+                s = s * r;
+                su = (su - s * au.w) * r;
+                sv = (sv - s * av.w) * r;
+                suu = (suu - su * (2 * au.w) - s * auu.w) * r;
+                suv = (suv - su * av.w - sv * au.w - s * auv.w) * r;
+                svv = (svv - sv * (2 * av.w) - s * avv.w) * r;
+            }
+            const std::size_t k = i * vs.size() + j;
+            auto store = [k](GridVectors& out, const Vec3& value) {
+                out.x[k] = value.x, out.y[k] = value.y, out.z[k] = value.z;
+            };
+            store(result.points, s);
+            store(result.du, su);
+            store(result.dv, sv);
+            store(result.duu, suu);
+            store(result.duv, suv);
+            store(result.dvv, svv);
+        }
+    }
+}
+
 void resize(GridVectors& v, std::size_t size) {
     v.x.resize(size), v.y.resize(size), v.z.resize(size);
 }
@@ -428,11 +506,18 @@ void evaluate_grid(const NurbsSurface& surface, std::span<const double> us, std:
     result.v_count = vs.size();
     result.output = output;
     resize(result.points, size);
-    if (output == GridOutput::partials) resize(result.du, size), resize(result.dv, size);
+    const bool second = output == GridOutput::second_partials;
+    if (output == GridOutput::partials || second) resize(result.du, size), resize(result.dv, size);
     else clear(result.du), clear(result.dv);
+    if (second) resize(result.duu, size), resize(result.duv, size), resize(result.dvv, size);
+    else clear(result.duu), clear(result.duv), clear(result.dvv);
     if (output == GridOutput::normals) resize(result.normals, size);
     else clear(result.normals);
     if (size == 0) return;
+    if (second) {
+        evaluate_second_partials(surface, us, vs, result);
+        return;
+    }
 
     GridJob job;
     job.surface = &surface;

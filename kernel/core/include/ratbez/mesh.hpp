@@ -17,7 +17,7 @@ struct Mesh {
     // Every undirected edge is used by exactly two triangles, in opposite directions.
     bool is_closed() const;
     // Signed volume by the divergence theorem (positive for an outward mesh), and the surface area.
-    double volume() const;
+    double volume() const;  // both throw Error when a triangle names a vertex past the table
     double area() const;
 };
 

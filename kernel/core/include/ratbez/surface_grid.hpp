@@ -1,6 +1,7 @@
 #pragma once
 // Batched evaluation of a NURBS surface on a tensor grid of parameters us x vs: the points, the points
-// and first partials, or the points and unit normals, into flat structure-of-arrays output.
+// and first partials, the points and unit normals, or the points and all partials up to order two, into
+// flat structure-of-arrays output.
 //
 // Evaluating point by point (A4.3) repeats the same work at every point: two span searches (A2.1), two
 // basis evaluations (A2.2) and a (p+1) x (q+1) contraction of the control net. On a grid the u basis is
@@ -30,6 +31,7 @@ enum class GridOutput {
     points,    // S(u, v)
     partials,  // S, S_u and S_v
     normals,   // S and the unit normal, as NurbsSurface::normal (the limit direction at poles and apexes)
+    second_partials,  // S, S_u, S_v, S_uu, S_uv and S_vv (curvature, Newton steps)
 };
 
 // One 3D vector per grid point, as three contiguous coordinate arrays (structure of arrays: what the
@@ -46,13 +48,17 @@ struct SurfaceGrid {
     std::size_t u_count = 0, v_count = 0;
     GridOutput output = GridOutput::points;
     GridVectors points;   // always
-    GridVectors du, dv;   // GridOutput::partials, else empty
+    GridVectors du, dv;   // GridOutput::partials and second_partials, else empty
+    GridVectors duu, duv, dvv;  // GridOutput::second_partials, else empty
     GridVectors normals;  // GridOutput::normals, else empty
 
     std::size_t index(std::size_t i, std::size_t j) const { return i * v_count + j; }
     Vec3 point(std::size_t i, std::size_t j) const { return points[index(i, j)]; }
     Vec3 partial_u(std::size_t i, std::size_t j) const { return du[index(i, j)]; }
     Vec3 partial_v(std::size_t i, std::size_t j) const { return dv[index(i, j)]; }
+    Vec3 partial_uu(std::size_t i, std::size_t j) const { return duu[index(i, j)]; }
+    Vec3 partial_uv(std::size_t i, std::size_t j) const { return duv[index(i, j)]; }
+    Vec3 partial_vv(std::size_t i, std::size_t j) const { return dvv[index(i, j)]; }
     Vec3 normal(std::size_t i, std::size_t j) const { return normals[index(i, j)]; }
 };
 
