@@ -190,6 +190,64 @@ INSTANTIATE_TEST_SUITE_P(SurfaceGrid, KernelsTest, ::testing::Values(GridKernels
                              return info.param == GridKernels::portable ? std::string("Portable") : std::string("Best");
                          });
 
+TEST(SurfaceGrid, SecondPartialsMatchPointwiseDerivatives) {
+    // S and every partial up to order two against NurbsSurface::derivative, relative to the size of the
+    // numbers involved (net scale times degree / shortest span per differentiation), to 1e-13.
+    constexpr double tolerance = 1e-13;
+    double worst = 0;
+    for (int degree_u = 0; degree_u <= 8; ++degree_u)
+        for (int degree_v = 0; degree_v <= 8; ++degree_v) {
+            const bool rational = (degree_u + degree_v) % 3 != 1;
+            const NurbsSurface s = random_surface(degree_u, degree_v, rational);
+            const auto us = random_parameters(s.knots_u(), s.domain_u(), integer(1, 6));
+            const auto vs = random_parameters(s.knots_v(), s.domain_v(), integer(1, 12));
+            const double point_scale = net_scale(s);
+            const double u_scale = derivative_scale(s, s.knots_u(), degree_u) / point_scale;
+            const double v_scale = derivative_scale(s, s.knots_v(), degree_v) / point_scale;
+            const std::string where = "degrees " + std::to_string(degree_u) + ", " + std::to_string(degree_v) +
+                                      (rational ? " rational" : " polynomial");
+            const SurfaceGrid g = evaluate_grid(s, us, vs, GridOutput::second_partials);
+            ASSERT_EQ(g.output, GridOutput::second_partials);
+            ASSERT_EQ(g.duu.size(), us.size() * vs.size()) << where;
+            ASSERT_EQ(g.duv.size(), us.size() * vs.size()) << where;
+            ASSERT_EQ(g.dvv.size(), us.size() * vs.size()) << where;
+            ASSERT_TRUE(g.normals.x.empty()) << where;
+            for (std::size_t i = 0; i < us.size(); ++i)
+                for (std::size_t j = 0; j < vs.size(); ++j) {
+                    const double u = us[i], v = vs[j];
+                    const auto d = s.derivatives(u, v, 2);  // d[k][l] = d^{k+l} S / du^k dv^l
+                    const double errors[] = {
+                        distance(g.point(i, j), d[0][0]) / point_scale,
+                        distance(g.partial_u(i, j), d[1][0]) / (point_scale * u_scale),
+                        distance(g.partial_v(i, j), d[0][1]) / (point_scale * v_scale),
+                        distance(g.partial_uu(i, j), d[2][0]) / (point_scale * u_scale * u_scale),
+                        distance(g.partial_uv(i, j), d[1][1]) / (point_scale * u_scale * v_scale),
+                        distance(g.partial_vv(i, j), d[0][2]) / (point_scale * v_scale * v_scale),
+                    };
+                    for (double e : errors) {
+                        worst = std::max(worst, e);
+                        ASSERT_LE(e, tolerance) << where << " at (" << u << ", " << v << ")";
+                    }
+                }
+        }
+    std::cout << "[ second partials ] largest relative difference " << worst << "\n";
+}
+
+TEST(SurfaceGrid, SecondPartialsOfASphereAreExact) {
+    // On the unit sphere |S| = 1 everywhere, so differentiating S . S = 1 twice gives S . S_uu + |S_u|^2 = 0,
+    // S . S_vv + |S_v|^2 = 0 and S . S_uv + S_u . S_v = 0, poles included.
+    const Solid ball = sphere(1.0);
+    const NurbsSurface& s = ball.faces().front().surface();
+    const SurfaceGrid g = evaluate_grid(s, 9, 17, GridOutput::second_partials);
+    for (std::size_t k = 0; k < g.points.size(); ++k) {
+        const Vec3 p = g.points[k], su = g.du[k], sv = g.dv[k];
+        EXPECT_NEAR(norm(p), 1.0, 1e-14);
+        EXPECT_NEAR(dot(p, g.duu[k]) + dot(su, su), 0.0, 1e-12);
+        EXPECT_NEAR(dot(p, g.dvv[k]) + dot(sv, sv), 0.0, 1e-12);
+        EXPECT_NEAR(dot(p, g.duv[k]) + dot(su, sv), 0.0, 1e-12);
+    }
+}
+
 TEST(SurfaceGrid, KernelSelectionIsReported) {
     select_grid_kernels(GridKernels::portable);
     EXPECT_STREQ(grid_kernels_name(), "portable");

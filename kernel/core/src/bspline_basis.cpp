@@ -33,7 +33,7 @@ void require_degree(int degree) {
 void require_evaluable_span(int span, double u, int degree, std::span<const double> knots) {
     require_degree(degree);
     require(knots.size() >= 2 * to_size(degree) + 2, "knots", [&] {
-        return "a degree-" + std::to_string(degree) + " basis needs at least " + std::to_string(2 * degree + 2) +
+        return "a degree-" + std::to_string(degree) + " basis needs at least " + std::to_string(2 * to_size(degree) + 2) +
                " knots, got " + std::to_string(knots.size());
     });
     const int last_span = static_cast<int>(knots.size()) - degree - 2;
@@ -60,8 +60,8 @@ double right_closure(int degree, std::span<const double> knots) {
 void validate_knot_vector(int degree, std::span<const double> knots, int control_point_count,
                           const std::string& argument) {
     require_degree(degree);
-    require(control_point_count >= degree + 1, argument,
-            "a degree-" + std::to_string(degree) + " B-spline needs at least " + std::to_string(degree + 1) +
+    require(static_cast<long long>(control_point_count) >= static_cast<long long>(degree) + 1, argument,
+            "a degree-" + std::to_string(degree) + " B-spline needs at least " + std::to_string(to_size(degree) + 1) +
                 " control points, got " + std::to_string(control_point_count));
     const std::size_t expected = to_size(control_point_count) + to_size(degree) + 1;
     require(knots.size() == expected, argument,
@@ -101,7 +101,7 @@ void validate_knot_vector(int degree, std::span<const double> knots, int control
 Interval knot_domain(int degree, std::span<const double> knots) {
     require_degree(degree);
     require(knots.size() >= 2 * to_size(degree) + 2, "knots", [&] {
-        return "a degree-" + std::to_string(degree) + " knot vector needs at least " + std::to_string(2 * degree + 2) +
+        return "a degree-" + std::to_string(degree) + " knot vector needs at least " + std::to_string(2 * to_size(degree) + 2) +
                " knots, got " + std::to_string(knots.size());
     });
     return {knots[to_size(degree)], knots[knots.size() - 1 - to_size(degree)]};
@@ -172,7 +172,7 @@ int find_span(int degree, std::span<const double> knots, double u) {
 void basis_functions(int span, double u, int degree, std::span<const double> knots, std::span<double> out) {
     require_evaluable_span(span, u, degree, knots);
     require(out.size() >= to_size(degree) + 1, "out",
-            [&] { return "needs room for " + std::to_string(degree + 1) + " values, has " + std::to_string(out.size()); });
+            [&] { return "needs room for " + std::to_string(to_size(degree) + 1) + " values, has " + std::to_string(out.size()); });
     // A2.2 with left[j] = u - u_{span+1-j} and right[j] = u_{span+j} - u read straight from the knots
     // (no work arrays); the triangle of 001 is computed in place in `out`.
     const std::size_t s = to_size(span);

@@ -103,10 +103,10 @@ std::vector<Vec4> validated_net(int degree_u, int degree_v, const std::vector<do
         }
     }
     require(rows >= to_size(degree_u) + 1, "net",
-            "degree " + std::to_string(degree_u) + " in u needs at least " + std::to_string(degree_u + 1) +
+            "degree " + std::to_string(degree_u) + " in u needs at least " + std::to_string(to_size(degree_u) + 1) +
                 " rows, got " + std::to_string(rows));
     require(columns >= to_size(degree_v) + 1, "net",
-            "degree " + std::to_string(degree_v) + " in v needs at least " + std::to_string(degree_v + 1) +
+            "degree " + std::to_string(degree_v) + " in v needs at least " + std::to_string(to_size(degree_v) + 1) +
                 " columns, got " + std::to_string(columns));
     validate_knot_vector(degree_u, knots_u, static_cast<int>(rows), "knots_u");
     validate_knot_vector(degree_v, knots_v, static_cast<int>(columns), "knots_v");
@@ -136,10 +136,10 @@ NurbsSurface NurbsSurface::from_homogeneous(int degree_u, int degree_v, std::vec
     require(degree_u >= 0, "degree_u", "must be >= 0, got " + std::to_string(degree_u));
     require(degree_v >= 0, "degree_v", "must be >= 0, got " + std::to_string(degree_v));
     require(knots_u.size() >= 2 * to_size(degree_u) + 2, "knots_u",
-            "degree " + std::to_string(degree_u) + " needs at least " + std::to_string(2 * degree_u + 2) +
+            "degree " + std::to_string(degree_u) + " needs at least " + std::to_string(2 * to_size(degree_u) + 2) +
                 " knots, got " + std::to_string(knots_u.size()));
     require(knots_v.size() >= 2 * to_size(degree_v) + 2, "knots_v",
-            "degree " + std::to_string(degree_v) + " needs at least " + std::to_string(2 * degree_v + 2) +
+            "degree " + std::to_string(degree_v) + " needs at least " + std::to_string(2 * to_size(degree_v) + 2) +
                 " knots, got " + std::to_string(knots_v.size()));
     const std::size_t rows = knots_u.size() - to_size(degree_u) - 1;
     const std::size_t columns = knots_v.size() - to_size(degree_v) - 1;

@@ -481,6 +481,9 @@ const char* grid_kernels_name() { return use_avx2() ? "avx2+fma" : "portable"; }
 
 std::vector<double> uniform_parameters(const Interval& domain, std::size_t count) {
     require(count >= 2, "count", "a uniform grid needs at least 2 parameters (both ends), got " + std::to_string(count));
+    // An absurd count is an Error, not std::bad_alloc / std::length_error from the vector below.
+    constexpr std::size_t max_count = std::size_t{1} << 27;
+    require(count <= max_count, "count", "at most " + std::to_string(max_count) + " parameters, got " + std::to_string(count));
     require(std::isfinite(domain.min) && std::isfinite(domain.max) && domain.min < domain.max, "domain",
             "must be a finite non-empty interval, got [" + number(domain.min) + ", " + number(domain.max) + "]");
     std::vector<double> ts(count);

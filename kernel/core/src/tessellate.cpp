@@ -27,11 +27,13 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "polygon_triangulation.hpp"
+#include "ratbez/surface_grid.hpp"
 #include "ratbez/error.hpp"
 #include "strip_zipper.hpp"
 #include "surface_evaluator.hpp"
@@ -164,23 +166,51 @@ struct CurvatureSamples {
     std::size_t at(std::size_t i, std::size_t j) const { return i * vs.size() + j; }
 };
 
-CurvatureSamples sample_curvature(const NurbsSurface& s, const detail::SurfaceEvaluator& e) {
+// The unit normal where S_u x S_v vanishes on a collapsed side of the domain (a pole or apex row), by
+// l'Hôpital: on a side u = u0 collapsed to a point S_v = 0 all along it, so near it S_v ~ (u - u0) S_uv and
+// N -> sign(u - u0) S_u x S_uv / |S_u x S_uv| from inside the domain, from any direction that leaves the
+// side (the limit NurbsSurface::normal takes); likewise S_u ~ (v - v0) S_uv on a side v = v0. nullopt
+// where that is not decisive (both partials vanish, or S_uv is parallel too): the caller asks normal().
+std::optional<Vec3> collapsed_side_normal(const Vec3& su, const Vec3& sv, const Vec3& suv, double u, double v,
+                                          const Interval& du, const Interval& dv) {
+    const double lu = norm(su), lv = norm(sv), luv = norm(suv);
+    Vec3 n;
+    if (lv <= 1e-9 * lu && (u == du.min || u == du.max)) n = (u == du.min ? 1.0 : -1.0) * cross(su, suv);
+    else if (lu <= 1e-9 * lv && (v == dv.min || v == dv.max)) n = (v == dv.min ? 1.0 : -1.0) * cross(suv, sv);
+    else return std::nullopt;
+    const double length = norm(n);
+    if (!(length > 1e-6 * std::max(lu, lv) * luv)) return std::nullopt;
+    return n / length;
+}
+
+CurvatureSamples sample_curvature(const NurbsSurface& s) {
     CurvatureSamples c;
     c.us = sample_params(breakpoints(s.knots_u(), s.domain_u()));
     c.vs = sample_params(breakpoints(s.knots_v(), s.domain_v()));
     c.L.resize(c.us.size() * c.vs.size());
     c.N.resize(c.L.size());
     c.normals.resize(c.L.size());
+    // One batched evaluation of every partial up to order two (surface_grid.hpp), not a jet per sample.
+    const SurfaceGrid g = evaluate_grid(s, c.us, c.vs, GridOutput::second_partials);
+    const Interval du = s.domain_u(), dv = s.domain_v();
     for (std::size_t i = 0; i < c.us.size(); ++i)
         for (std::size_t j = 0; j < c.vs.size(); ++j) {
-            const detail::SurfaceJet d = e.jet(c.us[i], c.vs[j]);
-            const Vec3 cross_product = cross(d.su, d.sv);
+            const std::size_t k = c.at(i, j);
+            const Vec3 su = g.du[k], sv = g.dv[k];
+            const Vec3 cross_product = cross(su, sv);
             const double length = norm(cross_product);
-            // Where a partial vanishes (poles, apexes) the surface's own limit normal.
-            const Vec3 n = length > 1e-10 * (dot(d.su, d.su) + dot(d.sv, d.sv)) ? cross_product / length : s.normal(c.us[i], c.vs[j]);
-            c.L[c.at(i, j)] = dot(d.suu, n);
-            c.N[c.at(i, j)] = dot(d.svv, n);
-            c.normals[c.at(i, j)] = n;
+            Vec3 n;
+            if (length > 1e-10 * (dot(su, su) + dot(sv, sv))) {
+                n = cross_product / length;
+            } else {
+                // Where a partial vanishes (poles, apexes) the surface's own limit normal: in closed form
+                // on a collapsed side, else by the general (and much dearer) NurbsSurface::normal.
+                const auto limit = collapsed_side_normal(su, sv, g.duv[k], c.us[i], c.vs[j], du, dv);
+                n = limit ? *limit : s.normal(c.us[i], c.vs[j]);
+            }
+            c.L[k] = dot(g.duu[k], n);
+            c.N[k] = dot(g.dvv[k], n);
+            c.normals[k] = n;
         }
     return c;
 }
@@ -445,11 +475,12 @@ std::pair<double, double> triangle_parameters(const CellTriangle& t, const std::
 // Gauss–Newton steps towards the foot of p: every value is the distance to a point of the surface, so
 // an upper bound of the distance to the surface. The steps matter where the parameterisation shears
 // (near poles the barycentric (u, v) lands beside the chord's point, not across it).
-double distance_bound(const detail::SurfaceEvaluator& s, const Vec3& p, double u, double v, double good_enough) {
-    double best = distance(s.point(u, v), p);
+double distance_bound(const detail::SurfaceEvaluator& s, const Vec3& p, double u, double v, const Vec3& surface_point,
+                      double good_enough) {
+    double best = distance(surface_point, p);
     const Interval du = s.domain_u(), dv = s.domain_v();
     for (int step = 0; step < 2 && best > good_enough; ++step) {
-        const detail::SurfaceJet d = s.jet(u, v);
+        const detail::SurfaceFirstDerivatives d = s.first_derivatives(u, v);
         const Vec3 r = p - d.s;
         const double a = dot(d.su, d.su), b = dot(d.su, d.sv), c = dot(d.sv, d.sv);
         const double det = a * c - b * b;
@@ -460,6 +491,9 @@ double distance_bound(const detail::SurfaceEvaluator& s, const Vec3& p, double u
         best = std::min(best, distance(s.point(u, v), p));
     }
     return best;
+}
+double distance_bound(const detail::SurfaceEvaluator& s, const Vec3& p, double u, double v, double good_enough) {
+    return distance_bound(s, p, u, v, s.point(u, v), good_enough);
 }
 
 // Upper bound of the chordal error of a triangle at the edge midpoints, the centroid and the points
@@ -510,24 +544,132 @@ std::array<int, 2> minimum_segments(const std::array<SideMap, 4>& sides) {
     return {minimum(Side::u_min, Side::u_max), minimum(Side::v_min, Side::v_max)};
 }
 
-// The corner vertices of a grid cell for the error check (edge samples not yet known): degenerate
-// sides share one pseudo id so that they collapse like in the final mesh.
+// The samples of triangle_error for the two triangles of a plain cell, in sixths of the cell: the corners
+// are (0,0), (6,0), (6,6) and (0,6), and every sample (edge midpoints, centroid, halfway points) lands on
+// that 7 x 7 lattice, so one batched evaluation of the lattice serves the whole check of a cell.
+struct LatticeSample {
+    std::array<int, 3> corners;  // indices into the cell's corners c00, c10, c11, c01
+    std::array<double, 3> weights;
+    int a, b;                    // lattice position (u, v) in sixths
+};
+// 13 distinct samples: the midpoint of the diagonal belongs to both triangles and is kept once.
+using CellSamples = std::array<LatticeSample, 13>;
+
+CellSamples lattice_samples(bool diagonal_00_11) {
+    static constexpr std::array<std::array<double, 3>, 7> kBarycentric{{{0.5, 0.5, 0},
+                                                                        {0, 0.5, 0.5},
+                                                                        {0.5, 0, 0.5},
+                                                                        {1 / 3.0, 1 / 3.0, 1 / 3.0},
+                                                                        {2 / 3.0, 1 / 6.0, 1 / 6.0},
+                                                                        {1 / 6.0, 2 / 3.0, 1 / 6.0},
+                                                                        {1 / 6.0, 1 / 6.0, 2 / 3.0}}};
+    static constexpr std::array<std::array<int, 2>, 4> kCorner{{{0, 0}, {6, 0}, {6, 6}, {0, 6}}};
+    // The triangles zip() makes of a plain cell (see check_cell).
+    const std::array<std::array<int, 3>, 2> triangles =
+        diagonal_00_11 ? std::array<std::array<int, 3>, 2>{{{0, 2, 3}, {0, 1, 2}}}
+                       : std::array<std::array<int, 3>, 2>{{{0, 1, 3}, {1, 2, 3}}};
+    CellSamples out{};
+    std::size_t n = 0;
+    for (const auto& t : triangles)
+        for (const auto& w : kBarycentric) {
+            double a = 0, b = 0;
+            for (std::size_t k = 0; k < 3; ++k) {
+                a += w[k] * kCorner[static_cast<std::size_t>(t[k])][0];
+                b += w[k] * kCorner[static_cast<std::size_t>(t[k])][1];
+            }
+            const LatticeSample sample{t, w, static_cast<int>(std::lround(a)), static_cast<int>(std::lround(b))};
+            const bool seen = std::any_of(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n),
+                                          [&](const LatticeSample& o) { return o.a == sample.a && o.b == sample.b; });
+            if (!seen) out[n++] = sample;
+        }
+    return out;
+}
+
 struct CheckResult {
     double worst_ratio = 0;
     std::vector<char> refine_u, refine_v;  // per grid interval
 };
 
-CheckResult check_grid(const SurfacePlan& plan, const Settings& settings) {
+// The check of one cell from its 7 x 7 lattice of surface points (`at(a, b)`, parameters `us[a]`,
+// `vs[b]`): exactly what the general path below computes for a cell without collapsed corners, with
+// the surface points taken from the batch instead of evaluated one by one.
+template <class At>
+void check_plain_cell(const detail::SurfaceEvaluator& s, const Settings& settings, At&& at, const double* us,
+                      const double* vs, std::size_t i, std::size_t j, const Vec3* normals, std::size_t nv,
+                      CheckResult& result) {
+    static const std::array<CellSamples, 2> kSamples{lattice_samples(false), lattice_samples(true)};
+    const std::array<Vec3, 4> c{at(0, 0), at(6, 0), at(6, 6), at(0, 6)};
+    const Vec3 center = at(3, 3);
+    // zip_rails on the rails {c00, c10} and {c01, c11}: the diagonal c00-c11 unless it costs no less.
+    const double cost_00_11 = distance(center, 0.5 * (c[0] + c[2])) + 1e-9 * distance(c[0], c[2]);
+    const double cost_10_01 = distance(center, 0.5 * (c[1] + c[3])) + 1e-9 * distance(c[1], c[3]);
+    const CellSamples& samples = kSamples[cost_00_11 < cost_10_01 ? 1 : 0];
+    const double good_enough = 0.5 * settings.tolerance;
+    // The cell's error is the largest sample bound. Gauss-Newton only lowers a sample's bound below its
+    // first value, so taking the samples by decreasing first value, a sample whose first value is already
+    // below the largest refined bound cannot change the maximum and needs no Newton steps: the same
+    // maximum as refining every sample, for a fraction of the point-wise evaluations.
+    constexpr std::size_t kCount = std::tuple_size_v<CellSamples>;
+    std::array<Vec3, kCount> chord;
+    std::array<double, kCount> first;
+    std::array<std::size_t, kCount> order;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        const LatticeSample& x = samples[k];
+        chord[k] = x.weights[0] * c[static_cast<std::size_t>(x.corners[0])] +
+                   x.weights[1] * c[static_cast<std::size_t>(x.corners[1])] +
+                   x.weights[2] * c[static_cast<std::size_t>(x.corners[2])];
+        first[k] = distance(at(x.a, x.b), chord[k]);
+        order[k] = k;
+    }
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return first[x] > first[y]; });
+    double error = 0;
+    for (std::size_t k : order) {
+        if (first[k] <= error) break;
+        const LatticeSample& x = samples[k];
+        error = std::max(error, distance_bound(s, chord[k], us[x.a], vs[x.b], at(x.a, x.b), good_enough));
+    }
+    const double ratio = error / settings.tolerance;
+    bool angle_failed = false;
+    double angle_u = 0, angle_v = 0;
+    if (normals != nullptr) {
+        const Vec3 &n00 = normals[i * nv + j], &n10 = normals[(i + 1) * nv + j];
+        const Vec3 &n01 = normals[i * nv + j + 1], &n11 = normals[(i + 1) * nv + j + 1];
+        angle_u = std::max(angle_between(n00, n10), angle_between(n01, n11));
+        angle_v = std::max(angle_between(n00, n01), angle_between(n10, n11));
+        const double diagonal = std::max(angle_between(n00, n11), angle_between(n10, n01));
+        angle_failed = std::max({angle_u, angle_v, diagonal}) > settings.angle_rad;
+    }
+    result.worst_ratio = std::max(result.worst_ratio, ratio);
+    if (ratio > 1 || angle_failed) {
+        const double chord_u = std::max(distance(at(3, 0), 0.5 * (c[0] + c[1])), distance(at(3, 6), 0.5 * (c[3] + c[2])));
+        const double chord_v = std::max(distance(at(0, 3), 0.5 * (c[0] + c[3])), distance(at(6, 3), 0.5 * (c[1] + c[2])));
+        bool split_u = chord_u >= 0.5 * chord_v, split_v = chord_v >= 0.5 * chord_u;
+        if (angle_failed && ratio <= 1) split_u = angle_u >= 0.5 * angle_v, split_v = angle_v >= 0.5 * angle_u;
+        if (split_u) result.refine_u[i] = 1;
+        if (split_v) result.refine_v[j] = 1;
+        if (angle_failed) result.worst_ratio = std::max(result.worst_ratio, 1.0 + 1e-9);
+    }
+}
+
+// The corner vertices of a grid cell for the error check (edge samples not yet known): degenerate
+// sides share one pseudo id so that they collapse like in the final mesh.
+//
+// Only the cells in a new row (new_u[i]) or a new column (new_v[j]) are checked: every other cell is
+// the same as in the previous check, which it passed (a failing cell is always bisected in some direction).
+// The surface points of the checked cells come from batched lattice evaluations (evaluate_grid), a few
+// rows of cells at a time; only the Gauss-Newton steps of distance_bound and the cells at collapsed
+// sides (pole fans, whose samples leave the lattice) evaluate point by point.
+CheckResult check_grid(const SurfacePlan& plan, const Settings& settings, const std::vector<char>& new_u,
+                       const std::vector<char>& new_v) {
     const detail::SurfaceEvaluator& s = *plan.evaluator;
+    const NurbsSurface& surface = plan.face->surface();
     const Grid& g = plan.grid;
     const std::size_t nu = g.u.size(), nv = g.v.size();
-    std::vector<Vec3> points(nu * nv), normals;
-    for (std::size_t i = 0; i < nu; ++i)
-        for (std::size_t j = 0; j < nv; ++j) points[i * nv + j] = s.point(g.u[i], g.v[j]);
+    std::vector<Vec3> normals;
     if (settings.angle_rad > 0) {
+        const SurfaceGrid n = evaluate_grid(surface, g.u, g.v, GridOutput::normals);
         normals.resize(nu * nv);
-        for (std::size_t i = 0; i < nu; ++i)
-            for (std::size_t j = 0; j < nv; ++j) normals[i * nv + j] = plan.face->normal(g.u[i], g.v[j]);
+        for (std::size_t k = 0; k < normals.size(); ++k) normals[k] = n.normals[k];
     }
     const Id pole_base = static_cast<Id>(nu * nv);
     auto id_of = [&](std::size_t i, std::size_t j) -> Id {
@@ -537,7 +679,10 @@ CheckResult check_grid(const SurfacePlan& plan, const Settings& settings) {
         if (i == 0 && plan.sides[3].degenerate) return pole_base + 3;
         return static_cast<Id>(i * nv + j);
     };
-    auto vertex = [&](std::size_t i, std::size_t j) { return CellVertex{g.u[i], g.v[j], points[i * nv + j], id_of(i, j)}; };
+    auto plain = [&](std::size_t i, std::size_t j) {
+        return !(j == 0 && plan.sides[0].degenerate) && !(i + 2 == nu && plan.sides[1].degenerate) &&
+               !(j + 2 == nv && plan.sides[2].degenerate) && !(i == 0 && plan.sides[3].degenerate);
+    };
 
     CheckResult result;
     result.refine_u.assign(nu - 1, 0);
@@ -545,37 +690,91 @@ CheckResult check_grid(const SurfacePlan& plan, const Settings& settings) {
     std::vector<CellVertex> lower, upper;
     CellVertex center;
     std::vector<CellTriangle> triangles;
-    for (std::size_t i = 0; i + 1 < nu; ++i)
-        for (std::size_t j = 0; j + 1 < nv; ++j) {
-            triangles.clear();
-            const CellVertex c00 = vertex(i, j), c10 = vertex(i + 1, j), c11 = vertex(i + 1, j + 1), c01 = vertex(i, j + 1);
-            triangulate_cell(s, {c00, c10}, {c10, c11}, {c01, c11}, {c00, c01}, lower, upper, center,
-                             [] { return CellVertex{}; }, triangles);
-            double error = 0;
-            for (const auto& t : triangles) error = std::max(error, triangle_error(s, t, 0.5 * settings.tolerance));
-            const double ratio = error / settings.tolerance;
-            bool angle_failed = false;
-            double angle_u = 0, angle_v = 0;
-            if (settings.angle_rad > 0) {
-                const Vec3 &n00 = normals[i * nv + j], &n10 = normals[(i + 1) * nv + j];
-                const Vec3 &n01 = normals[i * nv + j + 1], &n11 = normals[(i + 1) * nv + j + 1];
-                angle_u = std::max(angle_between(n00, n10), angle_between(n01, n11));
-                angle_v = std::max(angle_between(n00, n01), angle_between(n10, n11));
-                const double diagonal = std::max(angle_between(n00, n11), angle_between(n10, n01));
-                angle_failed = std::max({angle_u, angle_v, diagonal}) > settings.angle_rad;
-            }
-            result.worst_ratio = std::max(result.worst_ratio, ratio);
-            if (ratio > 1 || angle_failed) {
-                // Split the direction whose chords err more (both when comparable).
-                const double chord_u = std::max(diagonal_deviation(s, c00, c10), diagonal_deviation(s, c01, c11));
-                const double chord_v = std::max(diagonal_deviation(s, c00, c01), diagonal_deviation(s, c10, c11));
-                bool split_u = chord_u >= 0.5 * chord_v, split_v = chord_v >= 0.5 * chord_u;
-                if (angle_failed && ratio <= 1) split_u = angle_u >= 0.5 * angle_v, split_v = angle_v >= 0.5 * angle_u;
-                if (split_u) result.refine_u[i] = 1;
-                if (split_v) result.refine_v[j] = 1;
-                if (angle_failed) result.worst_ratio = std::max(result.worst_ratio, 1.0 + 1e-9);
-            }
+    // The general path: any cell, every surface point evaluated here (corners from `corner`).
+    auto check_general = [&](std::size_t i, std::size_t j, auto&& corner) {
+        auto vertex = [&](std::size_t a, std::size_t b) {
+            return CellVertex{g.u[a], g.v[b], corner(a - i, b - j), id_of(a, b)};
+        };
+        triangles.clear();
+        const CellVertex c00 = vertex(i, j), c10 = vertex(i + 1, j), c11 = vertex(i + 1, j + 1), c01 = vertex(i, j + 1);
+        triangulate_cell(s, {c00, c10}, {c10, c11}, {c01, c11}, {c00, c01}, lower, upper, center,
+                         [] { return CellVertex{}; }, triangles);
+        double error = 0;
+        for (const auto& t : triangles) error = std::max(error, triangle_error(s, t, 0.5 * settings.tolerance));
+        const double ratio = error / settings.tolerance;
+        bool angle_failed = false;
+        double angle_u = 0, angle_v = 0;
+        if (settings.angle_rad > 0) {
+            const Vec3 &n00 = normals[i * nv + j], &n10 = normals[(i + 1) * nv + j];
+            const Vec3 &n01 = normals[i * nv + j + 1], &n11 = normals[(i + 1) * nv + j + 1];
+            angle_u = std::max(angle_between(n00, n10), angle_between(n01, n11));
+            angle_v = std::max(angle_between(n00, n01), angle_between(n10, n11));
+            const double diagonal = std::max(angle_between(n00, n11), angle_between(n10, n01));
+            angle_failed = std::max({angle_u, angle_v, diagonal}) > settings.angle_rad;
         }
+        result.worst_ratio = std::max(result.worst_ratio, ratio);
+        if (ratio > 1 || angle_failed) {
+            // Split the direction whose chords err more (both when comparable).
+            const double chord_u = std::max(diagonal_deviation(s, c00, c10), diagonal_deviation(s, c01, c11));
+            const double chord_v = std::max(diagonal_deviation(s, c00, c01), diagonal_deviation(s, c10, c11));
+            bool split_u = chord_u >= 0.5 * chord_v, split_v = chord_v >= 0.5 * chord_u;
+            if (angle_failed && ratio <= 1) split_u = angle_u >= 0.5 * angle_v, split_v = angle_v >= 0.5 * angle_u;
+            if (split_u) result.refine_u[i] = 1;
+            if (split_v) result.refine_v[j] = 1;
+            if (angle_failed) result.worst_ratio = std::max(result.worst_ratio, 1.0 + 1e-9);
+        }
+    };
+
+    // The lattice parameters of a list of intervals: 7 per interval (ends repeated), both ends exact.
+    auto lattice = [](const std::vector<double>& lines, const std::vector<std::size_t>& intervals) {
+        std::vector<double> t;
+        t.reserve(7 * intervals.size());
+        for (std::size_t k : intervals) {
+            const double a = lines[k], b = lines[k + 1];
+            t.push_back(a);
+            for (int f = 1; f < 6; ++f) t.push_back(std::min(b, a + (b - a) * (f / 6.0)));
+            t.push_back(b);
+        }
+        return t;
+    };
+    std::vector<std::size_t> all_columns(nv - 1), new_columns, new_rows, old_rows;
+    for (std::size_t j = 0; j + 1 < nv; ++j) {
+        all_columns[j] = j;
+        if (new_v[j]) new_columns.push_back(j);
+    }
+    for (std::size_t i = 0; i + 1 < nu; ++i) (new_u[i] ? new_rows : old_rows).push_back(i);
+
+    SurfaceGrid batch;
+    std::vector<std::size_t> chunk;
+    // Rows `rows` against columns `columns`, a chunk of rows per evaluate_grid call.
+    auto check_block = [&](const std::vector<std::size_t>& rows, const std::vector<std::size_t>& columns) {
+        if (rows.empty() || columns.empty()) return;
+        const std::vector<double> vs = lattice(g.v, columns);
+        const std::size_t per_chunk = std::max<std::size_t>(1, 16384 / (49 * columns.size()));
+        for (std::size_t r0 = 0; r0 < rows.size(); r0 += per_chunk) {
+            chunk.assign(rows.begin() + static_cast<std::ptrdiff_t>(r0),
+                         rows.begin() + static_cast<std::ptrdiff_t>(std::min(rows.size(), r0 + per_chunk)));
+            const std::vector<double> us = lattice(g.u, chunk);
+            evaluate_grid(surface, us, vs, GridOutput::points, batch);
+            const std::size_t width = vs.size();
+            for (std::size_t il = 0; il < chunk.size(); ++il)
+                for (std::size_t jl = 0; jl < columns.size(); ++jl) {
+                    const std::size_t i = chunk[il], j = columns[jl];
+                    const std::size_t base = 7 * il * width + 7 * jl;
+                    auto at = [&](int a, int b) {
+                        return batch.points[base + static_cast<std::size_t>(a) * width + static_cast<std::size_t>(b)];
+                    };
+                    if (plain(i, j)) {
+                        check_plain_cell(s, settings, at, us.data() + 7 * il, vs.data() + 7 * jl, i, j,
+                                         normals.empty() ? nullptr : normals.data(), nv, result);
+                    } else {
+                        check_general(i, j, [&](std::size_t di, std::size_t dj) { return at(6 * static_cast<int>(di), 6 * static_cast<int>(dj)); });
+                    }
+                }
+        }
+    };
+    check_block(new_rows, all_columns);
+    check_block(old_rows, new_columns);
     return result;
 }
 
@@ -592,10 +791,17 @@ std::vector<double> bisect_marked(const std::vector<double>& lines, const std::v
 // optimistic everywhere, local bisection of the failing intervals otherwise.
 void refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Settings& settings, double max_cells) {
     double target = settings.tolerance;
+    // The intervals whose cells are new since the last check (all of them for a fresh grid).
+    std::vector<char> new_u(plan.grid.u.size() - 1, 1), new_v(plan.grid.v.size() - 1, 1);
+    auto bisect = [](std::vector<double>& lines, const std::vector<char>& marked, std::vector<char>& fresh) {
+        fresh.clear();
+        for (char m : marked) fresh.insert(fresh.end(), m ? 2 : 1, m);
+        lines = bisect_marked(lines, marked);
+    };
     for (int iteration = 0; iteration < 40; ++iteration) {
         if (plan.grid.cells() * 2 > static_cast<double>(settings.max_triangles))
             throw_over_budget(plan.grid.cells() * 2, settings.max_triangles);
-        const CheckResult check = check_grid(plan, settings);
+        const CheckResult check = check_grid(plan, settings, new_u, new_v);
         if (check.worst_ratio <= 1) return;
         const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
                                      std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;
@@ -604,9 +810,11 @@ void refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Set
             Grid g = choose_grid(curvature, target, settings.angle_rad, plan.min_segments, plan.creases, max_cells);
             if (g.u.empty()) throw_over_budget(max_cells * 2, settings.max_triangles);
             plan.grid = std::move(g);
+            new_u.assign(plan.grid.u.size() - 1, 1);
+            new_v.assign(plan.grid.v.size() - 1, 1);
         } else if (some_marked) {
-            plan.grid.u = bisect_marked(plan.grid.u, check.refine_u);
-            plan.grid.v = bisect_marked(plan.grid.v, check.refine_v);
+            bisect(plan.grid.u, check.refine_u, new_u);
+            bisect(plan.grid.v, check.refine_v, new_v);
         } else {
             return;
         }
@@ -699,7 +907,7 @@ private:
             for (Side side : kSides) plan.sides[static_cast<std::size_t>(index(side))] = map_side(face, side);
             plan.min_segments = minimum_segments(plan.sides);
             plan.creases = {crease_lines(face.surface(), true), crease_lines(face.surface(), false)};
-            curvatures.push_back(sample_curvature(face.surface(), *plan.evaluator));
+            curvatures.push_back(sample_curvature(face.surface()));
             plan.grid = choose_grid(curvatures.back(), settings_.tolerance, settings_.angle_rad, plan.min_segments,
                                     plan.creases, max_cells);
             if (plan.grid.u.empty()) throw_over_budget(max_cells * 2 + 1, settings_.max_triangles);
