@@ -1,0 +1,321 @@
+// Runs the real `ratbez` binary: exit codes, the single stderr line for bad input, every export
+// format, `info` and `check` on the examples.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+    int exit_code = -1;
+    std::string out, err;
+};
+
+std::string read_file(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+std::string quoted(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        std::string name = std::string(info->test_suite_name()) + "_" + info->name();
+        for (char& c : name)
+            if (c == '/') c = '_';
+        dir_ = fs::temp_directory_path() / ("ratbez_cli_test_" + name);
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    CommandResult ratbez(const std::vector<std::string>& args) const {
+        std::string command = quoted(RATBEZ_CLI);
+        for (const auto& a : args) command += " " + quoted(a);
+        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+        command += " >" + quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
+        const int status = std::system(command.c_str());
+        CommandResult run;
+        run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        run.out = read_file(out);
+        run.err = read_file(err);
+        return run;
+    }
+    std::string spec_file(const std::string& json, const std::string& name = "spec.json") const {
+        const fs::path p = dir_ / name;
+        std::ofstream(p) << json;
+        return p.string();
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    static std::string example(const std::string& name) { return std::string(RATBEZ_EXAMPLES_DIR) + "/" + name; }
+
+    fs::path dir_;
+};
+
+// Bad input: exit code 2, nothing on stdout, exactly one line on stderr.
+void expect_bad_input(const CommandResult& run, const std::string& expected_line) {
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_EQ(run.out, "");
+    EXPECT_EQ(run.err, expected_line + "\n");
+}
+
+void expect_bad_input_prefix(const CommandResult& run, const std::string& prefix) {
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_EQ(run.out, "");
+    EXPECT_EQ(run.err.rfind(prefix, 0), 0u) << run.err;
+    ASSERT_FALSE(run.err.empty());
+    EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << "not a single line: " << run.err;
+}
+
+TEST_F(Cli, MissingField) {
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "sphere"}})")}),
+                     "spec error: shape.radius: is required");
+    expect_bad_input(ratbez({"info", spec_file(R"({"name": "x"})")}), "spec error: shape: is required");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"radius": 1}})")}), "spec error: shape.type: is required");
+}
+
+TEST_F(Cli, WrongType) {
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "sphere", "radius": "ten"}})")}),
+                     "spec error: shape.radius: must be a positive number");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "sphere", "radius": 1, "center": [0, "a", 0]}})")}),
+                     "spec error: shape.center: must be a list of 2 or 3 numbers");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "cylinder", "radius": 1, "height": true}})")}),
+                     "spec error: shape.height: must be a positive number");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": "sphere"})")}), "spec error: shape: must be a JSON object");
+    expect_bad_input(ratbez({"info", spec_file(R"({"name": 7, "shape": {"type": "sphere", "radius": 1}})")}),
+                     "spec error: name: must be a string");
+}
+
+TEST_F(Cli, NegativeOrZeroNumbers) {
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "sphere", "radius": -1}})")}),
+                     "spec error: shape.radius: must be a positive number");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "cylinder", "radius": 1, "height": 0}})")}),
+                     "spec error: shape.height: must be a positive number");
+    expect_bad_input(ratbez({"info", spec_file(R"({"tolerance": -0.1, "shape": {"type": "sphere", "radius": 1}})")}),
+                     "spec error: tolerance: must be a positive number");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "cone", "radius1": -2, "radius2": 1, "height": 1}})")}),
+                     "spec error: shape.radius1: must be a number >= 0");
+}
+
+TEST_F(Cli, UnknownTypeAndUnknownFields) {
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "cube", "size": 1}})")}),
+                     "spec error: shape.type: unknown shape type 'cube' (expected cylinder, cone, sphere, torus, revolve or extrude)");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "sphere", "radius": 1, "centre": [0, 0, 0]}})")}),
+                     "spec error: shape.centre: unknown field (expected one of: type, radius, center)");
+    expect_bad_input(ratbez({"info", spec_file(R"({"tolerence": 0.1, "shape": {"type": "sphere", "radius": 1}})")}),
+                     "spec error: tolerence: unknown field (expected one of: name, description, tolerance, tessellation_angle, shape)");
+    expect_bad_input(
+        ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "profile": [{"type": "spline", "points": []}]}})")}),
+        "spec error: shape.profile[0].type: unknown curve type 'spline' (expected bezier, nurbs, line, arc or circle)");
+}
+
+TEST_F(Cli, NestedProfilePaths) {
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "profile": [
+        {"type": "line", "from": [0, 0, 0], "to": [1, 0, 0]},
+        {"type": "bezier", "points": [[1, 0, 0], [2, 0, 1], [0, 0]], "weights": [1, 1]}]}})")}),
+                     "spec error: shape.profile[1].weights: must have one weight per point (3), not 2");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "extrude", "direction": [0, 0, 1], "distance": 1,
+        "profile": [{"type": "bezier", "points": [[1, 0, 0], [2, 0], "x"]}]}})")}),
+                     "spec error: shape.profile[0].points[2]: must be a list of 2 or 3 numbers");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "profile": [
+        {"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1], "points": [[1, 0, 0], [2, 0, 1], [1, 0, 2]]}]}})")}),
+                     "spec error: shape.profile[0].knots: must have len(points) + degree + 1 = 6 values, not 5");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "profile": []}})")}),
+                     "spec error: shape.profile: must have at least one curve");
+}
+
+TEST_F(Cli, KernelErrorsNameTheField) {
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "torus", "major_radius": 2, "minor_radius": 3}})")}),
+                     "spec error: shape.minor_radius: must be less than major_radius (else the tube meets the axis)");
+    // A profile that does not reach the axis and is not closed.
+    expect_bad_input_prefix(
+        ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "profile": [{"type": "line", "from": [1, 0, 0], "to": [2, 0, 1]}]}})")}),
+        "spec error: shape.profile: ");
+    expect_bad_input_prefix(
+        ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "angle": 400, "profile": [{"type": "circle", "radius": 1, "center": [3, 0, 0], "normal": [0, 1, 0]}]}})")}),
+        "spec error: shape.angle: must be in (0, 360] degrees");
+}
+
+TEST_F(Cli, NotJsonAndMissingFile) {
+    const std::string file = spec_file("{ \"shape\": {\"type\": \"sphere\", radius: 1} }");
+    expect_bad_input_prefix(ratbez({"info", file}), "spec error: " + file + ": not valid JSON: parse error at line 1, column 33");
+    const std::string array = spec_file("[1, 2]", "array.json");
+    expect_bad_input(ratbez({"info", array}), "spec error: " + array + ": must be a JSON object with a \"shape\"");
+    expect_bad_input(ratbez({"info", path("missing.json")}), "spec error: " + path("missing.json") + ": cannot open the file");
+    expect_bad_input_prefix(ratbez({"info", spec_file("", "empty.json")}), "spec error: " + path("empty.json") + ": not valid JSON");
+}
+
+TEST_F(Cli, UsageErrors) {
+    expect_bad_input(ratbez({}), "usage error: command: missing (export, check, info or demo; see ratbez --help)");
+    expect_bad_input(ratbez({"explode", "x.json"}),
+                     "usage error: command: unknown command 'explode' (expected export, check, info or demo)");
+    const std::string sphere = example("sphere.json");
+    expect_bad_input(ratbez({"export", sphere}),
+                     "usage error: -o: the output file is required (-o OUT.scad|stl|off|step|brep)");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--tolerance", "abc"}),
+                     "usage error: --tolerance: must be a positive number, not 'abc'");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--tolerance=-1"}),
+                     "usage error: --tolerance: must be a positive number, not '-1'");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--tolerence", "0.1"}),
+                     "usage error: --tolerence: unknown option for 'export'");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.stl"), "--module", "m"}),
+                     "usage error: --module: applies only to .scad output");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--module", "9lives"}),
+                     "usage error: --module: '9lives' is not an OpenSCAD identifier (letters, digits, _)");
+    expect_bad_input(ratbez({"info"}), "usage error: SPEC.json: missing (usage: ratbez info SPEC.json ...)");
+    expect_bad_input(ratbez({"info", sphere, "other.json"}), "usage error: other.json: unexpected argument for 'info'");
+    EXPECT_FALSE(fs::exists(path("a.scad")));
+    EXPECT_FALSE(fs::exists(path("a.stl")));
+}
+
+TEST_F(Cli, UnknownExtensionAndUnwritablePath) {
+    const std::string sphere = example("sphere.json");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.obj")}),
+                     "usage error: -o: unknown extension '.obj' in '" + path("a.obj") +
+                         "' (expected .scad, .stl, .off, .step or .brep)");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("no/such/dir/a.scad")}),
+                     "error: path: cannot open '" + path("no/such/dir/a.scad") + "' for writing: No such file or directory");
+    expect_bad_input_prefix(ratbez({"export", sphere, "-o", path("no/such/dir/a.step")}), "error: path: ");
+    expect_bad_input_prefix(ratbez({"export", sphere, "-o", path("no/such/dir/a.brep")}), "error: path: ");
+}
+
+// Signed volume of a binary STL (float32 coordinates).
+double binary_stl_volume(const std::string& bytes, std::uint32_t& count) {
+    std::memcpy(&count, bytes.data() + 80, 4);
+    double six_volume = 0;
+    for (std::uint32_t t = 0; t < count; ++t) {
+        float v[9];
+        std::memcpy(v, bytes.data() + 84 + 50 * std::size_t{t} + 12, sizeof v);
+        const double ax = v[0], ay = v[1], az = v[2], bx = v[3], by = v[4], bz = v[5], cx = v[6], cy = v[7], cz = v[8];
+        six_volume += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
+    }
+    return six_volume / 6;
+}
+
+TEST_F(Cli, ExportsEveryFormat) {
+    const std::string sphere = example("sphere.json");
+    const double exact = 4.0 / 3.0 * std::numbers::pi * 1000.0;
+
+    CommandResult run = ratbez({"export", sphere, "-o", path("s.scad"), "--module", "ball"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    EXPECT_EQ(run.out.rfind("wrote " + path("s.scad") + " (", 0), 0u) << run.out;
+    const std::string scad = read_file(path("s.scad"));
+    EXPECT_NE(scad.find("module ball() {\npolyhedron(points=[\n"), std::string::npos);
+
+    run = ratbez({"export", sphere, "-o", path("s.stl"), "--tolerance", "0.05"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const std::string stl = read_file(path("s.stl"));
+    ASSERT_GE(stl.size(), 84u);
+    std::uint32_t count = 0;
+    const double volume = binary_stl_volume(stl, count);
+    EXPECT_EQ(stl.size(), 84u + 50u * count);
+    EXPECT_GT(count, 100u);
+    // Within the chordal tolerance times the area (plus float32 rounding).
+    EXPECT_NEAR(volume, exact, 0.05 * 4 * std::numbers::pi * 100 + 1e-3);
+    EXPECT_NE(run.out.find(std::to_string(count) + " triangles"), std::string::npos) << run.out;
+
+    run = ratbez({"export", sphere, "-o", path("s_ascii.stl"), "--ascii", "--tolerance=0.5"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(read_file(path("s_ascii.stl")).rfind("solid ratbez\nfacet normal ", 0), 0u);
+
+    run = ratbez({"export", sphere, "-o", path("s.off"), "--angle", "20"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(read_file(path("s.off")).rfind("OFF\n", 0), 0u);
+
+    run = ratbez({"export", sphere, "-o", path("s.step")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(read_file(path("s.step")).rfind("ISO-10303-21;", 0), 0u);
+    EXPECT_EQ(run.err, "");
+
+    run = ratbez({"export", sphere, "-o", path("s.brep")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(read_file(path("s.brep")).find("CASCADE Topology"), std::string::npos);
+}
+
+TEST_F(Cli, ExportsEveryExampleAsScad) {
+    for (const auto& entry : fs::directory_iterator(RATBEZ_EXAMPLES_DIR)) {
+        if (entry.path().extension() != ".json") continue;
+        const std::string out = path(entry.path().stem().string() + ".scad");
+        const CommandResult run = ratbez({"export", entry.path().string(), "-o", out});
+        EXPECT_EQ(run.exit_code, 0) << entry.path() << ": " << run.err;
+        EXPECT_EQ(read_file(out).rfind("// Generated by ratbez: ", 0), 0u) << entry.path();
+    }
+}
+
+TEST_F(Cli, InfoOfSphereAndTorus) {
+    CommandResult run = ratbez({"info", example("sphere.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("name:                 sphere\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("faces:                1\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("euler characteristic: 2\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("bounding box:         ("), std::string::npos) << run.out;
+
+    run = ratbez({"info", example("sphere.json"), "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto sphere = nlohmann::json::parse(run.out);
+    EXPECT_EQ(sphere["faces"], 1);
+    EXPECT_EQ(sphere["euler_characteristic"], 2);
+    EXPECT_EQ(sphere["degenerate_edges"], 2);
+    EXPECT_NEAR(sphere["volume"].get<double>(), 4.0 / 3.0 * std::numbers::pi * 1000.0, 1e-8);
+    EXPECT_NEAR(sphere["area"].get<double>(), 4.0 * std::numbers::pi * 100.0, 1e-8);
+    // The control-point box contains the ball of radius 10.
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_LE(sphere["bounding_box"]["min"][k].get<double>(), -10.0 + 1e-12);
+        EXPECT_GE(sphere["bounding_box"]["max"][k].get<double>(), 10.0 - 1e-12);
+    }
+
+    run = ratbez({"info", example("torus.json"), "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto torus = nlohmann::json::parse(run.out);
+    EXPECT_EQ(torus["euler_characteristic"], 0);
+    EXPECT_NEAR(torus["volume"].get<double>(), 2 * std::numbers::pi * std::numbers::pi * 10 * 9, 1e-8);
+
+    run = ratbez({"info", example("cylinder.json"), "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto cylinder = nlohmann::json::parse(run.out);
+    EXPECT_EQ(cylinder["faces"], 3);
+    EXPECT_EQ(cylinder["euler_characteristic"], 2);
+    EXPECT_NEAR(cylinder["volume"].get<double>(), std::numbers::pi * 25 * 20, 1e-8);
+}
+
+TEST_F(Cli, CheckPassesOnEveryExample) {
+    for (const auto& entry : fs::directory_iterator(RATBEZ_EXAMPLES_DIR)) {
+        if (entry.path().extension() != ".json") continue;
+        const CommandResult run = ratbez({"check", entry.path().string(), "--json"});
+        EXPECT_EQ(run.exit_code, 0) << entry.path() << ": " << run.out << run.err;
+        const auto report = nlohmann::json::parse(run.out, nullptr, false);
+        ASSERT_FALSE(report.is_discarded()) << run.out;
+        EXPECT_EQ(report["passed"], true) << entry.path();
+        EXPECT_EQ(report["valid"], true) << entry.path();
+        EXPECT_NEAR(report["volume"].get<double>(), report["occt_volume"].get<double>(),
+                    1e-6 * std::abs(report["volume"].get<double>()))
+            << entry.path();
+    }
+    const CommandResult table = ratbez({"check", example("cone.json")});
+    EXPECT_EQ(table.exit_code, 0) << table.err;
+    EXPECT_EQ(table.out.rfind("cone (cone)\n", 0), 0u) << table.out;
+}
+
+}  // namespace
