@@ -1,0 +1,201 @@
+// The only translation unit that includes CGAL (it costs about 11 s to compile; keep it that way).
+#include "ratbez/export/mesh_checks.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdint>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ratbez::exporter {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using Polygon = std::array<std::size_t, 3>;
+
+std::string format_number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    return text;
+}
+
+std::string count_of(std::size_t n, const char* singular, const char* plural) {
+    return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
+// Vertices with identical coordinates at different indices: the mesh was not welded, so CGAL (and
+// OpenSCAD) would see a crack there even when the surface looks closed.
+std::size_t count_duplicate_vertices(const std::vector<Vec3>& vertices) {
+    std::vector<std::uint32_t> order(vertices.size());
+    std::iota(order.begin(), order.end(), std::uint32_t{0});
+    const auto key = [&](std::uint32_t i) {
+        const Vec3& p = vertices[i];
+        return std::array<double, 3>{p.x, p.y, p.z};
+    };
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
+    std::size_t duplicates = 0;
+    for (std::size_t i = 1; i < order.size(); ++i)
+        if (key(order[i]) == key(order[i - 1])) ++duplicates;
+    return duplicates;
+}
+
+struct EdgeCounts {
+    std::size_t border = 0;        // undirected edges used by one triangle
+    std::size_t non_manifold = 0;  // undirected edges used by more than two triangles
+};
+
+// Undirected edge use counts, independent of orientation, by sorting (no hashing).
+EdgeCounts count_edges(const Mesh& mesh) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    edges.reserve(mesh.triangles.size() * 3);
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const auto a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
+            edges.emplace_back(std::min(a, b), std::max(a, b));
+        }
+    std::sort(edges.begin(), edges.end());
+    EdgeCounts counts;
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        if (j - i == 1) ++counts.border;
+        if (j - i > 2) ++counts.non_manifold;
+        i = j;
+    }
+    return counts;
+}
+
+// The volume of the mesh's axis-aligned bounding box: the scale of "no volume".
+double bounding_box_volume(const Mesh& mesh) {
+    if (mesh.vertices.empty()) return 0;
+    Vec3 low = mesh.vertices.front(), high = low;
+    for (const Vec3& p : mesh.vertices) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+    }
+    const Vec3 size = high - low;
+    return size.x * size.y * size.z;
+}
+
+}  // namespace
+
+MeshReport check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
+    MeshReport report;
+
+    // Structural problems first: CGAL's algorithms assume valid indices, finite points and no
+    // degenerate index triples, so nothing further is meaningful without them.
+    if (mesh.triangles.empty()) {
+        report.problems.push_back("mesh has no triangles");
+        return report;
+    }
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+        if (!is_finite(mesh.vertices[i])) {
+            report.problems.push_back("vertex " + std::to_string(i) + " is not finite");
+            return report;
+        }
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& tri = mesh.triangles[t];
+        for (auto index : tri)
+            if (index >= mesh.vertices.size()) {
+                report.problems.push_back("triangle " + std::to_string(t) + " refers to vertex " +
+                                          std::to_string(index) + ", past the " +
+                                          std::to_string(mesh.vertices.size()) + " vertices");
+                return report;
+            }
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
+            report.problems.push_back("triangle " + std::to_string(t) + " repeats a vertex");
+            return report;
+        }
+    }
+
+    report.volume = mesh.volume();  // only now: it reads the vertices the triangles name
+
+    if (const auto duplicates = count_duplicate_vertices(mesh.vertices); duplicates > 0)
+        report.problems.push_back(count_of(duplicates, "duplicate vertex", "duplicate vertices") +
+                                  " (the mesh is not welded)");
+
+    const EdgeCounts edges = count_edges(mesh);
+    report.closed = edges.border == 0 && edges.non_manifold == 0;
+    if (edges.border > 0)
+        report.problems.push_back("not closed: " + count_of(edges.border, "border edge", "border edges"));
+
+    std::vector<Point> points;
+    points.reserve(mesh.vertices.size());
+    for (const Vec3& p : mesh.vertices) points.emplace_back(p.x, p.y, p.z);
+    std::vector<Polygon> polygons;
+    polygons.reserve(mesh.triangles.size());
+    for (const auto& t : mesh.triangles) polygons.push_back({t[0], t[1], t[2]});
+
+    // A soup that is already an oriented 2-manifold converts directly. Otherwise orient_polygon_soup
+    // tells the two failures apart: it succeeds without duplicating points when only the orientation was
+    // inconsistent, and returns false when it had to split non-manifold edges or vertices.
+    bool consistently_oriented = PMP::is_polygon_soup_a_polygon_mesh(polygons);
+    if (consistently_oriented) {
+        report.manifold = true;
+    } else {
+        report.manifold = PMP::orient_polygon_soup(points, polygons);
+        if (!report.manifold || edges.non_manifold > 0) {
+            report.manifold = false;
+            std::string what = "not 2-manifold";
+            if (edges.non_manifold > 0)
+                what += ": " + count_of(edges.non_manifold, "edge", "edges") + " shared by more than two triangles";
+            else
+                what += ": a vertex joins separate sheets";
+            report.problems.push_back(what);
+        } else {
+            report.problems.push_back("triangles are not consistently oriented");
+        }
+    }
+
+    // Orientation and self-intersection need a proper polygon mesh; a non-manifold soup leaves them unknown.
+    if (!report.manifold) {
+        report.outward = false;
+        if (options.check_self_intersections) report.self_intersection_free.reset();
+    } else {
+        SurfaceMesh surface;
+        PMP::polygon_soup_to_polygon_mesh(points, polygons, surface);
+        if (report.closed && consistently_oriented) {
+            report.outward = PMP::is_outward_oriented(surface);
+            if (!report.outward) report.problems.push_back("triangles face inward (the orientation is reversed)");
+            // is_outward_oriented looks at the extreme vertex only, so a closed surface folded flat onto
+            // itself passes it (found by fuzz_mesh); a solid's boundary must also enclose positive volume,
+            // measured against its bounding box so that rounding on a flat mesh does not count.
+            if (report.outward && !(report.volume > 1e-12 * bounding_box_volume(mesh))) {
+                report.outward = false;
+                report.problems.push_back("the closed surface encloses no volume (" + format_number(report.volume) +
+                                          "): it is flat or folded onto itself");
+            }
+        }
+        if (options.check_self_intersections) {
+            report.self_intersection_free = !PMP::does_self_intersect(surface);
+            if (!*report.self_intersection_free) report.problems.push_back("the surface intersects itself");
+        }
+    }
+
+    if (options.exact_volume) {
+        const double difference = std::abs(report.volume - *options.exact_volume);
+        report.volume_ok = difference <= options.volume_tolerance;
+        if (!report.volume_ok)
+            report.problems.push_back("volume " + format_number(report.volume) + " differs from the exact " +
+                                      format_number(*options.exact_volume) + " by " + format_number(difference) +
+                                      ", more than the allowed " + format_number(options.volume_tolerance));
+    }
+    return report;
+}
+
+}  // namespace ratbez::exporter
