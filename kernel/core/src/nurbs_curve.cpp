@@ -95,7 +95,7 @@ std::vector<Vec4> validated_homogeneous_points(int degree, const std::vector<dou
         for (std::size_t i = 0; i < weights->size(); ++i) require_weight((*weights)[i], i, "weights");
     }
     require(points.size() >= to_size(degree) + 1, "points",
-            "a degree-" + std::to_string(degree) + " curve needs at least " + std::to_string(degree + 1) +
+            "a degree-" + std::to_string(degree) + " curve needs at least " + std::to_string(to_size(degree) + 1) +
                 " control points, got " + std::to_string(points.size()));
     validate_knot_vector(degree, knots, static_cast<int>(points.size()), "knots");
     std::vector<Vec4> pw(points.size());
@@ -132,7 +132,7 @@ NurbsCurve NurbsCurve::from_homogeneous(int degree, std::vector<double> knots, s
         }
     }
     require(homogeneous_points.size() >= to_size(degree) + 1, "homogeneous_points",
-            "a degree-" + std::to_string(degree) + " curve needs at least " + std::to_string(degree + 1) +
+            "a degree-" + std::to_string(degree) + " curve needs at least " + std::to_string(to_size(degree) + 1) +
                 " control points, got " + std::to_string(homogeneous_points.size()));
     validate_knot_vector(degree, knots, static_cast<int>(homogeneous_points.size()), "knots");
     return NurbsCurve(degree, std::move(knots), std::move(homogeneous_points), rational, 0);
@@ -197,9 +197,15 @@ std::vector<Vec3> NurbsCurve::derivatives(double u, int order) const {
     if (!rational_) {
         // w = 1 identically: C^(k) = A^(k) with no quotient to form.
         for (std::size_t k = 0; k < result.size(); ++k) result[k] = weighted_part(ckw[k]);
-        return result;
+    } else {
+        detail::rational_curve_derivatives(ckw, result);  // A4.2
     }
-    detail::rational_curve_derivatives(ckw, result);  // A4.2
+    // Finite control points and knots can still give derivatives past the double range (the k-th one
+    // scales like 1 / (knot span)^k: a span of 1e-300 overflows the second): an Error, not inf or NaN.
+    for (std::size_t k = 0; k < result.size(); ++k)
+        if (!is_finite(result[k]))
+            throw Error("u: the derivative of order " + std::to_string(k) + " at u = " + number(u) +
+                        " is not a finite number (a knot span or weight ratio too extreme for double precision)");
     return result;
 }
 

@@ -17,6 +17,7 @@
 
 
 #include "geometry_internal.hpp"
+#include "ratbez/error.hpp"
 #include "surface_evaluator.hpp"
 
 namespace ratbez {
@@ -121,9 +122,15 @@ double surface_area(const Solid& solid) {
     const double tolerance = kRelativeQuadratureTolerance * size * size / static_cast<double>(solid.faces().size());
     double area = 0;
     for (const Face& face : solid.faces()) area += face_area(face, tolerance, 12, 6);
+    require(std::isfinite(area), "solid", "its area is not a finite double (the solid is too large to measure)");
     return area;
 }
 
-double enclosed_volume(const Solid& solid) { return detail::signed_volume(solid.faces(), false); }
+double enclosed_volume(const Solid& solid) {
+    const double volume = detail::signed_volume(solid.faces(), false);
+    // A solid of size 1e150 has a volume past the double range: say so rather than return inf.
+    require(std::isfinite(volume), "solid", "its volume is not a finite double (the solid is too large to measure)");
+    return volume;
+}
 
 }  // namespace ratbez

@@ -972,15 +972,22 @@ private:
             for (std::size_t k = 0; k < e.params.size(); ++k) list.emplace_back(m.to_face(e.params[k]), e.ids[k]);
             std::sort(list.begin(), list.end());
         }
-        auto side_id = [&](Side side, double p) -> std::pair<bool, Id> {
-            const SideMap& m = plan.sides[static_cast<std::size_t>(index(side))];
-            if (m.degenerate) return {true, samples_of(m.edge).ids[0]};
+        // The sample a grid line lands on: the nearest one (the samples are the union of the grid lines of
+        // both faces, up to the rounding of the parameter maps). Cells take their corners AND their extra
+        // samples by this index, so every sample of the edge is used exactly once along the side, however
+        // close two samples are (two faces' lines a rounding apart give two distinct samples; matching
+        // extras by a parameter epsilon instead dropped the one not chosen as the corner: a hole).
+        auto side_index = [&](Side side, double p) -> std::size_t {
             const auto& list = side_samples[static_cast<std::size_t>(index(side))];
             auto it = std::lower_bound(list.begin(), list.end(), std::make_pair(p, Id{0}),
                                        [](const auto& a, const auto& b) { return a.first < b.first; });
-            // The grid line is one of the samples (union), up to the rounding of the parameter maps.
             if (it == list.end() || (it != list.begin() && std::abs(std::prev(it)->first - p) < std::abs(it->first - p))) --it;
-            return {false, it->second};
+            return static_cast<std::size_t>(it - list.begin());
+        };
+        auto side_id = [&](Side side, double p) -> std::pair<bool, Id> {
+            const SideMap& m = plan.sides[static_cast<std::size_t>(index(side))];
+            if (m.degenerate) return {true, samples_of(m.edge).ids[0]};
+            return {false, side_samples[static_cast<std::size_t>(index(side))][side_index(side, p)].second};
         };
 
         std::vector<Id> ids(nu * nv);
@@ -1003,14 +1010,14 @@ private:
             const Id id = ids[i * nv + j];
             return CellVertex{g.u[i], g.v[j], assembler_.point(id), id};
         };
-        // Extra samples strictly inside (p0, p1) on a side, ascending.
+        // Extra samples on a side strictly between the samples of the grid lines p0 < p1, ascending.
         auto extras = [&](Side side, double p0, double p1, double fixed, std::vector<CellVertex>& chain) {
             const SideMap& m = plan.sides[static_cast<std::size_t>(index(side))];
             if (m.degenerate) return;
-            const double eps = 1e-9 * (m.p1 - m.p0);
-            for (const auto& [p, id] : side_samples[static_cast<std::size_t>(index(side))]) {
-                if (p <= p0 + eps || p >= p1 - eps) continue;
-                const bool along_u = runs_along_u(side);
+            const auto& list = side_samples[static_cast<std::size_t>(index(side))];
+            const bool along_u = runs_along_u(side);
+            for (std::size_t k = side_index(side, p0) + 1, end = side_index(side, p1); k < end; ++k) {
+                const auto& [p, id] = list[k];
                 chain.push_back(CellVertex{along_u ? p : fixed, along_u ? fixed : p, assembler_.point(id), id});
             }
         };

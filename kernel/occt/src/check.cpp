@@ -201,7 +201,9 @@ std::optional<double> closed_form_volume(const AnalyticShape& shape) {
 }
 
 void validate(const CheckOptions& options) {
-    require(options.grid >= 2, "options.grid", "must be at least 2");
+    // grid^2 evaluations per face: an absurd grid would run for hours, so it is an Error instead.
+    require(options.grid >= 2 && options.grid <= 2000, "options.grid",
+            "must be from 2 to 2000, got " + std::to_string(options.grid));
     require(std::isfinite(options.deviation_limit) && options.deviation_limit > 0, "options.deviation_limit",
             "must be a finite number greater than 0");
     require(std::isfinite(options.volume_limit) && options.volume_limit > 0, "options.volume_limit",

@@ -1,0 +1,587 @@
+// The `ratbez` command: JSON shape spec in, files and reports out.
+//
+//   ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
+//   ratbez check SPEC.json [--json]
+//   ratbez info SPEC.json [--json]
+//   ratbez demo [DIR] [--examples DIR] [--no-render]
+//
+// Exit codes: 0 success; 1 a check failed (or an internal error); 2 bad input (spec, arguments, paths).
+// Every error is ONE line on stderr that names the field or argument at fault.
+//
+// This file includes neither OCCT nor CGAL headers: it reaches both through their OCCT-free and
+// CGAL-free headers (ratbez/occt/*.hpp, ratbez/export/*.hpp).
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "ratbez/deviation.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/export/export.hpp"
+#include "ratbez/occt/check.hpp"
+#include "ratbez/occt/files.hpp"
+#include "ratbez/tessellate.hpp"
+#include "spec.hpp"
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+using ratbez::spec::ShapeSpec;
+
+constexpr const char* usage_text =
+    "usage: ratbez <command> ...\n"
+    "  ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
+    "  ratbez check SPEC.json [--json]      check against OpenCASCADE; exit 1 when a check fails\n"
+    "  ratbez info SPEC.json [--json]       faces, edges, vertices, Euler characteristic, area, volume, box\n"
+    "  ratbez demo [DIR] [--examples DIR] [--no-render]\n"
+    "                                       build, export and check every example into DIR (default ratbez-demo)\n"
+    "The JSON spec is documented in examples/README.md.\n";
+
+// Bad command-line arguments: exit 2, reported as "usage error: <argument>: <reason>".
+class UsageError : public std::runtime_error {
+public:
+    UsageError(const std::string& argument, const std::string& reason) : std::runtime_error(argument + ": " + reason) {}
+};
+
+std::string one_line(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    return text;
+}
+
+std::string lowercase_extension(const std::string& path) {
+    std::string extension = fs::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+std::string format_number(double value, int digits = 10) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    return text;
+}
+
+// ---- arguments -------------------------------------------------------------------------------------
+
+struct Arguments {
+    std::vector<std::string> positional;
+    std::map<std::string, std::string> values;  // option -> value
+    std::set<std::string> flags;
+
+    std::optional<std::string> value(const std::string& option) const {
+        const auto it = values.find(option);
+        return it == values.end() ? std::nullopt : std::optional(it->second);
+    }
+    bool flag(const std::string& option) const { return flags.count(option) != 0; }
+};
+
+// Options with values accept "--name VALUE" and "--name=VALUE"; "-o" is "--output".
+Arguments parse_arguments(const std::string& command, const std::vector<std::string>& args,
+                          const std::set<std::string>& value_options, const std::set<std::string>& flag_options) {
+    Arguments parsed;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string arg = args[i];
+        if (arg == "-o") arg = "--output";
+        if (arg.size() < 2 || arg.rfind("--", 0) != 0) {
+            if (!arg.empty() && arg[0] == '-' && arg != "-")
+                throw UsageError(arg, "unknown option for '" + command + "'");
+            parsed.positional.push_back(arg);
+            continue;
+        }
+        std::string name = arg, value;
+        bool has_value = false;
+        if (const auto eq = arg.find('='); eq != std::string::npos) {
+            name = arg.substr(0, eq);
+            value = arg.substr(eq + 1);
+            has_value = true;
+        }
+        if (value_options.count(name)) {
+            if (!has_value) {
+                if (i + 1 >= args.size()) throw UsageError(name, "needs a value");
+                value = args[++i];
+            }
+            if (parsed.values.count(name)) throw UsageError(name, "given more than once");
+            parsed.values[name] = value;
+        } else if (flag_options.count(name)) {
+            if (has_value) throw UsageError(name, "takes no value");
+            parsed.flags.insert(name);
+        } else {
+            throw UsageError(name, "unknown option for '" + command + "'");
+        }
+    }
+    return parsed;
+}
+
+double parse_positive(const std::string& option, const std::string& text) {
+    double value = 0;
+    const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || result.ec != std::errc() || result.ptr != text.data() + text.size() || !std::isfinite(value) ||
+        !(value > 0))
+        throw UsageError(option, "must be a positive number, not '" + text + "'");
+    return value;
+}
+
+const std::string& single_spec(const Arguments& args, const std::string& command) {
+    if (args.positional.empty()) throw UsageError("SPEC.json", "missing (usage: ratbez " + command + " SPEC.json ...)");
+    if (args.positional.size() > 1) throw UsageError(args.positional[1], "unexpected argument for '" + command + "'");
+    return args.positional.front();
+}
+
+// ---- shared steps ----------------------------------------------------------------------------------
+
+ratbez::occt::AnalyticShape analytic_shape(const ratbez::spec::Analytic& a) {
+    using Kind = ratbez::occt::AnalyticShape::Kind;
+    ratbez::occt::AnalyticShape shape;
+    switch (a.kind) {
+    case ratbez::spec::Analytic::Kind::none: shape.kind = Kind::none; break;
+    case ratbez::spec::Analytic::Kind::cylinder: shape.kind = Kind::cylinder; break;
+    case ratbez::spec::Analytic::Kind::cone: shape.kind = Kind::cone; break;
+    case ratbez::spec::Analytic::Kind::sphere: shape.kind = Kind::sphere; break;
+    case ratbez::spec::Analytic::Kind::torus: shape.kind = Kind::torus; break;
+    case ratbez::spec::Analytic::Kind::revolution: shape.kind = Kind::revolution; break;
+    }
+    shape.center = a.center;
+    shape.axis = a.axis;
+    shape.radius1 = a.radius1;
+    shape.radius2 = a.radius2;
+    shape.height = a.height;
+    shape.closed_form_volume = a.closed_form_volume;
+    return shape;
+}
+
+// The mesh of a tolerance-t tessellation lies within t of the surface everywhere, so its volume differs
+// from the exact one by at most t times the area swept (either surface's area bounds it).
+ratbez::exporter::MeshCheckOptions mesh_checks_for(const ratbez::Solid& solid, const ratbez::Mesh& mesh, double tolerance) {
+    ratbez::exporter::MeshCheckOptions options;
+    const double volume = solid.volume();
+    options.exact_volume = volume;
+    options.volume_tolerance = tolerance * std::max(solid.area(), mesh.area()) * 1.001 + 1e-12 * std::abs(volume);
+    return options;
+}
+
+ratbez::Mesh tessellate_for(const ShapeSpec& spec, double tolerance, std::optional<double> angle) {
+    try {
+        return ratbez::tessellate(spec.solid, ratbez::TessellationOptions{tolerance, angle});
+    } catch (const ratbez::Error& e) {
+        const std::string message = e.what();
+        if (message.rfind("tolerance:", 0) == 0) throw UsageError("--tolerance", message.substr(11));
+        if (message.rfind("angle_deg:", 0) == 0) throw UsageError("--angle", message.substr(11));
+        throw;
+    }
+}
+
+// ---- export ----------------------------------------------------------------------------------------
+
+int command_export(const std::vector<std::string>& raw) {
+    const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module"}, {"--ascii"});
+    const std::string& spec_path = single_spec(args, "export");
+    const auto output = args.value("--output");
+    if (!output || output->empty()) throw UsageError("-o", "the output file is required (-o OUT.scad|stl|off|step|brep)");
+    const std::string extension = lowercase_extension(*output);
+    const bool mesh_format = extension == ".scad" || extension == ".stl" || extension == ".off";
+    const bool brep_format = extension == ".step" || extension == ".stp" || extension == ".brep";
+    if (!mesh_format && !brep_format)
+        throw UsageError("-o", "unknown extension '" + extension + "' in '" + *output +
+                                   "' (expected .scad, .stl, .off, .step or .brep)");
+    // Options that cannot apply are errors rather than silently ignored (they are usually typos).
+    if (args.value("--module") && extension != ".scad") throw UsageError("--module", "applies only to .scad output");
+    if (args.flag("--ascii") && extension != ".stl") throw UsageError("--ascii", "applies only to .stl output");
+    if (brep_format && args.value("--tolerance")) throw UsageError("--tolerance", "does not apply to exact " + extension + " output");
+    if (brep_format && args.value("--angle")) throw UsageError("--angle", "does not apply to exact " + extension + " output");
+    std::optional<double> tolerance, angle;
+    if (auto t = args.value("--tolerance")) tolerance = parse_positive("--tolerance", *t);
+    if (auto a = args.value("--angle")) {
+        angle = parse_positive("--angle", *a);
+        if (*angle >= 180) throw UsageError("--angle", "must be less than 180 degrees");
+    }
+    std::string module_name;
+    if (auto m = args.value("--module")) {
+        module_name = *m;
+        if (!ratbez::spec::is_valid_name(module_name))
+            throw UsageError("--module", "'" + module_name + "' is not an OpenSCAD identifier (letters, digits, _)");
+    }
+
+    const ShapeSpec spec = ratbez::spec::load_spec(spec_path);
+
+    if (brep_format) {
+        if (extension == ".brep")
+            ratbez::occt::write_brep(spec.solid, *output);
+        else
+            ratbez::occt::write_step(spec.solid, *output);
+        std::cout << "wrote " << *output << " (exact B-rep, " << spec.solid.faces().size() << " faces)\n";
+        return 0;
+    }
+
+    const double used_tolerance = tolerance ? *tolerance : spec.tolerance ? *spec.tolerance : ratbez::default_tolerance(spec.solid);
+    if (!angle) angle = spec.tessellation_angle;
+    const ratbez::Mesh mesh = tessellate_for(spec, used_tolerance, angle);
+    ratbez::exporter::ExportOptions options;
+    options.openscad.module_name = module_name;
+    options.binary_stl = !args.flag("--ascii");
+    options.checks = mesh_checks_for(spec.solid, mesh, used_tolerance);
+    try {
+        ratbez::exporter::export_mesh(mesh, *output, options);
+    } catch (const ratbez::Error& e) {
+        // A mesh refused by the CGAL checks is our failure, not the user's input.
+        if (std::string(e.what()).rfind("mesh:", 0) == 0) {
+            std::cerr << "error: " << one_line(e.what()) << '\n';
+            return 1;
+        }
+        throw;
+    }
+    std::cout << "wrote " << *output << " (" << mesh.triangles.size() << " triangles, " << mesh.vertices.size()
+              << " vertices, tolerance " << format_number(used_tolerance, 6) << ")\n";
+    return 0;
+}
+
+// ---- check -----------------------------------------------------------------------------------------
+
+nlohmann::json report_json(const ratbez::occt::CheckReport& r) {
+    nlohmann::json j;
+    j["valid"] = r.valid;
+    j["closed"] = r.closed;
+    j["max_deviation"] = r.max_deviation;
+    j["max_analytic_deviation"] = r.max_analytic_deviation ? nlohmann::json(*r.max_analytic_deviation) : nlohmann::json();
+    j["volume"] = r.volume;
+    j["occt_volume"] = r.occt_volume;
+    j["closed_form_volume"] = r.closed_form_volume ? nlohmann::json(*r.closed_form_volume) : nlohmann::json();
+    j["area"] = r.area;
+    j["occt_area"] = r.occt_area;
+    j["size"] = r.size;
+    j["passed"] = r.passed;
+    j["failures"] = r.failures;
+    return j;
+}
+
+int command_check(const std::vector<std::string>& raw) {
+    const Arguments args = parse_arguments("check", raw, {}, {"--json"});
+    const ShapeSpec spec = ratbez::spec::load_spec(single_spec(args, "check"));
+    ratbez::occt::CheckOptions options;
+    options.analytic = analytic_shape(spec.analytic);
+    const ratbez::occt::CheckReport report = ratbez::occt::check(spec.solid, options);
+    if (args.flag("--json")) {
+        nlohmann::json j = report_json(report);
+        j["name"] = spec.name;
+        std::cout << j.dump(2) << '\n';
+    } else {
+        std::cout << spec.name << " (" << spec.type << ")\n" << ratbez::occt::format_report(report);
+        if (!report.passed) std::cout << "FAILED\n";
+    }
+    return report.passed ? 0 : 1;
+}
+
+// ---- info ------------------------------------------------------------------------------------------
+
+int command_info(const std::vector<std::string>& raw) {
+    const Arguments args = parse_arguments("info", raw, {}, {"--json"});
+    const ShapeSpec spec = ratbez::spec::load_spec(single_spec(args, "info"));
+    const ratbez::Solid& solid = spec.solid;
+    const auto edges = solid.edges();
+    const auto degenerate = static_cast<std::size_t>(std::count_if(edges.begin(), edges.end(), [](const auto& e) { return e->degenerate; }));
+    const std::size_t vertices = solid.vertices().size();
+    const int euler = solid.euler_characteristic();
+    const double area = solid.area(), volume = solid.volume();
+    const auto box = solid.bounding_box();
+    if (args.flag("--json")) {
+        nlohmann::json j;
+        j["name"] = spec.name;
+        j["type"] = spec.type;
+        j["faces"] = solid.faces().size();
+        j["edges"] = edges.size() - degenerate;
+        j["degenerate_edges"] = degenerate;
+        j["vertices"] = vertices;
+        j["euler_characteristic"] = euler;
+        j["area"] = area;
+        j["volume"] = volume;
+        j["bounding_box"] = {{"min", {box.min.x, box.min.y, box.min.z}}, {"max", {box.max.x, box.max.y, box.max.z}}};
+        std::cout << j.dump(2) << '\n';
+        return 0;
+    }
+    const auto point = [](const ratbez::Vec3& p) {
+        return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
+    };
+    std::cout << "name:                 " << spec.name << '\n'
+              << "type:                 " << spec.type << '\n'
+              << "faces:                " << solid.faces().size() << '\n'
+              << "edges:                " << edges.size() - degenerate << " (+" << degenerate << " degenerate)\n"
+              << "vertices:             " << vertices << '\n'
+              << "euler characteristic: " << euler << '\n'
+              << "area:                 " << format_number(area, 15) << '\n'
+              << "volume:               " << format_number(volume, 15) << '\n'
+              << "bounding box:         " << point(box.min) << " .. " << point(box.max) << '\n';
+    return 0;
+}
+
+// ---- demo ------------------------------------------------------------------------------------------
+
+struct ProcessResult {
+    int exit_code = -1;
+    std::string output;  // stdout and stderr together
+};
+
+// Runs a program found on PATH without a shell (no quoting pitfalls), collecting everything it prints.
+ProcessResult run_process(const std::vector<std::string>& argv) {
+    ProcessResult result;
+    int pipe_ends[2];
+    if (pipe(pipe_ends) != 0) throw std::runtime_error(std::string("pipe failed: ") + std::strerror(errno));
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addclose(&actions, pipe_ends[0]);
+    posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDOUT_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDERR_FILENO);
+    posix_spawn_file_actions_addclose(&actions, pipe_ends[1]);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    std::vector<char*> c_argv;
+    for (const auto& a : argv) c_argv.push_back(const_cast<char*>(a.c_str()));
+    c_argv.push_back(nullptr);
+    pid_t pid = 0;
+    const int spawn_error = posix_spawnp(&pid, c_argv[0], &actions, nullptr, c_argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    close(pipe_ends[1]);
+    if (spawn_error != 0) {
+        close(pipe_ends[0]);
+        result.exit_code = 127;
+        result.output = argv[0] + ": " + std::strerror(spawn_error);
+        return result;
+    }
+    char buffer[4096];
+    for (;;) {
+        const ssize_t n = read(pipe_ends[0], buffer, sizeof buffer);
+        if (n > 0) {
+            result.output.append(buffer, static_cast<std::size_t>(n));
+        } else if (n < 0 && errno == EINTR) {
+            continue;
+        } else {
+            break;
+        }
+    }
+    close(pipe_ends[0]);
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    return result;
+}
+
+bool on_path(const std::string& program) {
+    const char* path = std::getenv("PATH");
+    if (!path) return false;
+    std::stringstream dirs(path);
+    for (std::string dir; std::getline(dirs, dir, ':');)
+        if (!dir.empty() && access((fs::path(dir) / program).c_str(), X_OK) == 0) return true;
+    return false;
+}
+
+// The first line of OpenSCAD's output that reports a problem. OpenSCAD exits 0 even when CGAL drops
+// the mesh ("ERROR: The given mesh is not closed!"), so the output is what tells.
+std::optional<std::string> openscad_problem(const std::string& output) {
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);)
+        if (line.find("WARNING:") != std::string::npos || line.find("ERROR:") != std::string::npos) return line;
+    return std::nullopt;
+}
+
+struct DemoRow {
+    std::string shape;
+    double tolerance = 0;
+    std::size_t triangles = 0;
+    double deviation = 0;
+    double volume_exact = 0, volume_mesh = 0;
+    std::string cgal = "-", occt = "-", openscad = "-";
+    std::vector<std::string> failures;
+};
+
+DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render) {
+    DemoRow row;
+    row.shape = spec_path.stem().string();
+    try {
+        const ShapeSpec spec = ratbez::spec::load_spec(spec_path.string());
+        row.shape = spec.name;
+        row.tolerance = spec.tolerance ? *spec.tolerance : ratbez::default_tolerance(spec.solid);
+        const ratbez::Mesh mesh = ratbez::tessellate(spec.solid, ratbez::TessellationOptions{row.tolerance, spec.tessellation_angle});
+        row.triangles = mesh.triangles.size();
+        row.volume_exact = spec.solid.volume();
+        row.volume_mesh = mesh.volume();
+
+        const auto mesh_report = ratbez::exporter::check_mesh(mesh, mesh_checks_for(spec.solid, mesh, row.tolerance));
+        row.cgal = mesh_report.ok() ? "ok" : "FAIL";
+        for (const auto& p : mesh_report.problems) row.failures.push_back("CGAL: " + p);
+
+        row.deviation = ratbez::max_deviation(spec.solid, mesh);
+        if (!(row.deviation <= row.tolerance))
+            row.failures.push_back("deviation " + format_number(row.deviation, 4) + " exceeds the tolerance " +
+                                   format_number(row.tolerance, 4));
+
+        const fs::path scad = out_dir / (spec.name + ".scad");
+        {
+            std::ofstream out(scad, std::ios::binary);
+            if (!out) throw ratbez::Error("path: cannot open '" + scad.string() + "' for writing");
+            ratbez::exporter::write_openscad(mesh, out);
+            out.close();
+            if (!out) throw ratbez::Error("path: writing '" + scad.string() + "' failed");
+        }
+        ratbez::occt::write_step(spec.solid, (out_dir / (spec.name + ".step")).string());
+
+        ratbez::occt::CheckOptions check_options;
+        check_options.analytic = analytic_shape(spec.analytic);
+        const auto occt_report = ratbez::occt::check(spec.solid, check_options);
+        row.occt = occt_report.passed ? "ok" : "FAIL";
+        for (const auto& f : occt_report.failures) row.failures.push_back("OCCT: " + f);
+
+        if (render) {
+            // Inside a boolean operation OpenSCAD converts the polyhedron to a CGAL Nef polyhedron and
+            // complains about any open or non-manifold mesh; a bare polyhedron would not be checked.
+            const auto box = spec.solid.bounding_box();
+            const double far = box.diagonal();
+            const fs::path wrapper = out_dir / (spec.name + "_check.scad");
+            {
+                std::ofstream out(wrapper);
+                out << "// Renders " << spec.name << ".scad through CGAL (a boolean operation checks the mesh).\n"
+                    << "difference() {\n  union() { include <" << spec.name << ".scad> }\n  translate(["
+                    << format_number(box.max.x + far, 17) << ", " << format_number(box.max.y + far, 17) << ", "
+                    << format_number(box.max.z + far, 17) << "]) cube(" << format_number(far * 1e-3, 17) << ");\n}\n";
+                if (!out) throw ratbez::Error("path: cannot write '" + wrapper.string() + "'");
+            }
+            const fs::path png = out_dir / (spec.name + ".png");
+            std::error_code ignored;
+            fs::remove(png, ignored);
+            std::vector<std::string> command = {"timeout", "600"};
+            const char* display = std::getenv("DISPLAY");
+            if (!display || !*display) command.insert(command.end(), {"xvfb-run", "-a", "-s", "-screen 0 1024x768x24"});
+            command.insert(command.end(), {"openscad", "--render", "--autocenter", "--viewall", "--imgsize=640,480",
+                                           "-o", png.string(), wrapper.string()});
+            const ProcessResult result = run_process(command);
+            if (result.exit_code != 0) {
+                row.openscad = "FAIL";
+                row.failures.push_back("openscad exited with " + std::to_string(result.exit_code) + ": " +
+                                       one_line(result.output.substr(0, 300)));
+            } else if (const auto problem = openscad_problem(result.output)) {
+                row.openscad = "FAIL";
+                row.failures.push_back("openscad: " + *problem);
+            } else if (!fs::exists(png) || fs::file_size(png) == 0) {
+                row.openscad = "FAIL";
+                row.failures.push_back("openscad wrote no " + png.string());
+            } else {
+                row.openscad = "ok";
+            }
+        } else {
+            row.openscad = "skipped";
+        }
+    } catch (const std::exception& e) {
+        row.failures.push_back(one_line(e.what()));
+    }
+    return row;
+}
+
+int command_demo(const std::vector<std::string>& raw) {
+    const Arguments args = parse_arguments("demo", raw, {"--examples"}, {"--no-render"});
+    if (args.positional.size() > 1) throw UsageError(args.positional[1], "unexpected argument for 'demo'");
+    const fs::path out_dir = args.positional.empty() ? fs::path("ratbez-demo") : fs::path(args.positional.front());
+#ifdef RATBEZ_EXAMPLES_DIR
+    fs::path examples = RATBEZ_EXAMPLES_DIR;
+#else
+    fs::path examples = "examples";
+#endif
+    if (auto e = args.value("--examples")) examples = *e;
+    std::error_code error;
+    if (!fs::is_directory(examples, error)) throw UsageError("--examples", "'" + examples.string() + "' is not a directory");
+    std::vector<fs::path> specs;
+    for (const auto& entry : fs::directory_iterator(examples, error))
+        if (entry.is_regular_file() && entry.path().extension() == ".json") specs.push_back(entry.path());
+    std::sort(specs.begin(), specs.end());
+    if (specs.empty()) throw UsageError("--examples", "no *.json specs in '" + examples.string() + "'");
+    fs::create_directories(out_dir, error);
+    if (error || !fs::is_directory(out_dir)) throw UsageError("DIR", "cannot create '" + out_dir.string() + "'");
+
+    const bool render = !args.flag("--no-render");
+    if (render && !on_path("openscad")) throw UsageError("--no-render", "openscad is not on PATH; install it or pass --no-render");
+
+    std::vector<DemoRow> rows;
+    for (const auto& spec : specs) {
+        std::cerr << "building " << spec.filename().string() << " ...\n";
+        rows.push_back(demo_one(spec, out_dir, render));
+    }
+
+    const char* header_format = "%-22s %10s %9s %11s %14s %14s %5s %5s %8s\n";
+    std::printf(header_format, "shape", "tolerance", "triangles", "max dev", "volume exact", "volume mesh", "CGAL",
+                "OCCT", "openscad");
+    bool all_ok = true;
+    for (const auto& r : rows) {
+        std::printf("%-22s %10.3g %9zu %11.3e %14.8g %14.8g %5s %5s %8s\n", r.shape.c_str(), r.tolerance, r.triangles,
+                    r.deviation, r.volume_exact, r.volume_mesh, r.cgal.c_str(), r.occt.c_str(), r.openscad.c_str());
+        all_ok = all_ok && r.failures.empty();
+    }
+    for (const auto& r : rows)
+        for (const auto& f : r.failures) std::printf("FAIL %s: %s\n", r.shape.c_str(), f.c_str());
+    std::printf("%zu shapes, %s; files in %s\n", rows.size(), all_ok ? "all passed" : "SOME FAILED",
+                out_dir.string().c_str());
+    return all_ok ? 0 : 1;
+}
+
+int run(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty()) {
+        std::cerr << "usage error: command: missing (export, check, info or demo; see ratbez --help)\n";
+        return 2;
+    }
+    const std::string command = args.front();
+    args.erase(args.begin());
+    if (command == "--help" || command == "-h" || command == "help") {
+        std::cout << usage_text;
+        return 0;
+    }
+    if (command == "export") return command_export(args);
+    if (command == "check") return command_check(args);
+    if (command == "info") return command_info(args);
+    if (command == "demo") return command_demo(args);
+    throw UsageError("command", "unknown command '" + command + "' (expected export, check, info or demo)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const ratbez::spec::SpecError& e) {
+        std::cerr << "spec error: " << one_line(e.what()) << '\n';
+        return 2;
+    } catch (const UsageError& e) {
+        std::cerr << "usage error: " << one_line(e.what()) << '\n';
+        return 2;
+    } catch (const ratbez::Error& e) {
+        std::cerr << "error: " << one_line(e.what()) << '\n';
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "error: out of memory\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "internal error: " << one_line(e.what()) << '\n';
+        return 1;
+    } catch (...) {
+        std::cerr << "internal error: unknown exception\n";
+        return 1;
+    }
+}

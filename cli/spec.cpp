@@ -1,0 +1,412 @@
+#include "spec.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <map>
+#include <numbers>
+#include <set>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "ratbez/bezier_curve.hpp"
+#include "ratbez/curves.hpp"
+#include "ratbez/extrude.hpp"
+#include "ratbez/nurbs_curve.hpp"
+#include "ratbez/primitives.hpp"
+#include "ratbez/profile.hpp"
+#include "ratbez/revolve.hpp"
+
+namespace ratbez::spec {
+
+SpecError::SpecError(std::string path, std::string reason)
+    : Error(path + ": " + reason), path_(std::move(path)), reason_(std::move(reason)) {}
+
+bool is_valid_name(std::string_view name) {
+    if (name.empty() || name.size() > 64) return false;
+    const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+    if (!letter(name.front())) return false;
+    for (char c : name)
+        if (!letter(c) && !(c >= '0' && c <= '9')) return false;
+    return true;
+}
+
+namespace {
+
+using nlohmann::json;
+
+std::string join(std::initializer_list<const char*> words) {
+    std::string text;
+    for (const char* w : words) text += (text.empty() ? "" : ", ") + std::string(w);
+    return text;
+}
+
+// A JSON object being read: rejects unknown keys up front (so a typo is reported as the typo, not as
+// the required field it was meant to be), then hands out fields with their paths.
+class ObjectReader {
+public:
+    ObjectReader(const json& value, std::string path, std::initializer_list<const char*> allowed)
+        : value_(value), path_(std::move(path)) {
+        if (!value.is_object()) throw SpecError(path_.empty() ? "document" : path_, "must be a JSON object");
+        for (const auto& item : value.items()) {
+            bool known = false;
+            for (const char* key : allowed) known = known || item.key() == key;
+            if (!known) throw SpecError(child(item.key()), "unknown field (expected one of: " + join(allowed) + ")");
+        }
+    }
+
+    // The document's own fields have bare names ("tolerance"), nested ones dotted paths ("shape.radius").
+    std::string child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+    const std::string& path() const { return path_; }
+
+    const json* optional(const char* key) const {
+        const auto it = value_.find(key);
+        return it == value_.end() ? nullptr : &*it;
+    }
+    const json& required(const char* key) const {
+        const json* field = optional(key);
+        if (!field) throw SpecError(child(key), "is required");
+        return *field;
+    }
+
+private:
+    const json& value_;
+    std::string path_;
+};
+
+std::string index_path(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+double number(const json& value, const std::string& path) {
+    if (!value.is_number()) throw SpecError(path, "must be a number");
+    const double x = value.get<double>();
+    if (!std::isfinite(x)) throw SpecError(path, "must be a finite number");
+    return x;
+}
+
+double positive(const json& value, const std::string& path) {
+    if (!value.is_number()) throw SpecError(path, "must be a positive number");
+    const double x = number(value, path);
+    if (!(x > 0)) throw SpecError(path, "must be a positive number");
+    return x;
+}
+
+double non_negative(const json& value, const std::string& path) {
+    if (!value.is_number()) throw SpecError(path, "must be a number >= 0");
+    const double x = number(value, path);
+    if (!(x >= 0)) throw SpecError(path, "must be a number >= 0");
+    return x;
+}
+
+std::string text(const json& value, const std::string& path) {
+    if (!value.is_string()) throw SpecError(path, "must be a string");
+    return value.get<std::string>();
+}
+
+// [x, y] or [x, y, z]; 2D means z = 0.
+Vec3 point(const json& value, const std::string& path) {
+    if (!value.is_array() || value.size() < 2 || value.size() > 3 ||
+        !std::all_of(value.begin(), value.end(), [](const json& x) { return x.is_number(); }))
+        throw SpecError(path, "must be a list of 2 or 3 numbers");
+    Vec3 p{number(value[0], path), number(value[1], path), value.size() == 3 ? number(value[2], path) : 0.0};
+    return p;
+}
+
+Vec3 direction(const json& value, const std::string& path) {
+    const Vec3 v = point(value, path);
+    if (!(norm(v) > 0)) throw SpecError(path, "must be a non-zero vector");
+    return v;
+}
+
+Vec3 optional_point(const ObjectReader& object, const char* key, Vec3 fallback) {
+    const json* value = object.optional(key);
+    return value ? point(*value, object.child(key)) : fallback;
+}
+
+Vec3 optional_direction(const ObjectReader& object, const char* key, Vec3 fallback) {
+    const json* value = object.optional(key);
+    return value ? direction(*value, object.child(key)) : fallback;
+}
+
+std::vector<Vec3> point_list(const json& value, const std::string& path, std::size_t minimum) {
+    if (!value.is_array()) throw SpecError(path, "must be a list of points");
+    if (value.size() < minimum) throw SpecError(path, "must have at least " + std::to_string(minimum) + " points");
+    std::vector<Vec3> points;
+    points.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) points.push_back(point(value[i], index_path(path, i)));
+    return points;
+}
+
+std::vector<double> number_list(const json& value, const std::string& path) {
+    if (!value.is_array()) throw SpecError(path, "must be a list of numbers");
+    std::vector<double> numbers;
+    numbers.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) numbers.push_back(number(value[i], index_path(path, i)));
+    return numbers;
+}
+
+std::vector<double> weight_list(const json& value, const std::string& path, std::size_t count) {
+    std::vector<double> weights = number_list(value, path);
+    if (weights.size() != count)
+        throw SpecError(path, "must have one weight per point (" + std::to_string(count) + "), not " +
+                                  std::to_string(weights.size()));
+    for (std::size_t i = 0; i < weights.size(); ++i)
+        if (!(weights[i] > 0)) throw SpecError(index_path(path, i), "must be a positive number");
+    return weights;
+}
+
+// The kernel names its arguments ("radius: must be greater than 0"); report that under the JSON path of
+// the field the argument came from, or under the object's path when it is no field of its own.
+[[noreturn]] void rethrow_kernel_error(const Error& error, const std::string& path,
+                                       const std::map<std::string, std::string>& argument_to_field) {
+    const std::string message = error.what();
+    const auto colon = message.find(": ");
+    if (colon != std::string::npos) {
+        const auto it = argument_to_field.find(message.substr(0, colon));
+        if (it != argument_to_field.end()) throw SpecError(path + "." + it->second, message.substr(colon + 2));
+    }
+    throw SpecError(path, message);
+}
+
+template <class Build>
+auto build(const std::string& path, const std::map<std::string, std::string>& argument_to_field, Build&& make) {
+    try {
+        return make();
+    } catch (const SpecError&) {
+        throw;
+    } catch (const Error& e) {
+        rethrow_kernel_error(e, path, argument_to_field);
+    }
+}
+
+NurbsCurve parse_curve(const json& value, const std::string& path) {
+    if (!value.is_object()) throw SpecError(path, "must be a JSON object (a curve)");
+    const auto type_it = value.find("type");
+    if (type_it == value.end()) throw SpecError(path + ".type", "is required");
+    const std::string type = text(*type_it, path + ".type");
+
+    if (type == "bezier") {
+        const ObjectReader curve(value, path, {"type", "points", "weights"});
+        std::vector<Vec3> points = point_list(curve.required("points"), curve.child("points"), 2);
+        const json* weights = curve.optional("weights");
+        return build(path, {{"points", "points"}, {"weights", "weights"}}, [&] {
+            if (!weights) return NurbsCurve::from_bezier(BezierCurve(points));
+            return NurbsCurve::from_bezier(BezierCurve(points, weight_list(*weights, curve.child("weights"), points.size())));
+        });
+    }
+    if (type == "nurbs") {
+        const ObjectReader curve(value, path, {"type", "degree", "knots", "points", "weights"});
+        const json& degree_value = curve.required("degree");
+        if (!degree_value.is_number_integer() || degree_value.get<long long>() < 1 || degree_value.get<long long>() > 30)
+            throw SpecError(curve.child("degree"), "must be an integer from 1 to 30");
+        const int degree = static_cast<int>(degree_value.get<long long>());
+        std::vector<double> knots = number_list(curve.required("knots"), curve.child("knots"));
+        std::vector<Vec3> points = point_list(curve.required("points"), curve.child("points"), 2);
+        const json* weights = curve.optional("weights");
+        if (knots.size() != points.size() + static_cast<std::size_t>(degree) + 1)
+            throw SpecError(curve.child("knots"), "must have len(points) + degree + 1 = " +
+                                                      std::to_string(points.size() + static_cast<std::size_t>(degree) + 1) +
+                                                      " values, not " + std::to_string(knots.size()));
+        return build(path, {{"degree", "degree"}, {"knots", "knots"}, {"points", "points"}, {"weights", "weights"}}, [&] {
+            if (!weights) return NurbsCurve(degree, knots, points);
+            return NurbsCurve(degree, knots, points, weight_list(*weights, curve.child("weights"), points.size()));
+        });
+    }
+    if (type == "line") {
+        const ObjectReader curve(value, path, {"type", "from", "to"});
+        const Vec3 from = point(curve.required("from"), curve.child("from"));
+        const Vec3 to = point(curve.required("to"), curve.child("to"));
+        return build(path, {{"start", "from"}, {"end", "to"}}, [&] { return line_segment(from, to); });
+    }
+    if (type == "arc") {
+        const ObjectReader curve(value, path, {"type", "radius", "start_deg", "end_deg", "center", "normal"});
+        const double radius = positive(curve.required("radius"), curve.child("radius"));
+        const double start = number(curve.required("start_deg"), curve.child("start_deg"));
+        const double end = number(curve.required("end_deg"), curve.child("end_deg"));
+        const Vec3 center = optional_point(curve, "center", {});
+        const Vec3 normal = optional_direction(curve, "normal", {0, 0, 1});
+        return build(path,
+                     {{"radius", "radius"}, {"start_deg", "start_deg"}, {"end_deg", "end_deg"}, {"center", "center"},
+                      {"normal", "normal"}},
+                     [&] { return arc(radius, start, end, center, normal); });
+    }
+    if (type == "circle") {
+        const ObjectReader curve(value, path, {"type", "radius", "center", "normal"});
+        const double radius = positive(curve.required("radius"), curve.child("radius"));
+        const Vec3 center = optional_point(curve, "center", {});
+        const Vec3 normal = optional_direction(curve, "normal", {0, 0, 1});
+        return build(path, {{"radius", "radius"}, {"center", "center"}, {"normal", "normal"}},
+                     [&] { return circle(radius, center, normal); });
+    }
+    throw SpecError(path + ".type", "unknown curve type '" + type + "' (expected bezier, nurbs, line, arc or circle)");
+}
+
+Profile parse_profile(const json& value, const std::string& path) {
+    if (!value.is_array()) throw SpecError(path, "must be a list of curves");
+    if (value.empty()) throw SpecError(path, "must have at least one curve");
+    std::vector<NurbsCurve> pieces;
+    pieces.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) pieces.push_back(parse_curve(value[i], index_path(path, i)));
+    return build(path, {}, [&] { return Profile(std::move(pieces)); });
+}
+
+struct BuiltShape {
+    std::string type;
+    Solid solid;
+    Analytic analytic;
+};
+
+BuiltShape parse_shape(const json& value, const std::string& path) {
+    if (!value.is_object()) throw SpecError(path, "must be a JSON object");
+    const auto type_it = value.find("type");
+    if (type_it == value.end()) throw SpecError(path + ".type", "is required");
+    const std::string type = text(*type_it, path + ".type");
+    const double pi = std::numbers::pi;
+
+    if (type == "cylinder") {
+        const ObjectReader shape(value, path, {"type", "radius", "height", "center", "axis"});
+        const double radius = positive(shape.required("radius"), shape.child("radius"));
+        const double height = positive(shape.required("height"), shape.child("height"));
+        const Vec3 center = optional_point(shape, "center", {});
+        const Vec3 axis = optional_direction(shape, "axis", {0, 0, 1});
+        Solid solid = build(path, {{"radius", "radius"}, {"height", "height"}, {"center", "center"}, {"axis", "axis"}},
+                            [&] { return cylinder(radius, height, center, axis); });
+        Analytic analytic{Analytic::Kind::cylinder, center, axis, radius, radius, height, pi * radius * radius * height};
+        return {type, std::move(solid), analytic};
+    }
+    if (type == "cone") {
+        const ObjectReader shape(value, path, {"type", "radius1", "radius2", "height", "center", "axis"});
+        const double radius1 = non_negative(shape.required("radius1"), shape.child("radius1"));
+        const double radius2 = non_negative(shape.required("radius2"), shape.child("radius2"));
+        const double height = positive(shape.required("height"), shape.child("height"));
+        const Vec3 center = optional_point(shape, "center", {});
+        const Vec3 axis = optional_direction(shape, "axis", {0, 0, 1});
+        Solid solid = build(path,
+                            {{"radius1", "radius1"}, {"radius2", "radius2"}, {"height", "height"}, {"center", "center"},
+                             {"axis", "axis"}},
+                            [&] { return cone(radius1, radius2, height, center, axis); });
+        const double volume = pi * height * (radius1 * radius1 + radius1 * radius2 + radius2 * radius2) / 3.0;
+        Analytic analytic{Analytic::Kind::cone, center, axis, radius1, radius2, height, volume};
+        return {type, std::move(solid), analytic};
+    }
+    if (type == "sphere") {
+        const ObjectReader shape(value, path, {"type", "radius", "center"});
+        const double radius = positive(shape.required("radius"), shape.child("radius"));
+        const Vec3 center = optional_point(shape, "center", {});
+        Solid solid = build(path, {{"radius", "radius"}, {"center", "center"}}, [&] { return sphere(radius, center); });
+        Analytic analytic{Analytic::Kind::sphere, center, {0, 0, 1}, radius, 0, 0, 4.0 / 3.0 * pi * radius * radius * radius};
+        return {type, std::move(solid), analytic};
+    }
+    if (type == "torus") {
+        const ObjectReader shape(value, path, {"type", "major_radius", "minor_radius", "center", "axis"});
+        const double major = positive(shape.required("major_radius"), shape.child("major_radius"));
+        const double minor = positive(shape.required("minor_radius"), shape.child("minor_radius"));
+        const Vec3 center = optional_point(shape, "center", {});
+        const Vec3 axis = optional_direction(shape, "axis", {0, 0, 1});
+        Solid solid = build(path,
+                            {{"major_radius", "major_radius"}, {"minor_radius", "minor_radius"}, {"center", "center"},
+                             {"axis", "axis"}},
+                            [&] { return torus(major, minor, center, axis); });
+        Analytic analytic{Analytic::Kind::torus, center, axis, major, minor, 0, 2.0 * pi * pi * major * minor * minor};
+        return {type, std::move(solid), analytic};
+    }
+    if (type == "revolve") {
+        const ObjectReader shape(value, path, {"type", "profile", "axis_point", "axis_dir", "angle"});
+        Profile profile = parse_profile(shape.required("profile"), shape.child("profile"));
+        const Vec3 axis_point = optional_point(shape, "axis_point", {});
+        const Vec3 axis_dir = optional_direction(shape, "axis_dir", {0, 0, 1});
+        double angle = 360.0;
+        if (const json* a = shape.optional("angle")) {
+            angle = number(*a, shape.child("angle"));
+            if (!(angle > 0 && angle <= 360)) throw SpecError(shape.child("angle"), "must be in (0, 360] degrees");
+        }
+        Solid solid = build(path,
+                            {{"profile", "profile"}, {"axis_point", "axis_point"}, {"axis_dir", "axis_dir"},
+                             {"axis", "axis_dir"}, {"angle_deg", "angle"}},
+                            [&] { return revolve(profile, axis_point, axis_dir, angle); });
+        Analytic analytic{Analytic::Kind::revolution, axis_point, axis_dir, 0, 0, 0, std::nullopt};
+        return {type, std::move(solid), analytic};
+    }
+    if (type == "extrude") {
+        const ObjectReader shape(value, path, {"type", "profile", "direction", "distance"});
+        Profile profile = parse_profile(shape.required("profile"), shape.child("profile"));
+        const Vec3 dir = direction(shape.required("direction"), shape.child("direction"));
+        const double distance = positive(shape.required("distance"), shape.child("distance"));
+        Solid solid = build(path,
+                            {{"profile", "profile"}, {"direction", "direction"}, {"displacement", "direction"},
+                             {"distance", "distance"}},
+                            [&] { return extrude(profile, dir, distance); });
+        return {type, std::move(solid), Analytic{}};
+    }
+    throw SpecError(path + ".type",
+                    "unknown shape type '" + type + "' (expected cylinder, cone, sphere, torus, revolve or extrude)");
+}
+
+// nlohmann's messages start with "[json.exception.parse_error.101] "; the reader needs only the rest.
+std::string json_message(const json::exception& e) {
+    std::string message = e.what();
+    if (const auto close = message.find("] "); !message.empty() && message.front() == '[' && close != std::string::npos)
+        message.erase(0, close + 2);
+    for (char& c : message)
+        if (c == '\n' || c == '\r') c = ' ';
+    return message;
+}
+
+}  // namespace
+
+ShapeSpec parse_spec(std::string_view json_text, const std::string& fallback_name) {
+    json document;
+    try {
+        document = json::parse(json_text.begin(), json_text.end());
+    } catch (const json::exception& e) {
+        // parse_error for malformed text, out_of_range for a number that overflows a double (1e400).
+        throw SpecError("document", "not valid JSON: " + json_message(e));
+    }
+    try {
+        if (!document.is_object()) throw SpecError("document", "must be a JSON object with a \"shape\"");
+        const ObjectReader top(document, "", {"name", "description", "tolerance", "tessellation_angle", "shape"});
+        std::string name = is_valid_name(fallback_name) ? fallback_name : "shape";
+        if (const json* n = top.optional("name")) {
+            name = text(*n, "name");
+            if (!is_valid_name(name))
+                throw SpecError("name", "must be 1 to 64 letters, digits or _, not starting with a digit");
+        }
+        std::string description;
+        if (const json* d = top.optional("description")) description = text(*d, "description");
+        std::optional<double> tolerance;
+        if (const json* t = top.optional("tolerance")) tolerance = positive(*t, "tolerance");
+        std::optional<double> angle;
+        if (const json* a = top.optional("tessellation_angle")) {
+            angle = number(*a, "tessellation_angle");
+            if (!(*angle > 0 && *angle < 180)) throw SpecError("tessellation_angle", "must be in (0, 180) degrees");
+        }
+        const json* shape = top.optional("shape");
+        if (!shape) throw SpecError("shape", "is required");
+        BuiltShape built = parse_shape(*shape, "shape");
+        return ShapeSpec{std::move(name), std::move(description), std::move(built.type), tolerance, angle,
+                         std::move(built.solid), built.analytic};
+    } catch (const json::exception& e) {
+        // Unreachable for a well-typed reader; kept so that no JSON library error escapes as another type.
+        throw SpecError("document", json_message(e));
+    }
+}
+
+ShapeSpec load_spec(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SpecError(path, "cannot open the file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw SpecError(path, "cannot read the file");
+    try {
+        return parse_spec(text.str(), std::filesystem::path(path).stem().string());
+    } catch (const SpecError& e) {
+        if (e.path() == "document") throw SpecError(path, e.reason());
+        throw;
+    }
+}
+
+}  // namespace ratbez::spec

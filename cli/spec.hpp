@@ -1,0 +1,60 @@
+#pragma once
+// The JSON shape spec of the `ratbez` command (documented in examples/README.md): a document with a
+// `shape` (cylinder, cone, sphere, torus, revolve, extrude) and optional `name`, `description`,
+// `tolerance` and `tessellation_angle`. Parsing is strict: wrong types, out-of-range values, missing
+// and unknown fields (typos) all throw SpecError naming the JSON path of the field, e.g.
+// `shape.profile[1].points[0]: must be a list of 2 or 3 numbers`. Kernel validation errors raised
+// while building the solid are reported under the path of the part being built.
+//
+// A library of its own (no OCCT, no CGAL, no I/O beyond load_spec) so that a fuzzer can drive it.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "ratbez/brep.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/vec.hpp"
+
+namespace ratbez::spec {
+
+class SpecError : public Error {
+public:
+    SpecError(std::string path, std::string reason);
+    const std::string& path() const { return path_; }      // "shape.radius", "shape.profile[2].knots", ...
+    const std::string& reason() const { return reason_; }  // "must be a positive number"
+
+private:
+    std::string path_, reason_;
+};
+
+// What the spec says the solid is, for closed-form volumes and OCCT's analytic-surface comparisons.
+struct Analytic {
+    enum class Kind { none, cylinder, cone, sphere, torus, revolution } kind = Kind::none;
+    Vec3 center{}, axis{0, 0, 1};  // revolution: axis_point, axis_dir
+    double radius1 = 0, radius2 = 0, height = 0;  // as in ratbez::occt::AnalyticShape
+    std::optional<double> closed_form_volume;
+};
+
+struct ShapeSpec {
+    std::string name;                         // `name`, else the fallback (the file's stem)
+    std::string description;
+    std::string type;                         // shape.type
+    std::optional<double> tolerance;          // absolute chordal tolerance for tessellation
+    std::optional<double> tessellation_angle; // degrees
+    Solid solid;
+    Analytic analytic;
+};
+
+// Parses and builds. `fallback_name` is used when the document has no `name`; it must itself be a
+// valid name (letters, digits and _, not starting with a digit) or it is replaced by "shape".
+ShapeSpec parse_spec(std::string_view json_text, const std::string& fallback_name = "shape");
+
+// Reads the file and parses it; the name falls back to the file's stem. An unreadable file or text
+// that is not JSON throws SpecError with the file path as its path.
+ShapeSpec load_spec(const std::string& path);
+
+// True for OpenSCAD-compatible identifiers, the rule `name` must follow.
+bool is_valid_name(std::string_view name);
+
+}  // namespace ratbez::spec

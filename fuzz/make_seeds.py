@@ -1,0 +1,60 @@
+# Writes the binary seeds of fuzz_geometry and fuzz_mesh (decoded by fuzz/harness.hpp's ByteReader).
+import os, struct, sys
+root = sys.argv[1]
+def num(v):
+    # ByteReader::number: kind 5 -> 0, 6 -> 1, 1 -> int8, 0 -> raw double
+    if v == 0: return b'\x05'
+    if v == 1: return b'\x06'
+    if float(v).is_integer() and -128 <= v <= 127: return b'\x01' + struct.pack('b', int(v))
+    return b'\x00' + struct.pack('<d', v)
+def pt(x, y, z): return num(x) + num(y) + num(z)
+def weight(w):  # 0.25 + (k % 16) / 4
+    return bytes([int(round((w - 0.25) * 4)) % 16 + 16])
+def write(target, name, data):
+    d = os.path.join(root, target); os.makedirs(d, exist_ok=True)
+    open(os.path.join(d, name), 'wb').write(data)
+
+# op 0: Bezier curve, 3 points, rational, weights count = count; 2 queries
+write('fuzz_geometry', 'bezier_curve_rational', b'\x00' + b'\x02' + pt(0,0,0) + pt(1,2,0) + pt(3,0,1)
+      + b'\x01' + b'\x01' + weight(1) + weight(0.5) + weight(1) + b'\x01' + b'\x01\x80' + b'\x02' + b'\x00' + num(0.5) + b'\x03')
+# op 1: Bezier surface 2x3 polynomial
+net = b''.join(pt(i, j, (i * j) % 3) for i in range(2) for j in range(3))
+write('fuzz_geometry', 'bezier_surface', b'\x01' + b'\x01' + b'\x02' + net + b'\x00' + b'\x00' + b'\x01\x40\x01\xc0\x02\x01\x01')
+# op 2: NURBS curve degree 2, 4 points, knots clamped uniform steps of 1
+knots = b'\x01' + bytes([1]) * 8
+write('fuzz_geometry', 'nurbs_curve', b'\x02' + b'\x02' + b'\x03' + b'\x01' + knots + pt(0,0,0) + pt(1,1,0) + pt(2,-1,0) + pt(3,0,0)
+      + b'\x01' + weight(1) + weight(2) + weight(0.5) + weight(1) + b'\x02' + b'\x01\x40\x03\x02\x01\x90\x01')
+# op 3: NURBS surface degree (2,1), 3x2 points
+write('fuzz_geometry', 'nurbs_surface', b'\x03' + b'\x02' + b'\x01' + b'\x02' + b'\x01' + b'\x01' + bytes([1]) * 8 + b'\x01' + bytes([1]) * 8
+      + b''.join(pt(i, j, i * j) for i in range(3) for j in range(2)) + b'\x00' + b'\x01\x01\x40\x01\x40\x02\x02\x01')
+# op 4: revolve a closed triangle profile made of a Bezier quadratic and two lines (NURBS degree 1)
+def line(a, b):  # NURBS degree 1, 2 points, clamped knots [0,0,1,1]
+    return b'\x00' + b'\x01' + b'\x01' + b'\x01' + bytes([1]) * 4 + b'\x01' + b'\x02' + a + b + b'\x00'
+prof = (b'\x03'  # 4 pieces -> small(1,4) = 1 + 3 % 4
+        + b'\x01' + b'\x01' + pt(2,0,0) + pt(4,0,1) + pt(2,0,2) + b'\x00' + weight(1) + weight(2) + weight(1)  # Bezier piece, 3 points
+        + line(pt(2,0,2), pt(2,0,1)) + line(pt(2,0,1), pt(3,0,1)) + line(pt(3,0,1), pt(2,0,0)) + b'\x00')
+write('fuzz_geometry', 'revolve_full', b'\x04' + prof + b'\x00' + b'\x00' + b'\x01' + b'\x10')
+write('fuzz_geometry', 'revolve_partial', b'\x04' + prof + b'\x00' + b'\x00' + b'\x00' + num(270) + b'\x10')
+# op 5: extrude a closed planar profile
+prof2 = (b'\x02' + line(pt(0,0,0), pt(2,0,0)) + line(pt(2,0,0), pt(1,2,0))
+         + b'\x01' + b'\x01' + pt(1,2,0) + pt(0,1,0) + pt(0,0,0) + b'\x00' + weight(1) + weight(3) + weight(1) + b'\x00')
+write('fuzz_geometry', 'extrude', b'\x05' + prof2 + b'\x01' + pt(0,0,1) + num(2) + b'\x08')
+
+# fuzz_mesh: a tetrahedron on the integer grid (grid flag), outward triangles, self-intersection check on
+def mesh_seed(verts, tris, grid=True, si=True):
+    data = bytes([len(verts), len(tris), 1 if grid else 0])
+    for v in verts:
+        data += bytes((c + 2) for c in v) if grid else pt(*v)
+    for t in tris:
+        data += bytes(t)
+    return data + bytes([1 if si else 0])
+tet_v = [(0,0,0),(1,0,0),(0,1,0),(0,0,1)]
+tet_t = [(0,2,1),(0,1,3),(0,3,2),(1,2,3)]
+write('fuzz_mesh', 'tetrahedron', mesh_seed(tet_v, tet_t))
+write('fuzz_mesh', 'tetrahedron_inward', mesh_seed(tet_v, [(a, c, b) for a, b, c in tet_t]))
+write('fuzz_mesh', 'tetrahedron_open', mesh_seed(tet_v, tet_t[:3]))
+write('fuzz_mesh', 'tetrahedron_float', mesh_seed([(0.5,0,0),(1e10,0,0),(0,-0.0,1e-300),(0,0,1)], tet_t, grid=False))
+cube_v = [(x, y, z) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
+cube_t = [(0,1,3),(0,3,2),(4,6,7),(4,7,5),(0,4,5),(0,5,1),(2,3,7),(2,7,6),(0,2,6),(0,6,4),(1,5,7),(1,7,3)]
+write('fuzz_mesh', 'cube', mesh_seed(cube_v, cube_t))
+write('fuzz_mesh', 'index_out_of_range', mesh_seed(tet_v, tet_t[:3] + [(1, 2, 5)]))

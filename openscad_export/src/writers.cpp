@@ -1,0 +1,252 @@
+#include "ratbez/export/writers.hpp"
+
+#include <array>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "ratbez/error.hpp"
+
+namespace ratbez::exporter {
+namespace {
+
+// Refuse to write a file that would be garbage: an index past the vertex table or a NaN/inf coordinate
+// would produce text no reader accepts (or, worse, accepts wrongly). O(n), negligible beside the writing.
+void validate_mesh(const Mesh& mesh) {
+    const auto vertex_count = mesh.vertices.size();
+    for (std::size_t i = 0; i < vertex_count; ++i)
+        require(is_finite(mesh.vertices[i]), "mesh", "vertex " + std::to_string(i) + " is not finite");
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (std::uint32_t index : mesh.triangles[t])
+            require(index < vertex_count, "mesh",
+                    "triangle " + std::to_string(t) + " refers to vertex " + std::to_string(index) + " but there are only " +
+                        std::to_string(vertex_count) + " vertices");
+}
+
+// Text and bytes go into one reserved buffer that is handed to the stream in large blocks: no
+// per-number stringstream, no per-character virtual call. Numbers are std::to_chars shortest
+// round-trip, so reading the file back gives the very same doubles.
+class BufferedOutput {
+public:
+    explicit BufferedOutput(std::ostream& out) : out_(out), buffer_(capacity) {}
+    BufferedOutput(const BufferedOutput&) = delete;
+    BufferedOutput& operator=(const BufferedOutput&) = delete;
+
+    void text(std::string_view s) {
+        if (s.size() > capacity - used_) flush();
+        if (s.size() > capacity) {
+            write_through(s.data(), s.size());
+            return;
+        }
+        std::memcpy(buffer_.data() + used_, s.data(), s.size());
+        used_ += s.size();
+    }
+    void character(char c) {
+        if (used_ == capacity) flush();
+        buffer_[used_++] = c;
+    }
+    void number(double value) {
+        make_room(max_number_chars);
+        value += 0.0;  // -0 becomes +0: the files do not depend on the sign of a zero
+        auto* begin = buffer_.data() + used_;
+        const auto result = std::to_chars(begin, begin + max_number_chars, value);
+        used_ += static_cast<std::size_t>(result.ptr - begin);
+    }
+    void index(std::uint64_t value) {
+        make_room(max_number_chars);
+        auto* begin = buffer_.data() + used_;
+        const auto result = std::to_chars(begin, begin + max_number_chars, value);
+        used_ += static_cast<std::size_t>(result.ptr - begin);
+    }
+    // Little-endian binary values (STL is little-endian whatever the host).
+    template <class T>
+    void binary(T value) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        make_room(sizeof(T));
+        std::array<char, sizeof(T)> bytes;
+        std::memcpy(bytes.data(), &value, sizeof(T));
+        if constexpr (std::endian::native == std::endian::big)
+            for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(bytes[i], bytes[sizeof(T) - 1 - i]);
+        std::memcpy(buffer_.data() + used_, bytes.data(), sizeof(T));
+        used_ += sizeof(T);
+    }
+    void flush() {
+        write_through(buffer_.data(), used_);
+        used_ = 0;
+    }
+
+private:
+    static constexpr std::size_t capacity = std::size_t{1} << 20;
+    static constexpr std::size_t max_number_chars = 32;  // shortest double: at most 24 characters
+
+    void make_room(std::size_t n) {
+        if (n > capacity - used_) flush();
+    }
+    void write_through(const char* data, std::size_t n) {
+        if (n == 0) return;
+        out_.write(data, static_cast<std::streamsize>(n));
+        if (!out_) throw Error("out: writing the mesh failed");
+    }
+
+    std::ostream& out_;
+    std::vector<char> buffer_;
+    std::size_t used_ = 0;
+};
+
+bool is_identifier(const std::string& name) {
+    if (name.empty()) return false;
+    const auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+    if (!alpha(name[0])) return false;
+    for (char c : name)
+        if (!alpha(c) && !(c >= '0' && c <= '9')) return false;
+    return true;
+}
+
+Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 n = cross(b - a, c - a);
+    const double length = norm(n);
+    return length > 0 ? n / length : Vec3{};
+}
+
+void vertex_triple(BufferedOutput& out, const Vec3& p, char separator) {
+    out.number(p.x);
+    out.character(separator);
+    out.number(p.y);
+    out.character(separator);
+    out.number(p.z);
+}
+
+}  // namespace
+
+void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& options) {
+    validate_mesh(mesh);
+    require(options.module_name.empty() || is_identifier(options.module_name), "module_name",
+            "'" + options.module_name + "' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit)");
+    require(options.convexity >= 1, "convexity", "must be at least 1");
+
+    BufferedOutput buffer(out);
+    buffer.text("// Generated by ratbez: ");
+    buffer.index(mesh.vertices.size());
+    buffer.text(" points, ");
+    buffer.index(mesh.triangles.size());
+    buffer.text(" faces, clockwise seen from outside\n");
+    if (!options.module_name.empty()) {
+        buffer.text("module ");
+        buffer.text(options.module_name);
+        buffer.text("() {\n");
+    }
+    buffer.text("polyhedron(points=[\n");
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+        buffer.character('[');
+        vertex_triple(buffer, mesh.vertices[i], ',');
+        buffer.text(i + 1 < mesh.vertices.size() ? "],\n" : "]");
+    }
+    buffer.text("],\nfaces=[\n");
+    // Our triangles are counterclockwise seen from outside (right-hand rule, outward). OpenSCAD 2021.01's
+    // polyhedron() wants the opposite, CLOCKWISE seen from outside: checked with the real binary, where
+    // `--preview=throwntogether` draws a tetrahedron written (a, c, b) in the normal face colour and one
+    // written (a, b, c) in the magenta of inverted faces. So every triangle is written (a, c, b).
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& tri = mesh.triangles[t];
+        buffer.character('[');
+        buffer.index(tri[0]);
+        buffer.character(',');
+        buffer.index(tri[2]);
+        buffer.character(',');
+        buffer.index(tri[1]);
+        buffer.text(t + 1 < mesh.triangles.size() ? "],\n" : "]");
+    }
+    buffer.text("],\nconvexity=");
+    buffer.index(static_cast<std::uint64_t>(options.convexity));
+    buffer.text(");\n");
+    if (!options.module_name.empty()) buffer.text("}\n");
+    buffer.flush();
+}
+
+void write_stl_binary(const Mesh& mesh, std::ostream& out) {
+    validate_mesh(mesh);
+    require(mesh.triangles.size() <= std::numeric_limits<std::uint32_t>::max(), "mesh",
+            "too many triangles for binary STL (at most 2^32 - 1)");
+    BufferedOutput buffer(out);
+    // 80-byte header that must not begin with "solid" (readers would take the file for ASCII STL).
+    std::array<char, 80> header{};
+    const std::string_view title = "ratbez binary STL";
+    std::memcpy(header.data(), title.data(), title.size());
+    buffer.text(std::string_view(header.data(), header.size()));
+    buffer.binary(static_cast<std::uint32_t>(mesh.triangles.size()));
+    for (const auto& tri : mesh.triangles) {
+        const Vec3& a = mesh.vertices[tri[0]];
+        const Vec3& b = mesh.vertices[tri[1]];
+        const Vec3& c = mesh.vertices[tri[2]];
+        for (const Vec3& p : {unit_normal(a, b, c), a, b, c}) {
+            buffer.binary(static_cast<float>(p.x));
+            buffer.binary(static_cast<float>(p.y));
+            buffer.binary(static_cast<float>(p.z));
+        }
+        buffer.binary(std::uint16_t{0});  // attribute byte count
+    }
+    buffer.flush();
+}
+
+void write_stl_ascii(const Mesh& mesh, std::ostream& out, const std::string& solid_name) {
+    validate_mesh(mesh);
+    for (char c : solid_name)
+        require(c != '\n' && c != '\r', "solid_name", "must be a single line");
+    BufferedOutput buffer(out);
+    buffer.text("solid ");
+    buffer.text(solid_name);
+    buffer.character('\n');
+    for (const auto& tri : mesh.triangles) {
+        const Vec3& a = mesh.vertices[tri[0]];
+        const Vec3& b = mesh.vertices[tri[1]];
+        const Vec3& c = mesh.vertices[tri[2]];
+        buffer.text("facet normal ");
+        vertex_triple(buffer, unit_normal(a, b, c), ' ');
+        buffer.text("\nouter loop\n");
+        for (const Vec3* p : {&a, &b, &c}) {
+            buffer.text("vertex ");
+            vertex_triple(buffer, *p, ' ');
+            buffer.character('\n');
+        }
+        buffer.text("endloop\nendfacet\n");
+    }
+    buffer.text("endsolid ");
+    buffer.text(solid_name);
+    buffer.character('\n');
+    buffer.flush();
+}
+
+void write_off(const Mesh& mesh, std::ostream& out) {
+    validate_mesh(mesh);
+    BufferedOutput buffer(out);
+    buffer.text("OFF\n");
+    buffer.index(mesh.vertices.size());
+    buffer.character(' ');
+    buffer.index(mesh.triangles.size());
+    buffer.text(" 0\n");
+    for (const Vec3& p : mesh.vertices) {
+        vertex_triple(buffer, p, ' ');
+        buffer.character('\n');
+    }
+    // OFF faces are counterclockwise seen from outside, like ours.
+    for (const auto& tri : mesh.triangles) {
+        buffer.text("3 ");
+        buffer.index(tri[0]);
+        buffer.character(' ');
+        buffer.index(tri[1]);
+        buffer.character(' ');
+        buffer.index(tri[2]);
+        buffer.character('\n');
+    }
+    buffer.flush();
+}
+
+}  // namespace ratbez::exporter

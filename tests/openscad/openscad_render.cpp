@@ -1,0 +1,129 @@
+// The real OpenSCAD 2021.01 binary renders our polyhedron files. A bare top-level polyhedron is exported
+// unchecked, so each file is included inside a boolean operation, which makes OpenSCAD convert it to a
+// CGAL Nef polyhedron and complain about any open, inverted or non-manifold mesh. OpenSCAD exits 0 even
+// then ("ERROR: The given mesh is not closed!"), so the test reads its output, and then reads the STL it
+// wrote back to compare the volume.
+//
+// Registered only with RATBEZ_TEST_OPENSCAD=ON (slow: CGAL Nef inside OpenSCAD).
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "ratbez/export/export.hpp"
+#include "ratbez/tessellate.hpp"
+#include "spec.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> example_names() {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(RATBEZ_EXAMPLES_DIR))
+        if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// Volume of an ASCII STL as OpenSCAD writes it ("vertex x y z" lines, three per facet).
+double ascii_stl_volume(const std::string& text, std::size_t& facets) {
+    std::istringstream in(text);
+    std::string word;
+    double v[9];
+    int k = 0;
+    double six_volume = 0;
+    facets = 0;
+    while (in >> word) {
+        if (word != "vertex") continue;
+        in >> v[3 * k] >> v[3 * k + 1] >> v[3 * k + 2];
+        if (++k == 3) {
+            six_volume += v[0] * (v[4] * v[8] - v[5] * v[7]) - v[1] * (v[3] * v[8] - v[5] * v[6]) +
+                          v[2] * (v[3] * v[7] - v[4] * v[6]);
+            k = 0;
+            ++facets;
+        }
+    }
+    return six_volume / 6;
+}
+
+std::string read_file(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+struct Case {
+    std::string example;
+    double relative_tolerance;
+};
+
+class OpenScadRender : public ::testing::TestWithParam<Case> {};
+
+TEST_P(OpenScadRender, RendersWithoutWarningsAndKeepsTheVolume) {
+    const Case c = GetParam();
+    const auto spec = ratbez::spec::load_spec(std::string(RATBEZ_EXAMPLES_DIR) + "/" + c.example + ".json");
+    const auto box = spec.solid.bounding_box();
+    const double size = box.diagonal();
+    const double tolerance = c.relative_tolerance * size;
+    const ratbez::Mesh mesh = ratbez::tessellate(spec.solid, tolerance);
+    // OpenSCAD's CGAL Nef conversion is slow (a 100k-triangle difference() takes half a minute), so the
+    // finest tolerance runs only where the mesh stays small.
+    if (c.relative_tolerance < 1e-3 && mesh.triangles.size() > 30000)
+        GTEST_SKIP() << mesh.triangles.size() << " triangles: too slow for OpenSCAD's CGAL Nef";
+
+    const fs::path dir = fs::temp_directory_path() /
+                         ("ratbez_openscad_" + c.example + "_" + std::to_string(std::lround(-std::log10(c.relative_tolerance))));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    ratbez::exporter::ExportOptions options;
+    options.checks.exact_volume = spec.solid.volume();
+    options.checks.volume_tolerance = tolerance * std::max(spec.solid.area(), mesh.area()) * 1.001;
+    ratbez::exporter::export_mesh(mesh, (dir / "shape.scad").string(), options);
+
+    // The far cube is subtracted from nothing: it only forces the boolean operation.
+    std::ofstream(dir / "wrapper.scad") << "difference() {\n  union() { include <shape.scad> }\n  translate(["
+                                        << box.max.x + size << ", " << box.max.y + size << ", " << box.max.z + size
+                                        << "]) cube(" << size * 1e-3 << ");\n}\n";
+    const std::string command = "cd '" + dir.string() + "' && '" RATBEZ_OPENSCAD_EXECUTABLE
+                                "' -o out.stl wrapper.scad > openscad.log 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(dir / "openscad.log");
+    const std::string log = read_file(dir / "openscad.log");
+    EXPECT_EQ(log.find("WARNING"), std::string::npos) << log;
+    EXPECT_EQ(log.find("ERROR"), std::string::npos) << log;
+    EXPECT_NE(log.find("Simple:        yes"), std::string::npos) << log;
+
+    std::size_t facets = 0;
+    const double stl_volume = ascii_stl_volume(read_file(dir / "out.stl"), facets);
+    ASSERT_GT(facets, 0u) << "OpenSCAD dropped the polyhedron:\n" << log;
+    // OpenSCAD prints STL coordinates in float precision (about 7 significant digits, 6 in practice);
+    // the volume then agrees to a few parts per million of the shape's size cubed.
+    const double mesh_volume = mesh.volume();
+    EXPECT_NEAR(stl_volume, mesh_volume, 2e-5 * std::abs(mesh_volume))
+        << c.example << ": " << facets << " facets read back, " << mesh.triangles.size() << " written";
+    fs::remove_all(dir);
+}
+
+std::vector<Case> all_cases() {
+    std::vector<Case> cases;
+    for (const auto& name : example_names())
+        for (double t : {1e-2, 1e-3, 1e-4}) cases.push_back({name, t});
+    return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, OpenScadRender, ::testing::ValuesIn(all_cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                             const long exponent = std::lround(-std::log10(info.param.relative_tolerance));
+                             return info.param.example + "_tol_1em" + std::to_string(exponent);
+                         });
+
+}  // namespace
