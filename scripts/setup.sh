@@ -16,6 +16,7 @@ packages=(
   pybind11-dev python3-dev python3-pytest python3-numpy         # the Python module and its tests
   nlohmann-json3-dev                                            # the CLI's JSON shape specs
   libgtest-dev libbenchmark-dev                                 # C++ tests, bench/
+  clang libclang-rt-14-dev                                      # libFuzzer targets (fuzz/, scripts/fuzz.sh)
   openscad xvfb xauth                                           # OpenSCAD checks and PNG renders
   freecad                                                       # the workbench and its tests
 )

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Every test: the Release build of build/ with all suites (C++ core/occt/openscad/cli, Python, FreeCAD
-# headless and GUI, the OpenSCAD binary), then the C++ suites again in build-asan under AddressSanitizer
-# and UndefinedBehaviorSanitizer (Python and FreeCAD stay out: ASan cannot be preloaded into them).
+# Every test: the Release build of build/ with all suites (C++ core/occt/openscad/cli/reliability, Python,
+# FreeCAD headless and GUI, the OpenSCAD binary), then the C++ suites again in build-asan under
+# AddressSanitizer and UndefinedBehaviorSanitizer (Python and FreeCAD stay out: ASan cannot be preloaded
+# into them), then every libFuzzer target for a bounded time (scripts/fuzz.sh).
 # Runs unattended (CI=true, no stdin); exits non-zero when anything fails.
 # Run as root on Debian 12: bash scripts/test.sh
 # (RATBEZ_BUILD_DIR and RATBEZ_ASAN_DIR override build/ and build-asan/, RATBEZ_JOBS the -j 2.)
@@ -34,6 +35,12 @@ if cmake --build "$asan" -j "$jobs"; then
   ctest --test-dir "$asan" --output-on-failure -j "$jobs" 2>&1 | tee "$logs/asan.txt" || status=1
 else
   echo "test.sh: the sanitizer build failed" | tee "$logs/asan.txt"
+  status=1
+fi
+
+echo "== fuzzing: each libFuzzer target for a bounded time (scripts/fuzz.sh)"
+if ! bash scripts/fuzz.sh "${RATBEZ_FUZZ_SECONDS:-20}" 2>&1 | tee "$logs/fuzz.txt"; then
+  echo "test.sh: fuzzing found a problem (see $logs/fuzz.txt)"
   status=1
 fi
 

@@ -23,6 +23,7 @@
 #include "ratbez/deviation.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/extrude.hpp"
+#include "ratbez/nurbs_curve.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
 #include "ratbez/revolve.hpp"
@@ -199,6 +200,48 @@ TEST(Tessellate, TriangleBudgetIsCheckedBeforeMeshing) {
 TEST(Tessellate, DefaultToleranceIsAThousandthOfTheDiagonal) {
     const Solid solid = cylinder(1.0, 2.0);
     EXPECT_DOUBLE_EQ(default_tolerance(solid), 1e-3 * solid.bounding_box().diagonal());
+}
+
+// Regression (round-trip seed 20262339): a ring of four rational pieces revolved 360 degrees. Two faces
+// put their own parameter lines on a shared circle a rounding apart (further apart than the edge's 1e-12
+// sample merge, closer than the 1e-9 the faces used to pick out a cell's extra samples), so the edge had
+// two samples there; each face took the nearer one as its grid vertex and dropped the other as "not
+// strictly inside" its cells: a quad hole of four border edges. Cells now take their corners and extra
+// samples by index into the edge's samples, so each sample is used once along each side.
+TEST(Tessellate, EdgeSamplesARoundingApartAreBothUsedByEachFace) {
+    const std::vector<NurbsCurve> pieces{
+        NurbsCurve(1, {0, 0, 1, 1},
+                   {{0.00017025877601791443, 0.00010923084097706878, -0.00010671695887821153},
+                    {0.00015224806534261398, 0.00019330044469177251, -6.5459351433726627e-06}},
+                   {0.89457521153608965, 0.68331882905964769}),
+        NurbsCurve(1, {1.8551247437591734, 1.8551247437591734, 15.978392872973046, 15.98379278797043,
+                       57.301770436968155, 57.301770436968155},
+                   {{0.00015224806534261398, 0.00019330044469177254, -6.5459351433726627e-06},
+                    {0.00018036418448967101, 0.00022926315763693227, -4.9879606388270815e-05},
+                    {0.00018510381300549091, 0.00028888067115545395, -2.0977186203791978e-05},
+                    {0.00019520888251020328, 0.00031175938595052354, -2.9822173665510399e-05}},
+                   {0.56825606182818633, 1.831419214208623, 1.5425124977136133, 0.64113517949318233}),
+        NurbsCurve(2, {2.30126654979051, 2.30126654979051, 2.30126654979051, 28.398596660042948,
+                       28.398596660042948, 28.398596660042948},
+                   {{0.00019520888251020328, 0.00031175938595052354, -2.9822173665510399e-05},
+                    {0.00020403045487211045, 0.00027538382079793583, -7.5639434607669093e-05},
+                    {0.00023671434356405043, 0.00029473746127302151, -0.00014119211014838875}},
+                   {1.3109348035560693, 0.66638983732149348, 0.6046081718584897}),
+        NurbsCurve(1, {0, 0, 1, 1},
+                   {{0.00023671434356405043, 0.00029473746127302151, -0.00014119211014838875},
+                    {0.00017025877601791449, 0.00010923084097706882, -0.00010671695887821161}},
+                   {1, 1}),
+    };
+    const Solid solid = revolve(Profile(pieces), {8.6810128549321663e-05, -6.4758202755289506e-05, -2.3569833187872869e-05},
+                                {0.059987527286758047, 0.77623066623828341, 0.38046087266708462}, 360.0);
+    const double tolerance = 4e-3 * solid.bounding_box().diagonal();
+    const Mesh mesh = tessellate(solid, tolerance);
+    // Closed: every directed edge used once, its reverse once (the hole left four unmatched edges).
+    EXPECT_TRUE(mesh.is_closed());
+    const double exact = solid.volume();
+    ASSERT_GT(exact, 0.0);
+    EXPECT_GT(mesh.volume(), 0.0);
+    EXPECT_LE(std::abs(mesh.volume() - exact), tolerance * solid.area() * 1.01 + 1e-9 * exact);
 }
 
 // ---- economy ----------------------------------------------------------------------------------------

@@ -110,12 +110,25 @@ public:
         const int count = c.closed ? static_cast<int>(uniform(3, 6.999)) : static_cast<int>(uniform(2, 4.999));
         const double total = c.closed ? 2 * std::numbers::pi : std::numbers::pi;
         const double start = c.closed ? uniform(0, 2 * std::numbers::pi) : -std::numbers::pi / 2;
-        std::vector<double> cuts{0};
-        for (int k = 1; k < count; ++k) cuts.push_back(uniform(0, 1));
-        std::sort(cuts.begin(), cuts.end());
-        cuts.push_back(1);
-        // Even out wedges so that none reaches 150 degrees.
-        for (int k = 0; k <= count; ++k) cuts[k] = 0.5 * cuts[k] + 0.5 * static_cast<double>(k) / count;
+        // Even out wedges so that none reaches 150 degrees. Halfway to equal wedges bounds a dome's wedges
+        // (180 degrees in all) by 135 degrees, but not a ring's: its largest wedge can reach
+        // 360 (1 + 1/count) / 2 > 180 degrees, and a piece in a wedge over 180 degrees can cross the other
+        // pieces (seed 20263063: a straight piece in a 222-degree wedge cut through a cubic; revolve does
+        // not check self-intersection). So redraw until every wedge is under 150 degrees; a draw that
+        // already is keeps its random sequence, and with it its case.
+        std::vector<double> cuts;
+        const double max_wedge = 150.0 / 180.0 * std::numbers::pi;
+        do {
+            cuts.assign(1, 0.0);
+            for (int k = 1; k < count; ++k) cuts.push_back(uniform(0, 1));
+            std::sort(cuts.begin(), cuts.end());
+            cuts.push_back(1);
+            for (int k = 0; k <= count; ++k) cuts[k] = 0.5 * cuts[k] + 0.5 * static_cast<double>(k) / count;
+        } while ([&] {
+            for (int k = 0; k < count; ++k)
+                if (total * (cuts[k + 1] - cuts[k]) >= max_wedge) return true;
+            return false;
+        }());
         const auto ray_radius = [&] { return radius * uniform(0.4, 1.5); };
         std::vector<double> boundary_radius;
         for (int k = 0; k <= count; ++k) boundary_radius.push_back(ray_radius());
