@@ -10,6 +10,7 @@
 
 #include "ratbez/error.hpp"
 #include "ratbez/primitives.hpp"
+#include "ratbez/tessellate.hpp"
 
 namespace ratbez {
 namespace {
@@ -109,6 +110,24 @@ TEST(MaxDeviation, EmptyMeshIsZeroAndBadInputIsRejected) {
     Mesh nan_mesh = octahedron(1.0);
     nan_mesh.vertices[0].x = std::nan("");
     EXPECT_THROW(max_deviation(sphere(1.0), nan_mesh), Error);
+}
+
+}  // namespace
+}  // namespace ratbez
+
+namespace ratbez {
+namespace {
+
+// Found by the demo (a sphere of radius 10): pole rows whose points differ only by rounding were kept as
+// seeds that Newton cannot turn, so samples near a pole measured their distance to the pole. The measure
+// must be scale-invariant: the same mesh scaled by k deviates k times as much.
+TEST(MaxDeviation, IsScaleInvariantNearPoles) {
+    const double unit = max_deviation(sphere(1.0), tessellate(sphere(1.0), 1e-2));
+    for (double radius : {5.0, 10.0, 1000.0}) {
+        const Solid scaled = sphere(radius);
+        EXPECT_NEAR(max_deviation(scaled, tessellate(scaled, 1e-2 * radius)) / radius, unit, 1e-6 * unit)
+            << "radius " << radius;
+    }
 }
 
 }  // namespace

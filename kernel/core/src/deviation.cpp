@@ -310,6 +310,11 @@ public:
             const NurbsSurface& s = face.surface();
             const int nu = seed_count(s.knots_u(), s.degree_u()), nv = seed_count(s.knots_v(), s.degree_v());
             const Interval du = s.domain_u(), dv = s.domain_v();
+            // "The same point" up to rounding relative to the face's size: evaluating a pole row at
+            // different u gives points that differ in the last bits, and bit equality missed them.
+            const double coincident = 1e-12 * (norm(s.point(du.max, dv.max) - s.point(du.min, dv.min)) +
+                                               norm(s.point((du.min + du.max) / 2, (dv.min + dv.max) / 2)) + 1e-300);
+            auto same = [coincident](const Vec3& a, const Vec3& b) { return distance(a, b) <= coincident; };
             std::vector<Vec3> row_previous;
             for (int i = 0; i <= nu; ++i) {
                 std::vector<Vec3> row;
@@ -320,9 +325,9 @@ public:
                     const Vec3 p = s.point(u, v);
                     // No seeds on a collapsed row (a pole): there every u gives the same point, Newton
                     // cannot turn u, and the seeds of the first ring around it start better.
-                    const bool collapsed_u = (i > 0 && p == row_previous[static_cast<std::size_t>(j)]) ||
-                                             (i == 0 && p == s.point(du.min + (du.max - du.min) / nu, v));
-                    const bool collapsed_v = !row.empty() && p == row.back();
+                    const bool collapsed_u = (i > 0 && same(p, row_previous[static_cast<std::size_t>(j)])) ||
+                                             (i == 0 && same(p, s.point(du.min + (du.max - du.min) / nu, v)));
+                    const bool collapsed_v = !row.empty() && same(p, row.back());
                     if (!collapsed_u && !collapsed_v) seeds.push_back({p, id, u, v});
                     if (j > 0) spacing = std::max(spacing, distance(p, row.back()));
                     if (i > 0) spacing = std::max(spacing, distance(p, row_previous[static_cast<std::size_t>(j)]));
@@ -401,9 +406,10 @@ double max_deviation(const Solid& solid, const Mesh& mesh, const DeviationOption
     for (const Vec3& v : mesh.vertices) require(is_finite(v), "mesh", "has a vertex with non-finite coordinates");
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
         for (std::uint32_t index : mesh.triangles[t])
-            require(index < mesh.vertices.size(), "mesh",
-                    "triangle " + std::to_string(t) + " refers to vertex " + std::to_string(index) + " of " +
-                        std::to_string(mesh.vertices.size()));
+            require(index < mesh.vertices.size(), "mesh", [&] {
+                return "triangle " + std::to_string(t) + " refers to vertex " + std::to_string(index) + " of " +
+                       std::to_string(mesh.vertices.size());
+            });
     if (mesh.triangles.empty()) return 0;
 
     const DeviationMeter meter(solid);
