@@ -158,8 +158,9 @@ TEST_F(Cli, KernelErrorsNameTheField) {
 }
 
 TEST_F(Cli, NotJsonAndMissingFile) {
+    // Column 31 is where the unquoted key `radius` starts (1-based).
     const std::string file = spec_file("{ \"shape\": {\"type\": \"sphere\", radius: 1} }");
-    expect_bad_input_prefix(ratbez({"info", file}), "spec error: " + file + ": not valid JSON: parse error at line 1, column 33");
+    expect_bad_input_prefix(ratbez({"info", file}), "spec error: " + file + ": not valid JSON: parse error at line 1, column 31");
     const std::string array = spec_file("[1, 2]", "array.json");
     expect_bad_input(ratbez({"info", array}), "spec error: " + array + ": must be a JSON object with a \"shape\"");
     expect_bad_input(ratbez({"info", path("missing.json")}), "spec error: " + path("missing.json") + ": cannot open the file");
