@@ -23,12 +23,13 @@ namespace {
 void validate_mesh(const Mesh& mesh) {
     const auto vertex_count = mesh.vertices.size();
     for (std::size_t i = 0; i < vertex_count; ++i)
-        require(is_finite(mesh.vertices[i]), "mesh", "vertex " + std::to_string(i) + " is not finite");
+        require(is_finite(mesh.vertices[i]), "mesh", [i] { return "vertex " + std::to_string(i) + " is not finite"; });
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
         for (std::uint32_t index : mesh.triangles[t])
-            require(index < vertex_count, "mesh",
-                    "triangle " + std::to_string(t) + " refers to vertex " + std::to_string(index) + " but there are only " +
-                        std::to_string(vertex_count) + " vertices");
+            require(index < vertex_count, "mesh", [&] {
+                return "triangle " + std::to_string(t) + " refers to vertex " + std::to_string(index) +
+                       " but there are only " + std::to_string(vertex_count) + " vertices";
+            });
 }
 
 // Text and bytes go into one reserved buffer that is handed to the stream in large blocks: no
