@@ -52,9 +52,9 @@ protected:
 
     CommandResult ratbez(const std::vector<std::string>& args) const {
         std::string command = quoted(RATBEZ_CLI);
-        for (const auto& a : args) command += " " + quoted(a);
+        for (const auto& a : args) command.append(" ").append(quoted(a));
         const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-        command += " >" + quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
+        command.append(" >").append(quoted(out.string())).append(" 2>").append(quoted(err.string())).append(" </dev/null");
         const int status = std::system(command.c_str());
         CommandResult run;
         run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

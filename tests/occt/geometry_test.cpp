@@ -100,6 +100,22 @@ SurfaceSamples occt_surface_samples(const Surface& surface, const std::vector<st
     return out;
 }
 
+// Our point and first derivative against OCCT's D0/D1 at every sample (relative to the curve's size
+// and to the largest |D1| sampled).
+template <class Curve>
+void expect_curve_matches(const Curve& ours, const std::vector<CurveSample>& samples, double size, double d1_size,
+                          int shape, MaxTracker& point_error, MaxTracker& derivative_error) {
+    for (const CurveSample& s : samples) {
+        const std::vector<Vec3> d = ours.derivatives(s.u, 1);
+        const double e0 = relative(d[0], from_occt(s.p), size);
+        const double e1 = relative(d[1], from_occt(s.d1), d1_size);
+        point_error.add(e0);
+        derivative_error.add(e1);
+        ASSERT_LE(e0, kTolerance) << "curve " << shape << " u = " << s.u;
+        ASSERT_LE(e1, kDerivativeTolerance) << "curve " << shape << " u = " << s.u;
+    }
+}
+
 TEST(GeometryConversion, RandomNurbsCurvesEvaluateLikeOcct) {
     Random random(20240601);
     MaxTracker point_error("NURBS curves: max |C - D0| / size");
@@ -115,16 +131,8 @@ TEST(GeometryConversion, RandomNurbsCurvesEvaluateLikeOcct) {
         ASSERT_EQ(theirs->LastParameter(), domain.max);
         const double size = testing::diagonal(ours.points());
         double d1_size = 0;
-        for (const CurveSample& s : occt_samples(theirs, parameters(random, domain, ours.knots(), kParameters), d1_size)) {
-            const double u = s.u;
-            const std::vector<Vec3> d = ours.derivatives(u, 1);
-            const double e0 = relative(d[0], from_occt(s.p), size);
-            const double e1 = relative(d[1], from_occt(s.d1), d1_size);
-            point_error.add(e0);
-            derivative_error.add(e1);
-            ASSERT_LE(e0, kTolerance) << "curve " << shape << " u = " << u;
-            ASSERT_LE(e1, kDerivativeTolerance) << "curve " << shape << " u = " << u;
-        }
+        const auto samples = occt_samples(theirs, parameters(random, domain, ours.knots(), kParameters), d1_size);
+        expect_curve_matches(ours, samples, size, d1_size, shape, point_error, derivative_error);
     }
 }
 
@@ -241,16 +249,8 @@ TEST(GeometryConversion, RandomBezierCurvesEvaluateLikeOcct) {
         ASSERT_EQ(theirs->IsRational(), ours.is_rational());
         const double size = testing::diagonal(ours.points());
         double d1_size = 0;
-        for (const CurveSample& s : occt_samples(theirs, parameters(random, {0.0, 1.0}, {}, kParameters), d1_size)) {
-            const double u = s.u;
-            const std::vector<Vec3> d = ours.derivatives(u, 1);
-            const double e0 = relative(d[0], from_occt(s.p), size);
-            const double e1 = relative(d[1], from_occt(s.d1), d1_size);
-            point_error.add(e0);
-            derivative_error.add(e1);
-            ASSERT_LE(e0, kTolerance) << "curve " << shape << " u = " << u;
-            ASSERT_LE(e1, kDerivativeTolerance) << "curve " << shape << " u = " << u;
-        }
+        const auto samples = occt_samples(theirs, parameters(random, {0.0, 1.0}, {}, kParameters), d1_size);
+        expect_curve_matches(ours, samples, size, d1_size, shape, point_error, derivative_error);
     }
 }
 
