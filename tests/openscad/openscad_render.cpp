@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -65,6 +66,9 @@ struct Case {
     std::string example;
     double relative_tolerance;
 };
+
+// Readable test parameters in gtest's output instead of a byte dump.
+void PrintTo(const Case& c, std::ostream* out) { *out << c.example << " at " << c.relative_tolerance << " of its size"; }
 
 class OpenScadRender : public ::testing::TestWithParam<Case> {};
 
