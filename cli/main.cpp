@@ -1,6 +1,7 @@
 // The `ratbez` command: JSON shape spec in, files and reports out.
 //
 //   ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
+//                 [--skip-self-intersection-check]
 //   ratbez check SPEC.json [--json]
 //   ratbez info SPEC.json [--json]
 //   ratbez demo [DIR] [--examples DIR] [--no-render]
@@ -54,6 +55,7 @@ using ratbez::spec::ShapeSpec;
 constexpr const char* usage_text =
     "usage: ratbez <command> ...\n"
     "  ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
+    "                [--skip-self-intersection-check]   (for very large meshes: CGAL's test is the slow one)\n"
     "  ratbez check SPEC.json [--json]      check against OpenCASCADE; exit 1 when a check fails\n"
     "  ratbez info SPEC.json [--json]       faces, edges, vertices, Euler characteristic, area, volume, box\n"
     "  ratbez demo [DIR] [--examples DIR] [--no-render]\n"
@@ -196,7 +198,8 @@ ratbez::Mesh tessellate_for(const ShapeSpec& spec, double tolerance, std::option
 // ---- export ----------------------------------------------------------------------------------------
 
 int command_export(const std::vector<std::string>& raw) {
-    const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module"}, {"--ascii"});
+    const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module"},
+                                            {"--ascii", "--skip-self-intersection-check"});
     const std::string& spec_path = single_spec(args, "export");
     const auto output = args.value("--output");
     if (!output || output->empty()) throw UsageError("-o", "the output file is required (-o OUT.scad|stl|off|step|brep)");
@@ -242,6 +245,9 @@ int command_export(const std::vector<std::string>& raw) {
     options.openscad.module_name = module_name;
     options.binary_stl = !args.flag("--ascii");
     options.checks = mesh_checks_for(spec.solid, mesh, used_tolerance);
+    // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but
+    // heavy CGAL self-intersection test is skipped, at the user's explicit request.
+    options.checks.check_self_intersections = !args.flag("--skip-self-intersection-check");
     try {
         ratbez::exporter::export_mesh(mesh, *output, options);
     } catch (const ratbez::Error& e) {
