@@ -4,7 +4,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
@@ -80,16 +79,76 @@ EdgeCounts count_edges(const Mesh& mesh) {
     return counts;
 }
 
-// The volume of the mesh's axis-aligned bounding box: the scale of "no volume".
-double bounding_box_volume(const Mesh& mesh) {
-    if (mesh.vertices.empty()) return 0;
-    Vec3 low = mesh.vertices.front(), high = low;
-    for (const Vec3& p : mesh.vertices) {
+// The volume of the axis-aligned bounding box of the given vertices: the scale of "no volume".
+template <class Indices>
+double bounding_box_volume(const std::vector<Vec3>& vertices, const Indices& indices) {
+    auto first = std::begin(indices);
+    if (first == std::end(indices)) return 0;
+    Vec3 low = vertices[*first], high = low;
+    for (const auto i : indices) {
+        const Vec3& p = vertices[i];
         low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
         high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
     }
     const Vec3 size = high - low;
     return size.x * size.y * size.z;
+}
+
+// Connected components of the triangles (sharing a vertex index), by union-find on vertices.
+std::vector<std::vector<std::size_t>> triangle_components(const Mesh& mesh) {
+    std::vector<std::uint32_t> parent(mesh.vertices.size());
+    std::iota(parent.begin(), parent.end(), std::uint32_t{0});
+    const auto root = [&](std::uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    };
+    for (const auto& t : mesh.triangles) {
+        parent[root(t[1])] = root(t[0]);
+        parent[root(t[2])] = root(t[0]);
+    }
+    std::vector<std::size_t> component_of_root(mesh.vertices.size(), SIZE_MAX);
+    std::vector<std::vector<std::size_t>> components;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        std::size_t& component = component_of_root[root(mesh.triangles[t][0])];
+        if (component == SIZE_MAX) {
+            component = components.size();
+            components.emplace_back();
+        }
+        components[component].push_back(t);
+    }
+    return components;
+}
+
+// Outward orientation of a closed, consistently oriented, 2-manifold mesh: every connected component
+// must enclose positive signed volume (divergence theorem, taken about the component's first vertex so
+// that far-off meshes keep their digits). Unlike CGAL's is_outward_oriented, which inspects the extreme
+// vertex only and asserts a non-degenerate neighbourhood there, this has no preconditions beyond valid
+// indices and also refuses a closed surface folded flat onto itself (found by fuzz_mesh). "No volume" is
+// measured against the component's bounding box, so that rounding on a flat mesh does not count.
+// Returns the problem, or an empty string.
+std::string orientation_problem(const Mesh& mesh) {
+    for (const auto& component : triangle_components(mesh)) {
+        const Vec3 origin = mesh.vertices[mesh.triangles[component.front()][0]];
+        double six_volume = 0;
+        std::vector<std::uint32_t> corners;
+        corners.reserve(component.size() * 3);
+        for (const std::size_t t : component) {
+            const auto& tri = mesh.triangles[t];
+            const Vec3 a = mesh.vertices[tri[0]] - origin, b = mesh.vertices[tri[1]] - origin,
+                       c = mesh.vertices[tri[2]] - origin;
+            six_volume += dot(a, cross(b, c));
+            corners.insert(corners.end(), tri.begin(), tri.end());
+        }
+        const double volume = six_volume / 6;
+        if (volume > 1e-12 * bounding_box_volume(mesh.vertices, corners)) continue;
+        const std::string which = component.size() == mesh.triangles.size()
+                                      ? std::string()
+                                      : " in a part of " + count_of(component.size(), "triangle", "triangles");
+        if (volume < 0) return "triangles face inward (the orientation is reversed" + which + ")";
+        return "the closed surface encloses no volume (" + format_number(volume) + which +
+               "): it is flat or folded onto itself";
+    }
+    return {};
 }
 
 }  // namespace
@@ -167,21 +226,14 @@ MeshReport check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
         report.outward = false;
         if (options.check_self_intersections) report.self_intersection_free.reset();
     } else {
-        SurfaceMesh surface;
-        PMP::polygon_soup_to_polygon_mesh(points, polygons, surface);
         if (report.closed && consistently_oriented) {
-            report.outward = PMP::is_outward_oriented(surface);
-            if (!report.outward) report.problems.push_back("triangles face inward (the orientation is reversed)");
-            // is_outward_oriented looks at the extreme vertex only, so a closed surface folded flat onto
-            // itself passes it (found by fuzz_mesh); a solid's boundary must also enclose positive volume,
-            // measured against its bounding box so that rounding on a flat mesh does not count.
-            if (report.outward && !(report.volume > 1e-12 * bounding_box_volume(mesh))) {
-                report.outward = false;
-                report.problems.push_back("the closed surface encloses no volume (" + format_number(report.volume) +
-                                          "): it is flat or folded onto itself");
-            }
+            const std::string problem = orientation_problem(mesh);
+            report.outward = problem.empty();
+            if (!report.outward) report.problems.push_back(problem);
         }
         if (options.check_self_intersections) {
+            SurfaceMesh surface;
+            PMP::polygon_soup_to_polygon_mesh(points, polygons, surface);
             report.self_intersection_free = !PMP::does_self_intersect(surface);
             if (!*report.self_intersection_free) report.problems.push_back("the surface intersects itself");
         }

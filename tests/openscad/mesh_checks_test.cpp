@@ -71,6 +71,20 @@ TEST(CheckMesh, RefusesReversedMesh) {
     EXPECT_DOUBLE_EQ(r.volume, -4.0 / 3.0);
 }
 
+// Two separate solids, the second turned inside out: the total volume is still positive (the big one
+// outweighs it), so orientation is judged per connected part.
+TEST(CheckMesh, RefusesOnePartInsideOut) {
+    Mesh small = tetrahedron({5, 0, 0});
+    for (auto& t : small.triangles) std::swap(t[1], t[2]);
+    const MeshReport r = check_mesh(combined(tetrahedron({}, 3), small));
+    EXPECT_GT(r.volume, 0);
+    EXPECT_TRUE(r.closed);
+    EXPECT_TRUE(r.manifold);
+    EXPECT_FALSE(r.outward);
+    EXPECT_TRUE(mentions(r, "face inward")) << r.problems.front();
+    EXPECT_TRUE(mentions(r, "in a part of 4 triangles")) << r.problems.front();
+}
+
 TEST(CheckMesh, RefusesMixedOrientation) {
     Mesh m = octahedron();
     std::swap(m.triangles[3][1], m.triangles[3][2]);
