@@ -99,7 +99,11 @@ void occt_d1(benchmark::State& state, const Case& c, const Evaluator& evaluator)
     state.counters["max_difference"] = difference_from_ours(c, points);
 }
 
-void register_all() {
+}  // namespace
+
+void register_benchmarks() {
+    benchmark::AddCustomContext("ratbez_grid_kernels", grid_kernels_name());
+
     // Cases live for the whole run (the benchmarks keep references).
     static std::vector<Case> cases;
     static std::vector<std::string> names;
@@ -141,15 +145,4 @@ void register_all() {
         }
 }
 
-}  // namespace
 }  // namespace ratbez::bench
-
-int main(int argc, char** argv) {
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::AddCustomContext("ratbez_grid_kernels", ratbez::grid_kernels_name());
-    ratbez::bench::register_all();
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}

@@ -81,7 +81,10 @@ void writer(benchmark::State& state, const Mesh& mesh, const Write& write) {
         benchmark::Counter(static_cast<double>(bytes), benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void register_all() {
+}  // namespace
+
+void register_benchmarks() {
+
     // 2 n m triangles with m = n / 2 (a torus's tube is shorter than its ring): 250k, 500k, 1M.
     static std::vector<Mesh> meshes;
     for (std::size_t n : {500u, 708u, 1000u}) meshes.push_back(torus_mesh(n, n / 2));
@@ -97,14 +100,4 @@ void register_all() {
     }
 }
 
-}  // namespace
 }  // namespace ratbez::bench
-
-int main(int argc, char** argv) {
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    ratbez::bench::register_all();
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}

@@ -100,7 +100,10 @@ void brepmesh(benchmark::State& state, const Solid& solid, double tolerance) {
     report(state, solid, mesh_from_occt(converted), tolerance);
 }
 
-void register_all() {
+}  // namespace
+
+void register_benchmarks() {
+
     static std::vector<NamedSolid> solids = tessellation_solids();
     for (const NamedSolid& named : solids) {
         const Solid* solid = &named.solid;
@@ -118,14 +121,4 @@ void register_all() {
     }
 }
 
-}  // namespace
 }  // namespace ratbez::bench
-
-int main(int argc, char** argv) {
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    ratbez::bench::register_all();
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}

@@ -24,15 +24,6 @@
 namespace ratbez::fuzz {
 namespace {
 
-// Each step runs on its own, so that a rejected parameter in one query does not hide the next.
-template <class Step>
-void attempt(Step&& step) {
-    try {
-        step();
-    } catch (const Error&) {
-    }
-}
-
 Vec3 decode_point(ByteReader& in) {
     const double x = in.number(), y = in.number(), z = in.number();
     return {x, y, z};

@@ -6,6 +6,7 @@
 // same triangles.
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -19,14 +20,6 @@
 
 namespace ratbez::fuzz {
 namespace {
-
-template <class Step>
-void attempt(Step&& step) {
-    try {
-        step();
-    } catch (const Error&) {
-    }
-}
 
 Mesh decode_mesh(ByteReader& in) {
     Mesh mesh;
@@ -53,17 +46,6 @@ Mesh decode_mesh(ByteReader& in) {
     return mesh;
 }
 
-bool same_mesh(const Mesh& written, const Mesh& read) {
-    if (written.vertices.size() != read.vertices.size() || written.triangles != read.triangles) return false;
-    for (std::size_t i = 0; i < written.vertices.size(); ++i) {
-        const Vec3 &a = written.vertices[i], &b = read.vertices[i];
-        if (!reliability::same_coordinate(a.x, b.x) || !reliability::same_coordinate(a.y, b.y) ||
-            !reliability::same_coordinate(a.z, b.z))
-            return false;
-    }
-    return true;
-}
-
 }  // namespace
 
 void run_mesh(const std::uint8_t* data, std::size_t size) {
@@ -85,7 +67,10 @@ void run_mesh(const std::uint8_t* data, std::size_t size) {
             std::fprintf(stderr, "%s\n", e.what());
             invariant_failed("fuzz_mesh", "write_openscad wrote text the polyhedron parser rejects");
         }
-        if (!same_mesh(mesh, parsed.mesh)) invariant_failed("fuzz_mesh", "OpenSCAD text does not read back to the mesh");
+        if (std::string why; !reliability::same_mesh_bits(mesh, parsed.mesh, why)) {
+            std::fprintf(stderr, "%s\n", why.c_str());
+            invariant_failed("fuzz_mesh", "OpenSCAD text does not read back to the mesh");
+        }
     });
     attempt([&] {
         std::ostringstream bytes;

@@ -18,6 +18,8 @@
 #include <limits>
 #include <string_view>
 
+#include "ratbez/error.hpp"
+
 namespace ratbez::fuzz {
 
 // Reads values front to back; once the input is used up every read returns zeros, so decoding never
@@ -82,6 +84,16 @@ private:
     std::size_t size_;
     std::size_t position_ = 0;
 };
+
+// Runs one step of a harness on its own, so that a rejected parameter in one query (ratbez::Error, the
+// expected answer to bad input) does not hide the next; anything else escapes and is a finding.
+template <class Step>
+void attempt(Step&& step) {
+    try {
+        step();
+    } catch (const ratbez::Error&) {
+    }
+}
 
 // A broken invariant: print what and abort, so libFuzzer keeps the input as a crash.
 [[noreturn]] inline void invariant_failed(const char* target, const char* what) {

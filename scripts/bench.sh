@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Builds the benchmark programs into build-bench/ (Release, RATBEZ_BUILD_BENCH=ON, no Python/FreeCAD),
-# runs them all (evaluation and tessellation against OpenCASCADE in the same run, export alone) and
-# prints ONE table: every row with ours / OCCT ratios and the target it is held to.
+# Builds the project as scripts/setup.sh does (the normal Release build in build/ includes bench/),
+# runs the benchmark programs (evaluation and tessellation against OpenCASCADE in the same run, export
+# alone) and prints ONE table: every row with ours / OCCT ratios and the target it is held to.
 #
 # Times are CPU times of the (single-threaded) benchmark thread, the median of the repetitions: on a
 # shared machine wall time also counts other processes' turns. Google Benchmark's JSON is kept in
-# build-bench/bench-results/ for anything the table leaves out.
+# build/bench-results/ for anything the table leaves out.
 #
 # Usage: bash scripts/bench.sh [--no-build]
 # Environment: RATBEZ_JOBS (build parallelism, default 2), BENCH_REPETITIONS (default 3),
@@ -14,7 +14,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 exec </dev/null
 
-build=build-bench
+build="${RATBEZ_BUILD_DIR:-build}"
 results="$build/bench-results"
 jobs="${RATBEZ_JOBS:-2}"
 repetitions="${BENCH_REPETITIONS:-3}"
@@ -22,12 +22,7 @@ min_time="${BENCH_MIN_TIME:-0.5}"
 filter="${BENCH_FILTER:-.}"
 
 if [ "${1:-}" != "--no-build" ]; then
-  # Packages: setup.sh installs whatever is missing (libbenchmark-dev among them) and builds nothing here.
-  if [ -f scripts/setup.sh ]; then bash scripts/setup.sh --no-build; fi
-  export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRATBEZ_BUILD_BENCH=ON \
-    -DRATBEZ_WITH_PYTHON=OFF -DRATBEZ_TEST_FREECAD=OFF -DRATBEZ_TEST_OPENSCAD=OFF >/dev/null
-  cmake --build "$build" -j "$jobs" --target bench_evaluation bench_tessellation bench_export >&2
+  RATBEZ_JOBS="$jobs" bash scripts/setup.sh >&2  # installs what is missing, builds build/ (bench included)
 fi
 
 mkdir -p "$results"

@@ -166,4 +166,25 @@ inline bool same_coordinate(double written, double read) {
     return written == 0 ? read == 0 && !std::signbit(read) : std::bit_cast<std::uint64_t>(written) == std::bit_cast<std::uint64_t>(read);
 }
 
+// The same mesh as written: the same triangles, and vertices equal by same_coordinate. When they differ,
+// `why` says where.
+inline bool same_mesh_bits(const Mesh& written, const Mesh& read, std::string& why) {
+    if (written.vertices.size() != read.vertices.size()) {
+        why = "vertex counts differ";
+        return false;
+    }
+    if (written.triangles != read.triangles) {
+        why = "triangles differ";
+        return false;
+    }
+    for (std::size_t i = 0; i < written.vertices.size(); ++i) {
+        const Vec3 &a = written.vertices[i], &b = read.vertices[i];
+        if (!same_coordinate(a.x, b.x) || !same_coordinate(a.y, b.y) || !same_coordinate(a.z, b.z)) {
+            why = "vertex " + std::to_string(i) + " differs";
+            return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace ratbez::reliability
