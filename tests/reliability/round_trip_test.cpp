@@ -195,25 +195,6 @@ private:
     double weight_exponent_;
 };
 
-bool same_mesh_bits(const Mesh& written, const Mesh& read, std::string& why) {
-    if (written.vertices.size() != read.vertices.size()) {
-        why = "vertex counts differ";
-        return false;
-    }
-    if (written.triangles != read.triangles) {
-        why = "triangles differ";
-        return false;
-    }
-    for (std::size_t i = 0; i < written.vertices.size(); ++i) {
-        const Vec3 &a = written.vertices[i], &b = read.vertices[i];
-        if (!same_coordinate(a.x, b.x) || !same_coordinate(a.y, b.y) || !same_coordinate(a.z, b.z)) {
-            why = "vertex " + std::to_string(i) + " differs";
-            return false;
-        }
-    }
-    return true;
-}
-
 // Runs every stage of one case; returns "" when all pass, else what failed.
 // strict: max_deviation within the tolerance itself; otherwise within 50x (see the OPEN FINDING below).
 std::string run_case(const Case& c, int index, bool strict) {
