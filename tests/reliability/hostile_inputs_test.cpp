@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iostream>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -349,22 +350,61 @@ TEST(HostileWeights, RevolvedProfileWithExtremeWeightsBuildsAndMeshesClosedOrRej
                      "end weights 1e-12");
 }
 
+// The area between the chord and a rational quadratic with weights 1, w, 1, as a fraction of its
+// control triangle's area (∫ y dx of the conic through (-1, 0), (0, 1), (1, 0) in closed form; f(cos θ)
+// is the circular segment, f -> 2/3 at w = 1, Archimedes' parabola). Divided through by w^2 for w > 1.
+double conic_segment_fraction(double w) {
+    if (w > 1) {
+        const double q = 1 - 1 / (w * w);
+        return 1 / q - std::acosh(w) / (w * w) / std::pow(q, 1.5);
+    }
+    return w * w / (w * w - 1) + w * std::acos(w) / std::pow(1 - w * w, 1.5);
+}
+
+// Solid::volume and Solid::area of the extreme-weight ring against Pappus and OpenCASCADE's BRepGProp on
+// the converted B-rep. The ring's profile is the square [2, 4] x [0, 2] plus two conic segments (control
+// triangles of area 1, symmetric about ρ = 3): profile area A = 4 + f(w) + f(1/w) and
+// V = 2π · 3 · A · angle / 360. A fixed Gauss rule was 1e-4 off at w = 1e3 and 33% at 1e6; the
+// adaptive quadrature of properties.cpp must be exact. The partial ring's area is the full ring's
+// lateral area times angle / 360 plus its two planar caps of area A: surface and planar (Green) faces
+// checked against each other. BRepGProp at its default accuracy agrees at w = 1e3 only (6e-9 measured,
+// 1e-7 asserted); it measured 9e-4 off at 1e6 and 17% at 1e12, where the converted B-rep is not valid
+// either: beyond 1e3 its disagreement is printed, not asserted.
+TEST(HostileWeights, ExtremeWeightsGiveExactVolume) {
+    for (double w : {1e3, 1e6, 1e12}) {
+        const double profile_area = 4 + conic_segment_fraction(w) + conic_segment_fraction(1 / w);
+        const double full_area = revolve(Profile(extreme_weight_ring(w, {1, 1 / w, 1}))).area();
+        for (double angle : {360.0, 123.0}) {
+            const std::string what = "weights " + std::to_string(w) + ", angle " + std::to_string(angle);
+            const Solid solid = revolve(Profile(extreme_weight_ring(w, {1, 1 / w, 1})), {}, {0, 0, 1}, angle);
+            const double pappus = 2 * std::numbers::pi * 3 * profile_area * angle / 360;
+            const double area = full_area * angle / 360 + (angle < 360 ? 2 * profile_area : 0.0);
+            occt::CheckOptions options;
+            options.grid = 15;
+            const occt::CheckReport report = occt::check(solid, options);
+            EXPECT_NEAR(report.volume, pappus, 1e-10 * pappus) << what;
+            EXPECT_NEAR(report.area, area, 1e-10 * area) << what;
+            if (w <= 1e3) {
+                EXPECT_TRUE(report.valid) << what << "\n" << occt::format_report(report);
+                EXPECT_NEAR(report.occt_volume, report.volume, 1e-7 * pappus) << what << "\n" << occt::format_report(report);
+                EXPECT_NEAR(report.occt_area, report.area, 1e-7 * area) << what << "\n" << occt::format_report(report);
+            }
+            std::cout << "[ measured ] " << what << ": relative to Pappus, volume " << report.volume / pappus - 1
+                      << ", OCCT volume " << report.occt_volume / pappus - 1 << "; OCCT area relative to ours "
+                      << report.occt_area / report.area - 1 << "\n";
+        }
+    }
+}
+
 // OPEN FINDING (disabled so the suite stays green until it is fixed): with a middle weight of 1e3 and
-// beyond, Solid::volume (Gauss quadrature, properties.cpp) is silently wrong — 1e-4 relative at 1e3,
-// 33% at 1e6, where OpenCASCADE's converted B-rep is still valid and agrees with the exact value
-// (about 94.25 for the full ring) — and the tessellation misses its tolerance. The quadrature
-// must subdivide where the rational parameterisation concentrates (or say it cannot): run with
+// beyond the tessellation misses its tolerance (the volume part is ExtremeWeightsGiveExactVolume
+// above, fixed by the adaptive quadrature of properties.cpp). Run with
 // --gtest_also_run_disabled_tests to reproduce.
-TEST(HostileWeights, DISABLED_ExtremeWeightsGiveExactVolumeAndMesh) {
+TEST(HostileWeights, DISABLED_ExtremeWeightsGiveExactMesh) {
     for (double w : {1e3, 1e6})
         for (double angle : {360.0, 123.0}) {
             const std::string what = "weights " + std::to_string(w) + ", angle " + std::to_string(angle);
             const Solid solid = revolve(Profile(extreme_weight_ring(w, {1, 1 / w, 1})), {}, {0, 0, 1}, angle);
-            occt::CheckOptions options;
-            options.grid = 15;
-            const occt::CheckReport report = occt::check(solid, options);
-            EXPECT_TRUE(report.valid) << what << "\n" << occt::format_report(report);
-            EXPECT_TRUE(report.passed) << what << "\n" << occt::format_report(report);
             expect_meshes_within_tolerance(solid, what);
         }
 }

@@ -1,4 +1,4 @@
-// Area and volume by Gauss–Legendre quadrature on every knot span of every face.
+// Area and volume by globally adaptive Gauss–Legendre cubature on the rational Bézier pieces of every face.
 //
 // Surface faces: area = ∫∫ |S_u x S_v| du dv, volume contribution = (1/3) ∫∫ (S - c) · (S_u x S_v) du dv
 // (divergence theorem with div(x - c) = 3; any reference point c gives the same total over a closed
@@ -7,14 +7,40 @@
 // on a plane (S - c) · n is the constant (origin - c) · n, so the volume contribution is
 // (1/3) ((origin - c) · n) A.
 //
-// Each span is integrated with an adaptive 12 x 12 point rule: a panel is accepted when the rule on it
-// and on its four quarters agree to 1e-14 of the solid's size (squared or cubed). The integrands are
-// rational functions without poles near the real spans (weights are positive), so Gauss–Legendre
-// converges geometrically and the acceptance test is reliable.
+// Every face is cut into its rational Bézier patches (A5.7, NurbsSurface::bezier_patches) and every loop
+// edge into its Bézier segments; each piece is a "cell" with a homogeneous control net of its own over
+// [0, 1]^2 (a curve is a net of one column). A fixed rule is not enough: extreme weights crowd the
+// geometry into a tiny parameter interval (a quadratic with weights 1, w, 1 runs from P0 to P1 for
+// t of order 1/w), where no Gauss node falls, so a rule and its refinement agree on a wrong value.
+// Two phases therefore:
+//  1. Weight certificate. A cell is halved by deCasteljau (A1.5 on the homogeneous points, Eq. 1.19)
+//     until, along each direction, its weights' Bernstein coefficients differ by at most a factor
+//     kMaxWeightSpread. The weight function then stays within that factor over the cell (convex hull
+//     property) and |w_s / w| <= degree · spread, so no pole of the rational integrand comes near the
+//     cell and Gauss–Legendre converges geometrically on it. Circle arcs (weights 1, cos θ) pass at once;
+//     a weight ratio R costs about log2(R) halvings per end, each a cell.
+//  2. Global adaptivity (QUADPACK's QAG strategy in 2D). On each cell the n x n rule on the whole cell
+//     is compared with the rule on its two halves in u and, separately, in v; the differences estimate
+//     the error of the whole-cell rule in each direction. The cell with the largest estimate is halved
+//     in the direction that disagrees most, until the estimates add up to at most the tolerance
+//     (kRelativeTolerance of size^3 for volume, size^2 for area, size = control box diagonal).
+// Rounding sets a floor under every cell's estimate: the quotient rule and the subdivision leave
+// errors of about ε · size in S_s and S_t, so a cell's integral carries noise of about
+// ε · size^(k-1) · (its control polygon lengths in s and t), k = 2 for area, 3 for volume. Refining a
+// cell whose estimate is at that floor cannot improve it (with weights 1e300 thousands of cells sit
+// where the surface all but stops), so such a cell counts as converged.
+// Both phases count cells against kMaxCells, so hostile input costs bounded work; when the budget runs
+// out before the tolerance is met, Error says so instead of returning an unverified number.
 #include "ratbez/properties.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
-
+#include <deque>
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
 
 #include "geometry_internal.hpp"
 #include "ratbez/error.hpp"
@@ -24,110 +50,323 @@ namespace ratbez {
 
 namespace {
 
-constexpr double kRelativeQuadratureTolerance = 1e-14;
+constexpr double kRelativeTolerance = 1e-14;
+constexpr double kMaxWeightSpread = 4;
+constexpr int kRulePoints = 12;
+constexpr int kQuickRulePoints = 6;
+constexpr std::size_t kMaxCells = 40'000;
+// The rounding floor of a cell, in units of ε · size^(k-1) · (polygon lengths): generous for degree 25.
+constexpr double kNoiseFactor = 16 * std::numeric_limits<double>::epsilon();
 
-struct SpanGrid {
-    std::vector<double> u, v;
+using Integrand = std::function<double(const detail::SurfaceFirstDerivatives&)>;
+
+// One integrand over Bézier pieces of one pair of degrees: a surface face, or one edge of a planar
+// face's loop (degree_v = 0: the piece is a curve in s and S_t = 0).
+struct Source {
+    int degree_u = 0, degree_v = 0;
+    Integrand integrand;
 };
 
-SpanGrid spans(const NurbsSurface& s) {
-    return {detail::breakpoints(s.degree_u(), s.knots_u()), detail::breakpoints(s.degree_v(), s.knots_v())};
-}
+// A piece of a source as a rational Bézier patch over [0, 1]^2 of its own; the integrand is taken in
+// these local parameters (S_s x S_t carries the Jacobian of the halving, so no scaling is needed).
+struct Cell {
+    const Source* source = nullptr;
+    std::vector<Vec4> net;  // (degree_u + 1) x (degree_v + 1), row-major
+    double whole = std::numeric_limits<double>::quiet_NaN();  // the rule on the whole cell, once known
+    // Set by assess(): the rule on the halves in u and in v, the estimate and its error bound.
+    std::array<double, 2> halves_u{}, halves_v{};
+    // `error` is the error bound, or 0 once the bound is down at the rounding floor.
+    double estimate = 0, error = 0;
+    bool split_along_u = true;
+};
 
-// The integral of integrand(S, S_u, S_v) over the face's parameter rectangle, span by span.
-// The quadrature evaluates thousands of points per span: detail::SurfaceEvaluator works on the Bézier
-// patches (A5.7) directly, without the general k-th-order machinery or any allocation per point.
-double integrate_over_spans(const NurbsSurface& surface,
-                            const std::function<double(const detail::SurfaceFirstDerivatives&)>& integrand,
-                            double absolute_tolerance, int points, int max_depth) {
-    const SpanGrid grid = spans(surface);
-    const detail::SurfaceEvaluator evaluator(surface);
-    const std::size_t span_count = (grid.u.size() - 1) * (grid.v.size() - 1);
-    double total = 0;
-    for (std::size_t a = 0; a + 1 < grid.u.size(); ++a)
-        for (std::size_t b = 0; b + 1 < grid.v.size(); ++b) {
-            total += detail::integrate([&](double u, double v) { return integrand(evaluator.first_derivatives(u, v)); }, grid.u[a],
-                                       grid.u[a + 1], grid.v[b], grid.v[b + 1],
-                                       absolute_tolerance / static_cast<double>(span_count), points, max_depth);
+// The pieces and integrands of a problem; sources live in a deque so cells can point at them.
+// The integrals add up to within `tolerance`; `noise_scale` = kNoiseFactor · size^(k-1).
+struct Problem {
+    std::deque<Source> sources;
+    std::vector<Cell> cells;
+    double tolerance = 0, noise_scale = 0;
+};
+
+// Cells created so far against kMaxCells. `quick` (the orientation check of a new Solid) stops refining
+// when the budget is spent; the measuring functions say that they cannot reach the accuracy.
+struct Budget {
+    std::string_view argument;
+    bool quick = false;
+    std::size_t cells = 0;
+
+    // Counts n new cells; false (quick) or Error (measuring) once the budget is spent.
+    bool spend(std::size_t n) {
+        cells += n;
+        if (cells <= kMaxCells) return true;
+        if (quick) return false;
+        fail(argument, "the quadrature of its area or volume cannot reach a relative accuracy of 1e-14 within " +
+                           std::to_string(kMaxCells) + " cells (its rational weights crowd the surface into too small a parameter range)");
+    }
+};
+
+// ------------------------------------------------------------------------------------ cell geometry
+
+// The net of a cell as lines along one direction: `count` lines of `degree + 1` entries each.
+struct Lines {
+    const Source& source;
+    bool along_u;
+    int count() const { return (along_u ? source.degree_v : source.degree_u) + 1; }
+    int degree() const { return along_u ? source.degree_u : source.degree_v; }
+    // The index in the row-major net (i along u, j along v) of entry k of line `line`.
+    std::size_t at(int line, int k) const {
+        const int i = along_u ? k : line, j = along_u ? line : k;
+        return static_cast<std::size_t>(i * (source.degree_v + 1) + j);
+    }
+};
+
+// max / min of the weights along one direction, the worst over the lines of the net.
+double weight_spread(const Cell& cell, bool along_u) {
+    const Lines lines{*cell.source, along_u};
+    double worst = 1;
+    for (int line = 0; line < lines.count(); ++line) {
+        double lo = std::numeric_limits<double>::infinity(), hi = 0;
+        for (int k = 0; k <= lines.degree(); ++k) {
+            const double w = cell.net[lines.at(line, k)].w;
+            lo = std::min(lo, w);
+            hi = std::max(hi, w);
         }
-    return total;
+        worst = std::max(worst, hi / lo);
+    }
+    return worst;
 }
 
-double face_size(const Face& face) {
-    if (face.kind() == Face::Kind::surface) return detail::control_box(face.surface()).diagonal();
-    detail::Box box;
-    for (const auto& loop : face.loops())
-        for (const Coedge& c : loop) box.add(detail::control_box(c.edge->curve));
-    return box.diagonal();
+// The length of the control polygon along one direction, the longest over the lines of the net: the
+// scale of the cell's isocurves in that direction, which the rounding errors of S_s or S_t are
+// proportional to.
+double polygon_length(const Cell& cell, bool along_u) {
+    const Lines lines{*cell.source, along_u};
+    double longest = 0;
+    for (int line = 0; line < lines.count(); ++line) {
+        double sum = 0;
+        for (int k = 0; k < lines.degree(); ++k)
+            sum += distance(project(cell.net[lines.at(line, k)]), project(cell.net[lines.at(line, k + 1)]));
+        longest = std::max(longest, sum);
+    }
+    return longest;
 }
 
-double planar_area(const Face& face, double absolute_tolerance, int points, int max_depth) {
-    const Plane& plane = face.plane();
-    double area = 0;
-    for (const auto& loop : face.loops())
-        for (const Coedge& c : loop) {
-            const double a = detail::green_area(c.edge->curve, plane.origin, plane.x_axis, plane.y_axis,
-                                                absolute_tolerance, points, max_depth);
-            area += c.reversed ? -a : a;
-        }
-    return area;
-}
-
-double face_area(const Face& face, double absolute_tolerance, int points, int max_depth) {
-    if (face.kind() == Face::Kind::planar) return planar_area(face, absolute_tolerance, points + 4, max_depth + 6);
-    const NurbsSurface& s = face.surface();
-    return integrate_over_spans(
-        s,
-        [](const detail::SurfaceFirstDerivatives& d) { return norm(cross(d.su, d.sv)); },
-        absolute_tolerance, points, max_depth);
-}
-
-double volume_of_faces(const std::vector<Face>& faces, int points, int max_depth, double relative_tolerance) {
-    detail::Box box;
-    for (const Face& face : faces) box.add(detail::control_box(face.surface()));
-    const Vec3 c = (box.min + box.max) * 0.5;
-    const double size = box.diagonal();
-    const double volume_tolerance = relative_tolerance * size * size * size / static_cast<double>(faces.size());
-    const double area_tolerance = relative_tolerance * size * size / static_cast<double>(faces.size());
-    double volume = 0;
-    for (const Face& face : faces) {
-        if (face.kind() == Face::Kind::planar) {
-            const Plane& plane = face.plane();
-            volume += dot(plane.origin - c, plane.normal) * face_area(face, area_tolerance, points, max_depth) / 3.0;
-        } else {
-            const NurbsSurface& s = face.surface();
-            volume += integrate_over_spans(
-                          s,
-                          [&c](const detail::SurfaceFirstDerivatives& d) { return dot(d.s - c, cross(d.su, d.sv)); },
-                          volume_tolerance, points, max_depth) /
-                      3.0;
+// The two halves of a cell at the parameter 1/2 along one direction: deCasteljau (A1.5) on every line
+// of homogeneous points; the left edge of the triangle is the first half's net, the right edge the
+// second's (the same subdivision as BezierCurve::split, Eq. 1.19).
+std::pair<Cell, Cell> halve(const Cell& cell, bool along_u) {
+    const Lines lines{*cell.source, along_u};
+    const int n = lines.degree();
+    std::pair<Cell, Cell> halves{Cell{cell.source, cell.net}, Cell{cell.source, cell.net}};
+    std::vector<Vec4> row(static_cast<std::size_t>(n + 1));
+    for (int line = 0; line < lines.count(); ++line) {
+        for (int k = 0; k <= n; ++k) row[static_cast<std::size_t>(k)] = cell.net[lines.at(line, k)];
+        for (int level = 1; level <= n; ++level) {
+            for (int k = 0; k + level <= n; ++k)
+                row[static_cast<std::size_t>(k)] = (row[static_cast<std::size_t>(k)] + row[static_cast<std::size_t>(k + 1)]) * 0.5;
+            halves.first.net[lines.at(line, level)] = row[0];
+            halves.second.net[lines.at(line, n - level)] = row[static_cast<std::size_t>(n - level)];
         }
     }
-    return volume;
+    return halves;
+}
+
+// ------------------------------------------------------------------------------------- quadrature
+
+// The tensor Gauss–Legendre rule on [s0, s1] x [t0, t1] of a cell (one node in t for a curve, whose
+// integrand does not depend on t).
+double rule(const Cell& cell, double s0, double s1, double t0, double t1, int points) {
+    const Source& source = *cell.source;
+    const detail::GaussRule& rs = detail::gauss_legendre(points);
+    const detail::GaussRule& rt = detail::gauss_legendre(source.degree_v == 0 ? 1 : points);
+    double sum = 0;
+    for (std::size_t i = 0; i < rs.nodes.size(); ++i) {
+        const double s = s0 + (s1 - s0) * rs.nodes[i];
+        double row = 0;
+        for (std::size_t j = 0; j < rt.nodes.size(); ++j) {
+            const double t = t0 + (t1 - t0) * rt.nodes[j];
+            row += rt.weights[j] *
+                   source.integrand(detail::bezier_patch_first_derivatives(cell.net.data(), source.degree_u, source.degree_v, s, t));
+        }
+        sum += rs.weights[i] * row;
+    }
+    return sum * (s1 - s0) * (t1 - t0);
+}
+
+// The whole-cell rule against the rules on the halves in u and in v. Their differences estimate the
+// whole rule's error in each direction (E_u, E_v); halves_u + halves_v - whole removes both to first
+// order and is the cell's estimate, E_u + E_v its (pessimistic) error bound — or 0 when that is no more
+// than the cell's rounding floor.
+void assess(Cell& cell, double noise_scale) {
+    if (std::isnan(cell.whole)) cell.whole = rule(cell, 0, 1, 0, 1, kRulePoints);
+    cell.halves_u = {rule(cell, 0, 0.5, 0, 1, kRulePoints), rule(cell, 0.5, 1, 0, 1, kRulePoints)};
+    if (cell.source->degree_v == 0)
+        cell.halves_v = {cell.whole, 0.0};  // a curve: nothing varies along t
+    else
+        cell.halves_v = {rule(cell, 0, 1, 0, 0.5, kRulePoints), rule(cell, 0, 1, 0.5, 1, kRulePoints)};
+    const double along_u = cell.halves_u[0] + cell.halves_u[1], along_v = cell.halves_v[0] + cell.halves_v[1];
+    const double error_u = std::abs(along_u - cell.whole), error_v = std::abs(along_v - cell.whole);
+    cell.estimate = along_u + along_v - cell.whole;
+    const double floor = noise_scale * (polygon_length(cell, true) + polygon_length(cell, false));
+    cell.error = error_u + error_v > floor ? error_u + error_v : 0.0;
+    cell.split_along_u = error_u >= error_v;
+}
+
+// Phase 1: halve every cell until its weights vary by at most kMaxWeightSpread in each direction.
+std::vector<Cell> certified(std::vector<Cell> pending, Budget& budget) {
+    std::vector<Cell> done;
+    while (!pending.empty()) {
+        Cell cell = std::move(pending.back());
+        pending.pop_back();
+        const double spread_u = weight_spread(cell, true), spread_v = weight_spread(cell, false);
+        if (std::max(spread_u, spread_v) <= kMaxWeightSpread || !budget.spend(2)) {
+            done.push_back(std::move(cell));
+            continue;
+        }
+        auto [first, second] = halve(cell, spread_u >= spread_v);
+        pending.push_back(std::move(first));
+        pending.push_back(std::move(second));
+    }
+    return done;
+}
+
+// Phase 2: refine the cell with the largest error estimate until the estimates add up to `tolerance`.
+double adaptive_sum(std::vector<Cell> cells, double tolerance, double noise_scale, Budget& budget) {
+    auto by_error = [](const Cell& a, const Cell& b) { return a.error < b.error; };
+    for (Cell& cell : cells) assess(cell, noise_scale);
+    std::make_heap(cells.begin(), cells.end(), by_error);
+    auto total_error = [&] {
+        double e = 0;
+        for (const Cell& cell : cells) e += cell.error;
+        return e;
+    };
+    double error = total_error();
+    for (;;) {
+        // The running total drifts by rounding as errors are removed and added: confirm with a fresh sum.
+        if (error <= tolerance && (error = total_error()) <= tolerance) break;
+        if (!std::isfinite(error)) break;  // a non-finite integrand: the caller reports the non-finite result
+        budget.spend(2);
+        std::pop_heap(cells.begin(), cells.end(), by_error);
+        Cell worst = std::move(cells.back());
+        cells.pop_back();
+        auto [first, second] = halve(worst, worst.split_along_u);
+        const auto& halves = worst.split_along_u ? worst.halves_u : worst.halves_v;
+        first.whole = halves[0];
+        second.whole = halves[1];
+        error -= worst.error;
+        for (Cell* child : {&first, &second}) {
+            assess(*child, noise_scale);
+            error += child->error;
+            cells.push_back(std::move(*child));
+            std::push_heap(cells.begin(), cells.end(), by_error);
+        }
+    }
+    double sum = 0;
+    for (const Cell& cell : cells) sum += cell.estimate;
+    return sum;
+}
+
+// The quick estimate for the orientation check: the low-order rule on the certified cells, no refinement.
+double quick_sum(const std::vector<Cell>& cells) {
+    double sum = 0;
+    for (const Cell& cell : cells) sum += rule(cell, 0, 1, 0, 1, kQuickRulePoints);
+    return sum;
+}
+
+double integrate(Problem problem, Budget& budget) {
+    for (const Source& source : problem.sources)
+        require(source.degree_u <= detail::kMaxEvaluatorDegree && source.degree_v <= detail::kMaxEvaluatorDegree,
+                budget.argument, "a face or edge of degree above 25 cannot be measured (OpenCASCADE's limit too)");
+    std::vector<Cell> cells = certified(std::move(problem.cells), budget);
+    return budget.quick ? quick_sum(cells) : adaptive_sum(std::move(cells), problem.tolerance, problem.noise_scale, budget);
+}
+
+// ------------------------------------------------------------------------------------------- faces
+
+// The cells of a surface face's Bézier patches (A5.7), all with one integrand of (S, S_u, S_v).
+void add_surface(const NurbsSurface& surface, Integrand integrand, Problem& problem) {
+    const Source& source = problem.sources.emplace_back(Source{surface.degree_u(), surface.degree_v(), std::move(integrand)});
+    for (const auto& row : surface.bezier_patches())
+        for (const BezierSurface& patch : row) problem.cells.push_back(Cell{&source, patch.homogeneous_points()});
+}
+
+// The cells of a planar face's loop edges for `factor` times Green's area integral (1/2)(x y' - y x')
+// in the plane frame, edge by edge and Bézier segment by segment (the edge's own direction; a reversed
+// coedge contributes with the opposite sign).
+void add_planar(const Face& face, double factor, Problem& problem) {
+    const Plane& plane = face.plane();
+    for (const auto& loop : face.loops())
+        for (const Coedge& coedge : loop) {
+            const NurbsCurve& curve = coedge.edge->curve;
+            const double sign = coedge.reversed ? -factor : factor;
+            const Source& source = problem.sources.emplace_back(
+                Source{curve.degree(), 0, [sign, &plane](const detail::SurfaceFirstDerivatives& d) {
+                           const Vec3 r = d.s - plane.origin;
+                           const double x = dot(r, plane.x_axis), y = dot(r, plane.y_axis);
+                           return sign * 0.5 * (x * dot(d.su, plane.y_axis) - y * dot(d.su, plane.x_axis));
+                       }});
+            for (const BezierCurve& segment : curve.bezier_segments())
+                problem.cells.push_back(Cell{&source, segment.homogeneous_points()});
+        }
+}
+
+void add_face_area(const Face& face, Problem& problem) {
+    if (face.kind() == Face::Kind::planar) return add_planar(face, 1.0, problem);
+    add_surface(face.surface(), [](const detail::SurfaceFirstDerivatives& d) { return norm(cross(d.su, d.sv)); }, problem);
+}
+
+// The face's contribution to the volume: (1/3) of the flux of (x - c) through it.
+void add_face_volume(const Face& face, const Vec3& c, Problem& problem) {
+    if (face.kind() == Face::Kind::planar) {
+        const Plane& plane = face.plane();
+        return add_planar(face, dot(plane.origin - c, plane.normal) / 3.0, problem);
+    }
+    add_surface(face.surface(), [c](const detail::SurfaceFirstDerivatives& d) { return dot(d.s - c, cross(d.su, d.sv)) / 3.0; },
+                problem);
+}
+
+detail::Box box_of(const std::vector<Face>& faces) {
+    detail::Box box;
+    for (const Face& face : faces) box.add(detail::control_box(face.surface()));
+    return box;
+}
+
+double volume_of_faces(const std::vector<Face>& faces, Budget budget) {
+    const detail::Box box = box_of(faces);
+    const Vec3 c = (box.min + box.max) * 0.5;
+    const double size = box.diagonal();
+    Problem problem;
+    problem.tolerance = kRelativeTolerance * size * size * size;
+    problem.noise_scale = kNoiseFactor * size * size;
+    for (const Face& face : faces) add_face_volume(face, c, problem);
+    return integrate(std::move(problem), budget);
+}
+
+double area_of_faces(const std::vector<Face>& faces, Budget budget) {
+    const double size = box_of(faces).diagonal();
+    Problem problem;
+    problem.tolerance = kRelativeTolerance * size * size;
+    problem.noise_scale = kNoiseFactor * size;
+    for (const Face& face : faces) add_face_area(face, problem);
+    return integrate(std::move(problem), budget);
 }
 
 }  // namespace
 
 double detail::signed_volume(const std::vector<Face>& faces, bool quick) {
-    return quick ? volume_of_faces(faces, 6, 0, 1e-6) : volume_of_faces(faces, 12, 6, kRelativeQuadratureTolerance);
+    return volume_of_faces(faces, Budget{"faces", quick});
 }
 
-double surface_area(const Face& face) {
-    const double size = face_size(face);
-    return face_area(face, kRelativeQuadratureTolerance * size * size, 12, 6);
-}
+double surface_area(const Face& face) { return area_of_faces({face}, Budget{"face"}); }
 
 double surface_area(const Solid& solid) {
-    const double size = solid.bounding_box().diagonal();
-    const double tolerance = kRelativeQuadratureTolerance * size * size / static_cast<double>(solid.faces().size());
-    double area = 0;
-    for (const Face& face : solid.faces()) area += face_area(face, tolerance, 12, 6);
+    const double area = area_of_faces(solid.faces(), Budget{"solid"});
     require(std::isfinite(area), "solid", "its area is not a finite double (the solid is too large to measure)");
     return area;
 }
 
 double enclosed_volume(const Solid& solid) {
-    const double volume = detail::signed_volume(solid.faces(), false);
+    const double volume = volume_of_faces(solid.faces(), Budget{"solid"});
     // A solid of size 1e150 has a volume past the double range: say so rather than return inf.
     require(std::isfinite(volume), "solid", "its volume is not a finite double (the solid is too large to measure)");
     return volume;

@@ -8,8 +8,7 @@
 namespace ratbez::detail {
 namespace {
 
-// OpenCASCADE's Geom_BSplineSurface::MaxDegree(): nothing we hand over can be higher anyway.
-constexpr int kMaxDegree = 25;
+constexpr int kMaxDegree = kMaxEvaluatorDegree;
 
 // B_{i,n}(s) and its first two derivatives for i = 0..n, by the triangular scheme (A1.3) kept at the
 // degrees n-2, n-1 and n that the derivative formulas need.
@@ -71,17 +70,24 @@ SurfaceEvaluator::Located SurfaceEvaluator::locate(double u, double v) const {
             std::clamp((v - breaks_v_[b]) / hv, 0.0, 1.0), 1 / hu, 1 / hv};
 }
 
+namespace {
+
+// The homogeneous sum S^w of one patch and its partials up to Order in local parameters.
+struct HomogeneousJet {
+    Vec4 h, hu, hv, huu, huv, hvv;
+};
+
 // S^w = sum B_i(s) B_j(t) P^w_ij: the net is contracted in t row by row, then in s.
 template <int Order>
-SurfaceEvaluator::HomogeneousJet SurfaceEvaluator::homogeneous_jet(const Located& l) const {
+HomogeneousJet homogeneous_jet(const Vec4* net, int degree_u, int degree_v, double s, double t) {
     std::array<double, kMaxDegree + 1> bu{}, dbu{}, ddbu{}, bv{}, dbv{}, ddbv{};
-    bernstein_with_derivatives(degree_u_, l.s, bu.data(), dbu.data(), ddbu.data());
-    bernstein_with_derivatives(degree_v_, l.t, bv.data(), dbv.data(), ddbv.data());
+    bernstein_with_derivatives(degree_u, s, bu.data(), dbu.data(), ddbu.data());
+    bernstein_with_derivatives(degree_v, t, bv.data(), dbv.data(), ddbv.data());
     HomogeneousJet jet;
-    for (int i = 0; i <= degree_u_; ++i) {
+    for (int i = 0; i <= degree_u; ++i) {
         Vec4 r0, r1, r2;  // the row summed against B(t), B'(t), B''(t)
-        for (int j = 0; j <= degree_v_; ++j) {
-            const Vec4& p = l.net[i * (degree_v_ + 1) + j];
+        for (int j = 0; j <= degree_v; ++j) {
+            const Vec4& p = net[i * (degree_v + 1) + j];
             const auto k = static_cast<std::size_t>(j);
             r0 += p * bv[k];
             if constexpr (Order >= 1) r1 += p * dbv[k];
@@ -102,11 +108,26 @@ SurfaceEvaluator::HomogeneousJet SurfaceEvaluator::homogeneous_jet(const Located
     return jet;
 }
 
-Vec3 SurfaceEvaluator::point(double u, double v) const { return project(homogeneous_jet<0>(locate(u, v)).h); }
+}  // namespace
+
+SurfaceFirstDerivatives bezier_patch_first_derivatives(const Vec4* net, int degree_u, int degree_v, double s, double t) {
+    const HomogeneousJet h = homogeneous_jet<1>(net, degree_u, degree_v, s, t);
+    // Quotient rule S_s = (A_s - w_s S) / w (Eq. 1.28 differentiated).
+    SurfaceFirstDerivatives d;
+    d.s = project(h.h);
+    d.su = (weighted_part(h.hu) - d.s * h.hu.w) / h.h.w;
+    d.sv = (weighted_part(h.hv) - d.s * h.hv.w) / h.h.w;
+    return d;
+}
+
+Vec3 SurfaceEvaluator::point(double u, double v) const {
+    const Located l = locate(u, v);
+    return project(homogeneous_jet<0>(l.net, degree_u_, degree_v_, l.s, l.t).h);
+}
 
 SurfaceFirstDerivatives SurfaceEvaluator::first_derivatives(double u, double v) const {
     const Located l = locate(u, v);
-    const HomogeneousJet h = homogeneous_jet<1>(l);
+    const HomogeneousJet h = homogeneous_jet<1>(l.net, degree_u_, degree_v_, l.s, l.t);
     // Quotient rule S_u = (A_u - w_u S) / w, then the chain rule to the surface's own parameters.
     SurfaceFirstDerivatives d;
     d.s = project(h.h);
@@ -117,7 +138,7 @@ SurfaceFirstDerivatives SurfaceEvaluator::first_derivatives(double u, double v) 
 
 SurfaceJet SurfaceEvaluator::jet(double u, double v) const {
     const Located l = locate(u, v);
-    const HomogeneousJet h = homogeneous_jet<2>(l);
+    const HomogeneousJet h = homogeneous_jet<2>(l.net, degree_u_, degree_v_, l.s, l.t);
     // Quotient rule: S = A / w and its partials (Leibniz on A = w S).
     const double w = h.h.w;
     SurfaceJet j;

@@ -23,6 +23,15 @@ struct SurfaceJet {
     Vec3 s, su, sv, suu, suv, svv;
 };
 
+// OpenCASCADE's Geom_BSplineSurface::MaxDegree(): nothing we hand over can be higher anyway.
+inline constexpr int kMaxEvaluatorDegree = 25;
+
+// S, S_s, S_t of ONE rational Bézier patch at local (s, t) in [0, 1]^2: `net` holds its
+// (degree_u + 1) x (degree_v + 1) homogeneous points row-major (i along s). The partials are in the
+// patch's own parameters (no chain rule); degree_v = 0 makes it a curve in s (S_t = 0). Used by the
+// adaptive quadrature of properties.cpp on deCasteljau sub-patches.
+SurfaceFirstDerivatives bezier_patch_first_derivatives(const Vec4* net, int degree_u, int degree_v, double s, double t);
+
 class SurfaceEvaluator {
 public:
     explicit SurfaceEvaluator(const NurbsSurface& surface);
@@ -41,13 +50,6 @@ private:
         double scale_u, scale_v;  // d(s)/du, d(t)/dv
     };
     Located locate(double u, double v) const;
-    // The homogeneous sum S^w of the located patch and its partials up to Order in local parameters.
-    struct HomogeneousJet {
-        Vec4 h, hu, hv, huu, huv, hvv;
-    };
-    template <int Order>
-    HomogeneousJet homogeneous_jet(const Located& located) const;
-
     int degree_u_ = 0, degree_v_ = 0;
     std::vector<double> breaks_u_, breaks_v_;
     std::vector<Vec4> patches_;  // patch (a, b) at ((a * spans_v + b) * (p+1) * (q+1))
