@@ -35,44 +35,69 @@ struct Foot {
     double u = 0, v = 0, distance = std::numeric_limits<double>::infinity();
 };
 
-// Newton's point inversion on a surface from (u, v); stops early once the distance is at most
-// `good_enough` (the caller only needs to know that), or after `max_iterations`.
+// A descent step (step_u, step_v) for F = |S - P|^2 / 2 from the 2x2 system [a b; b c] (du, dv) = -(f, g),
+// where (f, g) = (S - P) . (S_u, S_v) is F's gradient. A parameter sitting on its bound with the gradient
+// pushing it out of the domain is held there and the system solved for the other one (the active set of
+// projected Newton, Bertsekas 1982): the full step would be clamped back and could then point uphill,
+// which stalled the search on faces whose nearest point lies on their boundary (a profile joint).
+struct Step {
+    double u = 0, v = 0;
+};
+Step descent_step(double a, double b, double c, double f, double g, bool hold_u, bool hold_v) {
+    // Levenberg damping keeps the solve finite where a partial vanishes (poles, apexes).
+    const double damping = 1e-12 * (a + c) + 1e-300;
+    a += damping, c += damping;
+    if (hold_u && hold_v) return {};
+    if (hold_u) return {0, -g / c};
+    if (hold_v) return {-f / a, 0};
+    const double det = a * c - b * b;
+    if (!(det > 0)) return {};
+    return {-(c * f - b * g) / det, -(a * g - b * f) / det};
+}
+
+// Newton's point inversion on a surface from (u, v) (The NURBS Book §6.1, Eq. 6.6-6.8), globalised so
+// that it converges to a local minimum of the distance from any start: each step is the Newton step
+// where the Hessian of F is positive definite, else (or when the Newton step finds no decrease) the
+// Gauss-Newton step, which is always a descent direction; it is shortened to a trust region (the foot
+// is at most 2 |S - P| from the current surface point, so no step needs to move S further) and then
+// halved until F decreases. Stops early once the distance is at most `good_enough` (the caller only
+// needs to know that), or after `max_iterations`.
 Foot invert_on_surface(const detail::SurfaceEvaluator& s, const Vec3& p, double u, double v, int max_iterations,
                        double good_enough = -1) {
     const Interval du = s.domain_u(), dv = s.domain_v();
     Foot best{u, v, distance(s.point(u, v), p)};
+    // Tries the step from best; true when it lowered the distance by a visible move.
+    auto try_step = [&](Step step, const Vec3& su, const Vec3& sv, bool& moved) {
+        const double reach = norm(su * step.u + sv * step.v);
+        if (!(reach > 0) || !std::isfinite(reach)) return false;
+        const double shrink = std::min(1.0, 2 * best.distance / reach);
+        step.u *= shrink, step.v *= shrink;
+        for (int halving = 0; halving < 40; ++halving) {
+            const double nu = std::clamp(best.u + step.u, du.min, du.max);
+            const double nv = std::clamp(best.v + step.v, dv.min, dv.max);
+            const double dist = distance(s.point(nu, nv), p);
+            if (dist < best.distance) {
+                moved = std::abs(nu - best.u) + std::abs(nv - best.v) > 1e-15 * ((du.max - du.min) + (dv.max - dv.min));
+                best = {nu, nv, dist};
+                return true;
+            }
+            step.u *= 0.5, step.v *= 0.5;
+        }
+        return false;
+    };
     for (int iteration = 0; iteration < max_iterations && best.distance > good_enough; ++iteration) {
         const detail::SurfaceJet d = s.jet(best.u, best.v);
         const Vec3 r = d.s - p;
-        const Vec3 &su = d.su, &sv = d.sv;
-        const double f = dot(r, su), g = dot(r, sv);
-        double a = dot(su, su) + dot(r, d.suu);
-        double b = dot(su, sv) + dot(r, d.suv);
-        double c = dot(sv, sv) + dot(r, d.svv);
-        if (a <= 0 || c <= 0 || a * c - b * b <= 0) {
-            // Not a minimum's neighbourhood (or a pole, where S_u vanishes): Gauss–Newton, always a descent.
-            a = dot(su, su), b = dot(su, sv), c = dot(sv, sv);
-        }
-        // Levenberg damping keeps the 2x2 solve finite where a partial vanishes (poles, apexes).
-        const double damping = 1e-12 * (a + c) + 1e-300;
-        a += damping, c += damping;
-        const double det = a * c - b * b;
-        if (!(det > 0)) break;
-        double step_u = -(c * f - b * g) / det, step_v = -(a * g - b * f) / det;
-        bool improved = false;
-        for (int halving = 0; halving < 12; ++halving) {
-            const double nu = std::clamp(best.u + step_u, du.min, du.max);
-            const double nv = std::clamp(best.v + step_v, dv.min, dv.max);
-            const double dist = distance(s.point(nu, nv), p);
-            if (dist < best.distance) {
-                const double moved = std::abs(nu - best.u) + std::abs(nv - best.v);
-                best = {nu, nv, dist};
-                improved = moved > 1e-15 * ((du.max - du.min) + (dv.max - dv.min));
-                break;
-            }
-            step_u *= 0.5, step_v *= 0.5;
-        }
-        if (!improved) break;
+        const double f = dot(r, d.su), g = dot(r, d.sv);
+        const bool hold_u = (best.u <= du.min && f > 0) || (best.u >= du.max && f < 0);
+        const bool hold_v = (best.v <= dv.min && g > 0) || (best.v >= dv.max && g < 0);
+        const double a = dot(d.su, d.su), b = dot(d.su, d.sv), c = dot(d.sv, d.sv);
+        const double ha = a + dot(r, d.suu), hb = b + dot(r, d.suv), hc = c + dot(r, d.svv);
+        bool moved = false;
+        const bool newton_ok = ha > 0 && hc > 0 && ha * hc - hb * hb > 0 &&
+                               try_step(descent_step(ha, hb, hc, f, g, hold_u, hold_v), d.su, d.sv, moved);
+        if (!newton_ok && !try_step(descent_step(a, b, c, f, g, hold_u, hold_v), d.su, d.sv, moved)) break;
+        if (!moved) break;
     }
     return best;
 }
@@ -103,6 +128,17 @@ double invert_on_curve(const NurbsCurve& curve, const Vec3& p, double t) {
         if (!improved) break;
     }
     return best_t;
+}
+
+// The interior knot at t (up to rounding, where Newton settles on a corner), else NaN. Only a knot can
+// be a corner of the curve; deciding the side there by the tangent of one span misjudged points
+// inside the region near a polyline profile's corner as outside (seed 20262082, 5x the tolerance).
+double interior_corner(const NurbsCurve& curve, double t) {
+    const Interval d = curve.domain();
+    const double near = 1e-9 * (d.max - d.min);
+    for (double k : curve.knots())
+        if (k > d.min && k < d.max && std::abs(k - t) <= near) return k;
+    return std::numeric_limits<double>::quiet_NaN();
 }
 
 // A planar face: the plane, its boundary curves in loop order and a fine polyline of them that locates
@@ -158,7 +194,17 @@ struct PlanarRegion {
         const double end_tolerance = 1e-12 * (dom.max - dom.min);
         const bool at_start = t <= dom.min + end_tolerance, at_end = t >= dom.max - end_tolerance;
         bool inside;
-        if (!at_start && !at_end) {
+        const double corner = interior_corner(*curve.curve, t);
+        if (!at_start && !at_end && !std::isnan(corner)) {
+            // A corner inside the curve (a C0 knot of a polyline piece): the same rule as at a corner
+            // between curves, with the one-sided tangents either side of the knot.
+            const double delta = 1e-7 * (dom.max - dom.min);
+            const double before = curve.reversed ? corner + delta : corner - delta;
+            const double after = curve.reversed ? corner - delta : corner + delta;
+            const detail::Point2 tin = loop_tangent(nearest->curve, before), tout = loop_tangent(nearest->curve, after);
+            const bool convex = tin.x * tout.y - tin.y * tout.x >= 0;
+            inside = convex ? (left_of(tin) && left_of(tout)) : (left_of(tin) || left_of(tout));
+        } else if (!at_start && !at_end) {
             inside = left_of(loop_tangent(nearest->curve, t));
         } else {
             // At a corner: the region is the intersection (convex corner) or union (reflex corner) of the
@@ -223,7 +269,31 @@ struct Seed {
     Vec3 point;
     std::uint32_t face;
     double u, v;
+    std::uint32_t patch;  // the face's knot span pair (Bézier patch) the seed lies in
 };
+
+// Seed parameters along one direction: a few per knot span (the span's ends included once), so that
+// every Bézier patch of the face has seeds of its own however short its span is in parameter (a
+// rational profile piece can crowd a whole span into a sliver of the domain; with seeds spread
+// uniformly over the domain it had none, and Newton from the neighbouring span's seeds settled in that
+// span's local minimum, many times farther away). `span` gets each parameter's span index.
+std::vector<double> seed_params(const std::vector<double>& knots, int degree, Interval domain, std::vector<std::uint32_t>& span) {
+    std::vector<double> breaks;
+    for (double k : knots)
+        if (k >= domain.min && k <= domain.max && (breaks.empty() || k > breaks.back())) breaks.push_back(k);
+    const std::size_t spans = breaks.size() - 1;
+    const auto per_span = static_cast<int>(std::clamp<std::size_t>(96 / spans, 2, static_cast<std::size_t>(3 * std::max(degree, 1) + 3)));
+    std::vector<double> params;
+    span.clear();
+    for (std::size_t k = 0; k < spans; ++k)
+        for (int i = 0; i < per_span; ++i) {
+            params.push_back(breaks[k] + (breaks[k + 1] - breaks[k]) * i / per_span);
+            span.push_back(static_cast<std::uint32_t>(k));
+        }
+    params.push_back(breaks.back());  // the domain's end exactly
+    span.push_back(static_cast<std::uint32_t>(spans - 1));
+    return params;
+}
 
 // Uniform grid over the seeds: nearest-seed and radius queries visit only nearby cells.
 class SeedGrid {
@@ -302,35 +372,36 @@ public:
             if (face.kind() == Face::Kind::planar) {
                 regions_[f] = make_region(face);
                 for (const auto& s : regions_[f].segments) {
-                    seeds.push_back({regions_[f].curves[s.curve].curve->point(s.ta), id, 0, 0});
+                    seeds.push_back({regions_[f].curves[s.curve].curve->point(s.ta), id, 0, 0, 0});
                     spacing = std::max(spacing, std::hypot(s.b.x - s.a.x, s.b.y - s.a.y));
                 }
             }
             // Surface faces, and the plane patch of planar faces (its interior seeds lie in the region's box).
             const NurbsSurface& s = face.surface();
-            const int nu = seed_count(s.knots_u(), s.degree_u()), nv = seed_count(s.knots_v(), s.degree_v());
             const Interval du = s.domain_u(), dv = s.domain_v();
+            std::vector<std::uint32_t> span_u, span_v;
+            const std::vector<double> us = seed_params(s.knots_u(), s.degree_u(), du, span_u);
+            const std::vector<double> vs = seed_params(s.knots_v(), s.degree_v(), dv, span_v);
+            const std::size_t nu = us.size() - 1, nv = vs.size() - 1;
             // "The same point" up to rounding relative to the face's size: evaluating a pole row at
             // different u gives points that differ in the last bits, and bit equality missed them.
             const double coincident = 1e-12 * (norm(s.point(du.max, dv.max) - s.point(du.min, dv.min)) +
                                                norm(s.point((du.min + du.max) / 2, (dv.min + dv.max) / 2)) + 1e-300);
             auto same = [coincident](const Vec3& a, const Vec3& b) { return distance(a, b) <= coincident; };
             std::vector<Vec3> row_previous;
-            for (int i = 0; i <= nu; ++i) {
+            const auto patches_v = static_cast<std::uint32_t>(span_v.back() + 1);
+            for (std::size_t i = 0; i <= nu; ++i) {
                 std::vector<Vec3> row;
-                for (int j = 0; j <= nv; ++j) {
-                    // The last sample is the domain's end exactly (min + (max - min) may round past it).
-                    const double u = i == nu ? du.max : du.min + (du.max - du.min) * i / nu;
-                    const double v = j == nv ? dv.max : dv.min + (dv.max - dv.min) * j / nv;
+                for (std::size_t j = 0; j <= nv; ++j) {
+                    const double u = us[i], v = vs[j];
                     const Vec3 p = s.point(u, v);
                     // No seeds on a collapsed row (a pole): there every u gives the same point, Newton
                     // cannot turn u, and the seeds of the first ring around it start better.
-                    const bool collapsed_u = (i > 0 && same(p, row_previous[static_cast<std::size_t>(j)])) ||
-                                             (i == 0 && same(p, s.point(du.min + (du.max - du.min) / nu, v)));
+                    const bool collapsed_u = (i > 0 && same(p, row_previous[j])) || (i == 0 && same(p, s.point(us[1], v)));
                     const bool collapsed_v = !row.empty() && same(p, row.back());
-                    if (!collapsed_u && !collapsed_v) seeds.push_back({p, id, u, v});
+                    if (!collapsed_u && !collapsed_v) seeds.push_back({p, id, u, v, span_u[i] * patches_v + span_v[j]});
                     if (j > 0) spacing = std::max(spacing, distance(p, row.back()));
-                    if (i > 0) spacing = std::max(spacing, distance(p, row_previous[static_cast<std::size_t>(j)]));
+                    if (i > 0) spacing = std::max(spacing, distance(p, row_previous[j]));
                     row.push_back(p);
                 }
                 row_previous = std::move(row);
@@ -347,11 +418,20 @@ public:
         // The few best seeds of every face with a seed within reach of the nearest one. Several, not one:
         // at a seam the nearest seed may sit on the far side of the parameter domain (u = 0 for a point at
         // u = 0.98), where Newton's step is clamped away; a neighbouring seed starts on the right side.
+        // And the best seed of every patch within reach: the distance has a local minimum in each
+        // patch the point faces (a polyline profile), and only a start in the right patch finds it.
         constexpr std::size_t kSeedsPerFace = 4;
-        std::vector<std::vector<std::pair<double, const Seed*>>> best(solid_.faces().size());
+        using Candidate = std::pair<double, const Seed*>;
+        std::vector<std::vector<Candidate>> best(solid_.faces().size());
+        std::vector<Candidate> per_patch;
         grid_->for_each_near(p, radius, [&](const Seed& s) {
             const double d = distance(s.point, p);
             if (d > radius) return;
+            const auto same_patch = std::find_if(per_patch.begin(), per_patch.end(), [&](const Candidate& c) {
+                return c.second->face == s.face && c.second->patch == s.patch;
+            });
+            if (same_patch == per_patch.end()) per_patch.emplace_back(d, &s);
+            else if (d < same_patch->first) *same_patch = {d, &s};
             auto& list = best[s.face];
             if (list.size() == kSeedsPerFace && d >= list.back().first) return;
             if (list.size() == kSeedsPerFace) list.pop_back();
@@ -359,6 +439,10 @@ public:
                                          [](const auto& a, const auto& b) { return a.first < b.first; }),
                         {d, &s});
         });
+        for (const Candidate& c : per_patch) {
+            auto& list = best[c.second->face];
+            if (std::none_of(list.begin(), list.end(), [&](const Candidate& o) { return o.second == c.second; })) list.push_back(c);
+        }
         double result = std::numeric_limits<double>::infinity();
         for (std::size_t f = 0; f < best.size(); ++f) {
             if (best[f].empty()) continue;
@@ -384,12 +468,6 @@ public:
     }
 
 private:
-    static int seed_count(const std::vector<double>& knots, int degree) {
-        int spans = 0;
-        for (std::size_t k = 1; k < knots.size(); ++k)
-            if (knots[k] > knots[k - 1]) ++spans;
-        return std::clamp(spans * std::max(degree, 1) * 3, 12, 96);
-    }
 
     const Solid& solid_;
     std::vector<PlanarRegion> regions_;
