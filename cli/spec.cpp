@@ -51,7 +51,7 @@ std::string join(std::initializer_list<const char*> words) {
 class ObjectReader {
 public:
     ObjectReader(const json& value, std::string path, std::initializer_list<const char*> allowed)
-        : value_(value), path_(std::move(path)) {
+        : value_(value), path_(std::move(path)), allowed_(allowed.begin(), allowed.end()) {
         if (!value.is_object()) throw SpecError(path_.empty() ? "document" : path_, "must be a JSON object");
         for (const auto& item : value.items()) {
             bool known = false;
@@ -74,9 +74,28 @@ public:
         return *field;
     }
 
+    // Typed fields (defined below, beside the value readers they use).
+    double number(const char* key) const;
+    double positive(const char* key) const;
+    double non_negative(const char* key) const;
+    Vec3 point(const char* key) const;
+    Vec3 direction(const char* key) const;
+    Vec3 point_or(const char* key, Vec3 fallback) const;
+    Vec3 direction_or(const char* key, Vec3 fallback) const;
+
+    // For build(): the field a kernel Error about an argument belongs under — the field of the same name,
+    // or the one `renames` gives where the kernel's name differs from the spec's ({"start", "from"}).
+    using Renames = std::initializer_list<std::pair<const std::string, std::string>>;
+    std::map<std::string, std::string> fields(Renames renames = {}) const {
+        std::map<std::string, std::string> argument_to_field(renames);
+        for (const char* key : allowed_) argument_to_field.emplace(key, key);
+        return argument_to_field;
+    }
+
 private:
     const json& value_;
     std::string path_;
+    std::vector<const char*> allowed_;
 };
 
 std::string index_path(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
@@ -122,14 +141,20 @@ Vec3 direction(const json& value, const std::string& path) {
     return v;
 }
 
-Vec3 optional_point(const ObjectReader& object, const char* key, Vec3 fallback) {
-    const json* value = object.optional(key);
-    return value ? point(*value, object.child(key)) : fallback;
+double ObjectReader::number(const char* key) const { return ::ratbez::spec::number(required(key), child(key)); }
+double ObjectReader::positive(const char* key) const { return ::ratbez::spec::positive(required(key), child(key)); }
+double ObjectReader::non_negative(const char* key) const {
+    return ::ratbez::spec::non_negative(required(key), child(key));
 }
-
-Vec3 optional_direction(const ObjectReader& object, const char* key, Vec3 fallback) {
-    const json* value = object.optional(key);
-    return value ? direction(*value, object.child(key)) : fallback;
+Vec3 ObjectReader::point(const char* key) const { return ::ratbez::spec::point(required(key), child(key)); }
+Vec3 ObjectReader::direction(const char* key) const { return ::ratbez::spec::direction(required(key), child(key)); }
+Vec3 ObjectReader::point_or(const char* key, Vec3 fallback) const {
+    const json* value = optional(key);
+    return value ? ::ratbez::spec::point(*value, child(key)) : fallback;
+}
+Vec3 ObjectReader::direction_or(const char* key, Vec3 fallback) const {
+    const json* value = optional(key);
+    return value ? ::ratbez::spec::direction(*value, child(key)) : fallback;
 }
 
 std::vector<Vec3> point_list(const json& value, const std::string& path, std::size_t minimum) {
@@ -193,7 +218,7 @@ NurbsCurve parse_curve(const json& value, const std::string& path) {
         const ObjectReader curve(value, path, {"type", "points", "weights"});
         std::vector<Vec3> points = point_list(curve.required("points"), curve.child("points"), 2);
         const json* weights = curve.optional("weights");
-        return build(path, {{"points", "points"}, {"weights", "weights"}}, [&] {
+        return build(path, curve.fields(), [&] {
             if (!weights) return NurbsCurve::from_bezier(BezierCurve(points));
             return NurbsCurve::from_bezier(BezierCurve(points, weight_list(*weights, curve.child("weights"), points.size())));
         });
@@ -211,35 +236,33 @@ NurbsCurve parse_curve(const json& value, const std::string& path) {
             throw SpecError(curve.child("knots"), "must have len(points) + degree + 1 = " +
                                                       std::to_string(points.size() + static_cast<std::size_t>(degree) + 1) +
                                                       " values, not " + std::to_string(knots.size()));
-        return build(path, {{"degree", "degree"}, {"knots", "knots"}, {"points", "points"}, {"weights", "weights"}}, [&] {
+        return build(path, curve.fields(), [&] {
             if (!weights) return NurbsCurve(degree, knots, points);
             return NurbsCurve(degree, knots, points, weight_list(*weights, curve.child("weights"), points.size()));
         });
     }
     if (type == "line") {
         const ObjectReader curve(value, path, {"type", "from", "to"});
-        const Vec3 from = point(curve.required("from"), curve.child("from"));
-        const Vec3 to = point(curve.required("to"), curve.child("to"));
-        return build(path, {{"start", "from"}, {"end", "to"}}, [&] { return line_segment(from, to); });
+        const Vec3 from = curve.point("from");
+        const Vec3 to = curve.point("to");
+        return build(path, curve.fields({{"start", "from"}, {"end", "to"}}), [&] { return line_segment(from, to); });
     }
     if (type == "arc") {
         const ObjectReader curve(value, path, {"type", "radius", "start_deg", "end_deg", "center", "normal"});
-        const double radius = positive(curve.required("radius"), curve.child("radius"));
-        const double start = number(curve.required("start_deg"), curve.child("start_deg"));
-        const double end = number(curve.required("end_deg"), curve.child("end_deg"));
-        const Vec3 center = optional_point(curve, "center", {});
-        const Vec3 normal = optional_direction(curve, "normal", {0, 0, 1});
-        return build(path,
-                     {{"radius", "radius"}, {"start_deg", "start_deg"}, {"end_deg", "end_deg"}, {"center", "center"},
-                      {"normal", "normal"}},
+        const double radius = curve.positive("radius");
+        const double start = curve.number("start_deg");
+        const double end = curve.number("end_deg");
+        const Vec3 center = curve.point_or("center", {});
+        const Vec3 normal = curve.direction_or("normal", {0, 0, 1});
+        return build(path, curve.fields(),
                      [&] { return arc(radius, start, end, center, normal); });
     }
     if (type == "circle") {
         const ObjectReader curve(value, path, {"type", "radius", "center", "normal"});
-        const double radius = positive(curve.required("radius"), curve.child("radius"));
-        const Vec3 center = optional_point(curve, "center", {});
-        const Vec3 normal = optional_direction(curve, "normal", {0, 0, 1});
-        return build(path, {{"radius", "radius"}, {"center", "center"}, {"normal", "normal"}},
+        const double radius = curve.positive("radius");
+        const Vec3 center = curve.point_or("center", {});
+        const Vec3 normal = curve.direction_or("normal", {0, 0, 1});
+        return build(path, curve.fields(),
                      [&] { return circle(radius, center, normal); });
     }
     throw SpecError(path + ".type", "unknown curve type '" + type + "' (expected bezier, nurbs, line, arc or circle)");
@@ -269,25 +292,23 @@ BuiltShape parse_shape(const json& value, const std::string& path) {
 
     if (type == "cylinder") {
         const ObjectReader shape(value, path, {"type", "radius", "height", "center", "axis"});
-        const double radius = positive(shape.required("radius"), shape.child("radius"));
-        const double height = positive(shape.required("height"), shape.child("height"));
-        const Vec3 center = optional_point(shape, "center", {});
-        const Vec3 axis = optional_direction(shape, "axis", {0, 0, 1});
-        Solid solid = build(path, {{"radius", "radius"}, {"height", "height"}, {"center", "center"}, {"axis", "axis"}},
+        const double radius = shape.positive("radius");
+        const double height = shape.positive("height");
+        const Vec3 center = shape.point_or("center", {});
+        const Vec3 axis = shape.direction_or("axis", {0, 0, 1});
+        Solid solid = build(path, shape.fields(),
                             [&] { return cylinder(radius, height, center, axis); });
         Analytic analytic{Analytic::Kind::cylinder, center, axis, radius, radius, height, pi * radius * radius * height};
         return {type, std::move(solid), analytic};
     }
     if (type == "cone") {
         const ObjectReader shape(value, path, {"type", "radius1", "radius2", "height", "center", "axis"});
-        const double radius1 = non_negative(shape.required("radius1"), shape.child("radius1"));
-        const double radius2 = non_negative(shape.required("radius2"), shape.child("radius2"));
-        const double height = positive(shape.required("height"), shape.child("height"));
-        const Vec3 center = optional_point(shape, "center", {});
-        const Vec3 axis = optional_direction(shape, "axis", {0, 0, 1});
-        Solid solid = build(path,
-                            {{"radius1", "radius1"}, {"radius2", "radius2"}, {"height", "height"}, {"center", "center"},
-                             {"axis", "axis"}},
+        const double radius1 = shape.non_negative("radius1");
+        const double radius2 = shape.non_negative("radius2");
+        const double height = shape.positive("height");
+        const Vec3 center = shape.point_or("center", {});
+        const Vec3 axis = shape.direction_or("axis", {0, 0, 1});
+        Solid solid = build(path, shape.fields(),
                             [&] { return cone(radius1, radius2, height, center, axis); });
         const double volume = pi * height * (radius1 * radius1 + radius1 * radius2 + radius2 * radius2) / 3.0;
         Analytic analytic{Analytic::Kind::cone, center, axis, radius1, radius2, height, volume};
@@ -295,21 +316,19 @@ BuiltShape parse_shape(const json& value, const std::string& path) {
     }
     if (type == "sphere") {
         const ObjectReader shape(value, path, {"type", "radius", "center"});
-        const double radius = positive(shape.required("radius"), shape.child("radius"));
-        const Vec3 center = optional_point(shape, "center", {});
-        Solid solid = build(path, {{"radius", "radius"}, {"center", "center"}}, [&] { return sphere(radius, center); });
+        const double radius = shape.positive("radius");
+        const Vec3 center = shape.point_or("center", {});
+        Solid solid = build(path, shape.fields(), [&] { return sphere(radius, center); });
         Analytic analytic{Analytic::Kind::sphere, center, {0, 0, 1}, radius, 0, 0, 4.0 / 3.0 * pi * radius * radius * radius};
         return {type, std::move(solid), analytic};
     }
     if (type == "torus") {
         const ObjectReader shape(value, path, {"type", "major_radius", "minor_radius", "center", "axis"});
-        const double major = positive(shape.required("major_radius"), shape.child("major_radius"));
-        const double minor = positive(shape.required("minor_radius"), shape.child("minor_radius"));
-        const Vec3 center = optional_point(shape, "center", {});
-        const Vec3 axis = optional_direction(shape, "axis", {0, 0, 1});
-        Solid solid = build(path,
-                            {{"major_radius", "major_radius"}, {"minor_radius", "minor_radius"}, {"center", "center"},
-                             {"axis", "axis"}},
+        const double major = shape.positive("major_radius");
+        const double minor = shape.positive("minor_radius");
+        const Vec3 center = shape.point_or("center", {});
+        const Vec3 axis = shape.direction_or("axis", {0, 0, 1});
+        Solid solid = build(path, shape.fields(),
                             [&] { return torus(major, minor, center, axis); });
         Analytic analytic{Analytic::Kind::torus, center, axis, major, minor, 0, 2.0 * pi * pi * major * minor * minor};
         return {type, std::move(solid), analytic};
@@ -317,16 +336,14 @@ BuiltShape parse_shape(const json& value, const std::string& path) {
     if (type == "revolve") {
         const ObjectReader shape(value, path, {"type", "profile", "axis_point", "axis_dir", "angle"});
         Profile profile = parse_profile(shape.required("profile"), shape.child("profile"));
-        const Vec3 axis_point = optional_point(shape, "axis_point", {});
-        const Vec3 axis_dir = optional_direction(shape, "axis_dir", {0, 0, 1});
+        const Vec3 axis_point = shape.point_or("axis_point", {});
+        const Vec3 axis_dir = shape.direction_or("axis_dir", {0, 0, 1});
         double angle = 360.0;
         if (const json* a = shape.optional("angle")) {
             angle = number(*a, shape.child("angle"));
             if (!(angle > 0 && angle <= 360)) throw SpecError(shape.child("angle"), "must be in (0, 360] degrees");
         }
-        Solid solid = build(path,
-                            {{"profile", "profile"}, {"axis_point", "axis_point"}, {"axis_dir", "axis_dir"},
-                             {"axis", "axis_dir"}, {"angle_deg", "angle"}},
+        Solid solid = build(path, shape.fields({{"axis", "axis_dir"}, {"angle_deg", "angle"}}),
                             [&] { return revolve(profile, axis_point, axis_dir, angle); });
         Analytic analytic{Analytic::Kind::revolution, axis_point, axis_dir, 0, 0, 0, std::nullopt};
         return {type, std::move(solid), analytic};
@@ -334,11 +351,9 @@ BuiltShape parse_shape(const json& value, const std::string& path) {
     if (type == "extrude") {
         const ObjectReader shape(value, path, {"type", "profile", "direction", "distance"});
         Profile profile = parse_profile(shape.required("profile"), shape.child("profile"));
-        const Vec3 dir = direction(shape.required("direction"), shape.child("direction"));
-        const double distance = positive(shape.required("distance"), shape.child("distance"));
-        Solid solid = build(path,
-                            {{"profile", "profile"}, {"direction", "direction"}, {"displacement", "direction"},
-                             {"distance", "distance"}},
+        const Vec3 dir = shape.direction("direction");
+        const double distance = shape.positive("distance");
+        Solid solid = build(path, shape.fields({{"displacement", "direction"}}),
                             [&] { return extrude(profile, dir, distance); });
         return {type, std::move(solid), Analytic{}};
     }
