@@ -116,6 +116,23 @@ void expect_curve_matches(const Curve& ours, const std::vector<CurveSample>& sam
     }
 }
 
+// Our point and first partials against OCCT's D1 at each sample: the point relative to the control net's
+// size, each partial relative to the largest OCCT partial of its direction.
+template <class Surface>
+void expect_surface_matches(const Surface& ours, const SurfaceSamples& samples, double size, int shape,
+                            MaxTracker& point_error, MaxTracker& derivative_error) {
+    for (const SurfaceSample& s : samples.samples) {
+        const auto d = ours.derivatives(s.u, s.v, 1);
+        const double e0 = relative(d[0][0], from_occt(s.p), size);
+        const double eu = relative(d[1][0], from_occt(s.du), samples.max_du);
+        const double ev = relative(d[0][1], from_occt(s.dv), samples.max_dv);
+        point_error.add(e0);
+        derivative_error.add(std::max(eu, ev));
+        ASSERT_LE(e0, kTolerance) << "surface " << shape << " (u, v) = " << s.u << ", " << s.v;
+        ASSERT_LE(std::max(eu, ev), kDerivativeTolerance) << "surface " << shape << " (u, v) = " << s.u << ", " << s.v;
+    }
+}
+
 TEST(GeometryConversion, RandomNurbsCurvesEvaluateLikeOcct) {
     Random random(20240601);
     MaxTracker point_error("NURBS curves: max |C - D0| / size");
@@ -163,18 +180,7 @@ TEST(GeometryConversion, RandomNurbsSurfacesEvaluateLikeOcct) {
         std::vector<std::pair<double, double>> uv;
         for (int k = 0; k < kParameters; ++k)
             uv.emplace_back(us[static_cast<std::size_t>(k)], vs[static_cast<std::size_t>((k * 7) % kParameters)]);
-        const auto samples = occt_surface_samples(theirs, uv);
-        for (const SurfaceSample& s : samples.samples) {
-            const double u = s.u, v = s.v;
-            const auto d = ours.derivatives(u, v, 1);
-            const double e0 = relative(d[0][0], from_occt(s.p), size);
-            const double eu = relative(d[1][0], from_occt(s.du), samples.max_du);
-            const double ev = relative(d[0][1], from_occt(s.dv), samples.max_dv);
-            point_error.add(e0);
-            derivative_error.add(std::max(eu, ev));
-            ASSERT_LE(e0, kTolerance) << "surface " << shape << " (u, v) = " << u << ", " << v;
-            ASSERT_LE(std::max(eu, ev), kDerivativeTolerance) << "surface " << shape << " (u, v) = " << u << ", " << v;
-        }
+        expect_surface_matches(ours, occt_surface_samples(theirs, uv), size, shape, point_error, derivative_error);
     }
 }
 
@@ -267,17 +273,7 @@ TEST(GeometryConversion, RandomBezierSurfacesEvaluateLikeOcct) {
         const double size = testing::diagonal(testing::flatten(ours.points()));
         std::vector<std::pair<double, double>> uv{{0.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {1.0, 0.0}};
         while (static_cast<int>(uv.size()) < kParameters) uv.emplace_back(random.uniform(0, 1), random.uniform(0, 1));
-        const auto samples = occt_surface_samples(theirs, uv);
-        for (const SurfaceSample& s : samples.samples) {
-            const auto d = ours.derivatives(s.u, s.v, 1);
-            const double e0 = relative(d[0][0], from_occt(s.p), size);
-            const double eu = relative(d[1][0], from_occt(s.du), samples.max_du);
-            const double ev = relative(d[0][1], from_occt(s.dv), samples.max_dv);
-            point_error.add(e0);
-            derivative_error.add(std::max(eu, ev));
-            ASSERT_LE(e0, kTolerance) << "surface " << shape << " (u, v) = " << s.u << ", " << s.v;
-            ASSERT_LE(std::max(eu, ev), kDerivativeTolerance) << "surface " << shape << " (u, v) = " << s.u << ", " << s.v;
-        }
+        expect_surface_matches(ours, occt_surface_samples(theirs, uv), size, shape, point_error, derivative_error);
     }
 }
 
