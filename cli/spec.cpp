@@ -61,7 +61,11 @@ public:
     }
 
     // The document's own fields have bare names ("tolerance"), nested ones dotted paths ("shape.radius").
-    std::string child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+    // The empty key (legal JSON) has no dotted name: it is shown as [""] (found by fuzz_spec).
+    std::string child(const std::string& key) const {
+        if (key.empty()) return (path_.empty() ? "document" : path_) + "[\"\"]";
+        return path_.empty() ? key : path_ + "." + key;
+    }
     const std::string& path() const { return path_; }
 
     const json* optional(const char* key) const {

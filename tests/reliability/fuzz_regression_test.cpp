@@ -74,6 +74,22 @@ TEST(FuzzRegression, SpecNumberOverflowIsASpecError) {
         EXPECT_NE(std::string(e.reason()).find("not valid JSON"), std::string::npos) << e.what();
     }
 }
+
+// fuzz_spec found: an unknown field with the empty key ("": 1, legal JSON) at the top level was reported
+// under an empty path, which the harness counts as a broken invariant (every error names its field).
+TEST(FuzzRegression, SpecEmptyKeyIsNamed) {
+    for (const auto& [text, path] : {std::pair{R"({"": "cone", "shape": {"type": "sphere", "radius": 1}})", R"(document[""])"},
+                                     std::pair{R"({"shape": {"type": "sphere", "radius": 1, "": 2}})", R"(shape[""])"}}) {
+        replay(fuzz::run_spec, bytes(text), "empty key");
+        try {
+            (void)spec::parse_spec(text);
+            FAIL() << "the empty key was accepted: " << text;
+        } catch (const spec::SpecError& e) {
+            EXPECT_EQ(e.path(), path) << e.what();
+            EXPECT_NE(std::string(e.reason()).find("unknown field"), std::string::npos) << e.what();
+        }
+    }
+}
 #endif
 
 // fuzz_mesh found: check_mesh computed the mesh volume before validating the triangle indices, and
