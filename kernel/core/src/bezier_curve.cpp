@@ -22,10 +22,12 @@ void validate_points(const std::vector<Vec3>& points) {
                 "control point " + std::to_string(i) + " has a non-finite coordinate");
 }
 
+// The messages are built only on failure: from_homogeneous runs for every Bézier piece a tessellation
+// or evaluator extracts.
 void validate_weight(double weight, std::size_t index, const std::string& argument) {
-    require(std::isfinite(weight), argument, "weight " + std::to_string(index) + " is not a finite number");
+    require(std::isfinite(weight), argument, [&] { return "weight " + std::to_string(index) + " is not a finite number"; });
     require(weight > 0.0, argument,
-            "weight " + std::to_string(index) + " is " + std::to_string(weight) + " but must be > 0");
+            [&] { return "weight " + std::to_string(index) + " is " + std::to_string(weight) + " but must be > 0"; });
 }
 
 std::vector<Vec4> homogenize_all(const std::vector<Vec3>& points, const std::vector<double>& weights) {
@@ -67,7 +69,7 @@ BezierCurve BezierCurve::from_homogeneous(std::vector<Vec4> homogeneous_points, 
     for (std::size_t i = 0; i < homogeneous_points.size(); ++i) {
         const Vec4& p = homogeneous_points[i];
         require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), "homogeneous_points",
-                "control point " + std::to_string(i) + " has a non-finite coordinate");
+                [&] { return "control point " + std::to_string(i) + " has a non-finite coordinate"; });
         validate_weight(p.w, i, "homogeneous_points");
     }
     return BezierCurve(std::move(homogeneous_points), rational, 0);

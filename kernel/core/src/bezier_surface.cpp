@@ -36,9 +36,12 @@ Vec4 de_casteljau(const std::vector<Vec4>& points, double t) {
     return de_casteljau_strided(points.data(), points.size(), 1, t);
 }
 
-void validate_weight(double weight, const std::string& argument, const std::string& where) {
-    require(std::isfinite(weight), argument, "weight " + where + " is not a finite number");
-    require(weight > 0.0, argument, "weight " + where + " is " + std::to_string(weight) + " but must be > 0");
+// `where()` names the control point; it (and the message) is built only on failure: from_homogeneous
+// runs for every patch a tessellation or evaluator extracts.
+template <class Where>
+void validate_weight(double weight, const std::string& argument, Where&& where) {
+    require(std::isfinite(weight), argument, [&] { return "weight " + where() + " is not a finite number"; });
+    require(weight > 0.0, argument, [&] { return "weight " + where() + " is " + std::to_string(weight) + " but must be > 0"; });
 }
 
 // "[i][j]", built by appending (GCC 12 reports a false -Wrestrict for "[" + std::to_string(i) at -O3).
@@ -61,7 +64,7 @@ std::size_t validate_net(const std::vector<std::vector<Vec3>>& net) {
                 "row " + std::to_string(i) + " has " + std::to_string(net[i].size()) + " points but row 0 has " +
                     std::to_string(columns) + " (the net must be rectangular, not ragged)");
         for (std::size_t j = 0; j < columns; ++j)
-            require(is_finite(net[i][j]), "net", "control point " + index_pair(i, j) + " has a non-finite coordinate");
+            require(is_finite(net[i][j]), "net", [&] { return "control point " + index_pair(i, j) + " has a non-finite coordinate"; });
     }
     return columns;
 }
@@ -90,7 +93,7 @@ BezierSurface::BezierSurface(std::vector<std::vector<Vec3>> net, std::vector<std
         require(weights[i].size() == columns, "weights",
                 "row " + std::to_string(i) + " has " + std::to_string(weights[i].size()) +
                     " weights but the net has " + std::to_string(columns) + " columns");
-        for (std::size_t j = 0; j < columns; ++j) validate_weight(weights[i][j], "weights", index_pair(i, j));
+        for (std::size_t j = 0; j < columns; ++j) validate_weight(weights[i][j], "weights", [&] { return index_pair(i, j); });
     }
     rows_ = static_cast<int>(net.size());
     columns_ = static_cast<int>(columns);
@@ -111,8 +114,8 @@ BezierSurface BezierSurface::from_homogeneous(int rows, int columns, std::vector
         for (std::size_t j = 0; j < to_size(columns); ++j) {
             const Vec4& p = homogeneous_points[i * to_size(columns) + j];
             require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), "homogeneous_points",
-                    "control point " + index_pair(i, j) + " has a non-finite coordinate");
-            validate_weight(p.w, "homogeneous_points", index_pair(i, j));
+                    [&] { return "control point " + index_pair(i, j) + " has a non-finite coordinate"; });
+            validate_weight(p.w, "homogeneous_points", [&] { return index_pair(i, j); });
         }
     return BezierSurface(rows, columns, std::move(homogeneous_points), rational, 0);
 }

@@ -10,30 +10,32 @@ namespace {
 
 constexpr int kMaxDegree = kMaxEvaluatorDegree;
 
-// B_{i,n}(s) and its first two derivatives for i = 0..n, by the triangular scheme (A1.3) kept at the
-// degrees n-2, n-1 and n that the derivative formulas need.
+// B_{i,n}(s) and its derivatives up to Order (at most two) for i = 0..n, by the triangular scheme (A1.3)
+// built in place in b, keeping the rows of degree n-2 and n-1 that the derivative formulas need. Point
+// evaluation (Order 0) is the hot path of tessellation and deviation checks: it neither keeps the lower
+// rows nor forms derivatives, and nothing is initialised beyond the entries the scheme writes.
+template <int Order>
 void bernstein_with_derivatives(int n, double s, double* b, double* db, double* ddb) {
-    std::array<double, kMaxDegree + 1> row{};
-    std::array<double, kMaxDegree + 1> lower1{}, lower2{};
-    row[0] = 1;
+    std::array<double, kMaxDegree + 1> lower1, lower2;  // rows n-1 (n entries) and n-2 (n-1 entries)
+    b[0] = 1;
     const double t = 1 - s;
     for (int degree = 1; degree <= n; ++degree) {
-        // row holds degree - 1 here: keep the two rows the derivative formulas need.
-        if (degree - 1 == n - 2) lower2 = row;
-        if (degree - 1 == n - 1) lower1 = row;
+        // b holds degree - 1 here: keep the two rows the derivative formulas need.
+        if constexpr (Order >= 2) if (degree - 1 == n - 2) std::copy_n(b, degree, lower2.data());
+        if constexpr (Order >= 1) if (degree - 1 == n - 1) std::copy_n(b, degree, lower1.data());
         double saved = 0;
         for (int k = 0; k < degree; ++k) {
-            const double temp = row[static_cast<std::size_t>(k)];
-            row[static_cast<std::size_t>(k)] = saved + t * temp;
+            const double temp = b[k];
+            b[k] = saved + t * temp;
             saved = s * temp;
         }
-        row[static_cast<std::size_t>(degree)] = saved;
+        b[degree] = saved;
     }
     auto at = [](const std::array<double, kMaxDegree + 1>& a, int i, int size) { return i < 0 || i >= size ? 0.0 : a[static_cast<std::size_t>(i)]; };
     for (int i = 0; i <= n; ++i) {
-        b[i] = row[static_cast<std::size_t>(i)];
-        db[i] = n >= 1 ? n * (at(lower1, i - 1, n) - at(lower1, i, n)) : 0.0;
-        ddb[i] = n >= 2 ? n * (n - 1) * (at(lower2, i - 2, n - 1) - 2 * at(lower2, i - 1, n - 1) + at(lower2, i, n - 1)) : 0.0;
+        if constexpr (Order >= 1) db[i] = n >= 1 ? n * (at(lower1, i - 1, n) - at(lower1, i, n)) : 0.0;
+        if constexpr (Order >= 2)
+            ddb[i] = n >= 2 ? n * (n - 1) * (at(lower2, i - 2, n - 1) - 2 * at(lower2, i - 1, n - 1) + at(lower2, i, n - 1)) : 0.0;
     }
 }
 
@@ -77,12 +79,16 @@ struct HomogeneousJet {
     Vec4 h, hu, hv, huu, huv, hvv;
 };
 
-// S^w = sum B_i(s) B_j(t) P^w_ij: the net is contracted in t row by row, then in s.
-template <int Order>
-HomogeneousJet homogeneous_jet(const Vec4* net, int degree_u, int degree_v, double s, double t) {
-    std::array<double, kMaxDegree + 1> bu{}, dbu{}, ddbu{}, bv{}, dbv{}, ddbv{};
-    bernstein_with_derivatives(degree_u, s, bu.data(), dbu.data(), ddbu.data());
-    bernstein_with_derivatives(degree_v, t, bv.data(), dbv.data(), ddbv.data());
+// S^w = sum B_i(s) B_j(t) P^w_ij: the net is contracted in t row by row, then in s. P and Q >= 0 fix the
+// degrees at compile time (see homogeneous_jet_of_degree); -1 takes them from the arguments.
+template <int Order, int P = -1, int Q = -1>
+HomogeneousJet homogeneous_jet(const Vec4* net, int runtime_degree_u, int runtime_degree_v, double s, double t) {
+    const int degree_u = P >= 0 ? P : runtime_degree_u, degree_v = Q >= 0 ? Q : runtime_degree_v;
+    // Written by bernstein_with_derivatives up to the degree and Order used; not initialised (the point
+    // evaluation would otherwise clear six arrays of 26 per call).
+    std::array<double, kMaxDegree + 1> bu, dbu, ddbu, bv, dbv, ddbv;
+    bernstein_with_derivatives<Order>(degree_u, s, bu.data(), dbu.data(), ddbu.data());
+    bernstein_with_derivatives<Order>(degree_v, t, bv.data(), dbv.data(), ddbv.data());
     HomogeneousJet jet;
     for (int i = 0; i <= degree_u; ++i) {
         Vec4 r0, r1, r2;  // the row summed against B(t), B'(t), B''(t)
@@ -108,6 +114,29 @@ HomogeneousJet homogeneous_jet(const Vec4* net, int degree_u, int degree_v, doub
     return jet;
 }
 
+// homogeneous_jet with the degrees as template arguments when both are 1 to 3 (lines, conics and cubics:
+// most surfaces the kernel builds), so that the Bernstein triangles and the contraction unroll; the same
+// arithmetic in the same order, so the same result bit for bit. Tessellation checks and deviation
+// measurement evaluate points by the million.
+template <int Order>
+HomogeneousJet homogeneous_jet_of_degree(const Vec4* net, int degree_u, int degree_v, double s, double t) {
+    if (degree_u >= 1 && degree_u <= 3 && degree_v >= 1 && degree_v <= 3) {
+        switch (degree_u * 4 + degree_v) {
+            case 1 * 4 + 1: return homogeneous_jet<Order, 1, 1>(net, degree_u, degree_v, s, t);
+            case 1 * 4 + 2: return homogeneous_jet<Order, 1, 2>(net, degree_u, degree_v, s, t);
+            case 1 * 4 + 3: return homogeneous_jet<Order, 1, 3>(net, degree_u, degree_v, s, t);
+            case 2 * 4 + 1: return homogeneous_jet<Order, 2, 1>(net, degree_u, degree_v, s, t);
+            case 2 * 4 + 2: return homogeneous_jet<Order, 2, 2>(net, degree_u, degree_v, s, t);
+            case 2 * 4 + 3: return homogeneous_jet<Order, 2, 3>(net, degree_u, degree_v, s, t);
+            case 3 * 4 + 1: return homogeneous_jet<Order, 3, 1>(net, degree_u, degree_v, s, t);
+            case 3 * 4 + 2: return homogeneous_jet<Order, 3, 2>(net, degree_u, degree_v, s, t);
+            case 3 * 4 + 3: return homogeneous_jet<Order, 3, 3>(net, degree_u, degree_v, s, t);
+            default: break;
+        }
+    }
+    return homogeneous_jet<Order>(net, degree_u, degree_v, s, t);
+}
+
 }  // namespace
 
 SurfaceFirstDerivatives bezier_patch_first_derivatives(const Vec4* net, int degree_u, int degree_v, double s, double t) {
@@ -122,12 +151,12 @@ SurfaceFirstDerivatives bezier_patch_first_derivatives(const Vec4* net, int degr
 
 Vec3 SurfaceEvaluator::point(double u, double v) const {
     const Located l = locate(u, v);
-    return project(homogeneous_jet<0>(l.net, degree_u_, degree_v_, l.s, l.t).h);
+    return project(homogeneous_jet_of_degree<0>(l.net, degree_u_, degree_v_, l.s, l.t).h);
 }
 
 SurfaceFirstDerivatives SurfaceEvaluator::first_derivatives(double u, double v) const {
     const Located l = locate(u, v);
-    const HomogeneousJet h = homogeneous_jet<1>(l.net, degree_u_, degree_v_, l.s, l.t);
+    const HomogeneousJet h = homogeneous_jet_of_degree<1>(l.net, degree_u_, degree_v_, l.s, l.t);
     // Quotient rule S_u = (A_u - w_u S) / w, then the chain rule to the surface's own parameters.
     SurfaceFirstDerivatives d;
     d.s = project(h.h);

@@ -136,7 +136,8 @@ SideMap map_side(const Face& face, Side side) {
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// Curvature data of a surface face on a fine sample grid, and the parameter lines derived from it.
+// Curvature data of a surface face on a sample grid (coarse, then fine where it pays), and the parameter
+// lines derived from it.
 
 // The distinct knots of a knot vector inside its domain (the span boundaries).
 std::vector<double> breakpoints(const std::vector<double>& knots, Interval domain) {
@@ -148,15 +149,27 @@ std::vector<double> breakpoints(const std::vector<double>& knots, Interval domai
     return b;
 }
 
-std::vector<double> sample_params(const std::vector<double>& breaks) {
+// Curvature samples per knot span: coarse first; fine when the grid turns out dense enough that the finer
+// (less conservative) line densities pay for the sampling (see Tessellator::plan_surfaces).
+constexpr std::size_t kCoarseSamplesPerSpan = 8, kFineSamplesPerSpan = 16;
+
+// `per_span` samples in every knot span, fewer when there are many spans (at most about 64 x per_span
+// in all, at least two per span).
+std::vector<double> sample_params(const std::vector<double>& breaks, std::size_t per_span_limit) {
     const std::size_t spans = breaks.size() - 1;
-    const std::size_t per_span = std::max<std::size_t>(2, std::min<std::size_t>(16, 1024 / spans));
+    const std::size_t per_span = std::max<std::size_t>(2, std::min(per_span_limit, 64 * per_span_limit / spans));
     std::vector<double> s;
     for (std::size_t k = 0; k < spans; ++k)
         for (std::size_t i = 0; i < per_span; ++i)
             s.push_back(breaks[k] + (breaks[k + 1] - breaks[k]) * static_cast<double>(i) / static_cast<double>(per_span));
     s.push_back(breaks.back());
     return s;
+}
+
+// How many samples sample_curvature takes with kFineSamplesPerSpan.
+double fine_sample_count(const NurbsSurface& s) {
+    return static_cast<double>(sample_params(breakpoints(s.knots_u(), s.domain_u()), kFineSamplesPerSpan).size()) *
+           static_cast<double>(sample_params(breakpoints(s.knots_v(), s.domain_v()), kFineSamplesPerSpan).size());
 }
 
 struct CurvatureSamples {
@@ -183,10 +196,10 @@ std::optional<Vec3> collapsed_side_normal(const Vec3& su, const Vec3& sv, const 
     return n / length;
 }
 
-CurvatureSamples sample_curvature(const NurbsSurface& s) {
+CurvatureSamples sample_curvature(const NurbsSurface& s, std::size_t per_span) {
     CurvatureSamples c;
-    c.us = sample_params(breakpoints(s.knots_u(), s.domain_u()));
-    c.vs = sample_params(breakpoints(s.knots_v(), s.domain_v()));
+    c.us = sample_params(breakpoints(s.knots_u(), s.domain_u()), per_span);
+    c.vs = sample_params(breakpoints(s.knots_v(), s.domain_v()), per_span);
     c.L.resize(c.us.size() * c.vs.size());
     c.N.resize(c.L.size());
     c.normals.resize(c.L.size());
@@ -214,19 +227,6 @@ CurvatureSamples sample_curvature(const NurbsSurface& s) {
         }
     return c;
 }
-
-// A view of the samples with the chosen direction first: first(a, b) indexes direction `a` sample a and
-// the other direction's sample b.
-struct DirectionView {
-    const CurvatureSamples& c;
-    bool u_first;
-    const std::vector<double>& first() const { return u_first ? c.us : c.vs; }
-    const std::vector<double>& second() const { return u_first ? c.vs : c.us; }
-    std::size_t at(std::size_t a, std::size_t b) const { return u_first ? c.at(a, b) : c.at(b, a); }
-    double k_first(std::size_t a, std::size_t b) const { return u_first ? c.L[at(a, b)] : c.N[at(a, b)]; }
-    double k_second(std::size_t a, std::size_t b) const { return u_first ? c.N[at(a, b)] : c.L[at(a, b)]; }
-    const Vec3& normal(std::size_t a, std::size_t b) const { return c.normals[at(a, b)]; }
-};
 
 // Lines over the samples' range with density rho (per sample interval, lines per unit parameter),
 // equidistributed: each line interval carries the same integral of rho. Every piece between two
@@ -261,26 +261,26 @@ std::vector<double> place_lines(const std::vector<double>& samples, const std::v
     return lines;
 }
 
-// The parameter lines of one direction: the spacing the share `budget8` (= 8 x allowed error) allows,
-// the angle limit, and a floor of `min_segments` over the whole range. `budget8_at(a, b)` is the budget at
-// each sample pair; curvature is `k(a, b)`.
-template <class Budget, class Curvature, class Normal>
-std::vector<double> lines_for(const std::vector<double>& samples, std::size_t other_count, Budget&& budget8_at,
-                              Curvature&& k, Normal&& normal, double angle_rad, int min_segments,
-                              const std::vector<double>& breaks, double max_lines) {
-    std::vector<double> rho(samples.size() - 1, 0.0);
-    const double floor_density = min_segments / (samples.back() - samples.front());
+// The line density (lines per unit parameter) of one sample interval of length h: the floor, the
+// curvature term sqrt(|k| / budget8) (given as the interval's largest ratio |k| / budget8, budget8 = 8 x the
+// allowed error), and the angle limit from `turn`, the largest change of the unit normal across the
+// interval (sqrt(2) for the cell diagonal).
+double interval_density(double floor, double k_over_budget8, double turn, double h, double angle_rad) {
+    double r = std::max(floor, std::sqrt(k_over_budget8));
+    if (angle_rad > 0) r = std::max(r, turn / h * std::numbers::sqrt2 / angle_rad);
+    return r;
+}
+
+// The parameter lines of one direction from the density `density(a)` of each sample interval a; empty
+// when they would be more than `max_lines`.
+template <class Density>
+std::vector<double> lines_from_density(const std::vector<double>& samples, Density&& density,
+                                       const std::vector<double>& breaks, double max_lines, std::vector<double>& rho) {
+    rho.resize(samples.size() - 1);
     double total = 0;
     for (std::size_t a = 0; a + 1 < samples.size(); ++a) {
-        double r = floor_density;
-        const double h = samples[a + 1] - samples[a];
-        for (std::size_t b = 0; b < other_count; ++b) {
-            for (std::size_t e : {a, a + 1}) r = std::max(r, std::sqrt(std::abs(k(e, b)) / budget8_at(e, b)));
-            // Normals at the ends of any mesh edge within angle: sqrt(2) for the cell diagonal.
-            if (angle_rad > 0) r = std::max(r, distance(normal(a + 1, b), normal(a, b)) / h * std::numbers::sqrt2 / angle_rad);
-        }
-        rho[a] = r;
-        total += r * h;
+        rho[a] = density(a);
+        total += rho[a] * (samples[a + 1] - samples[a]);
     }
     if (total > max_lines) return {};
     return place_lines(samples, rho, breaks);
@@ -302,35 +302,72 @@ struct Grid {
 
 // The economical grid for an error target: both direction orders and several shares of the tolerance
 // for the first direction; the grid with the fewest cells wins. Empty grid: over `max_cells`.
+//
+// Everything that does not depend on the share is computed once per call: the first direction's
+// curvature term is max |k| over each sample line divided by the share's budget, and the angle terms
+// depend on the samples only. What remains per share is one pass over the samples for the second
+// direction's budget (which depends on the first direction's actual spacing), comparing |k| / budget
+// and taking one square root per sample interval.
 Grid choose_grid(const CurvatureSamples& c, double target, double angle_rad, std::array<int, 2> min_segments,
                  const std::array<std::vector<double>, 2>& creases, double max_cells) {
+    const std::size_t nu = c.us.size(), nv = c.vs.size();
+    std::vector<double> max_L(nu, 0.0), max_N(nv, 0.0), turn_u(nu - 1, 0.0), turn_v(nv - 1, 0.0);
+    for (std::size_t i = 0; i < nu; ++i)
+        for (std::size_t j = 0; j < nv; ++j) {
+            const std::size_t k = c.at(i, j);
+            max_L[i] = std::max(max_L[i], std::abs(c.L[k]));
+            max_N[j] = std::max(max_N[j], std::abs(c.N[k]));
+            if (angle_rad > 0) {
+                if (i + 1 < nu) turn_u[i] = std::max(turn_u[i], distance(c.normals[c.at(i + 1, j)], c.normals[k]));
+                if (j + 1 < nv) turn_v[j] = std::max(turn_v[j], distance(c.normals[k + 1], c.normals[k]));
+            }
+        }
+
     Grid best;
     double best_cells = std::numeric_limits<double>::infinity();
+    std::vector<double> rho, h_first, ratio;
     for (bool u_first : {true, false}) {
-        const DirectionView view{c, u_first};
+        const std::vector<double>& first_samples = u_first ? c.us : c.vs;
+        const std::vector<double>& second_samples = u_first ? c.vs : c.us;
+        const std::vector<double>& max_k_first = u_first ? max_L : max_N;
+        const std::vector<double>& turn_first = u_first ? turn_u : turn_v;
+        const std::vector<double>& turn_second = u_first ? turn_v : turn_u;
+        const std::vector<double>& k_first = u_first ? c.L : c.N;
+        const std::vector<double>& k_second = u_first ? c.N : c.L;
         const int min_first = min_segments[u_first ? 0 : 1], min_second = min_segments[u_first ? 1 : 0];
         const auto& creases_first = creases[u_first ? 0 : 1];
         const auto& creases_second = creases[u_first ? 1 : 0];
+        const double floor_first = min_first / (first_samples.back() - first_samples.front());
+        const double floor_second = min_second / (second_samples.back() - second_samples.front());
         for (double share : {0.3, 0.4, 0.5, 0.6, 0.7, 0.8}) {
-            const auto first = lines_for(
-                view.first(), view.second().size(), [&](std::size_t, std::size_t) { return 8 * share * target; },
-                [&](std::size_t a, std::size_t b) { return view.k_first(a, b); },
-                [&](std::size_t a, std::size_t b) { return view.normal(a, b); }, angle_rad, min_first, creases_first,
-                max_cells);
+            const double budget8 = 8 * share * target;
+            const auto first = lines_from_density(
+                first_samples,
+                [&](std::size_t a) {
+                    return interval_density(floor_first, std::max(max_k_first[a], max_k_first[a + 1]) / budget8,
+                                            turn_first[a], first_samples[a + 1] - first_samples[a], angle_rad);
+                },
+                creases_first, max_cells, rho);
             if (first.empty()) continue;
             // What the first direction's actual chords leave of the budget where the curvatures add up.
-            std::vector<double> h_first(view.first().size());
-            for (std::size_t a = 0; a < h_first.size(); ++a) h_first[a] = spacing_at(first, view.first()[a]);
-            auto remaining = [&](std::size_t b, std::size_t a) {
-                const double k1 = view.k_first(a, b), k2 = view.k_second(a, b);
-                const double used = k1 * k2 > 0 ? std::abs(k1) * h_first[a] * h_first[a] : 0.0;
-                return std::max(8 * target - used, 0.05 * 8 * target);
-            };
-            const auto second = lines_for(
-                view.second(), view.first().size(), remaining,
-                [&](std::size_t b, std::size_t a) { return view.k_second(a, b); },
-                [&](std::size_t b, std::size_t a) { return view.normal(a, b); }, angle_rad, min_second,
-                creases_second, max_cells / static_cast<double>(first.size() - 1));
+            h_first.resize(first_samples.size());
+            for (std::size_t a = 0; a < h_first.size(); ++a) h_first[a] = spacing_at(first, first_samples[a]);
+            const double full = 8 * target, least = 0.05 * 8 * target;
+            ratio.assign(second_samples.size(), 0.0);
+            for (std::size_t i = 0; i < nu; ++i)
+                for (std::size_t j = 0; j < nv; ++j) {
+                    const std::size_t k = c.at(i, j), a = u_first ? i : j, b = u_first ? j : i;
+                    const double k1 = k_first[k], k2 = k_second[k];
+                    const double used = k1 * k2 > 0 ? std::abs(k1) * h_first[a] * h_first[a] : 0.0;
+                    ratio[b] = std::max(ratio[b], std::abs(k2) / std::max(full - used, least));
+                }
+            const auto second = lines_from_density(
+                second_samples,
+                [&](std::size_t b) {
+                    return interval_density(floor_second, std::max(ratio[b], ratio[b + 1]), turn_second[b],
+                                            second_samples[b + 1] - second_samples[b], angle_rad);
+                },
+                creases_second, max_cells / static_cast<double>(first.size() - 1), rho);
             if (second.empty()) continue;
             const double cells = static_cast<double>(first.size() - 1) * static_cast<double>(second.size() - 1);
             if (cells < best_cells) {
@@ -344,8 +381,15 @@ Grid choose_grid(const CurvatureSamples& c, double target, double angle_rad, std
 }
 
 // Knot lines across which the surface has a crease (C0 in geometry, not only in parameter: the rational
-// circle's double knots are G1 and need no line). Detected by normals just either side of the knot.
-std::vector<double> crease_lines(const NurbsSurface& s, bool along_u) {
+// circle's double knots are G1 and need no line). Detected by normals just either side of the knot, from
+// the evaluator's partials (NurbsSurface::normal, far dearer, only where they are nearly parallel).
+std::vector<double> crease_lines(const NurbsSurface& s, const detail::SurfaceEvaluator& e, bool along_u) {
+    auto normal = [&](double u, double v) {
+        const detail::SurfaceFirstDerivatives p = e.first_derivatives(u, v);
+        const Vec3 n = cross(p.su, p.sv);
+        const double length = norm(n);
+        return length > 1e-10 * (dot(p.su, p.su) + dot(p.sv, p.sv)) ? n / length : s.normal(u, v);
+    };
     const Interval d = along_u ? s.domain_u() : s.domain_v();
     const Interval other = along_u ? s.domain_v() : s.domain_u();
     const auto breaks = breakpoints(along_u ? s.knots_u() : s.knots_v(), d);
@@ -355,8 +399,8 @@ std::vector<double> crease_lines(const NurbsSurface& s, bool along_u) {
         bool crease = false;
         for (int q = 1; q <= 5 && !crease; ++q) {
             const double w = other.min + (other.max - other.min) * q / 6.0;
-            const Vec3 before = along_u ? s.normal(breaks[k] - delta, w) : s.normal(w, breaks[k] - delta);
-            const Vec3 after = along_u ? s.normal(breaks[k] + delta, w) : s.normal(w, breaks[k] + delta);
+            const Vec3 before = along_u ? normal(breaks[k] - delta, w) : normal(w, breaks[k] - delta);
+            const Vec3 after = along_u ? normal(breaks[k] + delta, w) : normal(w, breaks[k] + delta);
             crease = distance(before, after) > 1e-4;
         }
         if (crease) result.push_back(breaks[k]);
@@ -474,13 +518,16 @@ std::pair<double, double> triangle_parameters(const CellTriangle& t, const std::
 // The distance from p to the surface point at (u, v), improved (when above `good_enough`) by up to two
 // Gauss–Newton steps towards the foot of p: every value is the distance to a point of the surface, so
 // an upper bound of the distance to the surface. The steps matter where the parameterisation shears
-// (near poles the barycentric (u, v) lands beside the chord's point, not across it).
+// (near poles the barycentric (u, v) lands beside the chord's point, not across it). `start()` gives S,
+// S_u and S_v at (u, v) for the first step: the caller may have them from a batch; they only steer the
+// step, the bound is always a distance to an evaluated surface point.
+template <class Start>
 double distance_bound(const detail::SurfaceEvaluator& s, const Vec3& p, double u, double v, const Vec3& surface_point,
-                      double good_enough) {
+                      Start&& start, double good_enough) {
     double best = distance(surface_point, p);
     const Interval du = s.domain_u(), dv = s.domain_v();
     for (int step = 0; step < 2 && best > good_enough; ++step) {
-        const detail::SurfaceFirstDerivatives d = s.first_derivatives(u, v);
+        const detail::SurfaceFirstDerivatives d = step == 0 ? start() : s.first_derivatives(u, v);
         const Vec3 r = p - d.s;
         const double a = dot(d.su, d.su), b = dot(d.su, d.sv), c = dot(d.sv, d.sv);
         const double det = a * c - b * b;
@@ -493,7 +540,7 @@ double distance_bound(const detail::SurfaceEvaluator& s, const Vec3& p, double u
     return best;
 }
 double distance_bound(const detail::SurfaceEvaluator& s, const Vec3& p, double u, double v, double good_enough) {
-    return distance_bound(s, p, u, v, s.point(u, v), good_enough);
+    return distance_bound(s, p, u, v, s.point(u, v), [&] { return s.first_derivatives(u, v); }, good_enough);
 }
 
 // The points of a triangle where its chordal error is sampled: every barycentric point with coordinates
@@ -594,10 +641,11 @@ struct CheckResult {
 };
 
 // The check of one cell from its 7 x 7 lattice of surface points (`at(a, b)`, parameters `us[a]`,
-// `vs[b]`): exactly what the general path below computes for a cell without collapsed corners, with
-// the surface points taken from the batch instead of evaluated one by one.
-template <class At>
-void check_plain_cell(const detail::SurfaceEvaluator& s, const Settings& settings, At&& at, const double* us,
+// `vs[b]`): what the general path below computes for a cell without collapsed corners, with the surface
+// points taken from the batch instead of evaluated one by one, and the first Gauss-Newton step of
+// distance_bound steered by `partials_at(a, b)` (S_u, S_v from lattice differences) instead of a jet.
+template <class At, class PartialsAt>
+void check_plain_cell(const detail::SurfaceEvaluator& s, const Settings& settings, At&& at, PartialsAt&& partials_at, const double* us,
                       const double* vs, std::size_t i, std::size_t j, const Vec3* normals, std::size_t nv,
                       CheckResult& result) {
     static const std::array<CellSamples, 2> kSamples{lattice_samples(false), lattice_samples(true)};
@@ -607,30 +655,39 @@ void check_plain_cell(const detail::SurfaceEvaluator& s, const Settings& setting
     const double cost_00_11 = distance(center, 0.5 * (c[0] + c[2])) + 1e-9 * distance(c[0], c[2]);
     const double cost_10_01 = distance(center, 0.5 * (c[1] + c[3])) + 1e-9 * distance(c[1], c[3]);
     const CellSamples& samples = kSamples[cost_00_11 < cost_10_01 ? 1 : 0];
-    // A sample within the tolerance passes as it is: Gauss-Newton only needs to lower the bounds above it.
+    // The cell's error is the largest sample bound. A sample within the tolerance passes as it is (its
+    // first value is its bound): only the few above it need Gauss-Newton steps. A step only lowers a
+    // bound below its first value, so taking those by decreasing first value, one whose first value is
+    // already below the largest bound so far cannot change the maximum: the same maximum as refining
+    // every sample, for a fraction of the point-wise evaluations.
     const double good_enough = settings.tolerance;
-    // The cell's error is the largest sample bound. Gauss-Newton only lowers a sample's bound below its
-    // first value, so taking the samples by decreasing first value, a sample whose first value is already
-    // below the largest refined bound cannot change the maximum and needs no Newton steps: the same
-    // maximum as refining every sample, for a fraction of the point-wise evaluations.
     constexpr std::size_t kCount = std::tuple_size_v<CellSamples>;
-    std::array<Vec3, kCount> chord;
-    std::array<double, kCount> first;
-    std::array<std::size_t, kCount> order;
+    struct Above {
+        double first;
+        std::size_t sample;
+        Vec3 chord;
+    };
+    std::array<Above, kCount> above;
+    std::size_t above_count = 0;
+    double within2 = 0;  // the largest squared first value within the tolerance
+    const double good_enough2 = good_enough * good_enough;
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const LatticeSample& x = samples[k];
-        chord[k] = x.weights[0] * c[static_cast<std::size_t>(x.corners[0])] +
-                   x.weights[1] * c[static_cast<std::size_t>(x.corners[1])] +
-                   x.weights[2] * c[static_cast<std::size_t>(x.corners[2])];
-        first[k] = distance(at(x.a, x.b), chord[k]);
-        order[k] = k;
+        const Vec3 chord = x.weights[0] * c[static_cast<std::size_t>(x.corners[0])] +
+                           x.weights[1] * c[static_cast<std::size_t>(x.corners[1])] +
+                           x.weights[2] * c[static_cast<std::size_t>(x.corners[2])];
+        const Vec3 d = at(x.a, x.b) - chord;
+        const double d2 = dot(d, d);
+        if (d2 <= good_enough2) within2 = std::max(within2, d2);
+        else above[above_count++] = {std::sqrt(d2), k, chord};
     }
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return first[x] > first[y]; });
-    double error = 0;
-    for (std::size_t k : order) {
-        if (first[k] <= error) break;
-        const LatticeSample& x = samples[k];
-        error = std::max(error, distance_bound(s, chord[k], us[x.a], vs[x.b], at(x.a, x.b), good_enough));
+    std::sort(above.begin(), above.begin() + static_cast<std::ptrdiff_t>(above_count),
+              [](const Above& x, const Above& y) { return x.first > y.first; });
+    double error = std::sqrt(within2);
+    for (std::size_t n = 0; n < above_count && above[n].first > error; ++n) {
+        const LatticeSample& x = samples[above[n].sample];
+        error = std::max(error, distance_bound(s, above[n].chord, us[x.a], vs[x.b], at(x.a, x.b),
+                                               [&] { return partials_at(x.a, x.b); }, good_enough));
     }
     const double ratio = error / settings.tolerance;
     bool angle_failed = false;
@@ -754,7 +811,8 @@ CheckResult check_grid(const SurfacePlan& plan, const Settings& settings, const 
     auto check_block = [&](const std::vector<std::size_t>& rows, const std::vector<std::size_t>& columns) {
         if (rows.empty() || columns.empty()) return;
         const std::vector<double> vs = lattice(g.v, columns);
-        const std::size_t per_chunk = std::max<std::size_t>(1, 16384 / (49 * columns.size()));
+        // About 4096 lattice points per call: their coordinates (100 kB) stay in the cache for the checks.
+        const std::size_t per_chunk = std::max<std::size_t>(1, 4096 / (49 * columns.size()));
         for (std::size_t r0 = 0; r0 < rows.size(); r0 += per_chunk) {
             chunk.assign(rows.begin() + static_cast<std::ptrdiff_t>(r0),
                          rows.begin() + static_cast<std::ptrdiff_t>(std::min(rows.size(), r0 + per_chunk)));
@@ -768,8 +826,25 @@ CheckResult check_grid(const SurfacePlan& plan, const Settings& settings, const 
                     auto at = [&](int a, int b) {
                         return batch.points[base + static_cast<std::size_t>(a) * width + static_cast<std::size_t>(b)];
                     };
+                    // S_u and S_v for the first Gauss-Newton step, by differences of the lattice points:
+                    // central inside the cell, the second-order one-sided formula on its sides. They only
+                    // steer the step (the bound is a distance to an evaluated surface point), and
+                    // O(h^2 / 36) accurate they steer it as well as exact partials, without evaluating
+                    // partials for the whole lattice or a jet per sample.
+                    const double* cu = us.data() + 7 * il;
+                    const double* cv = vs.data() + 7 * jl;
+                    auto difference = [](auto&& p, int k, const double* t) -> Vec3 {
+                        if (k == 0) return (-3.0 * p(0) + 4.0 * p(1) - p(2)) / (t[2] - t[0]);
+                        if (k == 6) return (3.0 * p(6) - 4.0 * p(5) + p(4)) / (t[6] - t[4]);
+                        return (p(k + 1) - p(k - 1)) / (t[k + 1] - t[k - 1]);
+                    };
+                    auto partials_at = [&](int a, int b) {
+                        return detail::SurfaceFirstDerivatives{
+                            at(a, b), difference([&](int k) { return at(k, b); }, a, cu),
+                            difference([&](int k) { return at(a, k); }, b, cv)};
+                    };
                     if (plain(i, j)) {
-                        check_plain_cell(s, settings, at, us.data() + 7 * il, vs.data() + 7 * jl, i, j,
+                        check_plain_cell(s, settings, at, partials_at, us.data() + 7 * il, vs.data() + 7 * jl, i, j,
                                          normals.empty() ? nullptr : normals.data(), nv, result);
                     } else {
                         check_general(i, j, [&](std::size_t di, std::size_t dj) { return at(6 * static_cast<int>(di), 6 * static_cast<int>(dj)); });
@@ -910,10 +985,20 @@ private:
             plan.evaluator = std::make_shared<const detail::SurfaceEvaluator>(face.surface());
             for (Side side : kSides) plan.sides[static_cast<std::size_t>(index(side))] = map_side(face, side);
             plan.min_segments = minimum_segments(plan.sides);
-            plan.creases = {crease_lines(face.surface(), true), crease_lines(face.surface(), false)};
-            curvatures.push_back(sample_curvature(face.surface()));
+            plan.creases = {crease_lines(face.surface(), *plan.evaluator, true),
+                            crease_lines(face.surface(), *plan.evaluator, false)};
+            // The coarse samples first. Their line densities are a little more conservative (each is the
+            // largest over a longer sample interval): that costs a few cells on a small grid, while the fine
+            // sampling would cost more than checking the whole grid. Resampled finely once the grid has
+            // more than a quarter as many cells as the fine samples (or the coarse estimate is over budget).
+            curvatures.push_back(sample_curvature(face.surface(), kCoarseSamplesPerSpan));
             plan.grid = choose_grid(curvatures.back(), settings_.tolerance, settings_.angle_rad, plan.min_segments,
                                     plan.creases, max_cells);
+            if (plan.grid.u.empty() || 4 * plan.grid.cells() > fine_sample_count(face.surface())) {
+                curvatures.back() = sample_curvature(face.surface(), kFineSamplesPerSpan);
+                plan.grid = choose_grid(curvatures.back(), settings_.tolerance, settings_.angle_rad, plan.min_segments,
+                                        plan.creases, max_cells);
+            }
             if (plan.grid.u.empty()) throw_over_budget(max_cells * 2 + 1, settings_.max_triangles);
             plans_.push_back(std::move(plan));
         }
@@ -994,20 +1079,21 @@ private:
             return {false, side_samples[static_cast<std::size_t>(index(side))][side_index(side, p)].second};
         };
 
+        // The interior grid points in one batch (surface_grid.hpp); boundary points are edge samples.
+        evaluate_grid(plan.face->surface(), g.u, g.v, GridOutput::points, grid_points_);
         std::vector<Id> ids(nu * nv);
         for (std::size_t i = 0; i < nu; ++i)
             for (std::size_t j = 0; j < nv; ++j) {
-                std::vector<std::pair<bool, Id>> candidates;  // (degenerate, id) from the sides through the point
-                if (j == 0) candidates.push_back(side_id(Side::v_min, g.u[i]));
-                if (i == nu - 1) candidates.push_back(side_id(Side::u_max, g.v[j]));
-                if (j == nv - 1) candidates.push_back(side_id(Side::v_max, g.u[i]));
-                if (i == 0) candidates.push_back(side_id(Side::u_min, g.v[j]));
-                if (candidates.empty()) {
-                    ids[i * nv + j] = assembler_.add_point(s.point(g.u[i], g.v[j]));
-                } else {
-                    std::stable_sort(candidates.begin(), candidates.end());  // a non-degenerate side first
-                    ids[i * nv + j] = candidates.front().second;
-                }
+                // (degenerate, id) from the sides through the point: the least, a non-degenerate side first.
+                std::optional<std::pair<bool, Id>> chosen;
+                auto consider = [&](std::pair<bool, Id> candidate) {
+                    if (!chosen || candidate < *chosen) chosen = candidate;
+                };
+                if (j == 0) consider(side_id(Side::v_min, g.u[i]));
+                if (i == nu - 1) consider(side_id(Side::u_max, g.v[j]));
+                if (j == nv - 1) consider(side_id(Side::v_max, g.u[i]));
+                if (i == 0) consider(side_id(Side::u_min, g.v[j]));
+                ids[i * nv + j] = chosen ? chosen->second : assembler_.add_point(grid_points_.point(i, j));
             }
 
         auto vertex = [&](std::size_t i, std::size_t j) {
@@ -1095,6 +1181,7 @@ private:
     std::vector<SurfacePlan> plans_;
     std::map<const Edge*, EdgeSamples> edge_samples_;
     MeshAssembler assembler_;
+    SurfaceGrid grid_points_;  // mesh_surface's batch, kept to reuse its storage from face to face
 };
 
 }  // namespace
