@@ -14,7 +14,7 @@ namespace ratbez {
 namespace {
 
 void require_degree(int n) {
-    require(n >= 0, "n", "the degree must be >= 0, got " + std::to_string(n));
+    require(n >= 0, "n", [&] { return "the degree must be >= 0, got " + std::to_string(n); });
 }
 
 }  // namespace
@@ -59,7 +59,7 @@ std::vector<double> all_bernstein(int n, double u) {
 
 std::vector<double> all_bernstein_derivatives(int n, int k, double u) {
     require_degree(n);
-    require(k >= 0, "k", "the derivative order must be >= 0, got " + std::to_string(k));
+    require(k >= 0, "k", [&] { return "the derivative order must be >= 0, got " + std::to_string(k); });
     require_in_domain(u, 0.0, 1.0, "u");
 
     const auto size = static_cast<std::size_t>(n) + 1;

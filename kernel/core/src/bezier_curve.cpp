@@ -19,7 +19,7 @@ void validate_points(const std::vector<Vec3>& points) {
     require(!points.empty(), "points", "a Bézier curve needs at least one control point");
     for (std::size_t i = 0; i < points.size(); ++i)
         require(is_finite(points[i]), "points",
-                "control point " + std::to_string(i) + " has a non-finite coordinate");
+                [&] { return "control point " + std::to_string(i) + " has a non-finite coordinate"; });
 }
 
 // The messages are built only on failure: from_homogeneous runs for every Bézier piece a tessellation
@@ -56,9 +56,10 @@ BezierCurve::BezierCurve(std::vector<Vec3> points) {
 
 BezierCurve::BezierCurve(std::vector<Vec3> points, std::vector<double> weights) {
     validate_points(points);
-    require(weights.size() == points.size(), "weights",
-            "got " + std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
-                " control points; there must be exactly one weight per control point");
+    require(weights.size() == points.size(), "weights", [&] {
+        return "got " + std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
+               " control points; there must be exactly one weight per control point";
+    });
     for (std::size_t i = 0; i < weights.size(); ++i) validate_weight(weights[i], i, "weights");
     pw_ = homogenize_all(points, weights);
     rational_ = true;
@@ -119,7 +120,7 @@ std::vector<std::vector<Vec4>> BezierCurve::de_casteljau_table(double u) const {
 
 std::vector<Vec3> BezierCurve::derivatives(double u, int order) const {
     require_in_domain(u, 0.0, 1.0, "u");
-    require(order >= 0, "order", "the derivative order must be >= 0, got " + std::to_string(order));
+    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
     const auto count = static_cast<std::size_t>(order) + 1;
 
     // Derivatives of the homogeneous curve C^w = (A, w): Eq. 1.9 says the derivative of a degree-n Bézier
@@ -146,7 +147,7 @@ Vec3 BezierCurve::derivative(double u, int order) const { return derivatives(u, 
 
 std::pair<BezierCurve, BezierCurve> BezierCurve::split(double u) const {
     require(std::isfinite(u) && u > 0.0 && u < 1.0, "u",
-            "the split parameter must lie strictly inside (0, 1), got " + std::to_string(u));
+            [&] { return "the split parameter must lie strictly inside (0, 1), got " + std::to_string(u); });
     // deCasteljau subdivision: the left half's control points run down the top edge of the triangle
     // (P^w_{k,0}), the right half's up its bottom edge (P^w_{n-k,k}).
     const auto table = de_casteljau_table(u);

@@ -60,9 +60,10 @@ std::size_t validate_net(const std::vector<std::vector<Vec3>>& net) {
     const std::size_t columns = net.front().size();
     require(columns > 0, "net", "row 0 is empty; every row needs at least one control point");
     for (std::size_t i = 0; i < net.size(); ++i) {
-        require(net[i].size() == columns, "net",
-                "row " + std::to_string(i) + " has " + std::to_string(net[i].size()) + " points but row 0 has " +
-                    std::to_string(columns) + " (the net must be rectangular, not ragged)");
+        require(net[i].size() == columns, "net", [&] {
+            return "row " + std::to_string(i) + " has " + std::to_string(net[i].size()) + " points but row 0 has " +
+                   std::to_string(columns) + " (the net must be rectangular, not ragged)";
+        });
         for (std::size_t j = 0; j < columns; ++j)
             require(is_finite(net[i][j]), "net", [&] { return "control point " + index_pair(i, j) + " has a non-finite coordinate"; });
     }
@@ -86,13 +87,15 @@ BezierSurface::BezierSurface(std::vector<std::vector<Vec3>> net) {
 
 BezierSurface::BezierSurface(std::vector<std::vector<Vec3>> net, std::vector<std::vector<double>> weights) {
     const std::size_t columns = validate_net(net);
-    require(weights.size() == net.size(), "weights",
-            "has " + std::to_string(weights.size()) + " rows but the net has " + std::to_string(net.size()) +
-                "; there must be exactly one weight per control point");
+    require(weights.size() == net.size(), "weights", [&] {
+        return "has " + std::to_string(weights.size()) + " rows but the net has " + std::to_string(net.size()) +
+               "; there must be exactly one weight per control point";
+    });
     for (std::size_t i = 0; i < weights.size(); ++i) {
-        require(weights[i].size() == columns, "weights",
-                "row " + std::to_string(i) + " has " + std::to_string(weights[i].size()) +
-                    " weights but the net has " + std::to_string(columns) + " columns");
+        require(weights[i].size() == columns, "weights", [&] {
+            return "row " + std::to_string(i) + " has " + std::to_string(weights[i].size()) +
+                   " weights but the net has " + std::to_string(columns) + " columns";
+        });
         for (std::size_t j = 0; j < columns; ++j) validate_weight(weights[i][j], "weights", [&] { return index_pair(i, j); });
     }
     rows_ = static_cast<int>(net.size());
@@ -105,11 +108,12 @@ BezierSurface::BezierSurface(std::vector<std::vector<Vec3>> net, std::vector<std
 
 BezierSurface BezierSurface::from_homogeneous(int rows, int columns, std::vector<Vec4> homogeneous_points,
                                               bool rational) {
-    require(rows >= 1, "rows", "must be >= 1, got " + std::to_string(rows));
-    require(columns >= 1, "columns", "must be >= 1, got " + std::to_string(columns));
-    require(homogeneous_points.size() == to_size(rows) * to_size(columns), "homogeneous_points",
-            "has " + std::to_string(homogeneous_points.size()) + " points but rows x columns = " +
-                std::to_string(to_size(rows) * to_size(columns)));
+    require(rows >= 1, "rows", [&] { return "must be >= 1, got " + std::to_string(rows); });
+    require(columns >= 1, "columns", [&] { return "must be >= 1, got " + std::to_string(columns); });
+    require(homogeneous_points.size() == to_size(rows) * to_size(columns), "homogeneous_points", [&] {
+        return "has " + std::to_string(homogeneous_points.size()) +
+               " points but rows x columns = " + std::to_string(to_size(rows) * to_size(columns));
+    });
     for (std::size_t i = 0; i < to_size(rows); ++i)
         for (std::size_t j = 0; j < to_size(columns); ++j) {
             const Vec4& p = homogeneous_points[i * to_size(columns) + j];
@@ -207,7 +211,7 @@ BezierCurve BezierSurface::isocurve_v(double v0) const {
 std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, int order) const {
     require_in_domain(u, 0.0, 1.0, "u");
     require_in_domain(v, 0.0, 1.0, "v");
-    require(order >= 0, "order", "the derivative order must be >= 0, got " + std::to_string(order));
+    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
     const std::size_t d = to_size(order);
 
     // Homogeneous partials Aw[k][l] = d^{k+l} S^w / du^k dv^l. S^w is a polynomial tensor product, so the
@@ -249,8 +253,8 @@ std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, in
 }
 
 Vec3 BezierSurface::derivative(double u, double v, int du, int dv) const {
-    require(du >= 0, "du", "the derivative order must be >= 0, got " + std::to_string(du));
-    require(dv >= 0, "dv", "the derivative order must be >= 0, got " + std::to_string(dv));
+    require(du >= 0, "du", [&] { return "the derivative order must be >= 0, got " + std::to_string(du); });
+    require(dv >= 0, "dv", [&] { return "the derivative order must be >= 0, got " + std::to_string(dv); });
     return derivatives(u, v, du + dv)[to_size(du)][to_size(dv)];
 }
 

@@ -60,25 +60,29 @@ double right_closure(int degree, std::span<const double> knots) {
 void validate_knot_vector(int degree, std::span<const double> knots, int control_point_count,
                           const std::string& argument) {
     require_degree(degree);
-    require(static_cast<long long>(control_point_count) >= static_cast<long long>(degree) + 1, argument,
-            "a degree-" + std::to_string(degree) + " B-spline needs at least " + std::to_string(to_size(degree) + 1) +
-                " control points, got " + std::to_string(control_point_count));
+    require(static_cast<long long>(control_point_count) >= static_cast<long long>(degree) + 1, argument, [&] {
+        return "a degree-" + std::to_string(degree) + " B-spline needs at least " +
+               std::to_string(to_size(degree) + 1) + " control points, got " + std::to_string(control_point_count);
+    });
     const std::size_t expected = to_size(control_point_count) + to_size(degree) + 1;
-    require(knots.size() == expected, argument,
-            "expected " + std::to_string(expected) + " knots (control points + degree + 1 = " +
-                std::to_string(control_point_count) + " + " + std::to_string(degree) + " + 1), got " +
-                std::to_string(knots.size()));
+    require(knots.size() == expected, argument, [&] {
+        return "expected " + std::to_string(expected) +
+               " knots (control points + degree + 1 = " + std::to_string(control_point_count) + " + " +
+               std::to_string(degree) + " + 1), got " + std::to_string(knots.size());
+    });
     require_finite(knots, argument);
     for (std::size_t i = 1; i < knots.size(); ++i)
-        require(knots[i - 1] <= knots[i], argument,
-                "must be non-decreasing, but knot " + std::to_string(i) + " (" + number(knots[i]) +
-                    ") is less than knot " + std::to_string(i - 1) + " (" + number(knots[i - 1]) + ")");
+        require(knots[i - 1] <= knots[i], argument, [&] {
+            return "must be non-decreasing, but knot " + std::to_string(i) + " (" + number(knots[i]) +
+                   ") is less than knot " + std::to_string(i - 1) + " (" + number(knots[i - 1]) + ")";
+        });
 
     const std::size_t p = to_size(degree);
     const std::size_t m = knots.size() - 1;
     const double domain_min = knots[p], domain_max = knots[m - p];
-    require(domain_min < domain_max, argument,
-            "the domain [u_p, u_{m-p}] = [" + number(domain_min) + ", " + number(domain_max) + "] is empty");
+    require(domain_min < domain_max, argument, [&] {
+        return "the domain [u_p, u_{m-p}] = [" + number(domain_min) + ", " + number(domain_max) + "] is empty";
+    });
 
     // Multiplicities: p + 1 anywhere at most (a basis function of zero support would follow), and at most
     // p strictly inside the domain (p + 1 there would make the curve discontinuous: two curves, not one).
@@ -87,13 +91,15 @@ void validate_knot_vector(int degree, std::span<const double> knots, int control
         while (run_end < knots.size() && knots[run_end] == knots[run_start]) ++run_end;
         const std::size_t multiplicity = run_end - run_start;
         const double value = knots[run_start];
-        require(multiplicity <= p + 1, argument,
-                "knot " + number(value) + " has multiplicity " + std::to_string(multiplicity) +
-                    ", more than degree + 1 = " + std::to_string(p + 1));
+        require(multiplicity <= p + 1, argument, [&] {
+            return "knot " + number(value) + " has multiplicity " + std::to_string(multiplicity) +
+                   ", more than degree + 1 = " + std::to_string(p + 1);
+        });
         const bool interior = value > domain_min && value < domain_max;
-        require(!interior || multiplicity <= p, argument,
-                "interior knot " + number(value) + " has multiplicity " + std::to_string(multiplicity) +
-                    ", more than the degree " + std::to_string(p));
+        require(!interior || multiplicity <= p, argument, [&] {
+            return "interior knot " + number(value) + " has multiplicity " + std::to_string(multiplicity) +
+                   ", more than the degree " + std::to_string(p);
+        });
         run_start = run_end;
     }
 }
@@ -108,18 +114,20 @@ Interval knot_domain(int degree, std::span<const double> knots) {
 }
 
 double bspline_basis(int i, int p, std::span<const double> knots, double u) {
-    require(p >= 0, "p", "the degree must be >= 0, got " + std::to_string(p));
-    require(knots.size() >= to_size(p) + 2, "knots",
-            "a degree-" + std::to_string(p) + " basis function needs at least " + std::to_string(p + 2) +
-                " knots, got " + std::to_string(knots.size()));
+    require(p >= 0, "p", [&] { return "the degree must be >= 0, got " + std::to_string(p); });
+    require(knots.size() >= to_size(p) + 2, "knots", [&] {
+        return "a degree-" + std::to_string(p) + " basis function needs at least " + std::to_string(p + 2) +
+               " knots, got " + std::to_string(knots.size());
+    });
     const int last_index = static_cast<int>(knots.size()) - p - 2;
     require(i >= 0 && i <= last_index, "i",
-            "must lie in [0, " + std::to_string(last_index) + "], got " + std::to_string(i));
+            [&] { return "must lie in [0, " + std::to_string(last_index) + "], got " + std::to_string(i); });
     require_finite(knots, "knots");
     for (std::size_t k = 1; k < knots.size(); ++k)
-        require(knots[k - 1] <= knots[k], "knots",
-                "must be non-decreasing, but knot " + std::to_string(k) + " (" + number(knots[k]) +
-                    ") is less than knot " + std::to_string(k - 1) + " (" + number(knots[k - 1]) + ")");
+        require(knots[k - 1] <= knots[k], "knots", [&] {
+            return "must be non-decreasing, but knot " + std::to_string(k) + " (" + number(knots[k]) +
+                   ") is less than knot " + std::to_string(k - 1) + " (" + number(knots[k - 1]) + ")";
+        });
     require_finite(u, "u");
 
     // A2.4 (OneBasisFun): the triangle of 001 restricted to the p + 1 step functions N_{i..i+p,0}.

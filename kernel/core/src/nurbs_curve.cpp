@@ -23,8 +23,9 @@ using detail::to_size;
 using BasisScratch = detail::Scratch<double, 32>;
 
 void require_weight(double w, std::size_t index, const std::string& argument) {
-    require(std::isfinite(w) && w > 0.0, argument,
-            "weight " + std::to_string(index) + " is " + number(w) + "; weights must be finite and > 0");
+    require(std::isfinite(w) && w > 0.0, argument, [&] {
+        return "weight " + std::to_string(index) + " is " + number(w) + "; weights must be finite and > 0";
+    });
 }
 
 // A polynomial curve keeps w = 1 exactly: the convex combinations of knot insertion would otherwise leave
@@ -84,19 +85,22 @@ namespace {
 // The checks shared by the two public constructors; `weights` is null for a polynomial curve.
 std::vector<Vec4> validated_homogeneous_points(int degree, const std::vector<double>& knots,
                                                const std::vector<Vec3>& points, const std::vector<double>* weights) {
-    require(degree >= 0, "degree", "must be >= 0, got " + std::to_string(degree));
+    require(degree >= 0, "degree", [&] { return "must be >= 0, got " + std::to_string(degree); });
     require(!points.empty(), "points", "a NURBS curve needs at least one control point");
     for (std::size_t i = 0; i < points.size(); ++i)
-        require(is_finite(points[i]), "points", "control point " + std::to_string(i) + " has a non-finite coordinate");
+        require(is_finite(points[i]), "points",
+                [&] { return "control point " + std::to_string(i) + " has a non-finite coordinate"; });
     if (weights != nullptr) {
-        require(weights->size() == points.size(), "weights",
-                "has " + std::to_string(weights->size()) + " entries for " + std::to_string(points.size()) +
-                    " control points");
+        require(weights->size() == points.size(), "weights", [&] {
+            return "has " + std::to_string(weights->size()) + " entries for " + std::to_string(points.size()) +
+                   " control points";
+        });
         for (std::size_t i = 0; i < weights->size(); ++i) require_weight((*weights)[i], i, "weights");
     }
-    require(points.size() >= to_size(degree) + 1, "points",
-            "a degree-" + std::to_string(degree) + " curve needs at least " + std::to_string(to_size(degree) + 1) +
-                " control points, got " + std::to_string(points.size()));
+    require(points.size() >= to_size(degree) + 1, "points", [&] {
+        return "a degree-" + std::to_string(degree) + " curve needs at least " + std::to_string(to_size(degree) + 1) +
+               " control points, got " + std::to_string(points.size());
+    });
     validate_knot_vector(degree, knots, static_cast<int>(points.size()), "knots");
     std::vector<Vec4> pw(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) pw[i] = homogenize(points[i], weights ? (*weights)[i] : 1.0);
@@ -117,23 +121,26 @@ NurbsCurve::NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec3> 
 
 NurbsCurve NurbsCurve::from_homogeneous(int degree, std::vector<double> knots, std::vector<Vec4> homogeneous_points,
                                         bool rational) {
-    require(degree >= 0, "degree", "must be >= 0, got " + std::to_string(degree));
+    require(degree >= 0, "degree", [&] { return "must be >= 0, got " + std::to_string(degree); });
     require(!homogeneous_points.empty(), "homogeneous_points", "a NURBS curve needs at least one control point");
     for (std::size_t i = 0; i < homogeneous_points.size(); ++i) {
         Vec4& p = homogeneous_points[i];
         require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), "homogeneous_points",
-                "control point " + std::to_string(i) + " has a non-finite coordinate");
+                [&] { return "control point " + std::to_string(i) + " has a non-finite coordinate"; });
         require_weight(p.w, i, "homogeneous_points");
         if (!rational) {
             // Not rational means every weight is 1; anything else would be silently a different curve.
-            require(std::abs(p.w - 1.0) <= 1e-12, "homogeneous_points",
-                    "weight " + std::to_string(i) + " is " + number(p.w) + ", but a non-rational curve has weights 1");
+            require(std::abs(p.w - 1.0) <= 1e-12, "homogeneous_points", [&] {
+                return "weight " + std::to_string(i) + " is " + number(p.w) +
+                       ", but a non-rational curve has weights 1";
+            });
             p = homogenize(project(p), 1.0);
         }
     }
-    require(homogeneous_points.size() >= to_size(degree) + 1, "homogeneous_points",
-            "a degree-" + std::to_string(degree) + " curve needs at least " + std::to_string(to_size(degree) + 1) +
-                " control points, got " + std::to_string(homogeneous_points.size()));
+    require(homogeneous_points.size() >= to_size(degree) + 1, "homogeneous_points", [&] {
+        return "a degree-" + std::to_string(degree) + " curve needs at least " + std::to_string(to_size(degree) + 1) +
+               " control points, got " + std::to_string(homogeneous_points.size());
+    });
     validate_knot_vector(degree, knots, static_cast<int>(homogeneous_points.size()), "knots");
     return NurbsCurve(degree, std::move(knots), std::move(homogeneous_points), rational, 0);
 }
@@ -180,7 +187,7 @@ Vec3 NurbsCurve::point(double u) const {
 }
 
 std::vector<Vec3> NurbsCurve::derivatives(double u, int order) const {
-    require(order >= 0, "order", "the derivative order must be >= 0, got " + std::to_string(order));
+    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
     const int span = find_span(degree_, knots_, u);  // validates u against the domain
     const int highest = std::min(order, degree_);    // derivatives of C^w above p vanish
     const std::size_t width = to_size(degree_) + 1;
@@ -210,19 +217,20 @@ std::vector<Vec3> NurbsCurve::derivatives(double u, int order) const {
 }
 
 Vec3 NurbsCurve::derivative(double u, int order) const {
-    require(order >= 0, "order", "the derivative order must be >= 0, got " + std::to_string(order));
+    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
     return derivatives(u, order)[to_size(order)];
 }
 
 NurbsCurve NurbsCurve::insert_knot(double u, int times) const {
-    require(times >= 0, "times", "must be >= 0, got " + std::to_string(times));
+    require(times >= 0, "times", [&] { return "must be >= 0, got " + std::to_string(times); });
     const Interval d = domain();
     require_in_domain(u, d.min, d.max, "u");
     const int multiplicity = static_cast<int>(std::count(knots_.begin(), knots_.end(), u));
-    require(multiplicity + times <= degree_, "times",
-            "inserting " + number(u) + " " + std::to_string(times) + " more times would raise its multiplicity from " +
-                std::to_string(multiplicity) + " to " + std::to_string(multiplicity + times) +
-                ", more than the degree " + std::to_string(degree_));
+    require(multiplicity + times <= degree_, "times", [&] {
+        return "inserting " + number(u) + " " + std::to_string(times) +
+               " more times would raise its multiplicity from " + std::to_string(multiplicity) + " to " +
+               std::to_string(multiplicity + times) + ", more than the degree " + std::to_string(degree_);
+    });
     std::vector<double> knots = knots_;
     std::vector<Vec4> pw = pw_;
     insert_knot_in_place(degree_, knots, pw, u, times);
@@ -318,8 +326,9 @@ NurbsCurve NurbsCurve::reversed() const {
 NurbsCurve NurbsCurve::reparameterized(double a, double b) const {
     require_finite(a, "a");
     require_finite(b, "b");
-    require(a < b, "b", "the new domain [" + number(a) + ", " + number(b) + "] must have a < b");
-    require(std::isfinite(b - a), "b", "the new domain [" + number(a) + ", " + number(b) + "] is too long");
+    require(a < b, "b", [&] { return "the new domain [" + number(a) + ", " + number(b) + "] must have a < b"; });
+    require(std::isfinite(b - a), "b",
+            [&] { return "the new domain [" + number(a) + ", " + number(b) + "] is too long"; });
     // The affine map of the knots u -> a + (u - u_p) (b - a) / (u_{m-p} - u_p); the control points stay.
     const Interval d = domain();
     const double scale = (b - a) / (d.max - d.min);

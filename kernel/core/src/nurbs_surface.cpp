@@ -26,7 +26,7 @@ using detail::Scratch;  // small work arrays on the stack, on the heap when larg
 
 void require_weight(double w, const std::string& where, const std::string& argument) {
     require(std::isfinite(w) && w > 0.0, argument,
-            "weight " + where + " is " + number(w) + "; weights must be finite and > 0");
+            [&] { return "weight " + where + " is " + number(w) + "; weights must be finite and > 0"; });
 }
 
 std::string index_pair(std::size_t i, std::size_t j) {
@@ -81,33 +81,39 @@ namespace {
 std::vector<Vec4> validated_net(int degree_u, int degree_v, const std::vector<double>& knots_u,
                                 const std::vector<double>& knots_v, const std::vector<std::vector<Vec3>>& net,
                                 const std::vector<std::vector<double>>* weights) {
-    require(degree_u >= 0, "degree_u", "must be >= 0, got " + std::to_string(degree_u));
-    require(degree_v >= 0, "degree_v", "must be >= 0, got " + std::to_string(degree_v));
+    require(degree_u >= 0, "degree_u", [&] { return "must be >= 0, got " + std::to_string(degree_u); });
+    require(degree_v >= 0, "degree_v", [&] { return "must be >= 0, got " + std::to_string(degree_v); });
     require(!net.empty() && !net.front().empty(), "net", "a NURBS surface needs at least one control point");
     const std::size_t rows = net.size(), columns = net.front().size();
     for (std::size_t i = 0; i < rows; ++i) {
-        require(net[i].size() == columns, "net",
-                "row " + std::to_string(i) + " has " + std::to_string(net[i].size()) + " points but row 0 has " +
-                    std::to_string(columns) + " (the net must be rectangular)");
+        require(net[i].size() == columns, "net", [&] {
+            return "row " + std::to_string(i) + " has " + std::to_string(net[i].size()) + " points but row 0 has " +
+                   std::to_string(columns) + " (the net must be rectangular)";
+        });
         for (std::size_t j = 0; j < columns; ++j)
-            require(is_finite(net[i][j]), "net", "control point " + index_pair(i, j) + " has a non-finite coordinate");
+            require(is_finite(net[i][j]), "net",
+                    [&] { return "control point " + index_pair(i, j) + " has a non-finite coordinate"; });
     }
     if (weights != nullptr) {
-        require(weights->size() == rows, "weights",
-                "has " + std::to_string(weights->size()) + " rows for a net of " + std::to_string(rows));
+        require(weights->size() == rows, "weights", [&] {
+            return "has " + std::to_string(weights->size()) + " rows for a net of " + std::to_string(rows);
+        });
         for (std::size_t i = 0; i < rows; ++i) {
-            require((*weights)[i].size() == columns, "weights",
-                    "row " + std::to_string(i) + " has " + std::to_string((*weights)[i].size()) +
-                        " entries for a net row of " + std::to_string(columns));
+            require((*weights)[i].size() == columns, "weights", [&] {
+                return "row " + std::to_string(i) + " has " + std::to_string((*weights)[i].size()) +
+                       " entries for a net row of " + std::to_string(columns);
+            });
             for (std::size_t j = 0; j < columns; ++j) require_weight((*weights)[i][j], index_pair(i, j), "weights");
         }
     }
-    require(rows >= to_size(degree_u) + 1, "net",
-            "degree " + std::to_string(degree_u) + " in u needs at least " + std::to_string(to_size(degree_u) + 1) +
-                " rows, got " + std::to_string(rows));
-    require(columns >= to_size(degree_v) + 1, "net",
-            "degree " + std::to_string(degree_v) + " in v needs at least " + std::to_string(to_size(degree_v) + 1) +
-                " columns, got " + std::to_string(columns));
+    require(rows >= to_size(degree_u) + 1, "net", [&] {
+        return "degree " + std::to_string(degree_u) + " in u needs at least " + std::to_string(to_size(degree_u) + 1) +
+               " rows, got " + std::to_string(rows);
+    });
+    require(columns >= to_size(degree_v) + 1, "net", [&] {
+        return "degree " + std::to_string(degree_v) + " in v needs at least " + std::to_string(to_size(degree_v) + 1) +
+               " columns, got " + std::to_string(columns);
+    });
     validate_knot_vector(degree_u, knots_u, static_cast<int>(rows), "knots_u");
     validate_knot_vector(degree_v, knots_v, static_cast<int>(columns), "knots_v");
 
@@ -133,28 +139,32 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots
 NurbsSurface NurbsSurface::from_homogeneous(int degree_u, int degree_v, std::vector<double> knots_u,
                                             std::vector<double> knots_v, std::vector<Vec4> homogeneous_points,
                                             bool rational) {
-    require(degree_u >= 0, "degree_u", "must be >= 0, got " + std::to_string(degree_u));
-    require(degree_v >= 0, "degree_v", "must be >= 0, got " + std::to_string(degree_v));
-    require(knots_u.size() >= 2 * to_size(degree_u) + 2, "knots_u",
-            "degree " + std::to_string(degree_u) + " needs at least " + std::to_string(2 * to_size(degree_u) + 2) +
-                " knots, got " + std::to_string(knots_u.size()));
-    require(knots_v.size() >= 2 * to_size(degree_v) + 2, "knots_v",
-            "degree " + std::to_string(degree_v) + " needs at least " + std::to_string(2 * to_size(degree_v) + 2) +
-                " knots, got " + std::to_string(knots_v.size()));
+    require(degree_u >= 0, "degree_u", [&] { return "must be >= 0, got " + std::to_string(degree_u); });
+    require(degree_v >= 0, "degree_v", [&] { return "must be >= 0, got " + std::to_string(degree_v); });
+    require(knots_u.size() >= 2 * to_size(degree_u) + 2, "knots_u", [&] {
+        return "degree " + std::to_string(degree_u) + " needs at least " + std::to_string(2 * to_size(degree_u) + 2) +
+               " knots, got " + std::to_string(knots_u.size());
+    });
+    require(knots_v.size() >= 2 * to_size(degree_v) + 2, "knots_v", [&] {
+        return "degree " + std::to_string(degree_v) + " needs at least " + std::to_string(2 * to_size(degree_v) + 2) +
+               " knots, got " + std::to_string(knots_v.size());
+    });
     const std::size_t rows = knots_u.size() - to_size(degree_u) - 1;
     const std::size_t columns = knots_v.size() - to_size(degree_v) - 1;
-    require(homogeneous_points.size() == rows * columns, "homogeneous_points",
-            "has " + std::to_string(homogeneous_points.size()) + " points, the knots need " + std::to_string(rows) +
-                " x " + std::to_string(columns));
+    require(homogeneous_points.size() == rows * columns, "homogeneous_points", [&] {
+        return "has " + std::to_string(homogeneous_points.size()) + " points, the knots need " + std::to_string(rows) +
+               " x " + std::to_string(columns);
+    });
     for (std::size_t k = 0; k < homogeneous_points.size(); ++k) {
         Vec4& p = homogeneous_points[k];
         const std::string where = index_pair(k / columns, k % columns);
         require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), "homogeneous_points",
-                "control point " + where + " has a non-finite coordinate");
+                [&] { return "control point " + where + " has a non-finite coordinate"; });
         require_weight(p.w, where, "homogeneous_points");
         if (!rational) {
-            require(std::abs(p.w - 1.0) <= 1e-12, "homogeneous_points",
-                    "weight " + where + " is " + number(p.w) + ", but a non-rational surface has weights 1");
+            require(std::abs(p.w - 1.0) <= 1e-12, "homogeneous_points", [&] {
+                return "weight " + where + " is " + number(p.w) + ", but a non-rational surface has weights 1";
+            });
             p = homogenize(project(p), 1.0);
         }
     }
@@ -384,14 +394,15 @@ NurbsCurve NurbsSurface::isocurve_v(double v0) const {
 namespace {
 
 void require_insertable(int degree, const std::vector<double>& knots, double t, int times, const std::string& name) {
-    require(times >= 0, "times", "must be >= 0, got " + std::to_string(times));
+    require(times >= 0, "times", [&] { return "must be >= 0, got " + std::to_string(times); });
     const Interval d = knot_domain(degree, knots);
     require_in_domain(t, d.min, d.max, name);
     const int multiplicity = static_cast<int>(std::count(knots.begin(), knots.end(), t));
-    require(multiplicity + times <= degree, "times",
-            "inserting " + name + " = " + number(t) + " " + std::to_string(times) +
-                " more times would raise its multiplicity from " + std::to_string(multiplicity) + " to " +
-                std::to_string(multiplicity + times) + ", more than the degree " + std::to_string(degree));
+    require(multiplicity + times <= degree, "times", [&] {
+        return "inserting " + name + " = " + number(t) + " " + std::to_string(times) +
+               " more times would raise its multiplicity from " + std::to_string(multiplicity) + " to " +
+               std::to_string(multiplicity + times) + ", more than the degree " + std::to_string(degree);
+    });
 }
 
 }  // namespace

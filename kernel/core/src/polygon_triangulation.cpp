@@ -231,11 +231,12 @@ std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<st
     std::vector<Point2> points;
     std::vector<std::vector<std::size_t>> loop_vertices;
     for (std::size_t l = 0; l < loops.size(); ++l) {
-        require(loops[l].size() >= 3, "loops", "loop " + std::to_string(l) + " has fewer than three vertices");
+        require(loops[l].size() >= 3, "loops",
+                [&] { return "loop " + std::to_string(l) + " has fewer than three vertices"; });
         std::vector<std::size_t> indices(loops[l].size());
         for (std::size_t k = 0; k < loops[l].size(); ++k) {
             require(std::isfinite(loops[l][k].x) && std::isfinite(loops[l][k].y), "loops",
-                    "loop " + std::to_string(l) + " has a non-finite point");
+                    [&] { return "loop " + std::to_string(l) + " has a non-finite point"; });
             indices[k] = points.size();
             points.push_back(loops[l][k]);
         }

@@ -17,7 +17,8 @@ using detail::binomial;  // exact while C(n, k) < 2^53 (every n <= 56)
 void require_finite_points(const std::vector<Vec3>& points, const std::string& argument) {
     require(!points.empty(), argument, "must not be empty");
     for (std::size_t i = 0; i < points.size(); ++i)
-        require(is_finite(points[i]), argument, "element " + std::to_string(i) + " has a non-finite coordinate");
+        require(is_finite(points[i]), argument,
+                [&] { return "element " + std::to_string(i) + " has a non-finite coordinate"; });
 }
 
 }  // namespace
@@ -44,7 +45,7 @@ Vec3 horner(const std::vector<Vec3>& coefficients, double u) {
 }
 
 std::vector<std::vector<double>> bezier_to_power_matrix(int n) {
-    require(n >= 0, "n", "the degree must be >= 0, got " + std::to_string(n));
+    require(n >= 0, "n", [&] { return "the degree must be >= 0, got " + std::to_string(n); });
     // B_{j,n}(u) = C(n,j) u^j (1-u)^{n-j} = sum_i (-1)^{i-j} C(n,j) C(n-j,i-j) u^i, and
     // C(n,j) C(n-j,i-j) = C(n,i) C(i,j): the coefficient of u^i in B_{j,n} (Exercise 1.14).
     const auto size = static_cast<std::size_t>(n) + 1;

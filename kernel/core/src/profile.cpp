@@ -17,10 +17,12 @@ Profile::Profile(std::vector<NurbsCurve> pieces) {
     require(!pieces.empty(), "profile", "must have at least one piece");
     detail::Box box;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
-        require(pieces[k].degree() >= 1, "profile", "piece " + std::to_string(k) + " has degree 0 (a point)");
+        require(pieces[k].degree() >= 1, "profile",
+                [&] { return "piece " + std::to_string(k) + " has degree 0 (a point)"; });
         pieces[k] = detail::clamped(pieces[k]);
         const detail::Box piece_box = detail::control_box(pieces[k]);
-        require(piece_box.diagonal() > 0, "profile", "piece " + std::to_string(k) + " is a single point");
+        require(piece_box.diagonal() > 0, "profile",
+                [&] { return "piece " + std::to_string(k) + " is a single point"; });
         box.add(piece_box);
     }
     size_ = box.diagonal();
@@ -29,10 +31,11 @@ Profile::Profile(std::vector<NurbsCurve> pieces) {
     for (std::size_t k = 1; k < pieces.size(); ++k) {
         const Vec3 previous_end = pieces[k - 1].end_point();
         const double gap = distance(previous_end, pieces[k].start_point());
-        require(gap <= tolerance_, "profile",
-                "piece " + std::to_string(k) + " starts at " + detail::format_point(pieces[k].start_point()) +
-                    ", " + std::to_string(gap) + " away from the end " + detail::format_point(previous_end) +
-                    " of piece " + std::to_string(k - 1) + " (pieces must meet)");
+        require(gap <= tolerance_, "profile", [&] {
+            return "piece " + std::to_string(k) + " starts at " + detail::format_point(pieces[k].start_point()) + ", " +
+                   std::to_string(gap) + " away from the end " + detail::format_point(previous_end) + " of piece " +
+                   std::to_string(k - 1) + " (pieces must meet)";
+        });
         pieces[k] = detail::with_end_point(pieces[k], false, previous_end);
     }
     closed_ = distance(pieces.back().end_point(), pieces.front().start_point()) <= tolerance_;

@@ -480,12 +480,15 @@ void select_grid_kernels(GridKernels kernels) {
 const char* grid_kernels_name() { return use_avx2() ? "avx2+fma" : "portable"; }
 
 std::vector<double> uniform_parameters(const Interval& domain, std::size_t count) {
-    require(count >= 2, "count", "a uniform grid needs at least 2 parameters (both ends), got " + std::to_string(count));
+    require(count >= 2, "count",
+            [&] { return "a uniform grid needs at least 2 parameters (both ends), got " + std::to_string(count); });
     // An absurd count is an Error, not std::bad_alloc / std::length_error from the vector below.
     constexpr std::size_t max_count = std::size_t{1} << 27;
-    require(count <= max_count, "count", "at most " + std::to_string(max_count) + " parameters, got " + std::to_string(count));
-    require(std::isfinite(domain.min) && std::isfinite(domain.max) && domain.min < domain.max, "domain",
-            "must be a finite non-empty interval, got [" + number(domain.min) + ", " + number(domain.max) + "]");
+    require(count <= max_count, "count",
+            [&] { return "at most " + std::to_string(max_count) + " parameters, got " + std::to_string(count); });
+    require(std::isfinite(domain.min) && std::isfinite(domain.max) && domain.min < domain.max, "domain", [&] {
+        return "must be a finite non-empty interval, got [" + number(domain.min) + ", " + number(domain.max) + "]";
+    });
     std::vector<double> ts(count);
     const double width = domain.max - domain.min;
     const double steps = static_cast<double>(count - 1);
@@ -501,8 +504,9 @@ void evaluate_grid(const NurbsSurface& surface, std::span<const double> us, std:
                    GridOutput output, SurfaceGrid& result) {
     validate_parameters(us, surface.domain_u(), "us");
     validate_parameters(vs, surface.domain_v(), "vs");
-    require(vs.empty() || us.size() <= std::numeric_limits<std::size_t>::max() / vs.size() / 8, "us",
-            "the grid of " + std::to_string(us.size()) + " x " + std::to_string(vs.size()) + " points is too large");
+    require(vs.empty() || us.size() <= std::numeric_limits<std::size_t>::max() / vs.size() / 8, "us", [&] {
+        return "the grid of " + std::to_string(us.size()) + " x " + std::to_string(vs.size()) + " points is too large";
+    });
 
     const std::size_t size = us.size() * vs.size();
     result.u_count = us.size();
@@ -567,8 +571,10 @@ SurfaceGrid evaluate_grid(const NurbsSurface& surface, std::span<const double> u
 }
 
 SurfaceGrid evaluate_grid(const NurbsSurface& surface, std::size_t u_count, std::size_t v_count, GridOutput output) {
-    require(u_count >= 2, "u_count", "a uniform grid needs at least 2 parameters (both ends), got " + std::to_string(u_count));
-    require(v_count >= 2, "v_count", "a uniform grid needs at least 2 parameters (both ends), got " + std::to_string(v_count));
+    require(u_count >= 2, "u_count",
+            [&] { return "a uniform grid needs at least 2 parameters (both ends), got " + std::to_string(u_count); });
+    require(v_count >= 2, "v_count",
+            [&] { return "a uniform grid needs at least 2 parameters (both ends), got " + std::to_string(v_count); });
     const std::vector<double> us = uniform_parameters(surface.domain_u(), u_count);
     const std::vector<double> vs = uniform_parameters(surface.domain_v(), v_count);
     return evaluate_grid(surface, us, vs, output);
