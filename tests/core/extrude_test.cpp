@@ -78,6 +78,25 @@ TEST(Extrude, RoundedRectangleGivesAClosedOutwardPrismOfTheRightVolume) {
     }
 }
 
+TEST(Extrude, ExtremeWeightsDoNotHideTheProfileFromTheAreaCheck) {
+    // A square whose straight edges are degree-1 rational segments with weights (w, 1/w): nearly all of
+    // each edge is traversed within a parameter range of order 1/w^2, where a fixed-depth Gauss rule has
+    // no nodes, so the old area check called the profile empty and the cap check rejected it.
+    const double a = 3, d = 2;
+    const Vec3 corners[4] = {{0, 0, 0}, {a, 0, 0}, {a, a, 0}, {0, a, 0}};
+    for (double w : {1e12, 1e-12, 1e3}) {
+        std::vector<NurbsCurve> edges;
+        for (int k = 0; k < 4; ++k)
+            edges.push_back(NurbsCurve::from_bezier(BezierCurve({corners[k], corners[(k + 1) % 4]}, {w, 1 / w})));
+        const Profile square(edges);
+        for (const Profile& profile : {square, square.reversed()}) {
+            const Solid prism = extrude(profile, {0, 0, 1}, d);
+            EXPECT_EQ(prism.faces().size(), 6u);
+            EXPECT_LT(std::abs(prism.volume() - a * a * d) / (a * a * d), 1e-10) << w;
+        }
+    }
+}
+
 TEST(Extrude, RejectsBadInputNamingTheArgument) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const Profile square({line_segment({0, 0, 0}, {1, 0, 0}), line_segment({1, 0, 0}, {1, 1, 0}),

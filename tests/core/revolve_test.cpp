@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <iostream>
 #include <limits>
 
@@ -145,6 +146,51 @@ TEST(Revolve, RingFromAClosedProfileOfSeveralPieces) {
     const Solid part = revolve(rounded, {}, {0, 0, 1}, 270);
     EXPECT_EQ(part.euler_characteristic(), 2);
     EXPECT_LT(std::abs(part.volume() - 0.75 * ring.volume()) / ring.volume(), 1e-10);
+}
+
+// A square [x0, x0 + a] x [0, a] in the xz half-plane whose edges (bottom, right, top, left) are
+// degree-1 rational segments with the given end weights: still straight, but with weights (w0, w1) all
+// but a w0/w1 share of the edge is traversed within a parameter range of order w0/w1 (or the mirror
+// image), where a Gauss rule at fixed parameters has few nodes or none.
+using EdgeWeights = std::array<std::array<double, 2>, 4>;
+Profile crowded_square(double x0, double a, const EdgeWeights& weights) {
+    const Vec3 corners[4] = {{x0, 0, 0}, {x0 + a, 0, 0}, {x0 + a, 0, a}, {x0, 0, a}};
+    std::vector<NurbsCurve> edges;
+    for (std::size_t k = 0; k < 4; ++k)
+        edges.push_back(NurbsCurve::from_bezier(
+            BezierCurve({corners[k], corners[(k + 1) % 4]}, {weights[k][0], weights[k][1]})));
+    return Profile(edges);
+}
+
+TEST(Revolve, ExtremeWeightsDoNotHideTheProfileFromTheOrientationCheck) {
+    // The area check of revolve once used a fixed-depth rule: with weights 1e12 / 1e-12 it found no area
+    // ("encloses no area with the axis") although the square encloses a^2. Pappus: V = 2π (x0 + a/2) a^2.
+    const double x0 = 2, a = 1, exact = 2 * pi * (x0 + a / 2) * a * a;
+    const EdgeWeights up{{{1e12, 1e-12}, {1e12, 1e-12}, {1e12, 1e-12}, {1e12, 1e-12}}};
+    const EdgeWeights mixed{{{1e-12, 1e12}, {1e6, 1e-3}, {1, 1e9}, {1e12, 1e-12}}};
+    for (const EdgeWeights& weights : {up, mixed}) {
+        const Profile square = crowded_square(x0, a, weights);
+        for (const Profile& profile : {square, square.reversed()})
+            EXPECT_LT(std::abs(revolve(profile).volume() - exact) / exact, 1e-10);
+    }
+}
+
+TEST(Revolve, ExtremeWeightsPassThePlanarEndFaceCheck) {
+    // A 77° revolve has two planar end faces bounded by the profile; Face::planar's counterclockwise
+    // check once rejected them for weights in 1e-3 .. 1e3 ("outer loop must run counterclockwise"): its
+    // fixed-depth rule lost most of the outer (right) edge and kept the inner one, which runs the other
+    // way, so the loop's area came out negative.
+    const double x0 = 2, a = 1, exact = 77.0 / 360.0 * 2 * pi * (x0 + a / 2) * a * a;
+    const EdgeWeights first{{{0.1, 0.01}, {100, 0.01}, {1, 10}, {0.1, 0.001}}};
+    const EdgeWeights second{{{0.01, 0.1}, {0.01, 100}, {1, 1000}, {1, 1000}}};
+    for (const EdgeWeights& weights : {first, second}) {
+        const Profile square = crowded_square(x0, a, weights);
+        for (const Profile& profile : {square, square.reversed()}) {
+            const Solid part = revolve(profile, {}, {0, 0, 1}, 77);
+            EXPECT_EQ(part.faces().size(), 6u);
+            EXPECT_LT(std::abs(part.volume() - exact) / exact, 1e-10);
+        }
+    }
 }
 
 TEST(Revolve, ArbitraryPlacementIsTheCanonicalSolidMovedRigidly) {

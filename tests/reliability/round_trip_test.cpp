@@ -196,8 +196,7 @@ private:
 };
 
 // Runs every stage of one case; returns "" when all pass, else what failed.
-// strict: max_deviation within the tolerance itself; otherwise within 50x.
-std::string run_case(const Case& c, int index, bool strict) {
+std::string run_case(const Case& c, int index) {
     const bool expensive = index % 10 == 0;
     const bool deviation = expensive;
     std::ostringstream failures;
@@ -249,7 +248,7 @@ std::string run_case(const Case& c, int index, bool strict) {
             DeviationOptions options;
             options.samples_per_edge = 3;
             const double measured = max_deviation(solid, mesh, options);
-            const double allowed = tolerance * (strict ? 1 + 1e-6 : 50.0);
+            const double allowed = tolerance * (1 + 1e-6);
             if (!(measured <= allowed))
                 failures << "max_deviation " << measured << " > " << allowed << " (tolerance " << tolerance << "); ";
         }
@@ -265,7 +264,7 @@ std::string run_case(const Case& c, int index, bool strict) {
     return failures.str();
 }
 
-void run_shard(int shard, double weight_exponent, bool strict) {
+void run_shard(int shard, double weight_exponent) {
     const std::uint64_t base = environment_number("RATBEZ_ROUND_TRIP_SEED", default_seed);
     const int per_shard = static_cast<int>(environment_number("RATBEZ_ROUND_TRIP_CASES", default_cases_per_shard));
     int failed = 0;
@@ -273,7 +272,7 @@ void run_shard(int shard, double weight_exponent, bool strict) {
         const int index = shard * per_shard + k;
         const std::uint64_t seed = base + static_cast<std::uint64_t>(index);
         const Case c = CaseGenerator(seed, weight_exponent).make();
-        const std::string failure = run_case(c, index, strict);
+        const std::string failure = run_case(c, index);
         if (!failure.empty()) {
             ++failed;
             ADD_FAILURE() << "round trip failed: seed " << seed << " (case " << index << ", weights within 10^+-"
@@ -285,18 +284,23 @@ void run_shard(int shard, double weight_exponent, bool strict) {
 
 class RoundTrip : public ::testing::TestWithParam<int> {};
 
-// Weights in [0.5, 2] (10^+-0.3), every stage, max_deviation within the tolerance itself. (Seeds
-// 20261122, 20261302, 20262082 once measured up to 27x: max_deviation's point inversion settled in the
-// wrong knot span or misjudged a polyline corner of a planar cap; seeds 20261182, 20261752 were real,
-// up to 15%: the tessellator's cell check sampled too few points.)
-TEST_P(RoundTrip, Shard) { run_shard(GetParam(), 0.3, true); }
-
-// OPEN FINDING (disabled so the suite stays green until it is fixed): the issue's full weight range
-// [1e-3, 1e3]. About 1 case in 3 fails: Solid::volume (properties.cpp quadrature) disagrees with OCCT
-// and with the mesh by up to 25% (even for degree-1 rational pieces), tessellations miss their
-// tolerance by up to 10x, and a few meshes are not closed (e.g. seed 20261138). Reproduce with
-// --gtest_also_run_disabled_tests --gtest_filter='*DISABLED_FullWeightRange*'.
-TEST_P(RoundTrip, DISABLED_FullWeightRange) { run_shard(GetParam(), 3.0, true); }
+// The issue's full weight range, [1e-3, 1e3], every stage, max_deviation within the tolerance itself.
+// What it found, all fixed in the kernel (the test is unchanged):
+//  - revolve's and Face::planar's area checks used a fixed-depth rule that missed edges whose weights
+//    crowd them into a sliver of their parameter range (seed 20261421: "outer loop must run
+//    counterclockwise"); they now use the adaptive cubature of properties.cpp;
+//  - max_deviation overestimated up to 10x (seeds 20261122, 20261232, 20261262, 20261332, 20261372,
+//    20261482): its seeds and Newton starts sat at uniform parameters, away from the crowded geometry;
+//    they now go per weight-certified cell;
+//  - CGAL found self-intersections (seeds 20261322, 20261342 and 9 more in the first 1000 cases): a thin
+//    row along a profile corner, closed by a zipper, sagged through the neighbouring face; such rows
+//    now take the neighbour's parameter lines;
+//  - OCCT rejected seed 20261992 (BRepCheck_InvalidCurveOnSurface): the converted tolerance of 1e-12 of
+//    the size was below OCCT's own evaluation differences.
+// (At weights [0.5, 2], seeds 20261122, 20261302, 20262082 once measured up to 27x: max_deviation's
+// point inversion settled in the wrong knot span or misjudged a polyline corner of a planar cap; seeds
+// 20261182, 20261752 were real, up to 15%: the tessellator's cell check sampled too few points.)
+TEST_P(RoundTrip, Shard) { run_shard(GetParam(), 3.0); }
 
 INSTANTIATE_TEST_SUITE_P(Reliability, RoundTrip, ::testing::Range(0, shards));
 

@@ -136,8 +136,9 @@ Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
                 y0 = std::min(y0, dot(r, plane.y_axis));
                 y1 = std::max(y1, dot(r, plane.y_axis));
             }
+            // The sign is judged against a margin of 1e-12 size^2: resolve each edge well below it.
             const double a = detail::green_area(c.edge->curve, plane.origin, plane.x_axis, plane.y_axis,
-                                                1e-6 * size * size, 8, 2);
+                                                1e-13 * size * size, "loops");
             signed_area += c.reversed ? -a : a;
         }
         const double area_tolerance = 1e-12 * size * size;

@@ -46,7 +46,7 @@ Solid extrude(const Profile& profile, const Vec3& direction, double distance) {
         const Vec3& y = axes[(a + 2) % 3];
         double component = 0;
         for (const NurbsCurve& piece : profile.pieces())
-            component += detail::green_area(piece, reference, x, y, 1e-15 * size * size);
+            component += detail::green_area(piece, reference, x, y, 1e-15 * size * size, "profile");
         (a == 0 ? area_vector.x : a == 1 ? area_vector.y : area_vector.z) = component;
     }
     require(norm(area_vector) > 1e-12 * size * size, "profile", "encloses no area");

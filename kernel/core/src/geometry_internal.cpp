@@ -1,5 +1,5 @@
-// Private helpers: exact degree trigonometry, the A7.1 arc layout, Gauss–Legendre rules, adaptive
-// quadrature, control boxes and knot-vector clamping. See geometry_internal.hpp.
+// Private helpers: exact degree trigonometry, the A7.1 arc layout, Gauss–Legendre rules, control
+// boxes and knot-vector clamping. See geometry_internal.hpp.
 #include "geometry_internal.hpp"
 
 #include <algorithm>
@@ -197,86 +197,6 @@ NurbsCurve with_end_point(const NurbsCurve& curve, bool at_end, const Vec3& poin
     Vec4& target = at_end ? pw.back() : pw.front();
     target = homogenize(point, target.w);
     return NurbsCurve::from_homogeneous(curve.degree(), curve.knots(), std::move(pw), curve.is_rational());
-}
-
-namespace {
-
-double gauss_1d(const std::function<double(double)>& f, double a, double b, const GaussRule& rule) {
-    double sum = 0;
-    for (std::size_t i = 0; i < rule.nodes.size(); ++i) sum += rule.weights[i] * f(a + (b - a) * rule.nodes[i]);
-    return sum * (b - a);
-}
-
-double adapt_1d(const std::function<double(double)>& f, double a, double b, double whole, double tolerance,
-                const GaussRule& rule, int depth) {
-    const double middle = 0.5 * (a + b);
-    const double left = gauss_1d(f, a, middle, rule), right = gauss_1d(f, middle, b, rule);
-    if (depth <= 0 || std::abs(left + right - whole) <= tolerance) return left + right;
-    return adapt_1d(f, a, middle, left, tolerance / 2, rule, depth - 1) +
-           adapt_1d(f, middle, b, right, tolerance / 2, rule, depth - 1);
-}
-
-double gauss_2d(const std::function<double(double, double)>& f, double u0, double u1, double v0, double v1,
-                const GaussRule& rule) {
-    double sum = 0;
-    for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
-        const double u = u0 + (u1 - u0) * rule.nodes[i];
-        double row = 0;
-        for (std::size_t j = 0; j < rule.nodes.size(); ++j) row += rule.weights[j] * f(u, v0 + (v1 - v0) * rule.nodes[j]);
-        sum += rule.weights[i] * row;
-    }
-    return sum * (u1 - u0) * (v1 - v0);
-}
-
-double adapt_2d(const std::function<double(double, double)>& f, double u0, double u1, double v0, double v1,
-                double whole, double tolerance, const GaussRule& rule, int depth) {
-    const double um = 0.5 * (u0 + u1), vm = 0.5 * (v0 + v1);
-    const std::array<std::array<double, 4>, 4> quarters{{{u0, um, v0, vm}, {um, u1, v0, vm}, {u0, um, vm, v1}, {um, u1, vm, v1}}};
-    std::array<double, 4> values{};
-    double sum = 0;
-    for (std::size_t q = 0; q < 4; ++q) {
-        values[q] = gauss_2d(f, quarters[q][0], quarters[q][1], quarters[q][2], quarters[q][3], rule);
-        sum += values[q];
-    }
-    if (depth <= 0 || std::abs(sum - whole) <= tolerance) return sum;
-    double refined = 0;
-    for (std::size_t q = 0; q < 4; ++q)
-        refined += adapt_2d(f, quarters[q][0], quarters[q][1], quarters[q][2], quarters[q][3], values[q], tolerance / 4,
-                            rule, depth - 1);
-    return refined;
-}
-
-}  // namespace
-
-double integrate(const std::function<double(double)>& f, double a, double b, double absolute_tolerance, int points,
-                 int max_depth) {
-    const GaussRule& rule = gauss_legendre(points);
-    const double whole = gauss_1d(f, a, b, rule);
-    if (max_depth <= 0) return whole;
-    return adapt_1d(f, a, b, whole, absolute_tolerance, rule, max_depth);
-}
-
-double integrate(const std::function<double(double, double)>& f, double u0, double u1, double v0, double v1,
-                 double absolute_tolerance, int points, int max_depth) {
-    const GaussRule& rule = gauss_legendre(points);
-    const double whole = gauss_2d(f, u0, u1, v0, v1, rule);
-    if (max_depth <= 0) return whole;
-    return adapt_2d(f, u0, u1, v0, v1, whole, absolute_tolerance, rule, max_depth);
-}
-
-double green_area(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
-                  double absolute_tolerance, int points, int max_depth) {
-    const std::vector<double> breaks = breakpoints(curve.degree(), curve.knots());
-    auto integrand = [&](double t) {
-        const std::vector<Vec3> d = curve.derivatives(t, 1);
-        const Vec3 r = d[0] - origin;
-        const double x = dot(r, x_axis), y = dot(r, y_axis);
-        return 0.5 * (x * dot(d[1], y_axis) - y * dot(d[1], x_axis));
-    };
-    double area = 0;
-    for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
-        area += integrate(integrand, breaks[k], breaks[k + 1], absolute_tolerance, points, max_depth);
-    return area;
 }
 
 std::string format_point(const Vec3& p) {

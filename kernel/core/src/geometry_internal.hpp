@@ -3,8 +3,8 @@
 // Not installed, not part of the public API.
 
 #include <array>
-#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ratbez/brep.hpp"
@@ -64,17 +64,13 @@ NurbsCurve clamped(const NurbsCurve& curve);
 // A clamped curve with its first (at_end = false) or last control point moved to `point`, keeping its weight.
 NurbsCurve with_end_point(const NurbsCurve& curve, bool at_end, const Vec3& point);
 
-// Adaptive Gauss–Legendre quadrature of f over [a, b] (1D) or [u0, u1] x [v0, v1] (2D): a panel is
-// accepted when the rule on it and on its halves (quarters) agree to `absolute_tolerance`.
-double integrate(const std::function<double(double)>& f, double a, double b, double absolute_tolerance,
-                 int points = 16, int max_depth = 12);
-double integrate(const std::function<double(double, double)>& f, double u0, double u1, double v0, double v1,
-                 double absolute_tolerance, int points = 12, int max_depth = 6);
-
-// (1/2) ∮ (x dy - y dx) of a curve in a plane frame (x = (C - origin)·x_axis, y = (C - origin)·y_axis),
-// span by span: the signed area contribution of one loop piece (Green's theorem).
+// (1/2) ∮ (x dy - y dx) of a curve in a plane frame (x = (C - origin)·x_axis, y = (C - origin)·y_axis):
+// the signed area contribution of one loop piece (Green's theorem), to within `absolute_tolerance`.
+// Defined in properties.cpp with the adaptive cubature of the measurements (weight certificate, then
+// refinement), so extreme rational weights cannot hide part of the curve from the rule. Throws Error
+// naming `argument` if a hostile curve exhausts the cell budget.
 double green_area(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
-                  double absolute_tolerance, int points = 16, int max_depth = 12);
+                  double absolute_tolerance, std::string_view argument);
 
 // Signed enclosed volume of closed faces; `quick` uses a fixed low-order rule (enough for the sign).
 double signed_volume(const std::vector<Face>& faces, bool quick);

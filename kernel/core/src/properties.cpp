@@ -26,7 +26,8 @@
 //     (kRelativeTolerance of size^3 for volume, size^2 for area, size = control box diagonal).
 // Rounding sets a floor under every cell's estimate: the quotient rule and the subdivision leave
 // errors of about ε · size in S_s and S_t, so a cell's integral carries noise of about
-// ε · size^(k-1) · (its control polygon lengths in s and t), k = 2 for area, 3 for volume. Refining a
+// ε · size^(k-1) · (its rounding lengths in s and t: control polygon lengths plus the quotient rule's
+// cancellation, see rounding_length), k = 2 for area, 3 for volume. Refining a
 // cell whose estimate is at that floor cannot improve it (with weights 1e300 thousands of cells sit
 // where the surface all but stops), so such a cell counts as converged.
 // Both phases count cells against kMaxCells, so hostile input costs bounded work; when the budget runs
@@ -136,17 +137,28 @@ double weight_spread(const Cell& cell, bool along_u) {
     return worst;
 }
 
-// The length of the control polygon along one direction, the longest over the lines of the net: the
-// scale of the cell's isocurves in that direction, which the rounding errors of S_s or S_t are
-// proportional to.
-double polygon_length(const Cell& cell, bool along_u) {
+// The scale of the rounding errors of S_s or S_t on a cell, along one direction, the worst over the
+// lines of the net: the control polygon's length (the size of the isocurves, which the subdivision's
+// errors are proportional to) plus |P|max · n · max|Δw| / min w, the quotient rule's share: S_s =
+// (A_s - S w_s) / w loses about ε |S| |w_s / w| to cancellation, and |S| is the distance from the
+// coordinate origin, not from the cell. The second term matters where extreme weights make a curve all
+// but stop (a conic with weights 1, 1e300, 1 near its middle): the polygon is tiny there, but S_s is
+// still the difference of two large numbers.
+double rounding_length(const Cell& cell, bool along_u) {
     const Lines lines{*cell.source, along_u};
     double longest = 0;
     for (int line = 0; line < lines.count(); ++line) {
-        double sum = 0;
-        for (int k = 0; k < lines.degree(); ++k)
-            sum += distance(project(cell.net[lines.at(line, k)]), project(cell.net[lines.at(line, k + 1)]));
-        longest = std::max(longest, sum);
+        double polygon = 0, magnitude = 0, min_weight = std::numeric_limits<double>::infinity(), max_step = 0;
+        for (int k = 0; k <= lines.degree(); ++k) {
+            const Vec4& p = cell.net[lines.at(line, k)];
+            magnitude = std::max(magnitude, norm(project(p)));
+            min_weight = std::min(min_weight, p.w);
+            if (k == 0) continue;
+            const Vec4& q = cell.net[lines.at(line, k - 1)];
+            polygon += distance(project(q), project(p));
+            max_step = std::max(max_step, std::abs(p.w - q.w));
+        }
+        longest = std::max(longest, polygon + magnitude * lines.degree() * max_step / min_weight);
     }
     return longest;
 }
@@ -207,7 +219,7 @@ void assess(Cell& cell, double noise_scale) {
     const double along_u = cell.halves_u[0] + cell.halves_u[1], along_v = cell.halves_v[0] + cell.halves_v[1];
     const double error_u = std::abs(along_u - cell.whole), error_v = std::abs(along_v - cell.whole);
     cell.estimate = along_u + along_v - cell.whole;
-    const double floor = noise_scale * (polygon_length(cell, true) + polygon_length(cell, false));
+    const double floor = noise_scale * (rounding_length(cell, true) + rounding_length(cell, false));
     cell.error = error_u + error_v > floor ? error_u + error_v : 0.0;
     cell.split_along_u = error_u >= error_v;
 }
@@ -290,24 +302,29 @@ void add_surface(const NurbsSurface& surface, Integrand integrand, Problem& prob
         for (const BezierSurface& patch : row) problem.cells.push_back(Cell{&source, patch.homogeneous_points()});
 }
 
-// The cells of a planar face's loop edges for `factor` times Green's area integral (1/2)(x y' - y x')
-// in the plane frame, edge by edge and Bézier segment by segment (the edge's own direction; a reversed
-// coedge contributes with the opposite sign).
+// The cells of one curve's Bézier segments for `factor` times Green's area integral (1/2)(x y' - y x'),
+// x = (C - origin)·x_axis, y = (C - origin)·y_axis, in the curve's own direction. The frame is copied
+// into the integrand, so the caller's vectors need not outlive the problem.
+void add_green(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis, double factor,
+               Problem& problem) {
+    const Source& source = problem.sources.emplace_back(
+        Source{curve.degree(), 0, [factor, origin, x_axis, y_axis](const detail::SurfaceFirstDerivatives& d) {
+                   const Vec3 r = d.s - origin;
+                   const double x = dot(r, x_axis), y = dot(r, y_axis);
+                   return factor * 0.5 * (x * dot(d.su, y_axis) - y * dot(d.su, x_axis));
+               }});
+    for (const BezierCurve& segment : curve.bezier_segments())
+        problem.cells.push_back(Cell{&source, segment.homogeneous_points()});
+}
+
+// The cells of a planar face's loop edges for `factor` times Green's area integral in the plane frame,
+// edge by edge (a reversed coedge contributes with the opposite sign).
 void add_planar(const Face& face, double factor, Problem& problem) {
     const Plane& plane = face.plane();
     for (const auto& loop : face.loops())
-        for (const Coedge& coedge : loop) {
-            const NurbsCurve& curve = coedge.edge->curve;
-            const double sign = coedge.reversed ? -factor : factor;
-            const Source& source = problem.sources.emplace_back(
-                Source{curve.degree(), 0, [sign, &plane](const detail::SurfaceFirstDerivatives& d) {
-                           const Vec3 r = d.s - plane.origin;
-                           const double x = dot(r, plane.x_axis), y = dot(r, plane.y_axis);
-                           return sign * 0.5 * (x * dot(d.su, plane.y_axis) - y * dot(d.su, plane.x_axis));
-                       }});
-            for (const BezierCurve& segment : curve.bezier_segments())
-                problem.cells.push_back(Cell{&source, segment.homogeneous_points()});
-        }
+        for (const Coedge& coedge : loop)
+            add_green(coedge.edge->curve, plane.origin, plane.x_axis, plane.y_axis,
+                      coedge.reversed ? -factor : factor, problem);
 }
 
 void add_face_area(const Face& face, Problem& problem) {
@@ -355,6 +372,27 @@ double area_of_faces(const std::vector<Face>& faces, Budget budget) {
 
 double detail::signed_volume(const std::vector<Face>& faces, bool quick) {
     return volume_of_faces(faces, Budget{"faces", quick});
+}
+
+double detail::green_area(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
+                          double absolute_tolerance, std::string_view argument) {
+    // The same two phases as the measurements: the weight certificate puts Gauss nodes where extreme
+    // weights crowd the curve (a fixed-depth rule misses a piece with weights 1e12 / 1e-12 entirely
+    // and calls the profile empty), then refinement to the caller's tolerance.
+    // The integrand x y' - y x' carries rounding noise of about ε · reach · |C'| (reach: how far the curve
+    // gets from `origin`), so the integral cannot be known better than about ε · reach · (polygon length).
+    // A tolerance below that would refine forever; it is raised to a few times that floor instead.
+    const detail::Box box = detail::control_box(curve);
+    const double reach = box.diagonal() + norm(box.min - origin);
+    double length = 0;
+    const std::vector<Vec4>& points = curve.homogeneous_points();
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) length += distance(project(points[i]), project(points[i + 1]));
+    Problem problem;
+    problem.noise_scale = kNoiseFactor * reach;
+    problem.tolerance = std::max(absolute_tolerance, 4 * problem.noise_scale * length);
+    add_green(curve, origin, x_axis, y_axis, 1.0, problem);
+    Budget budget{argument};
+    return integrate(std::move(problem), budget);
 }
 
 double surface_area(const Face& face) { return area_of_faces({face}, Budget{"face"}); }

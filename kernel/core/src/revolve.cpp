@@ -238,7 +238,7 @@ Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_d
     // closing segment of an open profile lies on the axis (ρ = 0, dρ = 0) and adds nothing.
     double signed_area = 0;
     for (const NurbsCurve& piece : profile.pieces())
-        signed_area += detail::green_area(piece, axis_point, e, d, 1e-15 * profile.size() * profile.size());
+        signed_area += detail::green_area(piece, axis_point, e, d, 1e-15 * profile.size() * profile.size(), "profile");
     require(std::abs(signed_area) > 1e-12 * profile.size() * profile.size(), "profile",
             "encloses no area with the axis (nothing to revolve)");
     const Profile oriented = signed_area > 0 ? profile : profile.reversed();

@@ -166,11 +166,13 @@ std::vector<double> sample_params(const std::vector<double>& breaks, std::size_t
     return s;
 }
 
-// How many samples sample_curvature takes with kFineSamplesPerSpan.
-double fine_sample_count(const NurbsSurface& s) {
-    return static_cast<double>(sample_params(breakpoints(s.knots_u(), s.domain_u()), kFineSamplesPerSpan).size()) *
-           static_cast<double>(sample_params(breakpoints(s.knots_v(), s.domain_v()), kFineSamplesPerSpan).size());
+// How many samples sample_curvature takes with `per_span`.
+double sample_count(const NurbsSurface& s, std::size_t per_span) {
+    return static_cast<double>(sample_params(breakpoints(s.knots_u(), s.domain_u()), per_span).size()) *
+           static_cast<double>(sample_params(breakpoints(s.knots_v(), s.domain_v()), per_span).size());
 }
+double fine_sample_count(const NurbsSurface& s) { return sample_count(s, kFineSamplesPerSpan); }
+double coarse_sample_count(const NurbsSurface& s) { return sample_count(s, kCoarseSamplesPerSpan); }
 
 struct CurvatureSamples {
     std::vector<double> us, vs;
@@ -980,6 +982,17 @@ private:
         const double max_cells = static_cast<double>(settings_.max_triangles) / 2;
         for (const Face& face : solid_.faces()) {
             if (face.kind() != Face::Kind::surface) continue;
+            // The curvature samples cost memory and time like triangles do (about 200 bytes each): a face
+            // with more knot spans than the budget can sample (10^5 spans revolved into 4 x 10^5 patches) is
+            // refused up front. A small budget still allows the 2^18 samples any ordinary face needs.
+            const double samples = coarse_sample_count(face.surface());
+            const double sample_budget = std::max(4.0 * static_cast<double>(settings_.max_triangles), 262'144.0);
+            if (samples > sample_budget)
+                throw Error("max_triangles: a face with " + std::to_string(face.surface().knots_u().size()) + " x " +
+                            std::to_string(face.surface().knots_v().size()) + " knots needs " +
+                            std::to_string(static_cast<long long>(samples)) + " curvature samples, more than " +
+                            std::to_string(static_cast<long long>(sample_budget)) + " that a budget of " +
+                            std::to_string(settings_.max_triangles) + " triangles allows");
             SurfacePlan plan;
             plan.face = &face;
             plan.evaluator = std::make_shared<const detail::SurfaceEvaluator>(face.surface());
@@ -987,6 +1000,11 @@ private:
             plan.min_segments = minimum_segments(plan.sides);
             plan.creases = {crease_lines(face.surface(), *plan.evaluator, true),
                             crease_lines(face.surface(), *plan.evaluator, false)};
+            // Every piece between two creases gets a line interval of its own, so a face with more creased
+            // pieces than the budget allows (a profile with many sharp corners) is refused here already.
+            const double crease_cells = static_cast<double>(std::max<std::size_t>(plan.creases[0].size(), 2) - 1) *
+                                        static_cast<double>(std::max<std::size_t>(plan.creases[1].size(), 2) - 1);
+            if (crease_cells > max_cells) throw_over_budget(2 * crease_cells, settings_.max_triangles);
             // The coarse samples first. Their line densities are a little more conservative (each is the
             // largest over a longer sample interval): that costs a few cells on a small grid, while the fine
             // sampling would cost more than checking the whole grid. Resampled finely once the grid has
@@ -1008,6 +1026,118 @@ private:
         for (const SurfacePlan& plan : plans_) estimate += 2 * plan.grid.cells() + 2.0 * static_cast<double>(plan.grid.u.size() + plan.grid.v.size());
         if (estimate > static_cast<double>(settings_.max_triangles)) throw_over_budget(estimate, settings_.max_triangles);
         for (std::size_t k = 0; k < plans_.size(); ++k) refine_grid(plans_[k], curvatures[k], settings_, max_cells);
+        match_lines_at_creases();
+    }
+
+    // Where a face's row along a crease (a profile corner) is thin, it takes the other face's lines
+    // across the shared edge. Otherwise it closes that row with a zipper to the other face's samples,
+    // and its far rail's chords, spanning several of the other face's intervals, sag by more than the
+    // row is wide (weights crowd the face towards the edge): they pass through the other face's first
+    // row, and the mesh intersects itself although every triangle is within the tolerance (seeds
+    // 20261322, 20261342 and 9 more of the round trip test's first 1000 cases at weights 10^+-3).
+    // With the same lines the two rows' cells pair up, each pair the profile's corner swept between
+    // the same two lines, which meet only along the edge. Only the lines inside thin cells are taken
+    // (about 50% more triangles over the round trip cases at weights 10^+-3, 3% at 10^+-0.3; matching
+    // whole creases cost 60%, bisecting the thin cells instead several times that). Lines only subdivide cells that passed their check. Repeated
+    // until no face gains a line, since lines can pass on along a ring of thin rows.
+    // One face's side on an edge.
+    struct EdgeUse {
+        SurfacePlan* plan;
+        Side side;
+    };
+
+    void match_lines_at_creases() {
+        // The uses of each edge, edges in order of first use (not of their addresses: the result must
+        // not depend on where the allocator put them).
+        std::vector<std::pair<const Edge*, std::vector<EdgeUse>>> uses;
+        std::map<const Edge*, std::size_t> slot;
+        for (SurfacePlan& plan : plans_)
+            for (Side side : kSides) {
+                const SideMap& m = plan.sides[static_cast<std::size_t>(index(side))];
+                if (m.degenerate) continue;
+                const auto [it, inserted] = slot.try_emplace(m.edge, uses.size());
+                if (inserted) uses.push_back({m.edge, {}});
+                uses[it->second].second.push_back({&plan, side});
+            }
+        // The lines of a plan that cross a side, i.e. run along the side's direction.
+        auto lines_of = [](SurfacePlan& plan, Side side) -> std::vector<double>& {
+            return runs_along_u(side) ? plan.grid.u : plan.grid.v;
+        };
+        for (int round = 0; round < 16; ++round) {
+            bool changed = false;
+            for (auto& [edge, list] : uses) {
+                if (list.size() != 2 || list[0].plan == list[1].plan || !is_crease(*edge, list[0], list[1])) continue;
+                for (int k = 0; k < 2; ++k) {
+                    const EdgeUse& to = list[static_cast<std::size_t>(k)];
+                    const EdgeUse& from = list[static_cast<std::size_t>(1 - k)];
+                    const SideMap& to_map = to.plan->sides[static_cast<std::size_t>(index(to.side))];
+                    const SideMap& from_map = from.plan->sides[static_cast<std::size_t>(index(from.side))];
+                    std::vector<double>& lines = lines_of(*to.plan, to.side);
+                    const std::vector<char> thin = thin_intervals(*to.plan, to.side);
+                    std::vector<double> merged = lines;
+                    for (double p : lines_of(*from.plan, from.side)) {
+                        const double q = to_map.to_face(from_map.to_edge(p));
+                        const auto k_interval = std::upper_bound(lines.begin(), lines.end(), q) - lines.begin() - 1;
+                        if (k_interval >= 0 && static_cast<std::size_t>(k_interval) < thin.size() && thin[static_cast<std::size_t>(k_interval)])
+                            merged.push_back(q);
+                    }
+                    merged = merge_params(std::move(merged), lines.front(), lines.back());
+                    if (merged.size() > lines.size()) {
+                        const std::size_t across = runs_along_u(to.side) ? to.plan->grid.v.size() : to.plan->grid.u.size();
+                        const double cells = static_cast<double>(merged.size() - 1) * static_cast<double>(across - 1);
+                        if (2 * cells > static_cast<double>(settings_.max_triangles)) throw_over_budget(2 * cells, settings_.max_triangles);
+                        lines = std::move(merged);
+                        changed = true;
+                    }
+                }
+            }
+            if (!changed) break;
+        }
+    }
+
+    // Per interval of the lines along `side`: 1 where the row's cell is thin, i.e. its far rail's chord
+    // sags by more than kThinRow times the row's width there (a well-shaped cell's chord sags a few
+    // percent of its size; seed 20261342's sagged 1.5 times, and 0.25 still let seed 20263292 through).
+    static std::vector<char> thin_intervals(const SurfacePlan& plan, Side side) {
+        constexpr double kThinRow = 0.1;
+        const detail::SurfaceEvaluator& s = *plan.evaluator;
+        const Grid& g = plan.grid;
+        const bool along_u = runs_along_u(side);
+        const std::vector<double>& lines = along_u ? g.u : g.v;
+        const std::vector<double>& across = along_u ? g.v : g.u;
+        const bool at_min = side == Side::v_min || side == Side::u_min;
+        const double edge = at_min ? across.front() : across.back();
+        const double far = at_min ? across[1] : across[across.size() - 2];
+        auto at = [&](double p, double q) { return along_u ? s.point(p, q) : s.point(q, p); };
+        std::vector<char> thin(lines.size() - 1, 0);
+        for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
+            const Vec3 a = at(lines[k], far), b = at(lines[k + 1], far);
+            const double width = std::min(distance(at(lines[k], edge), a), distance(at(lines[k + 1], edge), b));
+            const double sag = distance(at(0.5 * (lines[k] + lines[k + 1]), far), 0.5 * (a + b));
+            thin[k] = sag > kThinRow * width ? 1 : 0;
+        }
+        return thin;
+    }
+
+    // True when the faces' normals differ at an interior point of the shared edge: a crease, not a
+    // smooth (G1) joint, where both faces are one sheet and their rows cannot fold into each other.
+    static bool is_crease(const Edge& edge, const EdgeUse& a, const EdgeUse& b) {
+        auto normal_at = [&](const EdgeUse& use, double t) {
+            const SideMap& m = use.plan->sides[static_cast<std::size_t>(index(use.side))];
+            const NurbsSurface& s = use.plan->face->surface();
+            const double p = m.to_face(t);
+            const double fixed = use.side == Side::v_min   ? s.domain_v().min
+                                 : use.side == Side::v_max ? s.domain_v().max
+                                 : use.side == Side::u_min ? s.domain_u().min
+                                                           : s.domain_u().max;
+            return runs_along_u(use.side) ? s.normal(p, fixed) : s.normal(fixed, p);
+        };
+        const Interval d = edge.curve.domain();
+        for (double f : {0.25, 0.5, 0.75}) {
+            const double t = d.min + f * (d.max - d.min);
+            if (dot(normal_at(a, t), normal_at(b, t)) < std::cos(1e-3)) return true;
+        }
+        return false;
     }
 
     void sample_edges() {
