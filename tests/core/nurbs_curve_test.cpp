@@ -376,6 +376,8 @@ TEST(NurbsCurveErrors, NegativeDerivativeOrderAndInsertionBeyondTheDegree) {
     EXPECT_TRUE(throws_naming([&] { (void)c.derivatives(0.5, -2); }, "order"));
     EXPECT_TRUE(throws_naming([&] { (void)c.insert_knot(0.5, 3); }, "times"));
     EXPECT_TRUE(throws_naming([&] { (void)c.insert_knot(0.5, -1); }, "times"));
+    // fuzz_geometry found: multiplicity + times overflowed int (UBSan) for times near INT_MAX.
+    EXPECT_TRUE(throws_naming([&] { (void)c.insert_knot(0.5, std::numeric_limits<int>::max()); }, "times"));
     EXPECT_TRUE(throws_naming([&] { (void)c.insert_knot(0.0, 1); }, "times"));  // the clamped end has p + 1 already
     EXPECT_TRUE(throws_naming([&] { (void)c.reparameterized(1.0, 1.0); }, "b"));
     EXPECT_TRUE(throws_naming([&] { (void)c.reparameterized(nan_value, 1.0); }, "a"));

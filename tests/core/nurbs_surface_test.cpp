@@ -422,6 +422,7 @@ TEST(NurbsSurfaceErrors, NegativeOrdersAndInsertionBeyondTheDegree) {
     EXPECT_TRUE(throws_naming([&] { (void)s.derivatives(0.5, 0.5, -1); }, "order"));
     EXPECT_TRUE(throws_naming([&] { (void)s.insert_knot_u(0.5, 2); }, "times"));
     EXPECT_TRUE(throws_naming([&] { (void)s.insert_knot_v(0.5, -1); }, "times"));
+    EXPECT_TRUE(throws_naming([&] { (void)s.insert_knot_u(0.5, std::numeric_limits<int>::max()); }, "times"));
 }
 
 TEST(NurbsSurfaceErrors, NegativeDegree) {

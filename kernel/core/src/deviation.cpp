@@ -51,15 +51,24 @@ struct Step {
     double u = 0, v = 0;
 };
 Step descent_step(double a, double b, double c, double f, double g, bool hold_u, bool hold_v) {
-    // Levenberg damping keeps the solve finite where a partial vanishes (poles, apexes).
-    const double damping = 1e-12 * (a + c) + 1e-300;
-    a += damping, c += damping;
+    // Marquardt damping, relative to each diagonal entry, keeps the solve finite where a partial
+    // vanishes (poles, apexes). A damping shared by both (1e-12 (a + c)) swamped the smaller entry where
+    // extreme weights make one partial 1e8 times the other (a profile span crowded into 1e-8 of its
+    // parameters): the step along the other direction all but vanished and Newton stopped 10x the
+    // tolerance from the foot (seed 20268482).
+    const double floor = 1e-20 * (a + c) + 1e-300;
+    a += 1e-12 * a + floor, c += 1e-12 * c + floor;
     if (hold_u && hold_v) return {};
     if (hold_u) return {0, -g / c};
     if (hold_v) return {-f / a, 0};
-    const double det = a * c - b * b;
+    // Solved with the diagonal scaled to 1 (Jacobi), so that a * c - b * b does not lose the
+    // determinant to cancellation when the two partials differ by many orders of magnitude.
+    const double su = std::sqrt(a), sv = std::sqrt(c);
+    const double r = b / (su * sv);
+    const double det = 1 - r * r;
     if (!(det > 0)) return {};
-    return {-(c * f - b * g) / det, -(a * g - b * f) / det};
+    const double fu = f / su, gv = g / sv;
+    return {-(fu - r * gv) / det / su, -(gv - r * fu) / det / sv};
 }
 
 // The parameter box a point inversion is clamped to: the face's domain, or one cell of it.
@@ -114,7 +123,11 @@ Foot invert_on_surface(const detail::SurfaceEvaluator& s, const Vec3& p, const P
     return best;
 }
 
-// Newton on a curve for the nearest point to p, clamped to the domain.
+// Newton on a curve for the nearest point to p, clamped to the domain. The step is halved up to 60
+// times (not 12): where weights crowd a span into a sliver of its parameters, the curve turns through a
+// half circle within 1e-6 of the domain, a step of 1/4096 of the Newton step still overshot, and the
+// search stopped at a knot that was no foot, where the side test of PlanarRegion then judged a point
+// inside a cap as outside (seed 20268692: 16x the tolerance).
 double invert_on_curve(const NurbsCurve& curve, const Vec3& p, double t) {
     const Interval d = curve.domain();
     double best_t = t, best = distance(curve.point(t), p);
@@ -127,7 +140,7 @@ double invert_on_curve(const NurbsCurve& curve, const Vec3& p, double t) {
         if (!(fp > 0)) break;
         double step = -f / fp;
         bool improved = false;
-        for (int halving = 0; halving < 12; ++halving) {
+        for (int halving = 0; halving < 60; ++halving) {
             const double nt = std::clamp(best_t + step, d.min, d.max);
             const double dist = distance(curve.point(nt), p);
             if (dist < best) {
@@ -151,6 +164,26 @@ double interior_corner(const NurbsCurve& curve, double t) {
     for (double k : curve.knots())
         if (k > d.min && k < d.max && std::abs(k - t) <= near) return k;
     return std::numeric_limits<double>::quiet_NaN();
+}
+
+// The curve's one-sided tangent directions at interior knot k: the last leg of the control polygon of
+// the Bézier segment ending there and the first leg of the one starting there (A5.6; a rational
+// segment's end tangent is parallel to its end leg). Legs of zero length (repeated control points)
+// are skipped.
+std::pair<Vec3, Vec3> knot_legs(const NurbsCurve& curve, double k) {
+    const Interval d = curve.domain();
+    std::vector<double> breaks;
+    for (double knot : curve.knots())
+        if (knot >= d.min && knot <= d.max && (breaks.empty() || knot > breaks.back())) breaks.push_back(knot);
+    const auto at = std::find(breaks.begin(), breaks.end(), k);
+    const std::vector<BezierCurve> segments = curve.bezier_segments();
+    const auto b = static_cast<std::size_t>(at - breaks.begin());
+    if (at == breaks.end() || b == 0 || b >= segments.size()) return {curve.derivative(k, 1), curve.derivative(k, 1)};
+    const std::vector<Vec3> left = segments[b - 1].points(), right = segments[b].points();
+    Vec3 in{}, out{};
+    for (std::size_t i = left.size() - 1; i > 0 && !(norm(in) > 0); --i) in = left.back() - left[i - 1];
+    for (std::size_t i = 1; i < right.size() && !(norm(out) > 0); ++i) out = right[i] - right.front();
+    return {in, out};
 }
 
 // A planar face: the plane, its boundary curves in loop order and a fine polyline of them that locates
@@ -196,10 +229,36 @@ struct PlanarRegion {
             if (d2 < best) best = d2, nearest = &s, fraction = f;
         }
         if (nearest == nullptr) return std::abs(height);
-        const Curve& curve = curves[nearest->curve];
+        std::size_t index = nearest->curve;
+        double t = invert_on_curve(*curves[index].curve, p, nearest->ta + fraction * (nearest->tb - nearest->ta));
+        Vec3 foot = curves[index].curve->point(t);
+        {
+            // A foot at an end of the curve is a corner of the loop only if the neighbouring curve does
+            // not come closer just past the joint: where weights crowd that curve's end into a sliver of
+            // its parameters its polyline runs the last stretch in one segment, the nearest segment
+            // then lies on this curve, and the corner rule with the neighbour's end tangent judged a
+            // point inside a cap as outside (seed 20266302: 9x the tolerance). Newton on the
+            // neighbour from the joint settles that.
+            const Interval d = curves[index].curve->domain();
+            const double end = 1e-12 * (d.max - d.min);
+            const bool first = t <= d.min + end, last = t >= d.max - end;
+            if (first || last) {
+                // The joint is the loop's arrival at this curve (previous neighbour) or its departure.
+                const bool arrival = first != curves[index].reversed;
+                const std::size_t other = arrival ? curves[index].previous : curves[index].next;
+                const Curve& c = curves[other];
+                const Interval od = c.curve->domain();
+                // The neighbour's end at the joint: its loop end (arrival) or loop start (departure).
+                const double joint = arrival != c.reversed ? od.max : od.min;
+                const double other_t = invert_on_curve(*c.curve, p, joint);
+                const Vec3 other_foot = c.curve->point(other_t);
+                const double other_end = 1e-12 * (od.max - od.min);
+                const bool interior = other_t > od.min + other_end && other_t < od.max - other_end;
+                if (interior && distance(other_foot, p) <= distance(foot, p)) index = other, t = other_t, foot = other_foot;
+            }
+        }
+        const Curve& curve = curves[index];
         const Interval dom = curve.curve->domain();
-        const double t = invert_on_curve(*curve.curve, p, nearest->ta + fraction * (nearest->tb - nearest->ta));
-        const Vec3 foot = curve.curve->point(t);
         const detail::Point2 f2 = to_plane(foot);
         const detail::Point2 offset{q.x - f2.x, q.y - f2.y};
         auto left_of = [&](const detail::Point2& tangent) { return tangent.x * offset.y - tangent.y * offset.x >= 0; };
@@ -209,15 +268,27 @@ struct PlanarRegion {
         const double corner = interior_corner(*curve.curve, t);
         if (!at_start && !at_end && !std::isnan(corner)) {
             // A corner inside the curve (a C0 knot of a polyline piece): the same rule as at a corner
-            // between curves, with the one-sided tangents either side of the knot.
-            const double delta = 1e-7 * (dom.max - dom.min);
-            const double before = curve.reversed ? corner + delta : corner - delta;
-            const double after = curve.reversed ? corner - delta : corner + delta;
-            const detail::Point2 tin = loop_tangent(nearest->curve, before), tout = loop_tangent(nearest->curve, after);
-            const bool convex = tin.x * tout.y - tin.y * tout.x >= 0;
-            inside = convex ? (left_of(tin) && left_of(tout)) : (left_of(tin) || left_of(tout));
+            // between curves, with the one-sided tangents either side of the knot. They are taken from
+            // the control polygons of the two Bézier segments meeting there (their end legs), not by
+            // evaluating at a small parameter offset: where weights crowd a segment into a sliver of
+            // its parameters, an offset of 1e-7 of the domain can already run far along the curve and
+            // its tangent there need not be the one at the knot. Where the two legs are parallel the
+            // knot is no corner and the tangent at the foot decides.
+            const auto [leg_in, leg_out] = knot_legs(*curve.curve, corner);
+            const detail::Point2 a{dot(leg_in, plane.x_axis), dot(leg_in, plane.y_axis)};
+            const detail::Point2 b{dot(leg_out, plane.x_axis), dot(leg_out, plane.y_axis)};
+            // In loop order: the reversed curve arrives along -leg_out and leaves along -leg_in.
+            const detail::Point2 tin = curve.reversed ? detail::Point2{-b.x, -b.y} : a;
+            const detail::Point2 tout = curve.reversed ? detail::Point2{-a.x, -a.y} : b;
+            const double turn = tin.x * tout.y - tin.y * tout.x;
+            const double scale = std::hypot(tin.x, tin.y) * std::hypot(tout.x, tout.y);
+            const bool convex = turn >= 0;
+            if (!(scale > 0) || (std::abs(turn) <= 1e-12 * scale && tin.x * tout.x + tin.y * tout.y > 0))
+                inside = left_of(loop_tangent(index, t));
+            else
+                inside = convex ? (left_of(tin) && left_of(tout)) : (left_of(tin) || left_of(tout));
         } else if (!at_start && !at_end) {
-            inside = left_of(loop_tangent(nearest->curve, t));
+            inside = left_of(loop_tangent(index, t));
         } else {
             // At a corner: the region is the intersection (convex corner) or union (reflex corner) of the
             // half-planes left of the incoming and outgoing directions.
@@ -225,12 +296,12 @@ struct PlanarRegion {
             std::size_t in_curve, out_curve;
             double t_in, t_out;
             if (loop_start) {
-                in_curve = curve.previous, out_curve = nearest->curve;
+                in_curve = curve.previous, out_curve = index;
                 const Interval d_in = curves[in_curve].curve->domain();
                 t_in = curves[in_curve].reversed ? d_in.min : d_in.max;
                 t_out = t;
             } else {
-                in_curve = nearest->curve, out_curve = curve.next;
+                in_curve = index, out_curve = curve.next;
                 const Interval d_out = curves[out_curve].curve->domain();
                 t_in = t;
                 t_out = curves[out_curve].reversed ? d_out.max : d_out.min;
@@ -571,12 +642,11 @@ public:
         constexpr std::size_t kSeedsPerFace = 4;
         using Candidate = std::pair<double, const Seed*>;
         std::vector<std::vector<Candidate>> best(solid_.faces().size());
-        std::unordered_map<std::uint64_t, Candidate> per_cell;
+        std::unordered_map<std::uint64_t, std::vector<Candidate>> per_cell;
         grid_->for_each_near(p, radius, [&](const Seed& s) {
             const double d = distance(s.point, p);
             if (d > radius) return;
-            const auto [it, inserted] = per_cell.try_emplace((std::uint64_t{s.face} << 32) | s.patch, d, &s);
-            if (!inserted && d < it->second.first) it->second = {d, &s};
+            per_cell[(std::uint64_t{s.face} << 32) | s.patch].emplace_back(d, &s);
             auto& list = best[s.face];
             if (list.size() == kSeedsPerFace && d >= list.back().first) return;
             if (list.size() == kSeedsPerFace) list.pop_back();
@@ -612,22 +682,32 @@ public:
         // that box minus twice the spacing (a margin) bounds the distance to the cell from below. Cells
         // are taken by that bound and skipped once it reaches the best distance found: most cells of a
         // face that extreme weights cut into many sit where the surface all but stops, at one place.
-        std::vector<std::pair<double, const Seed*>> cells;
-        for (const auto& [key, candidate] : per_cell) {
-            const Seed& seed = *candidate.second;
+        // Within a cell the distance can still have several local minima (seed 20268472: Newton from the
+        // cell's nearest seed stopped on the cell's edge 172 away from a foot at distance 0, which the
+        // cell's second seed found), so every seed of the cell within reach starts a Newton run in the
+        // cell, nearest first, until the cell's lower bound reaches the best distance found.
+        std::vector<std::pair<double, std::vector<Candidate>*>> cells;
+        for (auto& [key, candidates] : per_cell) {
+            const Seed& seed = *candidates.front().second;
             if (!regions_[seed.face].curves.empty()) continue;
+            std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
             const double margin = 2 * cell_spacing_[seed.face][seed.patch];
-            cells.emplace_back(cell_box_[seed.face][seed.patch].distance_to(p) - margin, &seed);
+            cells.emplace_back(cell_box_[seed.face][seed.patch].distance_to(p) - margin, &candidates);
         }
         std::sort(cells.begin(), cells.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        for (const auto& [lower_bound, seed_pointer] : cells) {
+        for (const auto& [lower_bound, candidates] : cells) {
             if (lower_bound >= result) break;
-            const Seed& seed = *seed_pointer;
-            const detail::SurfaceEvaluator& s = *evaluators_[seed.face];
-            if (take(seed.face, invert_on_surface(s, p, cell_box(seed.face, seed.patch), seed.u, seed.v, 50, enough))) return result;
-            const auto& firsts = best[seed.face];
-            if (std::none_of(firsts.begin(), firsts.end(), [&](const Candidate& c) { return c.second == &seed; }))
-                if (take(seed.face, invert_on_surface(s, p, {s.domain_u(), s.domain_v()}, seed.u, seed.v, 50, enough))) return result;
+            const Seed& first = *candidates->front().second;
+            const detail::SurfaceEvaluator& s = *evaluators_[first.face];
+            const ParameterBox box = cell_box(first.face, first.patch);
+            for (const auto& [seed_distance, seed_pointer] : *candidates) {
+                if (lower_bound >= result) break;
+                const Seed& seed = *seed_pointer;
+                if (take(seed.face, invert_on_surface(s, p, box, seed.u, seed.v, 50, enough))) return result;
+            }
+            const auto& firsts = best[first.face];
+            if (std::none_of(firsts.begin(), firsts.end(), [&](const Candidate& c) { return c.second == &first; }))
+                if (take(first.face, invert_on_surface(s, p, {s.domain_u(), s.domain_v()}, first.u, first.v, 50, enough))) return result;
         }
         return result;
     }

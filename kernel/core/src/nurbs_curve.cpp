@@ -226,10 +226,10 @@ NurbsCurve NurbsCurve::insert_knot(double u, int times) const {
     const Interval d = domain();
     require_in_domain(u, d.min, d.max, "u");
     const int multiplicity = static_cast<int>(std::count(knots_.begin(), knots_.end(), u));
-    require(multiplicity + times <= degree_, "times", [&] {
+    require(times <= degree_ - multiplicity, "times", [&] {
         return "inserting " + number(u) + " " + std::to_string(times) +
                " more times would raise its multiplicity from " + std::to_string(multiplicity) + " to " +
-               std::to_string(multiplicity + times) + ", more than the degree " + std::to_string(degree_);
+               std::to_string(static_cast<long long>(multiplicity) + times) + ", more than the degree " + std::to_string(degree_);
     });
     std::vector<double> knots = knots_;
     std::vector<Vec4> pw = pw_;
