@@ -15,6 +15,11 @@
 #include <vector>
 
 #include "harness.hpp"
+#include "ratbez/bezier_curve.hpp"
+#include "ratbez/extrude.hpp"
+#include "ratbez/nurbs_curve.hpp"
+#include "ratbez/profile.hpp"
+#include "ratbez/tessellate.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/export/mesh_checks.hpp"
 #include "ratbez/mesh.hpp"
@@ -109,6 +114,26 @@ TEST(FuzzRegression, MeshIndexPastTheVerticesIsRejected) {
     const exporter::MeshReport report = exporter::check_mesh(mesh);
     ASSERT_FALSE(report.ok());
     EXPECT_NE(report.problems.front().find("refers to vertex 7"), std::string::npos) << report.problems.front();
+}
+
+// fuzz_geometry found: a profile whose second piece runs straight back down the line the first piece
+// ends on (a 180° cusp; corpus regression_profile_folds_back). Its extrusion folds two faces onto each
+// other and the tessellation came out open. An open mesh is now refused with an Error naming the solid.
+TEST(FuzzRegression, ProfileThatFoldsBackIsNotMeshedOpen) {
+    const double h = 1.75;
+    const std::vector<NurbsCurve> pieces{
+        NurbsCurve::from_bezier(BezierCurve({{0, 0, h}, {h, 0.158984375, h}, {h, h, h}, {h, 3.75, h}}, {2, 1, 1, 1})),
+        NurbsCurve::from_bezier(BezierCurve({{h, 3.75, h}, {h, h, h}, {h, h, h}, {h, h, h}})),
+        NurbsCurve::from_bezier(BezierCurve({{h, h, h}, {0, 0, h}})),
+    };
+    try {
+        const Solid solid = extrude(Profile(pieces), {h, h, h}, h);
+        const Mesh mesh = tessellate(solid, solid.bounding_box().diagonal() / 20);
+        EXPECT_TRUE(mesh.is_closed()) << "an open mesh was handed out";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_TRUE(message.rfind("solid:", 0) == 0 || message.rfind("profile:", 0) == 0) << message;
+    }
 }
 
 }  // namespace

@@ -1330,7 +1330,13 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
     }
     require(options.max_triangles > 0, "max_triangles", "must be positive");
     settings.max_triangles = options.max_triangles;
-    return Tessellator(solid, settings).run();
+    Mesh mesh = Tessellator(solid, settings).run();
+    // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
+    // solid whose faces fold onto each other — a profile that runs back over itself, found by
+    // fuzz_geometry — from handing out an open mesh.
+    require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
+                                       "back on each other, e.g. a profile that runs back over itself)");
+    return mesh;
 }
 
 }  // namespace ratbez
