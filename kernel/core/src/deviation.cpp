@@ -29,6 +29,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "geometry_internal.hpp"
 #include "polygon_triangulation.hpp"
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/bezier_surface.hpp"
@@ -321,12 +322,11 @@ struct PlanarRegion {
 // 20261122, 20261232, 20261332, 20261372 of the round trip test at weights 10^+-3: 3x to 10x the
 // tolerance, the true distance within it). The same certificate as the cubature of properties.cpp:
 // halve the span (deCasteljau, A1.5, on the weights' Bernstein coefficients alone) until on every piece
-// each weight polynomial's coefficients differ by at most a factor kMaxWeightSpread. Then the weight
-// varies by at most that factor over the piece (convex hull property), so the speed of the
+// each weight polynomial's coefficients differ by at most a factor kMaxWeightSpread (geometry_internal.hpp).
+// Then the weight varies by at most that factor over the piece (convex hull property), so the speed of the
 // parameterisation does too, up to the polynomial part, and uniform parameters within a piece spread
 // over its geometry. Returns the cuts in [0, 1], both ends included. `lines` holds the coefficient
 // lines (one per row or column of a patch along the direction).
-constexpr double kMaxWeightSpread = 4;
 // 2^-48 of a span is near the resolution of its parameters; a piece that small is not split further.
 constexpr int kMaxHalvings = 48;
 
@@ -334,21 +334,17 @@ void weight_cuts(const std::vector<std::vector<double>>& lines, double a, double
     bool certified = true;
     for (const auto& line : lines) {
         const auto [lo, hi] = std::minmax_element(line.begin(), line.end());
-        if (*hi > kMaxWeightSpread * *lo) certified = false;
+        if (*hi > detail::kMaxWeightSpread * *lo) certified = false;
     }
     if (certified || depth >= kMaxHalvings) {
         cuts.push_back(b);
         return;
     }
-    std::vector<std::vector<double>> left(lines), right(lines);
-    for (std::size_t l = 0; l < lines.size(); ++l) {
-        std::vector<double> row = lines[l];
-        const std::size_t n = row.size() - 1;
-        for (std::size_t level = 1; level <= n; ++level) {
-            for (std::size_t k = 0; k + level <= n; ++k) row[k] = 0.5 * (row[k] + row[k + 1]);
-            left[l][level] = row[0];
-            right[l][n - level] = row[n - level];
-        }
+    std::vector<std::vector<double>> left, right;
+    for (const auto& line : lines) {
+        auto halves = detail::halve_bezier(line);
+        left.push_back(std::move(halves.first));
+        right.push_back(std::move(halves.second));
     }
     const double m = 0.5 * (a + b);
     weight_cuts(left, a, m, depth + 1, cuts);

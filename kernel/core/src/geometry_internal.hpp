@@ -5,6 +5,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "ratbez/brep.hpp"
@@ -36,6 +37,27 @@ ArcLayout arc_layout(double start_deg, double sweep_deg);
 // The arc with centre frame.origin and the given radius (or the ellipse with semi-axes `radius_x`,
 // `radius_y`: the affine image of the circular arc, P1.14) in the plane of frame.x_axis, frame.y_axis.
 NurbsCurve arc_in_frame(const Frame& frame, double radius_x, double radius_y, double start_deg, double sweep_deg);
+
+// The halves at 1/2 of a row of Bézier coefficients (deCasteljau, A1.5 / Eq. 1.19 at u = 1/2): the
+// left edge of the triangle for [0, 1/2], the right edge for [1/2, 1]. T is a double (a weight, w s) or
+// a homogeneous point. `row` must not be empty.
+template <class T>
+std::pair<std::vector<T>, std::vector<T>> halve_bezier(std::vector<T> row) {
+    const std::size_t n = row.size() - 1;
+    std::pair<std::vector<T>, std::vector<T>> halves{row, row};  // entry 0 of the left, n of the right
+    for (std::size_t level = 1; level <= n; ++level) {
+        for (std::size_t k = 0; k + level <= n; ++k) row[k] = (row[k] + row[k + 1]) * 0.5;
+        halves.first[level] = row[0];
+        halves.second[n - level] = row[n - level];
+    }
+    return halves;
+}
+
+// The weight certificate of the adaptive integration (properties.cpp) and of the deviation seeds
+// (deviation.cpp): a rational Bézier piece is halved until along each direction its weights' Bernstein
+// coefficients differ by at most this factor; the weight function then stays within it over the piece
+// (convex hull property), so the rational parameterisation cannot crowd the piece into a sliver.
+inline constexpr double kMaxWeightSpread = 4;
 
 // Gauss–Legendre nodes and weights on [0, 1] (nodes by Newton's method on P_n to machine precision).
 struct GaussRule {

@@ -52,7 +52,6 @@ namespace ratbez {
 namespace {
 
 constexpr double kRelativeTolerance = 1e-14;
-constexpr double kMaxWeightSpread = 4;
 constexpr int kRulePoints = 12;
 constexpr int kQuickRulePoints = 6;
 constexpr std::size_t kMaxCells = 40'000;
@@ -173,11 +172,10 @@ std::pair<Cell, Cell> halve(const Cell& cell, bool along_u) {
     std::vector<Vec4> row(static_cast<std::size_t>(n + 1));
     for (int line = 0; line < lines.count(); ++line) {
         for (int k = 0; k <= n; ++k) row[static_cast<std::size_t>(k)] = cell.net[lines.at(line, k)];
-        for (int level = 1; level <= n; ++level) {
-            for (int k = 0; k + level <= n; ++k)
-                row[static_cast<std::size_t>(k)] = (row[static_cast<std::size_t>(k)] + row[static_cast<std::size_t>(k + 1)]) * 0.5;
-            halves.first.net[lines.at(line, level)] = row[0];
-            halves.second.net[lines.at(line, n - level)] = row[static_cast<std::size_t>(n - level)];
+        const auto [left, right] = detail::halve_bezier(row);
+        for (int k = 0; k <= n; ++k) {
+            halves.first.net[lines.at(line, k)] = left[static_cast<std::size_t>(k)];
+            halves.second.net[lines.at(line, k)] = right[static_cast<std::size_t>(k)];
         }
     }
     return halves;
@@ -234,7 +232,7 @@ std::vector<Cell> certified(std::vector<Cell> pending, Budget& budget) {
         Cell cell = std::move(pending.back());
         pending.pop_back();
         const double spread_u = weight_spread(cell, true), spread_v = weight_spread(cell, false);
-        if (std::max(spread_u, spread_v) <= kMaxWeightSpread || !budget.spend(2)) {
+        if (std::max(spread_u, spread_v) <= detail::kMaxWeightSpread || !budget.spend(2)) {
             done.push_back(std::move(cell));
             continue;
         }

@@ -25,27 +25,6 @@ void validate_angle(double angle_deg) {
     require(angle_deg > 0 && angle_deg <= 360, "angle_deg", "must be in (0, 360] degrees");
 }
 
-// Homogeneous deCasteljau split at 1/2 of a 1D rational Bézier function given by (w_i s_i, w_i).
-void split_half(const std::vector<double>& ws, const std::vector<double>& w, std::vector<double>& left_ws,
-                std::vector<double>& left_w, std::vector<double>& right_ws, std::vector<double>& right_w) {
-    const std::size_t n = ws.size();
-    std::vector<double> a = ws, b = w;
-    left_ws.assign(n, 0);
-    left_w.assign(n, 0);
-    right_ws.assign(n, 0);
-    right_w.assign(n, 0);
-    for (std::size_t level = 0; level < n; ++level) {
-        left_ws[level] = a[0];
-        left_w[level] = b[0];
-        right_ws[n - 1 - level] = a[n - 1 - level];
-        right_w[n - 1 - level] = b[n - 1 - level];
-        for (std::size_t i = 0; i + 1 < n - level; ++i) {
-            a[i] = 0.5 * (a[i] + a[i + 1]);
-            b[i] = 0.5 * (b[i] + b[i + 1]);
-        }
-    }
-}
-
 // The rule for "the profile stays off the axis", on one Bézier segment of a profile piece, in terms of
 // the signed radial coordinate s (distance from the axis within the profile's half-plane, negative on
 // the far side) of its control points and their positive weights. The convex hull property certifies
@@ -68,8 +47,9 @@ bool certified_off_axis(const std::vector<double>& ws, const std::vector<double>
     const bool ends_ok = (allow_start || z.front() > 0) && (allow_end || z.back() > 0);
     if (nonnegative && any_positive && ends_ok) return true;
     if (depth == 0) return false;
-    std::vector<double> lws, lw, rws, rw;
-    split_half(ws, w, lws, lw, rws, rw);
+    // Halve the homogeneous function (w s, w) at 1/2.
+    const auto [lws, rws] = detail::halve_bezier(ws);
+    const auto [lw, rw] = detail::halve_bezier(w);
     return certified_off_axis(lws, lw, allow_start, false, tol, depth - 1) &&
            certified_off_axis(rws, rw, false, allow_end, tol, depth - 1);
 }
