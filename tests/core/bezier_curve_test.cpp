@@ -376,6 +376,50 @@ TEST(BezierCurveProperties, ReversalExercise111) {
     }
 }
 
+// The parameter t of the original curve at parameter s of its normal form (BezierCurve::normal_form).
+double moebius(const std::vector<double>& weights, double s) {
+    const double rho = std::pow(weights.front() / weights.back(), 1.0 / static_cast<double>(weights.size() - 1));
+    return rho * s / ((1 - s) + rho * s);
+}
+
+TEST(BezierCurveProperties, NormalFormIsTheSameCurveWithEndWeightsOne) {
+    RandomInput random(31);
+    for (int trial = 0; trial < 1000; ++trial) {
+        const auto c = random_curve(random, true, 7, false, 1e6);
+        if (c.curve.degree() == 0) continue;
+        const BezierCurve normal = c.curve.normal_form();
+        ASSERT_EQ(normal.degree(), c.curve.degree());
+        EXPECT_EQ(normal.weights().front(), 1.0);
+        EXPECT_EQ(normal.weights().back(), 1.0);
+        EXPECT_EQ(normal.points().front(), c.curve.point(0.0));  // the ends bit for bit
+        EXPECT_EQ(normal.points().back(), c.curve.point(1.0));
+        const double s = random.parameter();
+        expect_near(normal.point(s), c.curve.point(moebius(c.weights, s)), 1e-11);
+    }
+}
+
+TEST(BezierCurveProperties, NormalFormOfTheEx114ArcIsTheStandardQuarterCircle) {
+    // Weights 1, 1, 2 become 1, sqrt(2)/2, 1 (Exercise 1.20's weight for the symmetric arc); the Möbius
+    // map moves the midpoint of the parameter to the middle of the arc, (sqrt(2)/2, sqrt(2)/2).
+    const BezierCurve normal = quarter_circle().normal_form();
+    EXPECT_EQ(normal.points(), quarter_circle().points());
+    EXPECT_NEAR(normal.weights()[1], std::sqrt(0.5), kExact);
+    expect_near(normal.point(0.5), {std::sqrt(0.5), std::sqrt(0.5), 0}, kExact);
+}
+
+TEST(BezierCurveProperties, NormalFormKeepsPolynomialAndOutOfRangeCurves) {
+    const BezierCurve cubic({{0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0}});
+    EXPECT_FALSE(cubic.normal_form().is_rational());
+    EXPECT_EQ(cubic.normal_form().homogeneous_points(), cubic.homogeneous_points());
+    // Weights 1e-300 and 1e300 at the ends still have a normal form (taken through logarithms) ...
+    const BezierCurve extreme({{0, 0, 0}, {1, 1, 0}, {2, 0, 0}}, {1e-300, 1, 1e300});
+    EXPECT_EQ(extreme.normal_form().weights().front(), 1.0);
+    EXPECT_TRUE(std::isfinite(extreme.normal_form().weights()[1]));
+    // ... but not when the middle weight would leave the doubles: the curve comes back unchanged.
+    const BezierCurve beyond({{0, 0, 0}, {1, 1, 0}, {2, 0, 0}}, {1e-300, 1e300, 1e-300});
+    EXPECT_EQ(beyond.normal_form().homogeneous_points(), beyond.homogeneous_points());
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // Bad input
 

@@ -278,6 +278,35 @@ TEST(NurbsCurve, ReparameterizedIsTheSameCurveOnANewDomain) {
     }
 }
 
+TEST(NurbsCurve, NormalFormPutsEverySpanInNormalFormOnTheSameDomain) {
+    Rng rng(3010);
+    for (int trial = 0; trial < 1000; ++trial) {
+        const NurbsCurve c = test::random_curve(rng, true, trial % 3 != 0);
+        const NurbsCurve normal = c.normal_form();
+        EXPECT_EQ(normal.domain().min, c.domain().min);
+        EXPECT_EQ(normal.domain().max, c.domain().max);
+        const std::vector<double> breaks = test::break_points(c.degree(), c.knots());
+        ASSERT_EQ(test::break_points(normal.degree(), normal.knots()), breaks) << "trial " << trial;
+        const std::vector<BezierCurve> spans = c.bezier_segments();
+        const std::vector<BezierCurve> normal_spans = normal.bezier_segments();
+        ASSERT_EQ(normal_spans.size(), spans.size());
+        for (std::size_t s = 0; s < spans.size(); ++s) {
+            EXPECT_NEAR(normal_spans[s].weights().front(), 1.0, 1e-15);
+            EXPECT_NEAR(normal_spans[s].weights().back(), 1.0, 1e-15);
+            // Span s of the normal form at local parameter t is span s of the curve at the Möbius image of t.
+            const std::vector<double> w = spans[s].weights();
+            const double rho = std::pow(w.front() / w.back(), 1.0 / c.degree());
+            const double t = uniform(rng, 0, 1);
+            const double a = breaks[s], b = breaks[s + 1];
+            EXPECT_TRUE(near(normal.point(a + t * (b - a)), spans[s].point(rho * t / ((1 - t) + rho * t)),
+                             1e-12 * net_size(c)))
+                << "trial " << trial << " span " << s;
+        }
+    }
+    const NurbsCurve polynomial = test::random_curve(rng, false, true);
+    EXPECT_EQ(polynomial.normal_form().knots(), polynomial.knots());
+}
+
 TEST(NurbsCurve, UnclampedCurveDecomposesAfterClampingItsEnds) {
     // The uniform quadratic B-spline on {0..6} with points P_0..P_3: domain [2, 4], two segments whose
     // end points are the midpoints of the control legs (the classic uniform B-spline property).

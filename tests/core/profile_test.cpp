@@ -38,6 +38,29 @@ TEST(Profile, ClampsUnclampedPiecesWithoutChangingThem) {
     EXPECT_EQ(p.pieces()[0].points().front(), uniform.point(2.0));
 }
 
+TEST(Profile, PutsPiecesWithUnevenSpanWeightsInNormalForm) {
+    // End weights 1 and 0.01 crowd the parameter of this quadratic towards its start (round-trip seed
+    // 20264282 had 2.4e-3 against 23): Profile keeps the curve and its domain, not that parameterisation.
+    const NurbsCurve crowded(2, {0, 0, 0, 1, 1, 1}, {{1, 0, 0}, {2, 1, 0}, {1, 2, 0}}, {1, 3, 0.01});
+    const Profile p({crowded, line_segment({1, 2, 0}, {1, 0, 0})});
+    const NurbsCurve& piece = p.pieces()[0];
+    EXPECT_EQ(piece.weights().front(), 1.0);
+    EXPECT_EQ(piece.weights().back(), 1.0);
+    EXPECT_EQ(piece.domain().min, 0.0);
+    EXPECT_EQ(piece.domain().max, 1.0);
+    // The same curve: rho = (1 / 0.01)^(1/2) = 10 maps s to t = 10 s / ((1 - s) + 10 s).
+    for (double s : {0.1, 0.5, 0.9})
+        EXPECT_NEAR(distance(piece.point(s), crowded.point(10 * s / ((1 - s) + 10 * s))), 0, 1e-15);
+    // Its midpoint in parameter is now far from the start; it was within 0.07 of (2, 1, 0)'s side.
+    EXPECT_GT(distance(piece.point(0.5), crowded.point(0.0)), distance(crowded.point(0.5), crowded.point(0.0)));
+
+    // End weights within 4x of each other, and polynomial pieces, keep their parameterisation.
+    const NurbsCurve mild(2, {0, 0, 0, 0.5, 1, 1, 1}, {{1, 0, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}}, {1, 1.5, 1.2, 0.6});
+    const Profile q({mild, line_segment({1, 2, 0}, {1, 0, 0})});
+    EXPECT_EQ(q.pieces()[0].knots(), mild.knots());
+    EXPECT_EQ(q.pieces()[0].weights(), mild.weights());
+}
+
 TEST(Profile, ReversedRunsBackwards) {
     const Profile p({line_segment({0, 0, 0}, {1, 0, 0}), line_segment({1, 0, 0}, {1, 1, 0})});
     const Profile r = p.reversed();

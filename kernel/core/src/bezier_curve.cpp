@@ -5,6 +5,7 @@
 #include "ratbez/bezier_curve.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "ratbez/bernstein.hpp"
@@ -178,6 +179,29 @@ BezierCurve BezierCurve::reversed() const {
     // weights with them) gives C_2(u) = C_1(1-u).
     std::vector<Vec4> backwards(pw_.rbegin(), pw_.rend());
     return BezierCurve(std::move(backwards), rational_, 0);
+}
+
+BezierCurve BezierCurve::normal_form() const {
+    // With t = rho s / D, 1 - t = (1 - s) / D and D = (1 - s) + rho s, every Bernstein polynomial becomes
+    // B_{i,n}(t) = rho^i B_{i,n}(s) / D^n. The common factor 1 / D^n cancels between the numerator and
+    // the denominator of the rational curve, so C(t(s)) is the curve with the same points and weights
+    // w_i rho^i. Dividing by w_0 leaves w_0 = 1 and w_n = w_n rho^n / w_0 = 1. The factors are taken
+    // through logarithms so that weights such as 1e-300 and 1e300 do not overflow on the way.
+    const std::size_t n = pw_.size() - 1;
+    if (!rational_ || n == 0) return *this;
+    const double log_first = std::log(pw_.front().w);
+    const double log_rho = (log_first - std::log(pw_.back().w)) / static_cast<double>(n);
+    std::vector<Vec4> normal(pw_.size());
+    for (std::size_t i = 0; i <= n; ++i) {
+        const double factor = std::exp(static_cast<double>(i) * log_rho - log_first);
+        normal[i] = pw_[i] * factor;
+        if (!(normal[i].w > 0) || !std::isfinite(normal[i].w) || !std::isfinite(normal[i].x) ||
+            !std::isfinite(normal[i].y) || !std::isfinite(normal[i].z))
+            return *this;
+    }
+    // The end points exactly as before (C(0) = H(P^w_0) is one division either way), whatever the rounding.
+    for (const std::size_t end : {std::size_t{0}, n}) normal[end] = homogenize(project(pw_[end]), 1.0);
+    return BezierCurve(std::move(normal), true, 0);
 }
 
 }  // namespace ratbez

@@ -342,4 +342,27 @@ NurbsCurve NurbsCurve::reparameterized(double a, double b) const {
     return NurbsCurve(degree_, std::move(knots), pw_, rational_, 0);
 }
 
+NurbsCurve NurbsCurve::normal_form() const {
+    if (!rational_ || degree_ == 0) return *this;
+    // The span breaks: the distinct knots of the domain, one more than there are Bézier segments.
+    const Interval d = domain();
+    std::vector<double> breaks;
+    for (const double u : knots_)
+        if (u >= d.min && u <= d.max && (breaks.empty() || breaks.back() != u)) breaks.push_back(u);
+    const std::vector<BezierCurve> segments = bezier_segments();
+    const std::size_t p = to_size(degree_);
+    std::vector<double> knots(p + 1, d.min);
+    std::vector<Vec4> pw;
+    pw.reserve(segments.size() * p + 1);
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+        // Neighbouring spans share their joint's control point; in normal form both give it weight 1.
+        const BezierCurve normal = segments[s].normal_form();
+        const std::vector<Vec4>& points = normal.homogeneous_points();
+        if (points.front().w != 1 || points.back().w != 1) return *this;  // weights beyond double range
+        pw.insert(pw.end(), points.begin() + (s == 0 ? 0 : 1), points.end());
+        knots.insert(knots.end(), s + 1 < segments.size() ? p : p + 1, breaks[s + 1]);
+    }
+    return NurbsCurve(degree_, std::move(knots), std::move(pw), true, 0);
+}
+
 }  // namespace ratbez

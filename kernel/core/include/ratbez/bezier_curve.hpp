@@ -47,6 +47,12 @@ public:
     BezierCurve elevate() const;
     // The same curve traversed backwards: C_2(u) = C_1(1 - u) (Exercise 1.11).
     BezierCurve reversed() const;
+    // The same curve in normal form: end weights w_0 = w_n = 1, reached by the Moebius reparameterisation
+    // u = rho s / ((1 - s) + rho s), rho = (w_0 / w_n)^(1/n), which maps [0, 1] onto itself and multiplies
+    // the weights by rho^i (see the .cpp). Uneven end weights crowd a curve's parameter towards one end;
+    // the normal form spreads it evenly between the two. A polynomial curve is returned as it is, and so
+    // is a rational one whose new weights would not be finite positive doubles.
+    BezierCurve normal_form() const;
 
 private:
     BezierCurve(std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);

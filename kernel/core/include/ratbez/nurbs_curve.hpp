@@ -43,6 +43,11 @@ public:
     NurbsCurve reversed() const;
     // The same curve on the domain [a, b] (affine knot map), a < b.
     NurbsCurve reparameterized(double a, double b) const;
+    // The same curve on the same domain with every Bézier span in normal form (BezierCurve::normal_form):
+    // knots of multiplicity p at the span breaks, end weights 1 in every span. Each span keeps its own
+    // parameter interval, so the curve is only C0 in its parameter at interior knots (its geometric
+    // continuity is that of the curve). A polynomial curve is returned as it is.
+    NurbsCurve normal_form() const;
 
     Vec3 start_point() const { return point(domain().min); }
     Vec3 end_point() const { return point(domain().max); }

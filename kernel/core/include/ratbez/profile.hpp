@@ -6,6 +6,9 @@
 // end of piece k-1, and for a closed profile the last end onto the first start), so the faces built
 // from neighbouring pieces share their boundary curves exactly. Unclamped pieces are first rewritten
 // on clamped knot vectors (same curve, same parameterisation), so that their ends are control points.
+// A rational piece with a Bézier span whose end weights differ by more than 4x is put in normal form
+// (NurbsCurve::normal_form: same curve and domain, each span's parameter spread evenly between its ends,
+// C0 at its knots); every other piece keeps its parameterisation.
 
 #include <vector>
 

@@ -18,8 +18,8 @@ NurbsSurface revolve_surface(const NurbsCurve& profile, const Vec3& axis_point, 
 // A closed solid: a closed profile (a ring), or an open one whose two ends lie on the axis; it must not
 // cross the axis nor touch it anywhere else. A partial angle adds two planar end faces.
 //
-// Faces: one surface face per profile piece (u = rotation, v = the piece's own parameter); neighbouring
-// pieces share the circle (arc) their joint traces; a full turn has one seam edge per piece (the piece
+// Faces: one surface face per profile piece (u = rotation, v = the piece's parameter as Profile holds
+// it); neighbouring pieces share the circle (arc) their joint traces; a full turn has one seam edge per piece (the piece
 // itself, used by the face's u_min and u_max sides); a piece end on the axis gives a degenerate edge.
 // A partial turn adds two planar end faces bounded by the profile at angle 0 and at angle_deg, plus
 // (open profile) the segment of the axis between its ends, shared by both end faces.
