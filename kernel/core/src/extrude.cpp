@@ -7,6 +7,7 @@
 #include <string>
 
 #include "geometry_internal.hpp"
+#include "profile_crossings.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/frame.hpp"
@@ -56,6 +57,8 @@ Solid extrude(const Profile& profile, const Vec3& direction, double distance) {
             require(std::abs(dot(project(pw) - reference, normal)) <= tol, "profile",
                     "must be planar (a control point is " +
                         std::to_string(std::abs(dot(project(pw) - reference, normal))) + " off the profile's plane)");
+    const Frame plane = frame_from_axis(reference, normal);
+    detail::require_no_crossings(profile, reference, plane.x_axis, plane.y_axis);
     const double cosine = dot(unit, normal);
     require(std::abs(cosine) > 1e-9, "direction", "must not be parallel to the profile's plane");
 

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "geometry_internal.hpp"
+#include "profile_crossings.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/frame.hpp"
@@ -210,6 +211,7 @@ Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_d
             check_segment_off_axis(segments[b], axis_point, e, allow_start, allow_end, tol, static_cast<int>(k));
         }
     }
+    detail::require_no_crossings(profile, axis_point, e, d);
 
     // Orientation: S_u x S_v points out of the solid when the profile runs counterclockwise in the
     // (radial, axial) coordinates of its half-plane (at angle 0, S_u = |x| d x e and the normal is the

@@ -11,7 +11,8 @@ namespace ratbez {
 NurbsSurface extrude_surface(const NurbsCurve& curve, const Vec3& displacement);
 
 // A closed planar profile swept by distance along direction (not parallel to the profile's plane):
-// one lateral face per piece and two planar caps.
+// one lateral face per piece and two planar caps. The profile must not cross or touch itself (within
+// profile.tolerance()) away from the joints of its pieces, nor turn back at a joint.
 Solid extrude(const Profile& profile, const Vec3& direction, double distance);
 
 }  // namespace ratbez

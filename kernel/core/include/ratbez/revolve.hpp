@@ -35,7 +35,8 @@ NurbsSurface revolve_surface(const NurbsCurve& profile, const Vec3& axis_point, 
 //    with values within tol counted as 0, must all be >= 0, not all 0, and > 0 at every end that is not
 //    an allowed profile end; a segment the hull cannot certify is halved (deCasteljau) up to 20 times and
 //    is rejected as touching the axis if it still cannot be certified.
-// Self-intersection of the profile is not checked.
+//  - the profile must not cross or touch itself (within tol) away from the joints of its pieces, nor turn
+//    back at a joint (a cusp); see profile_crossings.hpp for the certified Bézier subdivision test.
 Solid revolve(const Profile& profile, const Vec3& axis_point = {}, const Vec3& axis_dir = {0, 0, 1},
               double angle_deg = 360.0);
 

@@ -1,0 +1,91 @@
+// The check that a planar profile does not cross itself (kernel/core/src/profile_crossings.hpp), and
+// that revolve and extrude apply it.
+
+#include "../../kernel/core/src/profile_crossings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "ratbez/curves.hpp"
+#include "ratbez/extrude.hpp"
+#include "ratbez/revolve.hpp"
+#include "test_support.hpp"
+
+namespace ratbez::detail {
+namespace {
+
+// The closed polygon through `corners` in the xy plane, one line piece per side.
+Profile polygon(const std::vector<Vec3>& corners) {
+    std::vector<NurbsCurve> pieces;
+    for (std::size_t i = 0; i < corners.size(); ++i) pieces.push_back(line_segment(corners[i], corners[(i + 1) % corners.size()]));
+    return Profile(pieces);
+}
+
+void check(const Profile& profile) { require_no_crossings(profile, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}); }
+
+// The Error's message, which must name the profile and contain every one of `parts`.
+void expect_refused(const Profile& profile, const std::vector<std::string>& parts) {
+    const std::string message = test::error_message([&] { check(profile); });
+    EXPECT_TRUE(test::starts_with(message, "profile:")) << message;
+    for (const std::string& part : parts) EXPECT_NE(message.find(part), std::string::npos) << message;
+}
+
+TEST(ProfileCrossings, SimpleProfilesPass) {
+    check(polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
+    check(Profile({circle(1.0)}));
+    // A star: non-convex, with reflex corners.
+    std::vector<Vec3> star;
+    for (int k = 0; k < 10; ++k) {
+        const double r = k % 2 == 0 ? 1.0 : 0.4, a = k * 0.6283185307179586;
+        star.push_back({r * std::cos(a), r * std::sin(a), 0});
+    }
+    check(polygon(star));
+    // A slot: two half circles joined tangentially to two lines.
+    check(Profile({line_segment({0, -1, 0}, {2, -1, 0}), arc(1.0, -90, 90, {2, 0, 0}), line_segment({2, 1, 0}, {0, 1, 0}),
+                   arc(1.0, 90, 270, {0, 0, 0})}));
+    // A corner of 0.001 degrees is sharp but not a cusp; a gap of 1e-6 is far above the 1e-9 tolerance.
+    check(polygon({{0, 0, 0}, {1, 0, 0}, {1, 1.7453292519943295e-5, 0}}));
+    check(polygon({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 1e-6, 0}, {0, 2, 0}}));
+}
+
+TEST(ProfileCrossings, ABowTieIsRefusedWhereItsSidesCross) {
+    expect_refused(polygon({{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}}), {"pieces 0 and 2 cross or touch near (0.5, 0.5, 0)"});
+}
+
+TEST(ProfileCrossings, ACornerTouchingASideIsRefused) {
+    // The corner (1, 0) of pieces 2 and 3 lies on piece 0: the profile touches itself there.
+    expect_refused(polygon({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0, 0}, {0, 2, 0}}), {"pieces 0 and", "cross or touch near (1, "});
+}
+
+TEST(ProfileCrossings, ACubicWithALoopIsRefused) {
+    // This cubic crosses itself near (0.5, 0.58); a line closes the profile.
+    const NurbsCurve loop = NurbsCurve::from_bezier(BezierCurve({{0, 0, 0}, {2, 1, 0}, {-1, 1, 0}, {1, 0, 0}}));
+    expect_refused(Profile({loop, line_segment({1, 0, 0}, {0, 0, 0})}), {"piece 0 crosses or touches itself"});
+}
+
+TEST(ProfileCrossings, APieceFoldingBackOverTheLastIsRefused) {
+    // Piece 1 runs back along piece 0 (the fuzz finding of FuzzRegression.ProfileThatFoldsBackIsNotMeshedOpen),
+    // and piece 2 starts on it.
+    expect_refused(polygon({{0, 0, 0}, {2, 0, 0}, {1, 0, 0}, {0, 1, 0}}), {"pieces 0 and", "cross or touch near ("});
+}
+
+TEST(ProfileCrossings, ACuspBetweenTangentCirclesIsRefused) {
+    // A crescent: the outer circle counterclockwise, then the inner one clockwise, both through (0, 0)
+    // with the x axis as tangent. The two sides leave (0, 0) in the same direction and stay within the
+    // tolerance (1e-9 of the size) of each other for about 4e-5 beside it.
+    const Profile crescent({arc(1.0, -90, 270, {0, 1, 0}), arc(0.5, -90, 270, {0, 0.5, 0}).reversed()});
+    expect_refused(crescent, {"pieces 0 and 1 cross or touch near ("});
+}
+
+TEST(ProfileCrossings, RevolveAndExtrudeRefuseACrossingProfile) {
+    // The bow tie in the xz plane, away from the z axis; and in the xy plane for the extrusion.
+    const Profile in_xz = polygon({{1, 0, 0}, {2, 0, 1}, {2, 0, 0}, {1, 0, 1}});
+    EXPECT_NE(test::error_message([&] { (void)revolve(in_xz); }).find("cross or touch"), std::string::npos);
+    const Profile in_xy = polygon({{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}});
+    EXPECT_ERROR_NAMING(extrude(in_xy, {0, 0, 1}, 1.0), "profile");
+}
+
+}  // namespace
+}  // namespace ratbez::detail
