@@ -155,6 +155,11 @@ TEST_F(Cli, KernelErrorsNameTheField) {
     expect_bad_input_prefix(
         ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "angle": 400, "profile": [{"type": "circle", "radius": 1, "center": [3, 0, 0], "normal": [0, 1, 0]}]}})")}),
         "spec error: shape.angle: must be in (0, 360] degrees");
+    // A bow tie in the xz plane: its sides cross.
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "profile": [
+        {"type": "line", "from": [1, 0, 0], "to": [2, 0, 1]}, {"type": "line", "from": [2, 0, 1], "to": [2, 0, 0]},
+        {"type": "line", "from": [2, 0, 0], "to": [1, 0, 1]}, {"type": "line", "from": [1, 0, 1], "to": [1, 0, 0]}]}})")}),
+                     "spec error: shape.profile: pieces 0 and 2 cross or touch near (1.5, 0, 0.5) (a profile must not cross itself)");
 }
 
 TEST_F(Cli, NotJsonAndMissingFile) {

@@ -133,6 +133,12 @@ def test_invalid_solids_are_refused():
     # A profile crossing the axis.
     with pytest.raises(ratbez.Error):
         ratbez.revolve(ratbez.circle(1.0, normal=(0, 0, 1)), axis_dir=(0, 1, 0))
+    # A bow tie: its sides cross at (1.5, 0.5); the message names the pieces and where.
+    corners = [(1, 0), (2, 1), (2, 0), (1, 1)]
+    bow_tie = [ratbez.line_segment(corners[i], corners[(i + 1) % 4]) for i in range(4)]
+    error = raises_naming("profile", ratbez.revolve, bow_tie, axis_dir=(0, 1, 0))
+    assert "pieces 0 and 2 cross or touch near (1.5, 0.5, 0)" in str(error), str(error)
+    raises_naming("profile", ratbez.extrude, bow_tie, (0, 0, 1), 1.0)
 
 
 def test_parameters_outside_the_domain():
