@@ -24,6 +24,13 @@
 
 #include "ratbez/error.hpp"
 
+// "This loop's iterations are independent": GCC's ivdep, clang's assume_safety (clang ignores ivdep).
+#if defined(__clang__)
+#define RATBEZ_INDEPENDENT_ITERATIONS _Pragma("clang loop vectorize(assume_safety)")
+#else
+#define RATBEZ_INDEPENDENT_ITERATIONS _Pragma("GCC ivdep")
+#endif
+
 namespace ratbez {
 namespace {
 
@@ -161,7 +168,7 @@ template <int Degree, bool Rational>
         }
         // The outputs never overlap the inputs (restrict), but after inlining GCC no longer knows that and
         // would need more run-time alias checks than it allows: ivdep states the loop is SIMD-safe.
-#pragma GCC ivdep
+RATBEZ_INDEPENDENT_ITERATIONS
         for (std::size_t j = run.begin; j < run.end; ++j) {
             double x = 0, y = 0, z = 0, w = 0;
             // Fully unrolled, so that the loop over j is innermost and vectorises across points.
@@ -224,7 +231,7 @@ template <int Degree, bool Rational>
             cx[l] = c.x, cy[l] = c.y, cz[l] = c.z, cw[l] = c.w;
             ex[l] = e.x, ey[l] = e.y, ez[l] = e.z, ew[l] = e.w;
         }
-#pragma GCC ivdep
+RATBEZ_INDEPENDENT_ITERATIONS
         for (std::size_t j = run.begin; j < run.end; ++j) {
             double x = 0, y = 0, z = 0, w = 0, xu = 0, yu = 0, zu = 0, wu = 0, xv = 0, yv = 0, zv = 0, wv = 0;
 #pragma GCC unroll 8
@@ -265,7 +272,7 @@ template <int Degree, bool Rational>
                                                const double* __restrict vz, double* __restrict nx,
                                                double* __restrict ny, double* __restrict nz) {
     constexpr double degenerate = 1e-12;  // (1e-6)^2: the test is on squared lengths
-#pragma GCC ivdep
+RATBEZ_INDEPENDENT_ITERATIONS
     for (std::size_t j = 0; j < count; ++j) {
         const double cx = uy[j] * vz[j] - uz[j] * vy[j];
         const double cy = uz[j] * vx[j] - ux[j] * vz[j];
