@@ -35,11 +35,12 @@ struct Arc {
     double diagonal() const { return norm(high - low); }
 };
 
+// The plane point (x, y, 0) of a homogeneous (x w, y w, w).
+Vec3 euclidean(const Vec3& homogeneous) { return {homogeneous.x / homogeneous.z, homogeneous.y / homogeneous.z, 0.0}; }
+
 // The arc of `homogeneous` with Euclidean end points `start` and `end` given: consecutive arcs must share
 // their joint bit for bit, which projecting each one's own homogeneous end point does not guarantee (the
 // pieces on either side of a joint weight it differently).
-Vec3 euclidean(const Vec3& homogeneous) { return {homogeneous.x / homogeneous.z, homogeneous.y / homogeneous.z, 0.0}; }
-
 Arc make_arc(std::vector<Vec3> homogeneous, const Vec3& start, const Vec3& end, std::size_t cell, double t0, double t1) {
     Arc arc{std::move(homogeneous), {}, {}, {}, cell, t0, t1};
     arc.points.reserve(arc.homogeneous.size());
