@@ -327,11 +327,8 @@ void run_geometry(const std::uint8_t* data, std::size_t size) {
 
 #ifndef RATBEZ_FUZZ_REPLAY
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    try {
-        ratbez::fuzz::run_geometry(data, size);
-    } catch (const ratbez::Error&) {
-        // Rejected input: the one allowed outcome besides success.
-    }
+    // A rejected input (ratbez::Error) is the one allowed outcome besides success.
+    ratbez::fuzz::attempt([&] { ratbez::fuzz::run_geometry(data, size); });
     return 0;
 }
 #endif

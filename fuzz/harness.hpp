@@ -91,7 +91,10 @@ template <class Step>
 void attempt(Step&& step) {
     try {
         step();
-    } catch (const ratbez::Error&) {
+    } catch (const ratbez::Error& error) {
+        // RATBEZ_FUZZ_VERBOSE=1 prints what each rejected step said: how to see what a seed decodes to.
+        static const bool verbose = std::getenv("RATBEZ_FUZZ_VERBOSE") != nullptr;
+        if (verbose) std::fprintf(stderr, "rejected: %s\n", error.what());
     }
 }
 

@@ -27,18 +27,30 @@ write('fuzz_geometry', 'nurbs_curve', b'\x02' + b'\x02' + b'\x03' + b'\x01' + kn
 # op 3: NURBS surface degree (2,1), 3x2 points
 write('fuzz_geometry', 'nurbs_surface', b'\x03' + b'\x02' + b'\x01' + b'\x02' + b'\x01' + b'\x01' + bytes([1]) * 8 + b'\x01' + bytes([1]) * 8
       + b''.join(pt(i, j, i * j) for i in range(3) for j in range(2)) + b'\x00' + b'\x01\x01\x40\x01\x40\x02\x02\x01')
-# op 4: revolve a closed triangle profile made of a Bezier quadratic and two lines (NURBS degree 1)
-def line(a, b):  # NURBS degree 1, 2 points, clamped knots [0,0,1,1]
-    return b'\x00' + b'\x01' + b'\x01' + b'\x01' + bytes([1]) * 4 + b'\x01' + b'\x02' + a + b + b'\x00'
-prof = (b'\x03'  # 4 pieces -> small(1,4) = 1 + 3 % 4
-        + b'\x01' + b'\x01' + pt(2,0,0) + pt(4,0,1) + pt(2,0,2) + b'\x00' + weight(1) + weight(2) + weight(1)  # Bezier piece, 3 points
-        + line(pt(2,0,2), pt(2,0,1)) + line(pt(2,0,1), pt(3,0,1)) + line(pt(3,0,1), pt(2,0,0)) + b'\x00')
-write('fuzz_geometry', 'revolve_full', b'\x04' + prof + b'\x00' + b'\x00' + b'\x01' + b'\x10')
-write('fuzz_geometry', 'revolve_partial', b'\x04' + prof + b'\x00' + b'\x00' + b'\x00' + num(270) + b'\x10')
-# op 5: extrude a closed planar profile
-prof2 = (b'\x02' + line(pt(0,0,0), pt(2,0,0)) + line(pt(2,0,0), pt(1,2,0))
-         + b'\x01' + b'\x01' + pt(1,2,0) + pt(0,1,0) + pt(0,0,0) + b'\x00' + weight(1) + weight(3) + weight(1) + b'\x00')
-write('fuzz_geometry', 'extrude', b'\x05' + prof2 + b'\x01' + pt(0,0,1) + num(2) + b'\x08')
+# Profiles for ops 4 and 5 (fuzz_geometry.cpp's decode_profile): a count byte (1 + b % 4 pieces), the
+# pieces, then a flag that would close the profile with one more line (0 here: they close already).
+def line(a, b):  # flag 0 = NURBS piece; degree 1; 1 + 1 = 2 points; knot count as usual; knots clamped
+    # (mode 1) with one step of 1: {0, 0, 1, 1}; the points; weights flag 0 (polynomial)
+    return b'\x00' + b'\x01' + b'\x01' + b'\x01' + b'\x01' + b'\x01' + a + b + b'\x00'
+def bezier_piece(points, weights, first):  # flag 1 = Bezier piece; 2 + (n - 2) points; joined flag after
+    # the first piece (0: the points already join); per weight a flag 0 then the weight byte
+    return (b'\x01' + bytes([len(points) - 2]) + b''.join(points) + (b'' if first else b'\x00')
+            + b''.join(b'\x00' + weight(w) for w in weights))
+def profile(pieces): return bytes([len(pieces) - 1]) + b''.join(pieces) + b'\x00'
+# op 4: revolve a closed profile about the z axis (axis flags 0, 0): a rational quadratic and three lines,
+# in full (angle flag 1) and by 270 degrees; the last byte sets the tessellation tolerance
+ring = profile([bezier_piece([pt(2,0,0), pt(4,0,1), pt(2,0,2)], [1, 2, 1], True),
+                line(pt(2,0,2), pt(2,0,1)), line(pt(2,0,1), pt(3,0,1)), line(pt(3,0,1), pt(2,0,0))])
+write('fuzz_geometry', 'revolve_full', b'\x04' + ring + b'\x00' + b'\x00' + b'\x01' + b'\x10')
+write('fuzz_geometry', 'revolve_partial', b'\x04' + ring + b'\x00' + b'\x00' + b'\x00' + num(270) + b'\x10')
+# op 4 again: a bow tie in the xz plane, whose sides cross at (1.5, 0, 0.5): revolve refuses it
+bow_tie = profile([line(pt(1,0,0), pt(2,0,1)), line(pt(2,0,1), pt(2,0,0)), line(pt(2,0,0), pt(1,0,1)),
+                   line(pt(1,0,1), pt(1,0,0))])
+write('fuzz_geometry', 'revolve_bow_tie', b'\x04' + bow_tie + b'\x00' + b'\x00' + b'\x01' + b'\x10')
+# op 5: extrude a closed planar profile along z (direction flag 1, then the point) by 2
+triangle = profile([line(pt(0,0,0), pt(2,0,0)), line(pt(2,0,0), pt(1,2,0)),
+                    bezier_piece([pt(1,2,0), pt(0,1,0), pt(0,0,0)], [1, 3, 1], False)])
+write('fuzz_geometry', 'extrude', b'\x05' + triangle + b'\x01' + pt(0,0,1) + num(2) + b'\x08')
 
 # fuzz_mesh: a tetrahedron on the integer grid (grid flag), outward triangles, self-intersection check on
 def mesh_seed(verts, tris, grid=True, si=True):

@@ -408,6 +408,9 @@ TEST(NurbsCurveErrors, NegativeDerivativeOrderAndInsertionBeyondTheDegree) {
     // fuzz_geometry found: multiplicity + times overflowed int (UBSan) for times near INT_MAX.
     EXPECT_TRUE(throws_naming([&] { (void)c.insert_knot(0.5, std::numeric_limits<int>::max()); }, "times"));
     EXPECT_TRUE(throws_naming([&] { (void)c.insert_knot(0.0, 1); }, "times"));  // the clamped end has p + 1 already
+    // Zero more times is a no-op anywhere, the clamped ends included (fuzz_geometry's corpus found it refused).
+    EXPECT_EQ(c.insert_knot(0.0, 0).knots(), c.knots());
+    EXPECT_EQ(c.insert_knot(1.0, 0).homogeneous_points(), c.homogeneous_points());
     EXPECT_TRUE(throws_naming([&] { (void)c.reparameterized(1.0, 1.0); }, "b"));
     EXPECT_TRUE(throws_naming([&] { (void)c.reparameterized(nan_value, 1.0); }, "a"));
 }

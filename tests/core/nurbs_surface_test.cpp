@@ -423,6 +423,9 @@ TEST(NurbsSurfaceErrors, NegativeOrdersAndInsertionBeyondTheDegree) {
     EXPECT_TRUE(throws_naming([&] { (void)s.insert_knot_u(0.5, 2); }, "times"));
     EXPECT_TRUE(throws_naming([&] { (void)s.insert_knot_v(0.5, -1); }, "times"));
     EXPECT_TRUE(throws_naming([&] { (void)s.insert_knot_u(0.5, std::numeric_limits<int>::max()); }, "times"));
+    // Zero more times is a no-op anywhere, the clamped ends (multiplicity p + 1) included.
+    EXPECT_EQ(s.insert_knot_u(0.0, 0).knots_u(), s.knots_u());
+    EXPECT_EQ(s.insert_knot_v(1.0, 0).knots_v(), s.knots_v());
 }
 
 TEST(NurbsSurfaceErrors, NegativeDegree) {

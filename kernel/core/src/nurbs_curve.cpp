@@ -225,10 +225,11 @@ NurbsCurve NurbsCurve::insert_knot(double u, int times) const {
     require(times >= 0, "times", [&] { return "must be >= 0, got " + std::to_string(times); });
     const Interval d = domain();
     require_in_domain(u, d.min, d.max, "u");
+    if (times == 0) return *this;  // even at a clamped end, whose multiplicity p + 1 exceeds the degree
     const int multiplicity = static_cast<int>(std::count(knots_.begin(), knots_.end(), u));
     require(times <= degree_ - multiplicity, "times", [&] {
-        return "inserting " + number(u) + " " + std::to_string(times) +
-               " more times would raise its multiplicity from " + std::to_string(multiplicity) + " to " +
+        return "inserting u = " + number(u) + " (" + std::to_string(times) +
+               " more times) would raise its multiplicity from " + std::to_string(multiplicity) + " to " +
                std::to_string(static_cast<long long>(multiplicity) + times) + ", more than the degree " + std::to_string(degree_);
     });
     std::vector<double> knots = knots_;

@@ -398,9 +398,10 @@ void require_insertable(int degree, const std::vector<double>& knots, double t, 
     const Interval d = knot_domain(degree, knots);
     require_in_domain(t, d.min, d.max, name);
     const int multiplicity = static_cast<int>(std::count(knots.begin(), knots.end(), t));
-    require(times <= degree - multiplicity, "times", [&] {
-        return "inserting " + name + " = " + number(t) + " " + std::to_string(times) +
-               " more times would raise its multiplicity from " + std::to_string(multiplicity) + " to " +
+    // Inserting 0 times is a no-op even at a clamped end, whose multiplicity p + 1 exceeds the degree.
+    require(times == 0 || times <= degree - multiplicity, "times", [&] {
+        return "inserting " + name + " = " + number(t) + " (" + std::to_string(times) +
+               " more times) would raise its multiplicity from " + std::to_string(multiplicity) + " to " +
                std::to_string(static_cast<long long>(multiplicity) + times) + ", more than the degree " + std::to_string(degree);
     });
 }
