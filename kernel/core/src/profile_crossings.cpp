@@ -226,7 +226,8 @@ private:
 
     // The length of cell s's control polygon over [t0, t1]: an upper bound of the curve's length there.
     double polygon_length(std::size_t s, double t0, double t1) const {
-        if (!(t0 < t1)) return 0;
+        // t0 / t1 rounds to 1 only for an interval below 1e-16 of the cell's parameter: nothing to measure.
+        if (!(t0 < t1) || !(t0 / t1 < 1)) return 0;
         BezierCurve part = plane_cells_[s];
         if (t1 < 1) part = part.split(t1).first;
         if (t0 > 0) part = part.split(t0 / t1).second;
