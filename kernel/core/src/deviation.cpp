@@ -7,7 +7,7 @@
 // face's domain, with a step-halving line search so it never walks uphill. Planar faces are handled
 // exactly: the distance to the trimmed plane region is the distance to the plane where the foot lies
 // inside the loops, else the distance to the nearest boundary curve (Newton on the curve). Seeds are
-// placed per weight-certified cell of each face (see weight_cuts), and Newton also runs inside the
+// placed per weight-certified cell of each face (see detail::weight_cuts), and Newton also runs inside the
 // cell of each nearby cell's best seed, so rational weights that crowd the geometry into a sliver of
 // the parameter domain do not hide the foot.
 //
@@ -320,42 +320,10 @@ struct PlanarRegion {
 // and polyline vertices at uniform parameters do not fall: Newton then starts far from the foot and
 // settles in another local minimum, and the measured "deviation" is that wrong distance (seeds
 // 20261122, 20261232, 20261332, 20261372 of the round trip test at weights 10^+-3: 3x to 10x the
-// tolerance, the true distance within it). The same certificate as the cubature of properties.cpp:
-// halve the span (deCasteljau, A1.5, on the weights' Bernstein coefficients alone) until on every piece
-// each weight polynomial's coefficients differ by at most a factor kMaxWeightSpread (geometry_internal.hpp).
-// Then the weight varies by at most that factor over the piece (convex hull property), so the speed of the
-// parameterisation does too, up to the polynomial part, and uniform parameters within a piece spread
-// over its geometry. Returns the cuts in [0, 1], both ends included. `lines` holds the coefficient
-// lines (one per row or column of a patch along the direction).
+// tolerance, the true distance within it). So seeds go per weight-certified piece (detail::weight_cuts),
+// where uniform parameters spread over the piece's geometry.
 // 2^-48 of a span is near the resolution of its parameters; a piece that small is not split further.
 constexpr int kMaxHalvings = 48;
-
-void weight_cuts(const std::vector<std::vector<double>>& lines, double a, double b, int depth, std::vector<double>& cuts) {
-    bool certified = true;
-    for (const auto& line : lines) {
-        const auto [lo, hi] = std::minmax_element(line.begin(), line.end());
-        if (*hi > detail::kMaxWeightSpread * *lo) certified = false;
-    }
-    if (certified || depth >= kMaxHalvings) {
-        cuts.push_back(b);
-        return;
-    }
-    std::vector<std::vector<double>> left, right;
-    for (const auto& line : lines) {
-        auto halves = detail::halve_bezier(line);
-        left.push_back(std::move(halves.first));
-        right.push_back(std::move(halves.second));
-    }
-    const double m = 0.5 * (a + b);
-    weight_cuts(left, a, m, depth + 1, cuts);
-    weight_cuts(right, m, b, depth + 1, cuts);
-}
-
-std::vector<double> weight_cuts(const std::vector<std::vector<double>>& lines) {
-    std::vector<double> cuts{0.0};
-    weight_cuts(lines, 0.0, 1.0, 0, cuts);
-    return cuts;
-}
 
 // `count` parameters per certified piece of the span [t0, t1] (the piece's start included, its end not).
 void add_certified_params(double t0, double t1, const std::vector<double>& cuts, int count, std::vector<double>& out) {
@@ -395,7 +363,7 @@ PlanarRegion make_region(const Face& face) {
         for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
             std::vector<double> weights;
             for (const Vec4& pw : segments[b].homogeneous_points()) weights.push_back(pw.w);
-            const std::vector<double> cuts = weight_cuts({weights});
+            const std::vector<double> cuts = detail::weight_cuts({weights}, kMaxHalvings);
             const int count = std::max(8, 64 / static_cast<int>(cuts.size() - 1));
             add_certified_params(breaks[b], breaks[b + 1], cuts, count, params);
         }
@@ -419,7 +387,7 @@ struct Seed {
 // rational profile piece can crowd a whole span into a sliver of the domain; with seeds spread
 // uniformly over the domain it had none, and Newton from the neighbouring span's seeds settled in that
 // span's local minimum, many times farther away). Within a span the seeds go per weight-certified
-// piece (weight_cuts), for the same reason one level down; the pieces of the two directions make the
+// piece (detail::weight_cuts), for the same reason one level down; the pieces of the two directions make the
 // face's cells, in which point inversion is well conditioned (see DeviationMeter::distance_to_solid).
 struct SeedParams {
     std::vector<double> params;
@@ -454,7 +422,7 @@ SeedParams seed_params(const std::vector<std::vector<BezierSurface>>& patches, b
                 lines.push_back(std::move(weights));
             }
         }
-        const std::vector<double> cuts = weight_cuts(lines);
+        const std::vector<double> cuts = detail::weight_cuts(lines, kMaxHalvings);
         const int count = cuts.size() == 2 ? per_span : std::max(2, per_span / 2);
         const double t0 = breaks[k], t1 = breaks[k + 1];
         for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {

@@ -199,6 +199,13 @@ NurbsCurve with_end_point(const NurbsCurve& curve, bool at_end, const Vec3& poin
     return NurbsCurve::from_homogeneous(curve.degree(), curve.knots(), std::move(pw), curve.is_rational());
 }
 
+std::vector<double> weight_cuts(const std::vector<std::vector<double>>& lines, int max_halvings) {
+    std::vector<double> cuts{0.0};
+    for_each_certified_piece(lines, [](double w) { return w; }, max_halvings,
+                             [&](const std::vector<std::vector<double>>&, double, double b) { cuts.push_back(b); });
+    return cuts;
+}
+
 std::string format_point(const Vec3& p) {
     std::ostringstream out;
     out.precision(9);

@@ -2,6 +2,7 @@
 // Private helpers shared by the primitive, revolution, extrusion, B-rep and property sources.
 // Not installed, not part of the public API.
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <string_view>
@@ -58,6 +59,38 @@ std::pair<std::vector<T>, std::vector<T>> halve_bezier(std::vector<T> row) {
 // coefficients differ by at most this factor; the weight function then stays within it over the piece
 // (convex hull property), so the rational parameterisation cannot crowd the piece into a sliver.
 inline constexpr double kMaxWeightSpread = 4;
+
+// The certificate's pieces of a Bézier span: halve it (deCasteljau, A1.5) until on every piece each line
+// of coefficients (one per row or column of a patch along the direction; one for a curve) has weights
+// within a factor kMaxWeightSpread of each other, or `halvings_left` deep. The weight then varies by at
+// most that factor over a piece (convex hull property), so the speed of the parameterisation does too,
+// up to the polynomial part, and uniform parameters within a piece spread over its geometry.
+// `visit(lines, a, b)` gets each piece in order: its lines and its interval [a, b] of the span's [0, 1].
+// T is a weight (double) or a homogeneous point; `weight(T)` reads its weight. The pieces' own lines are
+// exact halvings at any depth; their intervals a, b stop resolving beyond about 2^-52 near t = 1.
+template <class T, class Weight, class Visit>
+void for_each_certified_piece(const std::vector<std::vector<T>>& lines, const Weight& weight, int halvings_left,
+                              const Visit& visit, double a = 0.0, double b = 1.0) {
+    bool certified = true;
+    for (const auto& line : lines) {
+        const auto [lo, hi] = std::minmax_element(line.begin(), line.end(),
+                                                  [&](const T& x, const T& y) { return weight(x) < weight(y); });
+        if (weight(*hi) > kMaxWeightSpread * weight(*lo)) certified = false;
+    }
+    if (certified || halvings_left <= 0) return visit(lines, a, b);
+    std::vector<std::vector<T>> left, right;
+    for (const auto& line : lines) {
+        auto halves = halve_bezier(line);
+        left.push_back(std::move(halves.first));
+        right.push_back(std::move(halves.second));
+    }
+    const double m = 0.5 * (a + b);
+    for_each_certified_piece(left, weight, halvings_left - 1, visit, a, m);
+    for_each_certified_piece(right, weight, halvings_left - 1, visit, m, b);
+}
+
+// The cuts in [0, 1] between the certified pieces of weight lines, both ends included.
+std::vector<double> weight_cuts(const std::vector<std::vector<double>>& lines, int max_halvings);
 
 // Gauss–Legendre nodes and weights on [0, 1] (nodes by Newton's method on P_n to machine precision).
 struct GaussRule {

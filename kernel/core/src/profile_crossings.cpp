@@ -146,7 +146,7 @@ public:
                     const Vec3 p = project(pw) - origin;
                     homogeneous.push_back(Vec3{dot(p, x_axis), dot(p, y_axis), 1.0} * pw.w);
                 }
-                add_cells(std::move(homogeneous), k, rows, row_pieces);
+                add_cells(homogeneous, k, rows, row_pieces);
             }
         // Every joint once: each cell starts where the one before ends (a closed profile's first where its
         // last ends). A run of cells of one piece that are each below tol and together below the resolution
@@ -188,23 +188,18 @@ public:
     }
 
 private:
-    // The cells of one span, in order: halves (deCasteljau) until the weights of each vary by at most
-    // kMaxWeightSpread (the weight certificate of properties.cpp). Within a cell the parameter then moves
-    // at a speed bounded relative to the cell's size, so halving a cell halves its geometry roughly too;
-    // in a raw span with weights 1e-3 .. 1e3 most of the parameter can crawl within 1e-9 of one point,
-    // and parameter halving would chase it with millions of arcs below the tolerance.
-    void add_cells(std::vector<Vec3> row, std::size_t piece, std::vector<std::vector<Vec3>>& rows,
-                   std::vector<std::size_t>& row_pieces, int depth = 0) {
-        const auto [low, high] = std::minmax_element(row.begin(), row.end(),
-                                                     [](const Vec3& a, const Vec3& b) { return a.z < b.z; });
-        if (high->z <= kMaxWeightSpread * low->z || depth >= kMaxCellDepth) {
-            rows.push_back(std::move(row));
-            row_pieces.push_back(piece);
-            return;
-        }
-        auto [left, right] = halve_bezier(std::move(row));
-        add_cells(std::move(left), piece, rows, row_pieces, depth + 1);
-        add_cells(std::move(right), piece, rows, row_pieces, depth + 1);
+    // The cells of one span, in order: its pieces of the weight certificate (for_each_certified_piece).
+    // Within a cell the parameter moves at a speed bounded relative to the cell's size, so halving a cell
+    // halves its geometry roughly too; in a raw span with weights 1e-3 .. 1e3 most of the parameter can
+    // crawl within 1e-9 of one point, and parameter halving would chase it with millions of arcs below
+    // the tolerance.
+    void add_cells(const std::vector<Vec3>& row, std::size_t piece, std::vector<std::vector<Vec3>>& rows,
+                   std::vector<std::size_t>& row_pieces) {
+        for_each_certified_piece(std::vector<std::vector<Vec3>>{row}, [](const Vec3& h) { return h.z; }, kMaxCellDepth,
+                                 [&](const std::vector<std::vector<Vec3>>& lines, double, double) {
+                                     rows.push_back(lines.front());
+                                     row_pieces.push_back(piece);
+                                 });
     }
 
     void add_arc(std::vector<Vec3> homogeneous, const Vec3& start, const Vec3& end, std::size_t piece) {
