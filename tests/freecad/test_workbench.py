@@ -364,6 +364,9 @@ def test_bad_input_marks_the_object_failed():
     open_profile = Part.LineSegment(V(2, 0, 0), V(3, 0, 2)).toShape()
     _expect_failure(doc, revolve, lambda o: setattr(o, "Profile", RatBez._profile_link(doc, open_profile)),
                     "profile", "open profile off the axis")
+    bow_tie = Part.makePolygon([V(2, 0, 0), V(3, 0, 1), V(3, 0, 0), V(2, 0, 1), V(2, 0, 0)])
+    _expect_failure(doc, revolve, lambda o: setattr(o, "Profile", RatBez._profile_link(doc, bow_tie)),
+                    "cross or touch near", "profile crossing itself")
     _expect_failure(doc, revolve, lambda o: setattr(o, "Profile", None), "profile", "no profile")
 
     # make_* with a bad value still returns the object, marked invalid; unknown names raise.
