@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the project as scripts/setup.sh does (the normal Release build in build/ includes bench/),
-# runs the benchmark programs (evaluation and tessellation against OpenCASCADE in the same run, export
-# alone) and prints ONE table: every row with ours / OCCT ratios and the target it is held to.
+# runs the benchmark programs (evaluation, tessellation and the profile check against OpenCASCADE in the
+# same run, export alone) and prints ONE table: every row with ours / OCCT ratios and the target it is held to.
 #
 # Times are CPU times of the (single-threaded) benchmark thread, the median of the repetitions: on a
 # shared machine wall time also counts other processes' turns. Google Benchmark's JSON is kept in
@@ -27,7 +27,7 @@ fi
 
 mkdir -p "$results"
 rm -f "$results"/*.json
-for program in evaluation tessellation export; do
+for program in evaluation tessellation profile_check export; do
   echo "== bench_$program" >&2
   "$build/bench/bench_$program" --benchmark_filter="$filter" --benchmark_repetitions="$repetitions" \
     --benchmark_min_time="$min_time" --benchmark_report_aggregates_only=true \
@@ -68,9 +68,9 @@ lines = []
 def row(*cells):
     lines.append(cells)
 
-(context, evaluation), (tessellation_context, tessellation), (export_context, export) = (
-    load("evaluation"), load("tessellation"), load("export"))
-context = context or tessellation_context or export_context
+(context, evaluation), (tessellation_context, tessellation), (profile_context, profile_check), (export_context, export) = (
+    load("evaluation"), load("tessellation"), load("profile_check"), load("export"))
+context = context or tessellation_context or profile_context or export_context
 
 row("benchmark", "ours", "OCCT", "ours/OCCT", "target", "status")
 verdicts = []
@@ -115,6 +115,17 @@ for name, b in tessellation.items():
     row(label + " triangles", si(b["triangles"]), si(o["triangles"]), f"{b['triangles'] / o['triangles']:.2f}", "<= 1", "")
     row(label + " deviation/tol", f"{b['deviation_over_tolerance']:.3f}", f"{o['deviation_over_tolerance']:.3f}",
         "", "ours <= 1", "")
+
+# Profile check (revolve's and extrude's crossing test) against BRepCheck_Analyzer on the same cap face.
+for name, b in profile_check.items():
+    parts = name.split("/")
+    if parts[2] != "ours":
+        continue
+    o = profile_check.get(f"profile/{parts[1]}/BRepCheck")
+    if o is None:
+        continue
+    row(f"profile/{parts[1]} ({b['spans']:.0f} spans) check vs BRepCheck_Analyzer(cap)",
+        f"{seconds(b) * 1e6:.3g} us", f"{seconds(o) * 1e6:.3g} us", f"{seconds(o) / seconds(b):.1f}x faster", "", "")
 
 # Export: no OCCT counterpart; triangles per second against the target.
 for name, b in export.items():
