@@ -64,6 +64,16 @@ def si(x):
             return f"{x / factor:.3g}{unit}"
     return f"{x:.3g}"
 
+def against_occt(results, occt_name):
+    """(name parts, ours, OCCT's) for every "<kind>/<shape>/ours[/<size>]" whose OCCT twin ran too."""
+    for name, b in results.items():
+        parts = name.split("/")
+        if parts[2] != "ours":
+            continue
+        o = results.get("/".join(parts[:2] + [occt_name] + parts[3:]))
+        if o is not None:
+            yield parts, b, o
+
 lines = []
 def row(*cells):
     lines.append(cells)
@@ -100,13 +110,7 @@ for name, b in evaluation.items():
             si(a["points_per_second"]) + " pt/s", f"{p['points_per_second'] / a['points_per_second']:.1f}x", "", "")
 
 # Tessellation: speed-up over BRepMesh, triangle counts, deviation against the tolerance.
-for name, b in tessellation.items():
-    parts = name.split("/")
-    if parts[2] != "ours":
-        continue
-    o = tessellation.get(f"tess/{parts[1]}/BRepMesh/{parts[3]}")
-    if o is None:
-        continue
+for parts, b, o in against_occt(tessellation, "BRepMesh"):
     speed = seconds(o) / seconds(b)
     label = f"tess/{parts[1]} tol 1e-{parts[3]}"
     status = "PASS" if speed >= 10 and b["triangles"] <= o["triangles"] and b["deviation_over_tolerance"] <= 1 else "FAIL"
@@ -117,13 +121,7 @@ for name, b in tessellation.items():
         "", "ours <= 1", "")
 
 # Profile check (revolve's and extrude's crossing test) against BRepCheck_Analyzer on the same cap face.
-for name, b in profile_check.items():
-    parts = name.split("/")
-    if parts[2] != "ours":
-        continue
-    o = profile_check.get(f"profile/{parts[1]}/BRepCheck")
-    if o is None:
-        continue
+for parts, b, o in against_occt(profile_check, "BRepCheck"):
     row(f"profile/{parts[1]} ({b['spans']:.0f} spans) check vs BRepCheck_Analyzer(cap)",
         f"{seconds(b) * 1e6:.3g} us", f"{seconds(o) * 1e6:.3g} us", f"{seconds(o) / seconds(b):.1f}x faster", "", "")
 
