@@ -154,22 +154,27 @@ public:
         // straight arc between its ends: what it hides is below the resolution.
         Vec3 joint = euclidean(closed_ ? rows.back().back() : rows.front().front());
         for (std::size_t i = 0; i < rows.size();) {
-            std::size_t j = i;
-            Vec3 low = joint, high = joint;
-            for (; j < rows.size() && row_pieces[j] == row_pieces[i]; ++j) {
-                const Arc cell = make_arc(rows[j], joint, euclidean(rows[j].back()), 0, 0.0, 1.0);
-                const Vec3 run_low{std::min(low.x, cell.low.x), std::min(low.y, cell.low.y), 0.0};
-                const Vec3 run_high{std::max(high.x, cell.high.x), std::max(high.y, cell.high.y), 0.0};
-                if (cell.diagonal() > tol_ || norm(run_high - run_low) > resolution_) break;
-                low = run_low;
-                high = run_high;
+            const std::size_t piece = row_pieces[i];
+            Vec3 end = euclidean(rows[i].back());
+            Arc cell = make_arc(std::move(rows[i]), joint, end, cells_.size(), 0.0, 1.0);
+            std::size_t next = i + 1;
+            if (cell.diagonal() <= tol_) {
+                Vec3 low = cell.low, high = cell.high;
+                for (; next < rows.size() && row_pieces[next] == piece; ++next) {
+                    const Vec3 next_end = euclidean(rows[next].back());
+                    const Arc following = make_arc(rows[next], end, next_end, 0, 0.0, 1.0);
+                    const Vec3 run_low{std::min(low.x, following.low.x), std::min(low.y, following.low.y), 0.0};
+                    const Vec3 run_high{std::max(high.x, following.high.x), std::max(high.y, following.high.y), 0.0};
+                    if (following.diagonal() > tol_ || norm(run_high - run_low) > resolution_) break;
+                    low = run_low;
+                    high = run_high;
+                    end = next_end;
+                }
+                cell = make_arc({{joint.x, joint.y, 1.0}, {end.x, end.y, 1.0}}, joint, end, cells_.size(), 0.0, 1.0);
             }
-            const bool run = j > i;
-            const Vec3 end = euclidean(rows[run ? j - 1 : i].back());
-            std::vector<Vec3> homogeneous = run ? std::vector<Vec3>{{joint.x, joint.y, 1.0}, {end.x, end.y, 1.0}} : rows[i];
-            add_arc(std::move(homogeneous), joint, end, row_pieces[i]);
+            add_cell(std::move(cell), piece);
             joint = end;
-            i = run ? j : i + 1;
+            i = next;
         }
         budget_ = 1'000'000 + 64 * cells_.size();
     }
@@ -202,11 +207,11 @@ private:
                                  });
     }
 
-    void add_arc(std::vector<Vec3> homogeneous, const Vec3& start, const Vec3& end, std::size_t piece) {
+    void add_cell(Arc cell, std::size_t piece) {
         std::vector<Vec4> plane_points;
-        for (const Vec3& h : homogeneous) plane_points.push_back({h.x, h.y, 0.0, h.z});
+        for (const Vec3& h : cell.homogeneous) plane_points.push_back({h.x, h.y, 0.0, h.z});
         plane_cells_.push_back(BezierCurve::from_homogeneous(std::move(plane_points)));
-        cells_.push_back(make_arc(std::move(homogeneous), start, end, cells_.size(), 0.0, 1.0));
+        cells_.push_back(std::move(cell));
         piece_of_.push_back(piece);
     }
 
