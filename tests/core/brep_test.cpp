@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "ratbez/bezier_curve.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/extrude.hpp"
 #include "ratbez/primitives.hpp"
@@ -78,26 +79,20 @@ TEST(Brep, SurfaceFaceRejectsEdgesThatDoNotMatchItsSides) {
     EXPECT_ERROR_NAMING(Face::from_surface(lateral.surface(), loose), "sides");
 }
 
-TEST(Brep, SolidRejectsOpenAndInsideOutShells) {
-    const Solid cyl = cylinder(1, 2);
-    EXPECT_ERROR_NAMING(Solid({cyl.faces()[0], cyl.faces()[1]}), "faces");          // top cap missing
-    EXPECT_ERROR_NAMING(Solid({cyl.faces()[0], cyl.faces()[1], cyl.faces()[1], cyl.faces()[2]}), "faces");  // used 3 times
-    EXPECT_ERROR_NAMING(Solid(std::vector<Face>{}), "faces");
-    // A unit cube whose faces all point inward: closed, but inside out.
-    const Profile square({line_segment({0, 0, 0}, {1, 0, 0}), line_segment({1, 0, 0}, {1, 1, 0}),
-                          line_segment({1, 1, 0}, {0, 1, 0}), line_segment({0, 1, 0}, {0, 0, 0})});
-    const Solid cube = extrude(square, {0, 0, 1}, 1.0);
-    EXPECT_NEAR(cube.volume(), 1.0, 1e-14);
-    EXPECT_NEAR(cube.area(), 6.0, 1e-13);
+// The faces of a solid turned inside out: every loop reversed and every surface transposed (S_v x S_u
+// is the inward normal), on the same edges, so the shell stays closed and coherent.
+std::vector<Face> inside_out(const Solid& solid) {
     std::vector<Face> flipped;
-    for (const Face& f : cube.faces()) {
+    for (const Face& f : solid.faces()) {
         if (f.kind() == Face::Kind::planar) {
             const Plane& p = f.plane();
-            std::vector<Coedge> loop;
-            for (auto it = f.loops()[0].rbegin(); it != f.loops()[0].rend(); ++it) loop.push_back({it->edge, !it->reversed});
-            flipped.push_back(Face::planar(Plane{p.origin, p.y_axis, p.x_axis, -p.normal}, {loop}));
+            std::vector<std::vector<Coedge>> loops;
+            for (const auto& original : f.loops()) {
+                std::vector<Coedge>& loop = loops.emplace_back();
+                for (auto it = original.rbegin(); it != original.rend(); ++it) loop.push_back({it->edge, !it->reversed});
+            }
+            flipped.push_back(Face::planar(Plane{p.origin, p.y_axis, p.x_axis, -p.normal}, loops));
         } else {
-            // Swap u and v: the transposed net runs S_v x S_u, the inward normal.
             const NurbsSurface& s = f.surface();
             std::vector<Vec4> net;
             for (int j = 0; j < s.columns(); ++j)
@@ -109,8 +104,31 @@ TEST(Brep, SolidRejectsOpenAndInsideOutShells) {
                                                      Coedge{sd[1].edge, !sd[1].reversed}, Coedge{sd[0].edge, !sd[0].reversed}}));
         }
     }
-    const std::string message = test::error_message([&] { Solid{flipped}; });
-    EXPECT_NE(message.find("inward"), std::string::npos) << message;
+    return flipped;
+}
+
+TEST(Brep, SolidRejectsOpenAndInsideOutShells) {
+    const Solid cyl = cylinder(1, 2);
+    EXPECT_ERROR_NAMING(Solid({cyl.faces()[0], cyl.faces()[1]}), "faces");          // top cap missing
+    EXPECT_ERROR_NAMING(Solid({cyl.faces()[0], cyl.faces()[1], cyl.faces()[1], cyl.faces()[2]}), "faces");  // used 3 times
+    EXPECT_ERROR_NAMING(Solid(std::vector<Face>{}), "faces");
+    // Closed, but inside out: a unit cube (polynomial faces), a torus (rational, weights within the
+    // certificate, so the orientation check integrates it span by span) and a half-revolved polygon whose
+    // edges carry weights 1e-3 and 1e3 (the check must cut its faces into certified cells first).
+    const Profile square({line_segment({0, 0, 0}, {1, 0, 0}), line_segment({1, 0, 0}, {1, 1, 0}),
+                          line_segment({1, 1, 0}, {0, 1, 0}), line_segment({0, 1, 0}, {0, 0, 0})});
+    const Solid cube = extrude(square, {0, 0, 1}, 1.0);
+    EXPECT_NEAR(cube.volume(), 1.0, 1e-14);
+    EXPECT_NEAR(cube.area(), 6.0, 1e-13);
+    const std::vector<Vec3> polygon{{1, 0, 0}, {3, 0, 0.5}, {2.5, 0, 2}};
+    std::vector<NurbsCurve> weighted;
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+        weighted.push_back(NurbsCurve::from_bezier(BezierCurve({polygon[i], polygon[(i + 1) % 3]}, {1e-3, 1e3})));
+    for (const Solid& solid : {cube, torus(3, 1, {1, 2, 3}, {1, 1, 0}), revolve(Profile(weighted), {0, 0, 0}, {0, 0, 1}, 180)}) {
+        EXPECT_GT(solid.volume(), 0);
+        const std::string message = test::error_message([&] { Solid{inside_out(solid)}; });
+        EXPECT_NE(message.find("inward"), std::string::npos) << message;
+    }
 }
 
 TEST(Brep, EdgesVerticesAndBoundingBox) {

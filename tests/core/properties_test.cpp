@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/extrude.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/revolve.hpp"
 #include "solid_test_support.hpp"
@@ -194,6 +196,39 @@ TEST(Properties, BeyondTheCellBudgetMeasurementsAreRefused) {
             EXPECT_EQ(std::string(error.what()).rfind("solid: ", 0), 0u) << error.what();
         }
     }
+}
+
+// ----------------------------------------------------------------------------- polynomial faces
+
+// The signed area (1/2) ∫ (x y' - y x') dt of a cubic Bézier in the xy plane, in closed form: its power
+// form (x(t) = a0 + a1 t + a2 t² + a3 t³, the same for y) and ∫ t^k dt = 1 / (k + 1) term by term.
+double cubic_green_area(const std::array<Vec3, 4>& p) {
+    auto power = [&](auto coordinate) {
+        const double c0 = coordinate(p[0]), c1 = coordinate(p[1]), c2 = coordinate(p[2]), c3 = coordinate(p[3]);
+        return std::array<double, 4>{c0, 3 * (c1 - c0), 3 * (c0 - 2 * c1 + c2), c3 - 3 * c2 + 3 * c1 - c0};
+    };
+    const auto x = power([](const Vec3& v) { return v.x; }), y = power([](const Vec3& v) { return v.y; });
+    double sum = 0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 1; j < 4; ++j)  // x_i t^i · j y_j t^(j-1) - y_i t^i · j x_j t^(j-1), integrated
+            sum += j * (x[i] * y[j] - y[i] * x[j]) / (i + j);
+    return sum / 2;
+}
+
+// Polynomial faces are integrated exactly by enough Gauss nodes, with no error estimate: an extruded
+// profile of two cubic Béziers has the volume (its area) x (the height the oblique extrusion reaches)
+// to rounding, and its caps have its area.
+TEST(Properties, PolynomialFacesAreIntegratedExactly) {
+    const std::array<Vec3, 4> lower{Vec3{0, 0, 0}, {0.3, -0.9, 0}, {1.6, -0.2, 0}, {2, 0, 0}};
+    const std::array<Vec3, 4> upper{Vec3{2, 0, 0}, {1.9, 1.3, 0}, {0.2, 0.4, 0}, {0, 0, 0}};
+    const Vec3 direction{0.2, -0.1, 1};
+    const double area = cubic_green_area(lower) + cubic_green_area(upper), height = 1.75 / norm(direction);
+    const Profile profile({NurbsCurve::from_bezier(BezierCurve({lower.begin(), lower.end()})),
+                           NurbsCurve::from_bezier(BezierCurve({upper.begin(), upper.end()}))});
+    const Solid solid = extrude(profile, direction, 1.75);
+    EXPECT_NEAR(solid.volume(), area * height, 1e-14 * area * height);
+    for (const Face& face : solid.faces())
+        if (face.kind() == Face::Kind::planar) EXPECT_NEAR(surface_area(face), area, 1e-14 * area);
 }
 
 }  // namespace

@@ -63,9 +63,10 @@ Face Face::from_surface(NurbsSurface surface, std::array<Coedge, 4> sides) {
             const Vec3 on_surface = along_u ? surface.point(t, fixed) : surface.point(fixed, t);
             const double edge_t = edge_with_parameter ? t : edge_domain.min + edge_domain.max - t;
             const Vec3 on_edge = curve.point(std::clamp(edge_t, edge_domain.min, edge_domain.max));
-            require(distance(on_surface, on_edge) <= tolerance, "sides",
-                    where + "'s edge is " + std::to_string(distance(on_surface, on_edge)) +
-                        " away from the surface's boundary at parameter " + std::to_string(t));
+            require(distance(on_surface, on_edge) <= tolerance, "sides", [&] {
+                return where + "'s edge is " + std::to_string(distance(on_surface, on_edge)) +
+                       " away from the surface's boundary at parameter " + std::to_string(t);
+            });
             if (k > 0) side_length += distance(previous, on_surface);
             previous = on_surface;
         }
@@ -128,9 +129,10 @@ Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
         for (const Coedge& c : loops[l]) {
             for (const Vec4& pw : c.edge->curve.homogeneous_points()) {
                 const Vec3 r = project(pw) - plane.origin;
-                require(std::abs(dot(r, plane.normal)) <= tolerance, "loops",
-                        "loop " + std::to_string(l) + " leaves the plane (a control point is " +
-                            std::to_string(std::abs(dot(r, plane.normal))) + " away from it)");
+                require(std::abs(dot(r, plane.normal)) <= tolerance, "loops", [&] {
+                    return "loop " + std::to_string(l) + " leaves the plane (a control point is " +
+                           std::to_string(std::abs(dot(r, plane.normal))) + " away from it)";
+                });
                 x0 = std::min(x0, dot(r, plane.x_axis));
                 x1 = std::max(x1, dot(r, plane.x_axis));
                 y0 = std::min(y0, dot(r, plane.y_axis));

@@ -32,6 +32,12 @@
 // where the surface all but stops), so such a cell counts as converged.
 // Both phases count cells against kMaxCells, so hostile input costs bounded work; when the budget runs
 // out before the tolerance is met, Error says so instead of returning an unverified number.
+// Two shortcuts keep large faces (10^5 spans) cheap without changing what is computed:
+//  - A non-rational face or edge has a polynomial integrand for the volume and for Green's area, and
+//    n Gauss nodes integrate a polynomial of degree 2n - 1 exactly: its cells need no error estimate.
+//  - The quick rule of the orientation check takes a face or edge whose control weights already vary by
+//    at most kMaxWeightSpread straight on its knot spans (span_rule.hpp): every patch would pass the
+//    certificate at once, so extracting the patches would only cost allocations.
 #include "ratbez/properties.hpp"
 
 #include <algorithm>
@@ -45,6 +51,7 @@
 
 #include "geometry_internal.hpp"
 #include "ratbez/error.hpp"
+#include "span_rule.hpp"
 #include "surface_evaluator.hpp"
 
 namespace ratbez {
@@ -62,9 +69,12 @@ using Integrand = std::function<double(const detail::SurfaceFirstDerivatives&)>;
 
 // One integrand over Bézier pieces of one pair of degrees: a surface face, or one edge of a planar
 // face's loop (degree_v = 0: the piece is a curve in s and S_t = 0).
+// `polynomial_factor` k > 0 says that the integrand is a polynomial of degree k·p - 1 along a direction
+// of degree p (a non-rational source: k = 3 for the volume, 2 for Green's area); 0 that it is not.
 struct Source {
     int degree_u = 0, degree_v = 0;
     Integrand integrand;
+    int polynomial_factor = 0;
 };
 
 // A piece of a source as a rational Bézier patch over [0, 1]^2 of its own; the integrand is taken in
@@ -82,10 +92,14 @@ struct Cell {
 
 // The pieces and integrands of a problem; sources live in a deque so cells can point at them.
 // The integrals add up to within `tolerance`; `noise_scale` = kNoiseFactor · size^(k-1).
+// A `quick` problem (the orientation check) keeps a net whose weights pass the certificate as a whole
+// in `nets`, for the quick rule on its spans, instead of cutting it into cells.
 struct Problem {
     std::deque<Source> sources;
     std::vector<Cell> cells;
     double tolerance = 0, noise_scale = 0;
+    bool quick = false;
+    std::vector<std::pair<const Source*, detail::SpanNet>> nets;
 };
 
 // Cells created so far against kMaxCells. `quick` (the orientation check of a new Solid) stops refining
@@ -206,11 +220,25 @@ double rule(const Cell& cell, double s0, double s1, double t0, double t1, int po
     return rule(cell, s0, s1, t0, t1, points, points);
 }
 
+// Gauss nodes that integrate a polynomial source's integrand exactly along a direction of degree p
+// (n nodes are exact to degree 2n - 1, the integrand has degree k·p - 1), or 0 for another source.
+int exact_points(const Source& source, int degree) {
+    if (source.polynomial_factor == 0) return 0;
+    return std::max(1, (source.polynomial_factor * degree + 1) / 2);
+}
+
 // The whole-cell rule against the rules on the halves in u and in v. Their differences estimate the
 // whole rule's error in each direction (E_u, E_v); halves_u + halves_v - whole removes both to first
 // order and is the cell's estimate, E_u + E_v its (pessimistic) error bound — or 0 when that is no more
-// than the cell's rounding floor.
+// than the cell's rounding floor. A polynomial integrand is integrated exactly at once: error 0, so the
+// cell is never halved.
 void assess(Cell& cell, double noise_scale) {
+    const int exact_u = exact_points(*cell.source, cell.source->degree_u), exact_v = exact_points(*cell.source, cell.source->degree_v);
+    if (exact_u > 0 && exact_u <= kRulePoints && exact_v <= kRulePoints) {
+        cell.whole = cell.estimate = rule(cell, 0, 1, 0, 1, exact_u, exact_v);
+        cell.error = 0;
+        return;
+    }
     if (std::isnan(cell.whole)) cell.whole = rule(cell, 0, 1, 0, 1, kRulePoints);
     cell.halves_u = {rule(cell, 0, 0.5, 0, 1, kRulePoints), rule(cell, 0.5, 1, 0, 1, kRulePoints)};
     if (cell.source->degree_v == 0)
@@ -285,11 +313,14 @@ double adaptive_sum(std::vector<Cell> cells, double tolerance, double noise_scal
 // profile (p = 1) of 10^5 segments costs 3 nodes across each instead of 6.
 int quick_points(int degree) { return std::min(kQuickRulePoints, (3 * degree + 1) / 2 + 1); }
 
-// The quick estimate for the orientation check: the low-order rule on the certified cells, no refinement.
-double quick_sum(const std::vector<Cell>& cells) {
+// The quick estimate for the orientation check: the low-order rule on the certified cells and on the
+// spans of the nets that needed no certificate (the same rule: a span is a patch), no refinement.
+double quick_sum(const std::vector<Cell>& cells, const std::vector<std::pair<const Source*, detail::SpanNet>>& nets) {
     double sum = 0;
     for (const Cell& cell : cells)
         sum += rule(cell, 0, 1, 0, 1, quick_points(cell.source->degree_u), quick_points(cell.source->degree_v));
+    for (const auto& [source, net] : nets)
+        sum += detail::span_rule(net, quick_points(net.degree_u), quick_points(net.degree_v), source->integrand);
     return sum;
 }
 
@@ -298,16 +329,29 @@ double integrate(Problem problem, Budget& budget) {
         require(source.degree_u <= detail::kMaxEvaluatorDegree && source.degree_v <= detail::kMaxEvaluatorDegree,
                 budget.argument, "a face or edge of degree above 25 cannot be measured (OpenCASCADE's limit too)");
     std::vector<Cell> cells = certified(std::move(problem.cells), budget);
-    return budget.quick ? quick_sum(cells) : adaptive_sum(std::move(cells), problem.tolerance, problem.noise_scale, budget);
+    return problem.quick ? quick_sum(cells, problem.nets) : adaptive_sum(std::move(cells), problem.tolerance, problem.noise_scale, budget);
 }
 
 // ------------------------------------------------------------------------------------------- faces
 
+// The source of a curve's or surface's integrand (`polynomial_factor` as in Source, if its weights are
+// all equal). Returns the source for the caller to add its Bézier pieces as cells, or nullptr when a
+// quick problem takes the net whole (its weights pass the certificate already).
+const Source* add_source(const detail::SpanNet& net, Integrand integrand, int polynomial_factor, Problem& problem) {
+    const double weight_ratio = detail::control_weight_ratio(net.points);
+    const Source& source = problem.sources.emplace_back(
+        Source{net.degree_u, net.degree_v, std::move(integrand), weight_ratio == 1 ? polynomial_factor : 0});
+    if (!problem.quick || !(weight_ratio <= detail::kMaxWeightSpread)) return &source;
+    problem.nets.emplace_back(&source, net);
+    return nullptr;
+}
+
 // The cells of a surface face's Bézier patches (A5.7), all with one integrand of (S, S_u, S_v).
-void add_surface(const NurbsSurface& surface, Integrand integrand, Problem& problem) {
-    const Source& source = problem.sources.emplace_back(Source{surface.degree_u(), surface.degree_v(), std::move(integrand)});
+void add_surface(const NurbsSurface& surface, Integrand integrand, int polynomial_factor, Problem& problem) {
+    const Source* source = add_source(detail::span_net(surface), std::move(integrand), polynomial_factor, problem);
+    if (source == nullptr) return;
     for (const auto& row : surface.bezier_patches())
-        for (const BezierSurface& patch : row) problem.cells.push_back(Cell{&source, patch.homogeneous_points()});
+        for (const BezierSurface& patch : row) problem.cells.push_back(Cell{source, patch.homogeneous_points()});
 }
 
 // The cells of one curve's Bézier segments for `factor` times Green's area integral (1/2)(x y' - y x'),
@@ -315,14 +359,18 @@ void add_surface(const NurbsSurface& surface, Integrand integrand, Problem& prob
 // into the integrand, so the caller's vectors need not outlive the problem.
 void add_green(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis, double factor,
                Problem& problem) {
-    const Source& source = problem.sources.emplace_back(
-        Source{curve.degree(), 0, [factor, origin, x_axis, y_axis](const detail::SurfaceFirstDerivatives& d) {
-                   const Vec3 r = d.s - origin;
-                   const double x = dot(r, x_axis), y = dot(r, y_axis);
-                   return factor * 0.5 * (x * dot(d.su, y_axis) - y * dot(d.su, x_axis));
-               }});
+    // x y' - y x' has degree 2p - 1 on a polynomial curve of degree p.
+    const Source* source = add_source(
+        detail::span_net(curve),
+        [factor, origin, x_axis, y_axis](const detail::SurfaceFirstDerivatives& d) {
+            const Vec3 r = d.s - origin;
+            const double x = dot(r, x_axis), y = dot(r, y_axis);
+            return factor * 0.5 * (x * dot(d.su, y_axis) - y * dot(d.su, x_axis));
+        },
+        2, problem);
+    if (source == nullptr) return;
     for (const BezierCurve& segment : curve.bezier_segments())
-        problem.cells.push_back(Cell{&source, segment.homogeneous_points()});
+        problem.cells.push_back(Cell{source, segment.homogeneous_points()});
 }
 
 // The cells of a planar face's loop edges for `factor` times Green's area integral in the plane frame,
@@ -337,17 +385,18 @@ void add_planar(const Face& face, double factor, Problem& problem) {
 
 void add_face_area(const Face& face, Problem& problem) {
     if (face.kind() == Face::Kind::planar) return add_planar(face, 1.0, problem);
-    add_surface(face.surface(), [](const detail::SurfaceFirstDerivatives& d) { return norm(cross(d.su, d.sv)); }, problem);
+    add_surface(face.surface(), [](const detail::SurfaceFirstDerivatives& d) { return norm(cross(d.su, d.sv)); }, 0, problem);
 }
 
-// The face's contribution to the volume: (1/3) of the flux of (x - c) through it.
+// The face's contribution to the volume: (1/3) of the flux of (x - c) through it; (S - c) · (S_u x S_v)
+// has degree 3p - 1 along a direction of degree p on a polynomial face.
 void add_face_volume(const Face& face, const Vec3& c, Problem& problem) {
     if (face.kind() == Face::Kind::planar) {
         const Plane& plane = face.plane();
         return add_planar(face, dot(plane.origin - c, plane.normal) / 3.0, problem);
     }
     add_surface(face.surface(), [c](const detail::SurfaceFirstDerivatives& d) { return dot(d.s - c, cross(d.su, d.sv)) / 3.0; },
-                problem);
+                3, problem);
 }
 
 detail::Box box_of(const std::vector<Face>& faces) {
@@ -361,6 +410,7 @@ double volume_of_faces(const std::vector<Face>& faces, Budget budget) {
     const Vec3 c = (box.min + box.max) * 0.5;
     const double size = box.diagonal();
     Problem problem;
+    problem.quick = budget.quick;
     problem.tolerance = kRelativeTolerance * size * size * size;
     problem.noise_scale = kNoiseFactor * size * size;
     for (const Face& face : faces) add_face_volume(face, c, problem);

@@ -192,9 +192,10 @@ Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_d
     const Vec3 plane_normal = cross(d, e);
     for (const NurbsCurve& piece : profile.pieces())
         for (const Vec4& pw : piece.homogeneous_points())
-            require(std::abs(dot(project(pw) - axis_point, plane_normal)) <= tol, "profile",
-                    "must lie in a plane containing the axis (a control point is " +
-                        std::to_string(std::abs(dot(project(pw) - axis_point, plane_normal))) + " off it)");
+            require(std::abs(dot(project(pw) - axis_point, plane_normal)) <= tol, "profile", [&] {
+                return "must lie in a plane containing the axis (a control point is " +
+                       std::to_string(std::abs(dot(project(pw) - axis_point, plane_normal))) + " off it)";
+            });
 
     if (!closed) {
         const double start_off = std::abs(dot(profile.start_point() - axis_point, e));

@@ -141,12 +141,7 @@ HomogeneousJet homogeneous_jet_of_degree(const Vec4* net, int degree_u, int degr
 
 SurfaceFirstDerivatives bezier_patch_first_derivatives(const Vec4* net, int degree_u, int degree_v, double s, double t) {
     const HomogeneousJet h = homogeneous_jet<1>(net, degree_u, degree_v, s, t);
-    // Quotient rule S_s = (A_s - w_s S) / w (Eq. 1.28 differentiated).
-    SurfaceFirstDerivatives d;
-    d.s = project(h.h);
-    d.su = (weighted_part(h.hu) - d.s * h.hu.w) / h.h.w;
-    d.sv = (weighted_part(h.hv) - d.s * h.hv.w) / h.h.w;
-    return d;
+    return project_first_derivatives(h.h, h.hu, h.hv);
 }
 
 Vec3 SurfaceEvaluator::point(double u, double v) const {
@@ -157,11 +152,10 @@ Vec3 SurfaceEvaluator::point(double u, double v) const {
 SurfaceFirstDerivatives SurfaceEvaluator::first_derivatives(double u, double v) const {
     const Located l = locate(u, v);
     const HomogeneousJet h = homogeneous_jet_of_degree<1>(l.net, degree_u_, degree_v_, l.s, l.t);
-    // Quotient rule S_u = (A_u - w_u S) / w, then the chain rule to the surface's own parameters.
-    SurfaceFirstDerivatives d;
-    d.s = project(h.h);
-    d.su = (weighted_part(h.hu) - d.s * h.hu.w) * (l.scale_u / h.h.w);
-    d.sv = (weighted_part(h.hv) - d.s * h.hv.w) * (l.scale_v / h.h.w);
+    // The quotient rule in the patch's parameters, then the chain rule to the surface's own.
+    SurfaceFirstDerivatives d = project_first_derivatives(h.h, h.hu, h.hv);
+    d.su *= l.scale_u;
+    d.sv *= l.scale_v;
     return d;
 }
 

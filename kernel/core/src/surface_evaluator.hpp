@@ -23,6 +23,16 @@ struct SurfaceJet {
     Vec3 s, su, sv, suu, suv, svv;
 };
 
+// S, S_u, S_v from the homogeneous point S^w = (A, w) and its partials: S = A / w and the quotient rule
+// S_u = (A_u - w_u S) / w (Eq. 1.28 differentiated), likewise in v.
+inline SurfaceFirstDerivatives project_first_derivatives(const Vec4& h, const Vec4& hu, const Vec4& hv) {
+    SurfaceFirstDerivatives d;
+    d.s = project(h);
+    d.su = (weighted_part(hu) - d.s * hu.w) / h.w;
+    d.sv = (weighted_part(hv) - d.s * hv.w) / h.w;
+    return d;
+}
+
 // OpenCASCADE's Geom_BSplineSurface::MaxDegree(): nothing we hand over can be higher anyway.
 inline constexpr int kMaxEvaluatorDegree = 25;
 
