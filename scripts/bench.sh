@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the project as scripts/setup.sh does (the normal Release build in build/ includes bench/),
-# runs the benchmark programs (evaluation, tessellation and the profile check against OpenCASCADE in the
-# same run, export alone) and prints ONE table: every row with ours / OCCT ratios and the target it is held to.
+# runs the benchmark programs (evaluation, tessellation, the profile check and volume/area against
+# OpenCASCADE in the same run, export alone) and prints ONE table: every row with ours / OCCT ratios and the target it is held to.
 #
 # Times are CPU times of the (single-threaded) benchmark thread, the median of the repetitions: on a
 # shared machine wall time also counts other processes' turns. Google Benchmark's JSON is kept in
@@ -27,7 +27,7 @@ fi
 
 mkdir -p "$results"
 rm -f "$results"/*.json
-for program in evaluation tessellation profile_check export; do
+for program in evaluation tessellation profile_check properties export; do
   echo "== bench_$program" >&2
   "$build/bench/bench_$program" --benchmark_filter="$filter" --benchmark_repetitions="$repetitions" \
     --benchmark_min_time="$min_time" --benchmark_report_aggregates_only=true \
@@ -74,13 +74,18 @@ def against_occt(results, occt_name):
         if o is not None:
             yield parts, b, o
 
+def speed(ours, theirs):
+    """Ours against OCCT's time, in words: "4.1x faster" or "3.1x slower"."""
+    return f"{theirs / ours:.1f}x faster" if theirs >= ours else f"{ours / theirs:.1f}x slower"
+
 lines = []
 def row(*cells):
     lines.append(cells)
 
-(context, evaluation), (tessellation_context, tessellation), (profile_context, profile_check), (export_context, export) = (
-    load("evaluation"), load("tessellation"), load("profile_check"), load("export"))
-context = context or tessellation_context or profile_context or export_context
+(context, evaluation), (tessellation_context, tessellation), (profile_context, profile_check), \
+    (properties_context, properties), (export_context, export) = (
+    load("evaluation"), load("tessellation"), load("profile_check"), load("properties"), load("export"))
+context = context or tessellation_context or profile_context or properties_context or export_context
 
 row("benchmark", "ours", "OCCT", "ours/OCCT", "target", "status")
 verdicts = []
@@ -123,7 +128,15 @@ for parts, b, o in against_occt(tessellation, "BRepMesh"):
 # Profile check (revolve's and extrude's crossing test) against BRepCheck_Analyzer on the same cap face.
 for parts, b, o in against_occt(profile_check, "BRepCheck"):
     row(f"profile/{parts[1]} ({b['spans']:.0f} spans) check vs BRepCheck_Analyzer(cap)",
-        f"{seconds(b) * 1e6:.3g} us", f"{seconds(o) * 1e6:.3g} us", f"{seconds(o) / seconds(b):.1f}x faster", "", "")
+        f"{seconds(b) * 1e6:.3g} us", f"{seconds(o) * 1e6:.3g} us", speed(seconds(b), seconds(o)), "", "")
+
+# Volume and area against BRepGProp (its fixed rule, then its adaptive one at Eps 1e-12), with each
+# answer's relative error against the closed form.
+for occt_name in ("BRepGProp", "BRepGProp_eps"):
+    for parts, b, o in against_occt(properties, occt_name):
+        label = f"{parts[0]}/{parts[1]} vs {occt_name}"
+        row(label + " time", f"{seconds(b) * 1e6:.3g} us", f"{seconds(o) * 1e6:.3g} us", speed(seconds(b), seconds(o)), "", "")
+        row(label + " relative error", f"{b['relative_error']:.1e}", f"{o['relative_error']:.1e}", "", "", "")
 
 # Export: no OCCT counterpart; triangles per second against the target.
 for name, b in export.items():
