@@ -50,6 +50,7 @@
 #include <utility>
 
 #include "geometry_internal.hpp"
+#include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
 #include "span_rule.hpp"
 #include "surface_evaluator.hpp"
@@ -302,9 +303,9 @@ double adaptive_sum(std::vector<Cell> cells, double tolerance, double noise_scal
             std::push_heap(cells.begin(), cells.end(), by_error);
         }
     }
-    double sum = 0;
-    for (const Cell& cell : cells) sum += cell.estimate;
-    return sum;
+    detail::CompensatedSum sum;  // 10^5 cells: naive summation would cost more than the tolerance
+    for (const Cell& cell : cells) sum.add(cell.estimate);
+    return sum.value();
 }
 
 // Nodes per direction for the quick rule: the volume integrand (S - c) · (S_u x S_v) of a polynomial

@@ -28,6 +28,10 @@ Nodes nodes_on_spans(int degree, std::span<const double> knots, int points) {
     const GaussRule& rule = gauss_legendre(points);
     const int count = static_cast<int>(knots.size()) - degree - 1;  // control points; the domain is [u_p, u_count]
     const std::size_t per_node = 2 * static_cast<std::size_t>(degree + 1);
+    const std::size_t most_nodes = static_cast<std::size_t>(std::max(count - degree, 0)) * rule.nodes.size();
+    nodes.spans.reserve(most_nodes);
+    nodes.weights.reserve(most_nodes);
+    nodes.basis.reserve(most_nodes * per_node);
     for (int k = degree; k < count; ++k) {
         const double a = knots[static_cast<std::size_t>(k)], b = knots[static_cast<std::size_t>(k) + 1];
         if (!(b > a)) continue;
