@@ -227,8 +227,11 @@ TEST(Properties, PolynomialFacesAreIntegratedExactly) {
                            NurbsCurve::from_bezier(BezierCurve({upper.begin(), upper.end()}))});
     const Solid solid = extrude(profile, direction, 1.75);
     EXPECT_NEAR(solid.volume(), area * height, 1e-14 * area * height);
-    for (const Face& face : solid.faces())
-        if (face.kind() == Face::Kind::planar) EXPECT_NEAR(surface_area(face), area, 1e-14 * area);
+    for (const Face& face : solid.faces()) {
+        if (face.kind() == Face::Kind::planar) {
+            EXPECT_NEAR(surface_area(face), area, 1e-14 * area);
+        }
+    }
 }
 
 }  // namespace
