@@ -136,10 +136,10 @@ TEST(Brep, EdgesVerticesAndBoundingBox) {
     EXPECT_EQ(cone_solid.edges().size(), 3u);  // seam, base circle, degenerate apex
     EXPECT_EQ(cone_solid.vertices().size(), 2u);
     EXPECT_EQ(cone_solid.euler_characteristic(), 2);
-    const Solid::Box box = sphere(2, {1, 2, 3}).bounding_box();
+    const Box box = sphere(2, {1, 2, 3}).bounding_box();
     EXPECT_EQ(box.min, (Vec3{-1, 0, 1}));
     EXPECT_EQ(box.max, (Vec3{3, 4, 5}));
-    const Solid::Box cyl = cylinder(1, 2).bounding_box();
+    const Box cyl = cylinder(1, 2).bounding_box();
     EXPECT_EQ(cyl.min, (Vec3{-1, -1, 0}));
     EXPECT_EQ(cyl.max, (Vec3{1, 1, 2}));
     EXPECT_NEAR(cyl.diagonal(), std::sqrt(12.0), 1e-15);

@@ -95,7 +95,7 @@ double expect_valid_closed_solid(const Solid& solid, const std::string& name) {
     EXPECT_EQ(count(converted.solid, TopAbs_VERTEX), static_cast<int>(solid.vertices().size()));
 
     // Outward: a point far away is outside, and OCCT's volume is positive.
-    const Solid::Box box = solid.bounding_box();
+    const Box box = solid.bounding_box();
     BRepClass3d_SolidClassifier classifier(converted.solid);
     const Vec3 far = box.max + Vec3{1, 1, 1} * box.diagonal();
     classifier.Perform(to_occt_point(far), 1e-7);

@@ -7,9 +7,9 @@
 #include <set>
 #include <string>
 
+#include "cubature.hpp"
 #include "geometry_internal.hpp"
 #include "ratbez/error.hpp"
-#include "ratbez/properties.hpp"
 
 namespace ratbez {
 
@@ -31,7 +31,7 @@ VertexPtr traversal_end(const Coedge& c) { return c.reversed ? c.edge->start : c
 }  // namespace
 
 Face Face::from_surface(NurbsSurface surface, std::array<Coedge, 4> sides) {
-    const double size = detail::control_box(surface).diagonal();
+    const double size = surface.control_box().diagonal();
     require(size > 0 && std::isfinite(size), "surface", "must not collapse to a single point");
     const double tolerance = kRelativeTolerance * size;
     const Interval du = surface.domain_u(), dv = surface.domain_v();
@@ -105,7 +105,7 @@ Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
             "normal must equal cross(x_axis, y_axis)");
     require(!loops.empty(), "loops", "a planar face needs an outer loop");
 
-    detail::Box box;
+    Box box;
     for (std::size_t l = 0; l < loops.size(); ++l) {
         const std::string where = "loop " + std::to_string(l);
         require(!loops[l].empty(), "loops", where + " is empty");
@@ -116,7 +116,7 @@ Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
             require(!c.edge->degenerate, "loops", where + " must not contain degenerate edges");
             require(traversal_end(c) == traversal_start(loops[l][(k + 1) % loops[l].size()]), "loops",
                     where + ": coedge " + std::to_string(k) + " does not end at the Vertex object where the next starts");
-            box.add(detail::control_box(c.edge->curve));
+            box.add(c.edge->curve.control_box());
         }
     }
     const double size = box.diagonal();
@@ -202,7 +202,7 @@ Solid::Solid(std::vector<Face> faces) {
     }
     // Coherent edge directions make the shell consistently oriented; the sign of the enclosed volume
     // tells outward from inward.
-    require(detail::signed_volume(faces, true) > 0, "faces",
+    require(detail::faces_volume(faces, "faces", /*quick=*/true) > 0, "faces",
             "the shell is oriented inward (its enclosed volume is negative); normals must point out of the solid");
     faces_ = std::move(faces);
 }
@@ -231,21 +231,18 @@ int Solid::euler_characteristic() const {
     return static_cast<int>(vertices().size()) - static_cast<int>(proper) + static_cast<int>(faces_.size());
 }
 
-Solid::Box Solid::bounding_box() const {
-    detail::Box box;
+Box Solid::bounding_box() const {
+    Box box;
     for (const Face& face : faces_) {
         if (face.kind() == Face::Kind::surface) {
-            box.add(detail::control_box(face.surface()));
+            box.add(face.surface().control_box());
         } else {
             // The plane patch spans the loops' rectangle; the loops themselves bound the face tighter.
             for (const auto& loop : face.loops())
-                for (const Coedge& c : loop) box.add(detail::control_box(c.edge->curve));
+                for (const Coedge& c : loop) box.add(c.edge->curve.control_box());
         }
     }
-    return Box{box.min, box.max};
+    return box;
 }
-
-double Solid::area() const { return surface_area(*this); }
-double Solid::volume() const { return enclosed_volume(*this); }
 
 }  // namespace ratbez

@@ -113,6 +113,14 @@ Interval knot_domain(int degree, std::span<const double> knots) {
     return {knots[to_size(degree)], knots[knots.size() - 1 - to_size(degree)]};
 }
 
+std::vector<double> breakpoints(int degree, std::span<const double> knots) {
+    knot_domain(degree, knots);  // validates the degree and the count
+    std::vector<double> values;
+    for (std::size_t i = to_size(degree); i < knots.size() - to_size(degree); ++i)
+        if (values.empty() || knots[i] > values.back()) values.push_back(knots[i]);
+    return values;
+}
+
 double bspline_basis(int i, int p, std::span<const double> knots, double u) {
     require(p >= 0, "p", [&] { return "the degree must be >= 0, got " + std::to_string(p); });
     require(knots.size() >= to_size(p) + 2, "knots", [&] {

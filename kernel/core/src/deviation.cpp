@@ -29,10 +29,11 @@
 #include <unordered_map>
 #include <vector>
 
-#include "geometry_internal.hpp"
+#include "cubature.hpp"
 #include "polygon_triangulation.hpp"
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/bezier_surface.hpp"
+#include "ratbez/box.hpp"
 #include "ratbez/error.hpp"
 #include "surface_evaluator.hpp"
 
@@ -507,21 +508,6 @@ private:
     std::array<int, 3> dims_{1, 1, 1};
 };
 
-// An axis-aligned box of points, and the distance from a point to it (0 inside).
-struct PointBox {
-    Vec3 min{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    Vec3 max{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-    void add(const Vec3& p) {
-        min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
-        max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
-    }
-    double distance_to(const Vec3& p) const {
-        const Vec3 d{std::max({min.x - p.x, 0.0, p.x - max.x}), std::max({min.y - p.y, 0.0, p.y - max.y}),
-                     std::max({min.z - p.z, 0.0, p.z - max.z})};
-        return norm(d);
-    }
-};
-
 class DeviationMeter {
 public:
     explicit DeviationMeter(const Solid& solid) : solid_(solid) {
@@ -554,7 +540,7 @@ public:
             const std::vector<double>& vs = seeds_v.params;
             cells_[f] = {seeds_u.pieces, seeds_v.pieces};
             cell_spacing_[f].assign(seeds_u.pieces.size() * seeds_v.pieces.size(), 0.0);
-            cell_box_[f].assign(seeds_u.pieces.size() * seeds_v.pieces.size(), PointBox{});
+            cell_box_[f].assign(seeds_u.pieces.size() * seeds_v.pieces.size(), Box{});
             const std::size_t nu = us.size() - 1, nv = vs.size() - 1;
             // "The same point" up to rounding relative to the face's size: evaluating a pole row at
             // different u gives points that differ in the last bits, and bit equality missed them.
@@ -699,7 +685,7 @@ private:
     // Per face and cell: the largest distance between neighbouring seeds of the cell (or its edge), and
     // the box of its seed points.
     std::vector<std::vector<double>> cell_spacing_;
-    std::vector<std::vector<PointBox>> cell_box_;
+    std::vector<std::vector<Box>> cell_box_;
     std::vector<std::unique_ptr<detail::SurfaceEvaluator>> evaluators_;  // surface faces
     std::unique_ptr<SeedGrid> grid_;
     double spacing_ = 0;

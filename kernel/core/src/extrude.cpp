@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "cubature.hpp"
 #include "geometry_internal.hpp"
 #include "profile_crossings.hpp"
 #include "ratbez/curves.hpp"

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <utility>
 
+#include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
 
 namespace ratbez::detail {
@@ -89,74 +90,6 @@ NurbsCurve arc_in_frame(const Frame& frame, double radius_x, double radius_y, do
     return NurbsCurve(2, layout.knots, std::move(points), layout.weights);
 }
 
-const GaussRule& gauss_legendre(int points) {
-    constexpr int max_points = 32;
-    static const std::array<GaussRule, max_points + 1> rules = [] {
-        std::array<GaussRule, max_points + 1> all{};
-        for (int n = 1; n <= max_points; ++n) {
-            GaussRule& rule = all[static_cast<std::size_t>(n)];
-            // P_n(x) by its three-term recurrence and P_n'(x) = n (x P_n - P_{n-1}) / (x^2 - 1).
-            const auto legendre = [n](double x) {
-                double p0 = 1.0, p1 = x;
-                for (int k = 2; k <= n; ++k) {
-                    const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                if (n == 1) p0 = 1.0;
-                return std::pair<double, double>{p1, n * (x * p1 - p0) / (x * x - 1.0)};
-            };
-            for (int i = 0; i < n; ++i) {
-                // Newton's method on P_n from the classical initial guess.
-                double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
-                for (int iteration = 0; iteration < 100; ++iteration) {
-                    const auto [value, slope] = legendre(x);
-                    const double step = value / slope;
-                    x -= step;
-                    if (std::abs(step) < 1e-16) break;
-                }
-                const double derivative = legendre(x).second;
-                rule.nodes.push_back((1.0 - x) / 2.0);
-                rule.weights.push_back(1.0 / ((1.0 - x * x) * derivative * derivative));  // 2/(...) halved for [0, 1]
-            }
-        }
-        return all;
-    }();
-    require(points >= 1 && points <= max_points, "points", "Gauss–Legendre rules exist here for 1..32 points");
-    return rules[static_cast<std::size_t>(points)];
-}
-
-std::vector<double> breakpoints(int degree, const std::vector<double>& knots) {
-    const std::size_t first = static_cast<std::size_t>(degree);
-    const std::size_t last = knots.size() - 1 - static_cast<std::size_t>(degree);
-    std::vector<double> values;
-    for (std::size_t i = first; i <= last; ++i)
-        if (values.empty() || knots[i] > values.back()) values.push_back(knots[i]);
-    return values;
-}
-
-void Box::add(const Vec3& p) {
-    min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
-    max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
-}
-void Box::add(const Box& b) {
-    if (b.empty()) return;
-    add(b.min);
-    add(b.max);
-}
-
-Box control_box(const NurbsCurve& curve) {
-    Box box;
-    for (const Vec4& p : curve.homogeneous_points()) box.add(project(p));
-    return box;
-}
-
-Box control_box(const NurbsSurface& surface) {
-    Box box;
-    for (const Vec4& p : surface.homogeneous_points()) box.add(project(p));
-    return box;
-}
-
 bool is_clamped(const NurbsCurve& curve) {
     const auto& knots = curve.knots();
     const std::size_t p = static_cast<std::size_t>(curve.degree());
@@ -197,13 +130,6 @@ NurbsCurve with_end_point(const NurbsCurve& curve, bool at_end, const Vec3& poin
     Vec4& target = at_end ? pw.back() : pw.front();
     target = homogenize(point, target.w);
     return NurbsCurve::from_homogeneous(curve.degree(), curve.knots(), std::move(pw), curve.is_rational());
-}
-
-std::vector<double> weight_cuts(const std::vector<std::vector<double>>& lines, int max_halvings) {
-    std::vector<double> cuts{0.0};
-    for_each_certified_piece(lines, [](double w) { return w; }, max_halvings,
-                             [&](const std::vector<std::vector<double>>&, double, double b) { cuts.push_back(b); });
-    return cuts;
 }
 
 std::string format_point(const Vec3& p) {

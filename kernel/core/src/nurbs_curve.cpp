@@ -167,6 +167,12 @@ std::vector<double> NurbsCurve::weights() const {
 
 Interval NurbsCurve::domain() const { return knot_domain(degree_, knots_); }
 
+Box NurbsCurve::control_box() const {
+    Box box;
+    for (const Vec4& p : pw_) box.add(project(p));
+    return box;
+}
+
 Vec4 NurbsCurve::homogeneous_point(double u) const {
     // A3.1 on P^w: the p + 1 non-vanishing basis functions of the span (A2.1, A2.2) times P^w.
     const int span = find_span(degree_, knots_, u);  // validates u against the domain

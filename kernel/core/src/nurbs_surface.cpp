@@ -202,6 +202,12 @@ std::vector<std::vector<double>> NurbsSurface::weights() const {
 Interval NurbsSurface::domain_u() const { return knot_domain(degree_u_, knots_u_); }
 Interval NurbsSurface::domain_v() const { return knot_domain(degree_v_, knots_v_); }
 
+Box NurbsSurface::control_box() const {
+    Box box;
+    for (const Vec4& p : pw_) box.add(project(p));
+    return box;
+}
+
 // ---- evaluation ----------------------------------------------------------------------------------------
 
 Vec4 NurbsSurface::homogeneous_point(double u, double v) const {

@@ -9,6 +9,7 @@
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/frame.hpp"
+#include "revolve_internal.hpp"
 
 namespace ratbez {
 

@@ -31,13 +31,13 @@ bool has_uneven_span(const NurbsCurve& piece) {
 
 Profile::Profile(std::vector<NurbsCurve> pieces) {
     require(!pieces.empty(), "profile", "must have at least one piece");
-    detail::Box box;
+    Box box;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
         require(pieces[k].degree() >= 1, "profile",
                 [&] { return "piece " + std::to_string(k) + " has degree 0 (a point)"; });
         pieces[k] = detail::clamped(pieces[k]);
         if (has_uneven_span(pieces[k])) pieces[k] = pieces[k].normal_form();
-        const detail::Box piece_box = detail::control_box(pieces[k]);
+        const Box piece_box = pieces[k].control_box();
         require(piece_box.diagonal() > 0, "profile",
                 [&] { return "piece " + std::to_string(k) + " is a single point"; });
         box.add(piece_box);

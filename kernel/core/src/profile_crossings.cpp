@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cubature.hpp"
 #include "geometry_internal.hpp"
 #include "ratbez/error.hpp"
 

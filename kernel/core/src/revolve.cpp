@@ -11,11 +11,13 @@
 #include <cmath>
 #include <string>
 
+#include "cubature.hpp"
 #include "geometry_internal.hpp"
 #include "profile_crossings.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/frame.hpp"
+#include "revolve_internal.hpp"
 
 namespace ratbez {
 
@@ -85,7 +87,7 @@ NurbsSurface revolve_surface(const NurbsCurve& profile, const Vec3& axis_point, 
 
     const detail::ArcLayout arc = detail::arc_layout(0.0, angle_deg);
     const std::vector<Vec4>& profile_points = profile.homogeneous_points();
-    const double size = detail::control_box(profile).diagonal();
+    const double size = profile.control_box().diagonal();
     const std::size_t rows = arc.weights.size(), columns = profile_points.size();
     std::vector<Vec4> net(rows * columns);
     for (std::size_t j = 0; j < columns; ++j) {
@@ -142,7 +144,7 @@ detail::RevolutionShell detail::build_revolution(const std::vector<NurbsCurve>& 
         const Vec3 last = project(s.homogeneous_point(s.rows() - 1, column));
         // revolve_surface puts a control point on the axis exactly (its whole row is the foot point), but
         // H{w P} = (w P) / w may round differently for each arc weight: compare to rounding, not exactly.
-        const double rounding = 1e-13 * detail::control_box(s).diagonal();
+        const double rounding = 1e-13 * s.control_box().diagonal();
         bool collapsed = true;
         for (int i = 0; i < s.rows(); ++i)
             collapsed = collapsed && distance(project(s.homogeneous_point(i, column)), first) <= rounding;

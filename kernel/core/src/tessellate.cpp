@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "polygon_triangulation.hpp"
+#include "ratbez/bspline_basis.hpp"
 #include "ratbez/surface_grid.hpp"
 #include "ratbez/error.hpp"
 #include "strip_zipper.hpp"
@@ -139,16 +140,6 @@ SideMap map_side(const Face& face, Side side) {
 // Curvature data of a surface face on a sample grid (coarse, then fine where it pays), and the parameter
 // lines derived from it.
 
-// The distinct knots of a knot vector inside its domain (the span boundaries).
-std::vector<double> breakpoints(const std::vector<double>& knots, Interval domain) {
-    std::vector<double> b;
-    for (double k : knots)
-        if (k >= domain.min && k <= domain.max && (b.empty() || k > b.back())) b.push_back(k);
-    if (b.empty() || b.front() != domain.min) b.insert(b.begin(), domain.min);
-    if (b.back() != domain.max) b.push_back(domain.max);
-    return b;
-}
-
 // Curvature samples per knot span: coarse first; fine when the grid turns out dense enough that the finer
 // (less conservative) line densities pay for the sampling (see Tessellator::plan_surfaces).
 constexpr std::size_t kCoarseSamplesPerSpan = 8, kFineSamplesPerSpan = 16;
@@ -168,8 +159,8 @@ std::vector<double> sample_params(const std::vector<double>& breaks, std::size_t
 
 // How many samples sample_curvature takes with `per_span`.
 double sample_count(const NurbsSurface& s, std::size_t per_span) {
-    return static_cast<double>(sample_params(breakpoints(s.knots_u(), s.domain_u()), per_span).size()) *
-           static_cast<double>(sample_params(breakpoints(s.knots_v(), s.domain_v()), per_span).size());
+    return static_cast<double>(sample_params(breakpoints(s.degree_u(), s.knots_u()), per_span).size()) *
+           static_cast<double>(sample_params(breakpoints(s.degree_v(), s.knots_v()), per_span).size());
 }
 double fine_sample_count(const NurbsSurface& s) { return sample_count(s, kFineSamplesPerSpan); }
 double coarse_sample_count(const NurbsSurface& s) { return sample_count(s, kCoarseSamplesPerSpan); }
@@ -200,8 +191,8 @@ std::optional<Vec3> collapsed_side_normal(const Vec3& su, const Vec3& sv, const 
 
 CurvatureSamples sample_curvature(const NurbsSurface& s, std::size_t per_span) {
     CurvatureSamples c;
-    c.us = sample_params(breakpoints(s.knots_u(), s.domain_u()), per_span);
-    c.vs = sample_params(breakpoints(s.knots_v(), s.domain_v()), per_span);
+    c.us = sample_params(breakpoints(s.degree_u(), s.knots_u()), per_span);
+    c.vs = sample_params(breakpoints(s.degree_v(), s.knots_v()), per_span);
     c.L.resize(c.us.size() * c.vs.size());
     c.N.resize(c.L.size());
     c.normals.resize(c.L.size());
@@ -394,7 +385,7 @@ std::vector<double> crease_lines(const NurbsSurface& s, const detail::SurfaceEva
     };
     const Interval d = along_u ? s.domain_u() : s.domain_v();
     const Interval other = along_u ? s.domain_v() : s.domain_u();
-    const auto breaks = breakpoints(along_u ? s.knots_u() : s.knots_v(), d);
+    const auto breaks = along_u ? breakpoints(s.degree_u(), s.knots_u()) : breakpoints(s.degree_v(), s.knots_v());
     std::vector<double> result{d.min};
     const double delta = 1e-7 * (d.max - d.min);
     for (std::size_t k = 1; k + 1 < breaks.size(); ++k) {
@@ -934,7 +925,7 @@ void sample_curve(const NurbsCurve& curve, double a, double b, const Vec3& pa, c
 }
 
 std::vector<double> sample_curve(const NurbsCurve& curve, double tolerance) {
-    const auto breaks = breakpoints(curve.knots(), curve.domain());
+    const auto breaks = breakpoints(curve.degree(), curve.knots());
     std::vector<double> params{breaks.front()};
     for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
         sample_curve(curve, breaks[k], breaks[k + 1], curve.point(breaks[k]), curve.point(breaks[k + 1]), tolerance, 0,

@@ -48,7 +48,7 @@ Handle(Geom2d_Curve) side_pcurve(int side, double fixed, double a, double b, boo
 class Converter {
 public:
     explicit Converter(const Solid& solid) : solid_(solid) {
-        const Solid::Box box = solid.bounding_box();
+        const Box box = solid.bounding_box();
         // Our geometry is exact to rounding, but OCCT evaluates an edge's 3D curve and the face
         // surface through its pcurve by different routes, and with rational weights 10^+-3 these
         // differ by several 1e-12 of the size (seed 20261992 of the round trip test: 3e-12, which a

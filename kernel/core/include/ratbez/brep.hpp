@@ -16,6 +16,7 @@
 #include <memory>
 #include <vector>
 
+#include "ratbez/box.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/nurbs_surface.hpp"
 #include "ratbez/vec.hpp"
@@ -105,14 +106,12 @@ public:
     // V - E + F with degenerate edges not counted (their vertex is counted): 2 for a ball, 0 for a torus.
     int euler_characteristic() const;
 
-    // Axis-aligned box of all control points: it contains the solid (convex hull property).
-    struct Box {
-        Vec3 min, max;
-        double diagonal() const { return norm(max - min); }
-    };
+    // Axis-aligned box of all control points: it contains the solid (convex hull property), but may be
+    // larger than the solid's tight box (a sphere's control net reaches out to its circumscribed cube).
     Box bounding_box() const;
 
-    double area() const;    // Gauss quadrature on the exact surfaces (properties.hpp)
+    // Measured by properties.hpp (defined there: building a Solid does not measure it).
+    double area() const;    // Gauss quadrature on the exact surfaces
     double volume() const;  // divergence theorem, (1/3) of the integral of S . (S_u x S_v)
 
 private:

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "ratbez/interval.hpp"
+
 namespace ratbez {
 
 // Throws ratbez::Error naming `argument` unless `knots` is a valid knot vector for `degree` and
@@ -44,9 +46,10 @@ void basis_function_derivatives(int span, double u, int degree, std::span<const 
                                 std::span<double> out);
 
 // The domain [u_p, u_{m-p}] of a knot vector.
-struct Interval {
-    double min = 0, max = 0;
-};
 Interval knot_domain(int degree, std::span<const double> knots);
+
+// The distinct knot values of the domain [u_p, u_{m-p}], ascending: the ends of its non-empty spans
+// (the break points where the Bezier pieces of a curve or surface meet, 001). Both ends included.
+std::vector<double> breakpoints(int degree, std::span<const double> knots);
 
 }  // namespace ratbez

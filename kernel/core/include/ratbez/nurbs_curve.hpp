@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ratbez/bezier_curve.hpp"
+#include "ratbez/box.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/vec.hpp"
 
@@ -28,6 +29,8 @@ public:
     std::vector<double> weights() const;
     bool is_rational() const { return rational_; }
     Interval domain() const;
+    // The box of the control points: it contains the curve (convex hull property).
+    Box control_box() const;
 
     Vec3 point(double u) const;          // A4.1 (A3.1 on P^w, then H)
     Vec4 homogeneous_point(double u) const;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ratbez/bezier_surface.hpp"
+#include "ratbez/box.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/vec.hpp"
@@ -36,6 +37,8 @@ public:
     bool is_rational() const { return rational_; }
     Interval domain_u() const;
     Interval domain_v() const;
+    // The box of the control points: it contains the surface (convex hull property).
+    Box control_box() const;
 
     Vec3 point(double u, double v) const;      // A4.3
     Vec4 homogeneous_point(double u, double v) const;
