@@ -42,8 +42,11 @@ TEST(GaussLegendre, ExactToDegreeTwoNMinusOne) {
             double sum = 0;
             for (std::size_t i = 0; i < g.nodes.size(); ++i) sum += g.weights[i] * std::pow(g.nodes[i], degree);
             const double exact = 1.0 / (degree + 1);  // the integral of t^k over [0, 1]
-            if (degree == 2 * n - 1) EXPECT_NEAR(sum, exact, 1e-14) << n << " nodes";
-            else if (n <= 6) EXPECT_GT(std::abs(sum - exact), 1e-9) << n << " nodes cannot be exact on t^2n";
+            if (degree == 2 * n - 1) {
+                EXPECT_NEAR(sum, exact, 1e-14) << n << " nodes";
+            } else if (n <= 6) {
+                EXPECT_GT(std::abs(sum - exact), 1e-9) << n << " nodes cannot be exact on t^2n";
+            }
         }
     }
     EXPECT_THROW(gauss_legendre(0), Error);
