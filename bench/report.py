@@ -1,0 +1,168 @@
+"""The one table of scripts/bench.sh: every benchmark row with ours / OpenCASCADE ratios and its target.
+
+Reads the Google Benchmark JSON files that bench.sh writes (one per program, medians of the
+repetitions) and prints one row per comparison. A program that wrote no file (none of its benchmarks
+matched BENCH_FILTER) has no rows. Each section is a function of the loaded results, so a section can be
+added without touching the others.
+
+Usage: python3 bench/report.py RESULTS_DIR CORES
+"""
+
+import json
+import os
+import sys
+
+PROGRAMS = ("evaluation", "tessellation", "profile_check", "properties", "export")
+
+
+def load(results, program):
+    """(context, {run name: median row}) of one program's JSON, or ({}, {}) when it did not run."""
+    try:
+        with open(os.path.join(results, program + ".json")) as f:
+            data = json.load(f)
+    except (OSError, ValueError):
+        return {}, {}
+    rows = {}
+    for b in data.get("benchmarks", []):
+        if b.get("aggregate_name", "median") != "median":
+            continue
+        rows[b.get("run_name", b["name"])] = b
+    return data.get("context", {}), rows
+
+
+def seconds(b):
+    scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
+    return b["cpu_time"] * scale
+
+
+def si(x):
+    for unit, factor in (("G", 1e9), ("M", 1e6), ("k", 1e3)):
+        if abs(x) >= factor:
+            return f"{x / factor:.3g}{unit}"
+    return f"{x:.3g}"
+
+
+def faster_or_slower(ours, theirs):
+    """Our time against OCCT's, in words: "4.1x faster" or "3.1x slower"."""
+    return f"{theirs / ours:.1f}x faster" if theirs >= ours else f"{ours / theirs:.1f}x slower"
+
+
+def against_occt(rows, occt_name):
+    """(name parts, ours, OCCT's) for every "<kind>/<shape>/ours[/<size>]" whose OCCT twin ran too."""
+    for name, b in rows.items():
+        parts = name.split("/")
+        if len(parts) < 3 or parts[2] != "ours":
+            continue
+        o = rows.get("/".join(parts[:2] + [occt_name] + parts[3:]))
+        if o is not None:
+            yield parts, b, o
+
+
+class Table:
+    def __init__(self):
+        self.rows = [("benchmark", "ours", "OCCT", "ours/OCCT", "target", "status")]
+        self.verdicts = []
+
+    def row(self, *cells, verdict=None):
+        if verdict is not None:
+            self.verdicts.append(verdict)
+        cells = tuple(str(c) for c in cells)
+        self.rows.append(cells + ("",) * (len(self.rows[0]) - len(cells)))
+
+    def print(self, header):
+        widths = [max(len(r[i]) for r in self.rows) for i in range(len(self.rows[0]))]
+        print()
+        print(header)
+        for k, r in enumerate(self.rows):
+            print("  ".join(c.ljust(w) if i == 0 else c.rjust(w) for i, (c, w) in enumerate(zip(r, widths))))
+            if k == 0:
+                print("  ".join("-" * w for w in widths))
+        print(f"\n{self.verdicts.count('PASS')} targets met, {self.verdicts.count('FAIL')} missed")
+
+
+def evaluation_rows(table, rows):
+    """Points per second, ours against GeomAdaptor_Surface (the target) and Geom_BSplineSurface."""
+    for name, b in rows.items():
+        parts = name.split("/")
+        if len(parts) < 5 or parts[3] != "ours":
+            continue
+        base, n = "/".join(parts[:3]), parts[4]
+        ours = b["points_per_second"]
+        for other, target in (("GeomAdaptor_Surface", 3.0), ("Geom_BSplineSurface", None)):
+            o = rows.get(f"{base}/{other}/{n}")
+            if o is None:
+                continue
+            ratio = ours / o["points_per_second"]
+            status = "" if target is None else ("PASS" if ratio >= target else "FAIL")
+            table.row(f"{base} {n}x{n} vs {other}", si(ours) + " pt/s", si(o["points_per_second"]) + " pt/s",
+                      f"{ratio:.1f}x", ">= 3x" if target else "", status, verdict=status or None)
+        p, a = rows.get(f"{base}/ours_portable/{n}"), rows.get(f"{base}/GeomAdaptor_Surface/{n}")
+        if p and a:
+            table.row(f"{base} {n}x{n} portable(SSE2) vs GeomAdaptor", si(p["points_per_second"]) + " pt/s",
+                      si(a["points_per_second"]) + " pt/s", f"{p['points_per_second'] / a['points_per_second']:.1f}x")
+
+
+def tessellation_rows(table, rows):
+    """Speed-up over BRepMesh, triangle counts, deviation against the tolerance."""
+    for parts, b, o in against_occt(rows, "BRepMesh"):
+        speedup = seconds(o) / seconds(b)
+        label = f"tess/{parts[1]} tol 1e-{parts[3]}"
+        ok = speedup >= 10 and b["triangles"] <= o["triangles"] and b["deviation_over_tolerance"] <= 1
+        status = "PASS" if ok else "FAIL"
+        table.row(label + " time", f"{seconds(b) * 1e3:.3g} ms", f"{seconds(o) * 1e3:.3g} ms",
+                  f"{speedup:.2f}x faster", ">= 10x", status, verdict=status)
+        table.row(label + " triangles", si(b["triangles"]), si(o["triangles"]),
+                  f"{b['triangles'] / o['triangles']:.2f}", "<= 1", "")
+        table.row(label + " deviation/tol", f"{b['deviation_over_tolerance']:.3f}",
+                  f"{o['deviation_over_tolerance']:.3f}", "", "ours <= 1", "")
+
+
+def profile_rows(table, rows):
+    """Revolve's and extrude's crossing test against BRepCheck_Analyzer on the same cap face."""
+    for parts, b, o in against_occt(rows, "BRepCheck"):
+        table.row(f"profile/{parts[1]} ({b['spans']:.0f} spans) check vs BRepCheck_Analyzer(cap)",
+                  f"{seconds(b) * 1e6:.3g} us", f"{seconds(o) * 1e6:.3g} us", faster_or_slower(seconds(b), seconds(o)))
+
+
+def properties_rows(table, rows):
+    """Volume and area against BRepGProp (its fixed rule, then Eps 1e-12), with each answer's error."""
+    for occt_name in ("BRepGProp", "BRepGProp_eps"):
+        for parts, b, o in against_occt(rows, occt_name):
+            label = f"{parts[0]}/{parts[1]} vs {occt_name}"
+            table.row(label + " time", f"{seconds(b) * 1e6:.3g} us", f"{seconds(o) * 1e6:.3g} us",
+                      faster_or_slower(seconds(b), seconds(o)))
+            table.row(label + " relative error", f"{b['relative_error']:.1e}", f"{o['relative_error']:.1e}", "")
+
+
+def export_rows(table, rows):
+    """Writing meshes has no OCCT counterpart: triangles per second against the target."""
+    for name, b in rows.items():
+        parts = name.split("/")
+        rate = b["triangles_per_second"]
+        target = 2e6 if parts[1] == "scad" else None
+        status = "" if target is None else ("PASS" if rate >= target else "FAIL")
+        table.row(f"export/{parts[1]} {si(float(parts[2]))} triangles", si(rate) + " tri/s", "-",
+                  f"{rate / target:.2f} of target" if target else "", ">= 2M tri/s" if target else "", status,
+                  verdict=status or None)
+
+
+SECTIONS = (("evaluation", evaluation_rows), ("tessellation", tessellation_rows), ("profile_check", profile_rows),
+            ("properties", properties_rows), ("export", export_rows))
+
+
+def main(results, cores):
+    loaded = {program: load(results, program) for program in PROGRAMS}
+    context = next((c for c, _ in loaded.values() if c), {})
+    table = Table()
+    for program, section in SECTIONS:
+        section(table, loaded[program][1])
+    table.print(f"ratbez benchmarks: nproc = {cores}, single-threaded, CPU time medians; "
+                f"grid kernels: {context.get('ratbez_grid_kernels', '?')}; "
+                f"CPU {context.get('mhz_per_cpu', '?')} MHz, load average {context.get('load_avg', '?')}")
+    return table
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: report.py RESULTS_DIR CORES")
+    main(sys.argv[1], sys.argv[2])
