@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
-# Every test: the Release build of build/ with all suites (C++ core/occt/openscad/cli/reliability, Python,
-# FreeCAD headless and GUI, the OpenSCAD binary), then the C++ suites again in build-asan under
-# AddressSanitizer and UndefinedBehaviorSanitizer (Python and FreeCAD stay out: ASan cannot be preloaded
-# into them), then every libFuzzer target for a bounded time (scripts/fuzz.sh).
-# Runs unattended (CI=true, no stdin); exits non-zero when anything fails.
-# Run as root on Debian 12: bash scripts/test.sh
-# (RATBEZ_BUILD_DIR and RATBEZ_ASAN_DIR override build/ and build-asan/, RATBEZ_JOBS the -j 2.)
+# Every test, in four stages, each timed (the wall times are printed at the end):
+#  1. build:     scripts/setup.sh (installs what is missing, builds build/ in Release with tests and bench);
+#  2. release:   ctest on build/: every suite (C++ core/occt/openscad/cli/reliability, Python, FreeCAD headless
+#                and GUI, the OpenSCAD binary, the bench table), with the 10,000 randomized round trips;
+#  3. sanitizers: the C++ suites again in build-asan/ under AddressSanitizer + UndefinedBehaviorSanitizer
+#                (-O1, as ASan recommends; Python and FreeCAD stay out: ASan cannot be preloaded into them),
+#                with 1,000 round trips (100 of each 1,000-case shard) plus every seed that ever failed;
+#  4. fuzzing:   every libFuzzer target for a bounded time (scripts/fuzz.sh).
+# Budget: at most 15 minutes on 2 cores with a warm ccache. Runs unattended (CI=true, no stdin); exits
+# non-zero when anything fails. Run as root on Debian 12: bash scripts/test.sh
+# (RATBEZ_BUILD_DIR and RATBEZ_ASAN_DIR override build/ and build-asan/, RATBEZ_JOBS the -j 2,
+# RATBEZ_FUZZ_SECONDS the 20 s per fuzz target; RATBEZ_ROUND_TRIP_CASES sets the cases per shard of both runs.)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 exec </dev/null
@@ -19,32 +24,52 @@ export QTWEBENGINE_DISABLE_SANDBOX=1
 logs="$build/test-logs"
 status=0
 
+# Wall time of each stage, printed together at the end.
+stage_names=() stage_seconds=()
+stage_started=0 stage_name=""
+begin_stage() {
+  stage_name="$1"
+  stage_started=$(date +%s)
+  echo "== $1: $2"
+}
+end_stage() {
+  stage_names+=("$stage_name")
+  stage_seconds+=($(($(date +%s) - stage_started)))
+}
+started=$(date +%s)
+
+begin_stage build "scripts/setup.sh (Release build of $build/)"
 bash scripts/setup.sh
 mkdir -p "$logs"
+end_stage
 
-echo "== ctest: Release build ($build/)"
+begin_stage release "ctest on $build/, every suite"
 ctest --test-dir "$build" --output-on-failure -j "$jobs" 2>&1 | tee "$logs/release.txt" || status=1
+end_stage
 
-echo "== sanitizers: Debug build with ASan + UBSan ($asan/), C++ suites only"
+begin_stage sanitizers "ASan + UBSan build ($asan/) and its ctest, C++ suites only"
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
-cmake -S . -B "$asan" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DRATBEZ_SANITIZE=ON \
-  -DRATBEZ_WITH_PYTHON=OFF -DRATBEZ_TEST_FREECAD=OFF -DRATBEZ_TEST_OPENSCAD=OFF -DRATBEZ_BUILD_BENCH=OFF >/dev/null
+cmake -S . -B "$asan" -G Ninja -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g -O1" -DRATBEZ_SANITIZE=ON \
+  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE -DRATBEZ_WITH_PYTHON=OFF -DRATBEZ_TEST_FREECAD=OFF \
+  -DRATBEZ_TEST_OPENSCAD=OFF -DRATBEZ_BUILD_BENCH=OFF >/dev/null
 if cmake --build "$asan" -j "$jobs"; then
   ctest --test-dir "$asan" --output-on-failure -j "$jobs" 2>&1 | tee "$logs/asan.txt" || status=1
 else
   echo "test.sh: the sanitizer build failed" | tee "$logs/asan.txt"
   status=1
 fi
+end_stage
 
-echo "== fuzzing: each libFuzzer target for a bounded time (scripts/fuzz.sh)"
+begin_stage fuzzing "each libFuzzer target for ${RATBEZ_FUZZ_SECONDS:-20} s (scripts/fuzz.sh)"
 if ! bash scripts/fuzz.sh "${RATBEZ_FUZZ_SECONDS:-20}" 2>&1 | tee "$logs/fuzz.txt"; then
   echo "test.sh: fuzzing found a problem (see $logs/fuzz.txt)"
   status=1
 fi
+end_stage
 
-# One closing line for both runs, from ctest's own "N% tests passed, F tests failed out of T" lines.
+# One closing line for both ctest runs, from ctest's own "N% tests passed, F tests failed out of T" lines.
 passed=0 failed=0
 for log in "$logs/release.txt" "$logs/asan.txt"; do
   line=$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1 || true)
@@ -60,5 +85,11 @@ for log in "$logs/release.txt" "$logs/asan.txt"; do
 done
 [ "$failed" -eq 0 ] || status=1
 [ "$passed" -gt 0 ] || status=1
+
+echo "== wall time per stage"
+for i in "${!stage_names[@]}"; do
+  printf '  %-11s %4d s\n' "${stage_names[$i]}" "${stage_seconds[$i]}"
+done
+printf '  %-11s %4d s\n' total $(($(date +%s) - started))
 echo "ratbez: $passed passed, $failed failed"
 exit "$status"

@@ -44,10 +44,10 @@ namespace ratbez::reliability {
 namespace {
 
 #if defined(__SANITIZE_ADDRESS__)
-constexpr int default_cases_per_shard = 50;
+constexpr int default_cases_per_shard = 100;
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-constexpr int default_cases_per_shard = 50;
+constexpr int default_cases_per_shard = 100;
 #else
 constexpr int default_cases_per_shard = 1000;
 #endif
@@ -311,7 +311,7 @@ class RoundTrip : public ::testing::TestWithParam<int> {};
 TEST_P(RoundTrip, Shard) { run_shard(GetParam(), 3.0); }
 
 // Every seed that ever failed above, with every stage (as case index 0), so that each stays covered in
-// the sanitizer build too, whose shards run only the first 50 cases of each thousand.
+// the sanitizer build too, whose shards run only the first 100 cases of each thousand.
 TEST(RoundTrip, FoundSeeds) {
     constexpr std::uint64_t found[] = {20261122, 20261232, 20261262, 20261322, 20261332, 20261342, 20261372,
                                        20261421, 20261482, 20261992, 20264282, 20266302, 20266752, 20268472,

@@ -367,32 +367,27 @@ Vec3 NurbsSurface::normal(double u, double v) const {
 
 // ---- isocurves -----------------------------------------------------------------------------------------
 
-NurbsCurve NurbsSurface::isocurve_u(double u0) const {
-    // C_{u0}(v) = H{ sum_j (sum_i N_{i,p}(u0) P^w_ij) N_{j,q}(v) }: the columns collapsed by the u basis.
-    const int span = span_of(degree_u_, knots_u_, u0, "u");
-    Scratch<double, 32> basis_buffer(to_size(degree_u_) + 1);
-    const std::span<double> basis = basis_buffer.values();
-    basis_functions(span, u0, degree_u_, knots_u_, basis);
-    std::vector<Vec4> q(to_size(columns_));
-    for (int j = 0; j < columns_; ++j)
-        for (std::size_t k = 0; k < basis.size(); ++k)
-            q[to_size(j)] += basis[k] * homogeneous_point(span - degree_u_ + static_cast<int>(k), j);
-    if (!rational_) reset_polynomial_weights(q);
-    return NurbsCurve(degree_v_, knots_v_, std::move(q), rational_, 0);
-}
+NurbsCurve NurbsSurface::isocurve_u(double u0) const { return isocurve(true, u0); }
+NurbsCurve NurbsSurface::isocurve_v(double v0) const { return isocurve(false, v0); }
 
-NurbsCurve NurbsSurface::isocurve_v(double v0) const {
-    // C_{v0}(u) = H{ sum_i (sum_j N_{j,q}(v0) P^w_ij) N_{i,p}(u) }: the rows collapsed by the v basis.
-    const int span = span_of(degree_v_, knots_v_, v0, "v");
-    Scratch<double, 32> basis_buffer(to_size(degree_v_) + 1);
+NurbsCurve NurbsSurface::isocurve(bool fixed_u, double t0) const {
+    // C_{u0}(v) = H{ sum_j (sum_i N_{i,p}(u0) P^w_ij) N_{j,q}(v) }: every column collapsed by the u basis
+    // at u0 into one control point of a curve in v; the same with the roles swapped for C_{v0}(u).
+    const int degree = fixed_u ? degree_u_ : degree_v_;
+    const int span = span_of(degree, fixed_u ? knots_u_ : knots_v_, t0, fixed_u ? "u" : "v");
+    Scratch<double, 32> basis_buffer(to_size(degree) + 1);
     const std::span<double> basis = basis_buffer.values();
-    basis_functions(span, v0, degree_v_, knots_v_, basis);
-    std::vector<Vec4> q(to_size(rows_));
-    for (int i = 0; i < rows_; ++i)
-        for (std::size_t l = 0; l < basis.size(); ++l)
-            q[to_size(i)] += basis[l] * homogeneous_point(i, span - degree_v_ + static_cast<int>(l));
+    basis_functions(span, t0, degree, fixed_u ? knots_u_ : knots_v_, basis);
+    const int count = fixed_u ? columns_ : rows_;
+    std::vector<Vec4> q(to_size(count));
+    for (int line = 0; line < count; ++line)
+        for (std::size_t k = 0; k < basis.size(); ++k) {
+            const int across = span - degree + static_cast<int>(k);
+            q[to_size(line)] += basis[k] * (fixed_u ? homogeneous_point(across, line) : homogeneous_point(line, across));
+        }
     if (!rational_) reset_polynomial_weights(q);
-    return NurbsCurve(degree_u_, knots_u_, std::move(q), rational_, 0);
+    return fixed_u ? NurbsCurve(degree_v_, knots_v_, std::move(q), rational_, 0)
+                   : NurbsCurve(degree_u_, knots_u_, std::move(q), rational_, 0);
 }
 
 // ---- knot insertion and decomposition ------------------------------------------------------------------

@@ -59,6 +59,7 @@ public:
 private:
     NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
                  std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);
+    NurbsCurve isocurve(bool fixed_u, double t0) const;  // isocurve_u (fixed_u) and isocurve_v
     int degree_u_ = 0, degree_v_ = 0;
     std::vector<double> knots_u_, knots_v_;
     int rows_ = 0, columns_ = 0;
