@@ -432,7 +432,7 @@ public:
             }
             const detail::SurfaceEvaluator& s = *evaluators_[f];
             for (const auto& [seed_distance, seed] : best[f])
-                if (take(f, detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, seed->u, seed->v, 50, enough))) return result;
+                if (take(f, detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, seed->u, seed->v, {50, enough}))) return result;
         }
         // Each cell's best seed, with Newton over the whole face and kept inside the cell. Where extreme
         // weights crowd a face into a thin band of parameters, the distance is a long narrow valley in
@@ -467,11 +467,11 @@ public:
             for (const auto& [seed_distance, seed_pointer] : *candidates) {
                 if (lower_bound >= result) break;
                 const Seed& seed = *seed_pointer;
-                if (take(seed.face, detail::newton_foot_on_surface(s, p, box, seed.u, seed.v, 50, enough))) return result;
+                if (take(seed.face, detail::newton_foot_on_surface(s, p, box, seed.u, seed.v, {50, enough}))) return result;
             }
             const auto& firsts = best[first.face];
             if (std::none_of(firsts.begin(), firsts.end(), [&](const Candidate& c) { return c.second == &first; }))
-                if (take(first.face, detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, first.u, first.v, 50, enough))) return result;
+                if (take(first.face, detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, first.u, first.v, {50, enough}))) return result;
         }
         return result;
     }
@@ -481,7 +481,7 @@ public:
     double upper_bound(const Vec3& p, std::uint32_t face, Foot& warm, double enough) const {
         if (!regions_[face].curves.empty()) return regions_[face].distance_to(p);
         const detail::SurfaceEvaluator& s = *evaluators_[face];
-        warm = detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, warm.u, warm.v, 4, enough);
+        warm = detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, warm.u, warm.v, {4, enough});
         return warm.distance;
     }
 

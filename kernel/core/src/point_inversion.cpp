@@ -42,16 +42,17 @@ Step descent_step(double a, double b, double c, double f, double g, bool hold_u,
 }  // namespace
 
 ParameterFoot newton_foot_on_surface(const SurfaceEvaluator& s, const Vec3& p, const ParameterBox& box, double u,
-                                     double v, int max_iterations, double good_enough) {
+                                     double v, const NewtonStop& stop) {
     const Interval du = box.u, dv = box.v;
     ParameterFoot best{u, v, distance(s.point(u, v), p)};
-    // Tries the step from best; true when it lowered the distance by a visible move.
-    auto try_step = [&](Step step, const Vec3& su, const Vec3& sv, bool& moved) {
-        const double reach = norm(su * step.u + sv * step.v);
+    // Tries the step from best (S there: `at`); true when it lowered the distance by a visible move.
+    auto try_step = [&](Step step, const Vec3& at, const Vec3& su, const Vec3& sv, bool& moved) {
+        double reach = norm(su * step.u + sv * step.v);
         if (!(reach > 0) || !std::isfinite(reach)) return false;
         const double shrink = std::min(1.0, 2 * best.distance / reach);
-        step.u *= shrink, step.v *= shrink;
-        for (int halving = 0; halving < 40; ++halving) {
+        step.u *= shrink, step.v *= shrink, reach *= shrink;
+        const double noise = 1e-15 * (norm(at) + best.distance);
+        for (int halving = 0; halving < 40 && (!stop.at_rounding || reach > noise); ++halving, reach *= 0.5) {
             const double nu = std::clamp(best.u + step.u, du.min, du.max);
             const double nv = std::clamp(best.v + step.v, dv.min, dv.max);
             const double dist = distance(s.point(nu, nv), p);
@@ -64,7 +65,7 @@ ParameterFoot newton_foot_on_surface(const SurfaceEvaluator& s, const Vec3& p, c
         }
         return false;
     };
-    for (int iteration = 0; iteration < max_iterations && best.distance > good_enough; ++iteration) {
+    for (int iteration = 0; iteration < stop.max_iterations && best.distance > stop.good_enough; ++iteration) {
         const SurfaceJet d = s.jet(best.u, best.v);
         const DistanceGradient e = distance_gradient(d.s, d.su, d.sv, p);
         const bool hold_u = (best.u <= du.min && e.f > 0) || (best.u >= du.max && e.f < 0);
@@ -73,8 +74,8 @@ ParameterFoot newton_foot_on_surface(const SurfaceEvaluator& s, const Vec3& p, c
         const double ha = e.a + dot(e.r, d.suu), hb = e.b + dot(e.r, d.suv), hc = e.c + dot(e.r, d.svv);
         bool moved = false;
         const bool newton_ok = ha > 0 && hc > 0 && ha * hc - hb * hb > 0 &&
-                               try_step(descent_step(ha, hb, hc, e.f, e.g, hold_u, hold_v), d.su, d.sv, moved);
-        if (!newton_ok && !try_step(descent_step(e.a, e.b, e.c, e.f, e.g, hold_u, hold_v), d.su, d.sv, moved)) break;
+                               try_step(descent_step(ha, hb, hc, e.f, e.g, hold_u, hold_v), d.s, d.su, d.sv, moved);
+        if (!newton_ok && !try_step(descent_step(e.a, e.b, e.c, e.f, e.g, hold_u, hold_v), d.s, d.su, d.sv, moved)) break;
         if (!moved) break;
     }
     return best;
@@ -85,10 +86,11 @@ ParameterFoot newton_foot_on_surface(const SurfaceEvaluator& s, const Vec3& p, c
 // Newton step still overshot, and the search stopped at a knot that was no foot, where the side test of
 // deviation.cpp's planar regions then judged a point inside a cap as outside (seed 20268692: 16x the
 // tolerance).
-double newton_foot_on_curve(const NurbsCurve& curve, const Vec3& p, const Interval& box, double t) {
+double newton_foot_on_curve(const NurbsCurve& curve, const Vec3& p, const Interval& box, double t,
+                            const NewtonStop& stop) {
     const Interval d = box;
     double best_t = t, best = distance(curve.point(t), p);
-    for (int iteration = 0; iteration < 30; ++iteration) {
+    for (int iteration = 0; iteration < stop.max_iterations; ++iteration) {
         const auto der = curve.derivatives(best_t, 2);
         const Vec3 r = der[0] - p;
         const double f = dot(r, der[1]);
@@ -97,7 +99,8 @@ double newton_foot_on_curve(const NurbsCurve& curve, const Vec3& p, const Interv
         if (!(fp > 0)) break;
         double step = -f / fp;
         bool improved = false;
-        for (int halving = 0; halving < 60; ++halving) {
+        const double noise = 1e-15 * (norm(der[0]) + best);
+        for (int halving = 0; halving < 60 && (!stop.at_rounding || std::abs(step) * norm(der[1]) > noise); ++halving) {
             const double nt = std::clamp(best_t + step, d.min, d.max);
             const double dist = distance(curve.point(nt), p);
             if (dist < best) {

@@ -42,20 +42,33 @@ inline DistanceGradient distance_gradient(const Vec3& s, const Vec3& su, const V
     return {r, dot(su, su), dot(su, sv), dot(sv, sv), dot(r, su), dot(r, sv)};
 }
 
+// When Newton's iteration below stops: after `max_iterations`, once the distance is at most
+// `good_enough` (all the caller needs to know), or without a step that lowers the distance; with
+// `at_rounding`, also once a step would move the point by less than the rounding of its coordinates,
+// where the line search otherwise halves on through rounding noise (40 or 60 times, an evaluation each)
+// before it gives up. deviation.cpp's results were measured without it; the foot then differs in its
+// last bits.
+struct NewtonStop {
+    int max_iterations = 50;
+    double good_enough = -1;
+    bool at_rounding = false;
+};
+
 // Newton's point inversion on a surface from (u, v) (The NURBS Book §6.1, Eq. 6.6-6.8), globalised so
 // that it converges to a local minimum of the distance from any start: each step is the Newton step
 // where the Hessian of F is positive definite, else (or when the Newton step finds no decrease) the
 // Gauss-Newton step, which is always a descent direction; it is shortened to a trust region (the foot
 // is at most 2 |S - P| from the current surface point, so no step needs to move S further) and then
 // halved until F decreases. A parameter on its bound with the gradient pushing out of `box` is held
-// there (the active set of projected Newton). Stops early once the distance is at most `good_enough`
-// (the caller only needs to know that), or after `max_iterations`. (u, v) stays in `box`.
+// there (the active set of projected Newton). (u, v) stays in `box`.
 ParameterFoot newton_foot_on_surface(const SurfaceEvaluator& s, const Vec3& p, const ParameterBox& box, double u,
-                                     double v, int max_iterations, double good_enough = -1);
+                                     double v, const NewtonStop& stop);
 
 // Newton on a curve for the nearest point to p from t, kept in `box` (the domain, or a piece of it), with
-// the step halved until the distance decreases; returns the foot's parameter.
-double newton_foot_on_curve(const NurbsCurve& curve, const Vec3& p, const Interval& box, double t);
+// the step halved until the distance decreases; returns the foot's parameter. (`stop.good_enough` is not
+// used.)
+double newton_foot_on_curve(const NurbsCurve& curve, const Vec3& p, const Interval& box, double t,
+                            const NewtonStop& stop = {.max_iterations = 30});
 
 // An upper bound of the distance from p to a surface, cheap: the distance to the surface point
 // `surface_point` at (u, v), improved (when above `good_enough`) by up to two plain Gauss–Newton steps
