@@ -30,6 +30,11 @@ namespace {
 // some 80 evaluations of the point per start for nothing).
 constexpr detail::NewtonStop kNewtonStop{.max_iterations = 50, .good_enough = -1, .at_rounding = true};
 
+// Newton starts per surface cell at most, nearest first: ordinary points have one or two; where the
+// distance is nearly the same over a whole cell (a point near a sphere's center) every seed qualifies,
+// and any start is as good.
+constexpr std::size_t kMaxStartsPerCell = 4;
+
 void require_finite_point(const Vec3& p) {
     require(is_finite(p), "point", [&] {
         return "must have finite coordinates (got " + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " +
@@ -434,6 +439,7 @@ SurfaceFoot search(const detail::SurfaceCells& data, const Vec3& p) {
                 starts.emplace_back(d, data.index(i, j));
             }
         std::sort(starts.begin(), starts.end());
+        if (starts.size() > kMaxStartsPerCell) starts.resize(kMaxStartsPerCell);
         for (const auto& [d, seed] : starts) from_seed(cell, data.us[seed / nv], data.vs[seed % nv]);
     }
     const Vec3 point = data.evaluator.point(best.u, best.v);

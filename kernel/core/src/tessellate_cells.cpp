@@ -92,7 +92,8 @@ constexpr auto kBarycentric = sixths_barycentric();
 double triangle_error(const SurfaceEvaluator& s, const ParameterBox& domain, const CellTriangle& t, double good_enough) {
     double worst = 0;
     for (const auto& b : kBarycentric) {
-        const auto [u, v] = triangle_parameters(t, b);
+        double u = 0, v = 0;
+        std::tie(u, v) = triangle_parameters(t, b);
         const Vec3 p = b[0] * t[0]->point + b[1] * t[1]->point + b[2] * t[2]->point;
         worst = std::max(worst, gauss_newton_bound(s, p, domain, u, v, s.point(u, v),
                                                    [&] { return s.first_derivatives(u, v); }, good_enough));
