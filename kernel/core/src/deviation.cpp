@@ -4,7 +4,8 @@
 // is measured by point inversion: the nearest seed of a precomputed surface sampling (found through a
 // uniform spatial grid) starts Newton's method on the two orthogonality conditions
 // (S - P) . S_u = (S - P) . S_v = 0 (Piegl and Tiller, The NURBS Book, §6.1, Eq. 6.6–6.8), clamped to the
-// face's domain, with a step-halving line search so it never walks uphill. Planar faces are handled
+// face's domain, with a step-halving line search so it never walks uphill (point_inversion.hpp, shared
+// with closest_point.hpp and the tessellator). Planar faces are handled
 // exactly: the distance to the trimmed plane region is the distance to the plane where the foot lies
 // inside the loops, else the distance to the nearest boundary curve (Newton on the curve). Seeds are
 // placed per weight-certified cell of each face (see detail::weight_cuts), and Newton also runs inside the
@@ -30,132 +31,20 @@
 #include <vector>
 
 #include "cubature.hpp"
+#include "point_inversion.hpp"
 #include "polygon_triangulation.hpp"
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/bezier_surface.hpp"
 #include "ratbez/box.hpp"
+#include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
 #include "surface_evaluator.hpp"
 
 namespace ratbez {
 namespace {
 
-struct Foot {
-    double u = 0, v = 0, distance = std::numeric_limits<double>::infinity();
-};
-
-// A descent step (step_u, step_v) for F = |S - P|^2 / 2 from the 2x2 system [a b; b c] (du, dv) = -(f, g),
-// where (f, g) = (S - P) . (S_u, S_v) is F's gradient. A parameter sitting on its bound with the gradient
-// pushing it out of the domain is held there and the system solved for the other one (the active set of
-// projected Newton, Bertsekas 1982): the full step would be clamped back and could then point uphill,
-// which stalled the search on faces whose nearest point lies on their boundary (a profile joint).
-struct Step {
-    double u = 0, v = 0;
-};
-Step descent_step(double a, double b, double c, double f, double g, bool hold_u, bool hold_v) {
-    // Marquardt damping, relative to each diagonal entry, keeps the solve finite where a partial
-    // vanishes (poles, apexes). A damping shared by both (1e-12 (a + c)) swamped the smaller entry where
-    // extreme weights make one partial 1e8 times the other (a profile span crowded into 1e-8 of its
-    // parameters): the step along the other direction all but vanished and Newton stopped 10x the
-    // tolerance from the foot (seed 20268482).
-    const double floor = 1e-20 * (a + c) + 1e-300;
-    a += 1e-12 * a + floor, c += 1e-12 * c + floor;
-    if (hold_u && hold_v) return {};
-    if (hold_u) return {0, -g / c};
-    if (hold_v) return {-f / a, 0};
-    // Solved with the diagonal scaled to 1 (Jacobi), so that a * c - b * b does not lose the
-    // determinant to cancellation when the two partials differ by many orders of magnitude.
-    const double su = std::sqrt(a), sv = std::sqrt(c);
-    const double r = b / (su * sv);
-    const double det = 1 - r * r;
-    if (!(det > 0)) return {};
-    const double fu = f / su, gv = g / sv;
-    return {-(fu - r * gv) / det / su, -(gv - r * fu) / det / sv};
-}
-
-// The parameter box a point inversion is clamped to: the face's domain, or one cell of it.
-struct ParameterBox {
-    Interval u, v;
-};
-
-// Newton's point inversion on a surface from (u, v) (The NURBS Book §6.1, Eq. 6.6-6.8), globalised so
-// that it converges to a local minimum of the distance from any start: each step is the Newton step
-// where the Hessian of F is positive definite, else (or when the Newton step finds no decrease) the
-// Gauss-Newton step, which is always a descent direction; it is shortened to a trust region (the foot
-// is at most 2 |S - P| from the current surface point, so no step needs to move S further) and then
-// halved until F decreases. Stops early once the distance is at most `good_enough` (the caller only
-// needs to know that), or after `max_iterations`. (u, v) stays in `box`.
-Foot invert_on_surface(const detail::SurfaceEvaluator& s, const Vec3& p, const ParameterBox& box, double u, double v,
-                       int max_iterations, double good_enough = -1) {
-    const Interval du = box.u, dv = box.v;
-    Foot best{u, v, distance(s.point(u, v), p)};
-    // Tries the step from best; true when it lowered the distance by a visible move.
-    auto try_step = [&](Step step, const Vec3& su, const Vec3& sv, bool& moved) {
-        const double reach = norm(su * step.u + sv * step.v);
-        if (!(reach > 0) || !std::isfinite(reach)) return false;
-        const double shrink = std::min(1.0, 2 * best.distance / reach);
-        step.u *= shrink, step.v *= shrink;
-        for (int halving = 0; halving < 40; ++halving) {
-            const double nu = std::clamp(best.u + step.u, du.min, du.max);
-            const double nv = std::clamp(best.v + step.v, dv.min, dv.max);
-            const double dist = distance(s.point(nu, nv), p);
-            if (dist < best.distance) {
-                moved = std::abs(nu - best.u) + std::abs(nv - best.v) > 1e-15 * ((du.max - du.min) + (dv.max - dv.min));
-                best = {nu, nv, dist};
-                return true;
-            }
-            step.u *= 0.5, step.v *= 0.5;
-        }
-        return false;
-    };
-    for (int iteration = 0; iteration < max_iterations && best.distance > good_enough; ++iteration) {
-        const detail::SurfaceJet d = s.jet(best.u, best.v);
-        const Vec3 r = d.s - p;
-        const double f = dot(r, d.su), g = dot(r, d.sv);
-        const bool hold_u = (best.u <= du.min && f > 0) || (best.u >= du.max && f < 0);
-        const bool hold_v = (best.v <= dv.min && g > 0) || (best.v >= dv.max && g < 0);
-        const double a = dot(d.su, d.su), b = dot(d.su, d.sv), c = dot(d.sv, d.sv);
-        const double ha = a + dot(r, d.suu), hb = b + dot(r, d.suv), hc = c + dot(r, d.svv);
-        bool moved = false;
-        const bool newton_ok = ha > 0 && hc > 0 && ha * hc - hb * hb > 0 &&
-                               try_step(descent_step(ha, hb, hc, f, g, hold_u, hold_v), d.su, d.sv, moved);
-        if (!newton_ok && !try_step(descent_step(a, b, c, f, g, hold_u, hold_v), d.su, d.sv, moved)) break;
-        if (!moved) break;
-    }
-    return best;
-}
-
-// Newton on a curve for the nearest point to p, clamped to the domain. The step is halved up to 60
-// times (not 12): where weights crowd a span into a sliver of its parameters, the curve turns through a
-// half circle within 1e-6 of the domain, a step of 1/4096 of the Newton step still overshot, and the
-// search stopped at a knot that was no foot, where the side test of PlanarRegion then judged a point
-// inside a cap as outside (seed 20268692: 16x the tolerance).
-double invert_on_curve(const NurbsCurve& curve, const Vec3& p, double t) {
-    const Interval d = curve.domain();
-    double best_t = t, best = distance(curve.point(t), p);
-    for (int iteration = 0; iteration < 30; ++iteration) {
-        const auto der = curve.derivatives(best_t, 2);
-        const Vec3 r = der[0] - p;
-        const double f = dot(r, der[1]);
-        double fp = dot(der[1], der[1]) + dot(r, der[2]);
-        if (fp <= 0) fp = dot(der[1], der[1]);
-        if (!(fp > 0)) break;
-        double step = -f / fp;
-        bool improved = false;
-        for (int halving = 0; halving < 60; ++halving) {
-            const double nt = std::clamp(best_t + step, d.min, d.max);
-            const double dist = distance(curve.point(nt), p);
-            if (dist < best) {
-                improved = std::abs(nt - best_t) > 1e-15 * (d.max - d.min);
-                best = dist, best_t = nt;
-                break;
-            }
-            step *= 0.5;
-        }
-        if (!improved) break;
-    }
-    return best_t;
-}
+using detail::ParameterBox;
+using Foot = detail::ParameterFoot;
 
 // The interior knot at t (up to rounding, where Newton settles on a corner), else NaN. Only a knot can
 // be a corner of the curve; deciding the side there by the tangent of one span misjudged points
@@ -173,10 +62,7 @@ double interior_corner(const NurbsCurve& curve, double t) {
 // segment's end tangent is parallel to its end leg). Legs of zero length (repeated control points)
 // are skipped.
 std::pair<Vec3, Vec3> knot_legs(const NurbsCurve& curve, double k) {
-    const Interval d = curve.domain();
-    std::vector<double> breaks;
-    for (double knot : curve.knots())
-        if (knot >= d.min && knot <= d.max && (breaks.empty() || knot > breaks.back())) breaks.push_back(knot);
+    const std::vector<double> breaks = breakpoints(curve.degree(), curve.knots());
     const auto at = std::find(breaks.begin(), breaks.end(), k);
     const std::vector<BezierCurve> segments = curve.bezier_segments();
     const auto b = static_cast<std::size_t>(at - breaks.begin());
@@ -232,7 +118,8 @@ struct PlanarRegion {
         }
         if (nearest == nullptr) return std::abs(height);
         std::size_t index = nearest->curve;
-        double t = invert_on_curve(*curves[index].curve, p, nearest->ta + fraction * (nearest->tb - nearest->ta));
+        double t = detail::newton_foot_on_curve(*curves[index].curve, p, curves[index].curve->domain(),
+                                               nearest->ta + fraction * (nearest->tb - nearest->ta));
         Vec3 foot = curves[index].curve->point(t);
         {
             // A foot at an end of the curve is a corner of the loop only if the neighbouring curve does
@@ -252,7 +139,7 @@ struct PlanarRegion {
                 const Interval od = c.curve->domain();
                 // The neighbour's end at the joint: its loop end (arrival) or loop start (departure).
                 const double joint = arrival != c.reversed ? od.max : od.min;
-                const double other_t = invert_on_curve(*c.curve, p, joint);
+                const double other_t = detail::newton_foot_on_curve(*c.curve, p, od, joint);
                 const Vec3 other_foot = c.curve->point(other_t);
                 const double other_end = 1e-12 * (od.max - od.min);
                 const bool interior = other_t > od.min + other_end && other_t < od.max - other_end;
@@ -316,16 +203,8 @@ struct PlanarRegion {
     }
 };
 
-// Weights crowd a rational span's geometry into a small part of its parameter interval (a segment with
-// end weights 1e-3 and 1e3 runs almost all of its length for t within 1e-6 of one end), where seeds
-// and polyline vertices at uniform parameters do not fall: Newton then starts far from the foot and
-// settles in another local minimum, and the measured "deviation" is that wrong distance (seeds
-// 20261122, 20261232, 20261332, 20261372 of the round trip test at weights 10^+-3: 3x to 10x the
-// tolerance, the true distance within it). So seeds go per weight-certified piece (detail::weight_cuts),
-// where uniform parameters spread over the piece's geometry.
-// 2^-48 of a span is near the resolution of its parameters; a piece that small is not split further.
-constexpr int kMaxHalvings = 48;
-
+// The polyline of a planar face's boundary goes per weight-certified piece of each span, like the seeds
+// (point_inversion.hpp): uniform parameters over a span crowded by its weights miss the crowded geometry.
 // `count` parameters per certified piece of the span [t0, t1] (the piece's start included, its end not).
 void add_certified_params(double t0, double t1, const std::vector<double>& cuts, int count, std::vector<double>& out) {
     for (std::size_t c = 0; c + 1 < cuts.size(); ++c)
@@ -357,14 +236,12 @@ PlanarRegion make_region(const Face& face) {
         // 64 segments per knot span (at least 8 per weight-certified piece of it): fine enough that the
         // nearest segment lies on the nearest curve.
         std::vector<double> params;
-        std::vector<double> breaks;
-        for (double k : curve.knots())
-            if (k >= d.min && k <= d.max && (breaks.empty() || k > breaks.back())) breaks.push_back(k);
+        const std::vector<double> breaks = breakpoints(curve.degree(), curve.knots());
         const std::vector<BezierCurve> segments = curve.bezier_segments();
         for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
             std::vector<double> weights;
             for (const Vec4& pw : segments[b].homogeneous_points()) weights.push_back(pw.w);
-            const std::vector<double> cuts = detail::weight_cuts({weights}, kMaxHalvings);
+            const std::vector<double> cuts = detail::weight_cuts({weights}, detail::kMaxHalvings);
             const int count = std::max(8, 64 / static_cast<int>(cuts.size() - 1));
             add_certified_params(breaks[b], breaks[b + 1], cuts, count, params);
         }
@@ -380,71 +257,8 @@ struct Seed {
     Vec3 point;
     std::uint32_t face;
     double u, v;
-    std::uint32_t patch;  // the face's cell (pair of weight-certified pieces, see SeedParams) the seed lies in
+    std::uint32_t patch;  // the face's cell (pair of weight-certified pieces, detail::SeedParams) the seed lies in
 };
-
-// Seed parameters along one direction: a few per knot span (the span's ends included once), so that
-// every Bézier patch of the face has seeds of its own however short its span is in parameter (a
-// rational profile piece can crowd a whole span into a sliver of the domain; with seeds spread
-// uniformly over the domain it had none, and Newton from the neighbouring span's seeds settled in that
-// span's local minimum, many times farther away). Within a span the seeds go per weight-certified
-// piece (detail::weight_cuts), for the same reason one level down; the pieces of the two directions make the
-// face's cells, in which point inversion is well conditioned (see DeviationMeter::distance_to_solid).
-struct SeedParams {
-    std::vector<double> params;
-    std::vector<std::uint32_t> piece;  // per parameter: the index of its piece
-    std::vector<Interval> pieces;      // the weight-certified pieces, in order
-};
-
-// `patches` are the face's Bézier patches (A5.7), `along_u` the direction.
-SeedParams seed_params(const std::vector<std::vector<BezierSurface>>& patches, bool along_u, Interval domain,
-                       const std::vector<double>& knots, int degree) {
-    std::vector<double> breaks;
-    for (double k : knots)
-        if (k >= domain.min && k <= domain.max && (breaks.empty() || k > breaks.back())) breaks.push_back(k);
-    const std::size_t spans = breaks.size() - 1;
-    const auto per_span = static_cast<int>(std::clamp<std::size_t>(96 / spans, 2, static_cast<std::size_t>(3 * std::max(degree, 1) + 3)));
-    SeedParams out;
-    for (std::size_t k = 0; k < spans; ++k) {
-        // The weight lines of span k along the direction: every row (along v) or column (along u) of
-        // every patch in that span.
-        std::vector<std::vector<double>> lines;
-        const std::size_t others = along_u ? patches[k].size() : patches.size();
-        for (std::size_t o = 0; o < others; ++o) {
-            const BezierSurface& patch = along_u ? patches[k][o] : patches[o][k];
-            const int rows = patch.degree_u() + 1, columns = patch.degree_v() + 1;
-            const int line_count = along_u ? columns : rows, length = along_u ? rows : columns;
-            for (int line = 0; line < line_count; ++line) {
-                std::vector<double> weights;
-                for (int i = 0; i < length; ++i) {
-                    const int r = along_u ? i : line, c = along_u ? line : i;
-                    weights.push_back(patch.homogeneous_points()[static_cast<std::size_t>(r * columns + c)].w);
-                }
-                lines.push_back(std::move(weights));
-            }
-        }
-        const std::vector<double> cuts = detail::weight_cuts(lines, kMaxHalvings);
-        const int count = cuts.size() == 2 ? per_span : std::max(2, per_span / 2);
-        const double t0 = breaks[k], t1 = breaks[k + 1];
-        for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
-            const double a = c == 0 ? t0 : t0 + (t1 - t0) * cuts[c];
-            const double b = c + 2 == cuts.size() ? t1 : t0 + (t1 - t0) * cuts[c + 1];
-            for (int i = 0; i < count; ++i) {
-                out.params.push_back(a + (b - a) * i / count);
-                out.piece.push_back(static_cast<std::uint32_t>(out.pieces.size()));
-            }
-            // A span's last piece stops one rounding short of the next span: at the knot itself the
-            // evaluator takes the next span's derivatives, and Newton, clamped to this piece, read a
-            // gradient pushing out of it there and stalled on the piece's end (seed 20261482: S_v
-            // 2e5 inside the piece, 5 at the knot).
-            const bool before_knot = c + 2 == cuts.size() && k + 1 < spans;
-            out.pieces.push_back({a, before_knot ? std::nextafter(b, a) : b});
-        }
-    }
-    out.params.push_back(breaks.back());  // the domain's end exactly
-    out.piece.push_back(static_cast<std::uint32_t>(out.pieces.size() - 1));
-    return out;
-}
 
 // Uniform grid over the seeds: nearest-seed and radius queries visit only nearby cells.
 class SeedGrid {
@@ -534,8 +348,8 @@ public:
             const NurbsSurface& s = face.surface();
             const Interval du = s.domain_u(), dv = s.domain_v();
             const std::vector<std::vector<BezierSurface>> patches = s.bezier_patches();
-            const SeedParams seeds_u = seed_params(patches, true, du, s.knots_u(), s.degree_u());
-            const SeedParams seeds_v = seed_params(patches, false, dv, s.knots_v(), s.degree_v());
+            const detail::SeedParams seeds_u = detail::seed_params(patches, true, s.knots_u(), s.degree_u());
+            const detail::SeedParams seeds_v = detail::seed_params(patches, false, s.knots_v(), s.degree_v());
             const std::vector<double>& us = seeds_u.params;
             const std::vector<double>& vs = seeds_v.params;
             cells_[f] = {seeds_u.pieces, seeds_v.pieces};
@@ -618,7 +432,7 @@ public:
             }
             const detail::SurfaceEvaluator& s = *evaluators_[f];
             for (const auto& [seed_distance, seed] : best[f])
-                if (take(f, invert_on_surface(s, p, {s.domain_u(), s.domain_v()}, seed->u, seed->v, 50, enough))) return result;
+                if (take(f, detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, seed->u, seed->v, {50, enough}))) return result;
         }
         // Each cell's best seed, with Newton over the whole face and kept inside the cell. Where extreme
         // weights crowd a face into a thin band of parameters, the distance is a long narrow valley in
@@ -653,11 +467,11 @@ public:
             for (const auto& [seed_distance, seed_pointer] : *candidates) {
                 if (lower_bound >= result) break;
                 const Seed& seed = *seed_pointer;
-                if (take(seed.face, invert_on_surface(s, p, box, seed.u, seed.v, 50, enough))) return result;
+                if (take(seed.face, detail::newton_foot_on_surface(s, p, box, seed.u, seed.v, {50, enough}))) return result;
             }
             const auto& firsts = best[first.face];
             if (std::none_of(firsts.begin(), firsts.end(), [&](const Candidate& c) { return c.second == &first; }))
-                if (take(first.face, invert_on_surface(s, p, {s.domain_u(), s.domain_v()}, first.u, first.v, 50, enough))) return result;
+                if (take(first.face, detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, first.u, first.v, {50, enough}))) return result;
         }
         return result;
     }
@@ -667,7 +481,7 @@ public:
     double upper_bound(const Vec3& p, std::uint32_t face, Foot& warm, double enough) const {
         if (!regions_[face].curves.empty()) return regions_[face].distance_to(p);
         const detail::SurfaceEvaluator& s = *evaluators_[face];
-        warm = invert_on_surface(s, p, {s.domain_u(), s.domain_v()}, warm.u, warm.v, 4, enough);
+        warm = detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, warm.u, warm.v, {4, enough});
         return warm.distance;
     }
 
