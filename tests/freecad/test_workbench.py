@@ -392,6 +392,14 @@ def test_revolve_matches_part_revolution_and_options():
     line.Z1 = line.Z2 = -2
     doc.recompute()
     check(abs(about.AxisPoint.z + 2) < 1e-12 and about.isValid(), "the axis follows its edge")
+    # About a datum line: the Z axis of an App::Origin.
+    origin = doc.addObject("App::Origin", "Origin")
+    doc.recompute()
+    z_axis = next(o for o in origin.OriginFeatures if o.Role == "Z_Axis")
+    datum = RatBez.make_revolve(doc, Profile=sketch, AxisReference=(z_axis, []), Angle=90)
+    check(datum.isValid() and (datum.AxisDirection - V(0, 0, 1)).Length < 1e-12, "axis from a datum line: " +
+          datum.getStatusString())
+    close(datum.ExactVolume, full_volume / 4, 1e-9, "quarter revolution about the datum line")
 
 
 @suite.test
