@@ -8,6 +8,8 @@ undo step: the transaction FreeCAD keeps open while an edit started by a command
 Cancel of an edit restores the old values. OK is refused while the object does not recompute.
 """
 
+import contextlib
+
 import FreeCAD as App
 import FreeCADGui as Gui
 from PySide import QtCore, QtGui
@@ -159,11 +161,8 @@ class TaskPanel:
         self.status.setWordWrap(True)
         self.status.setStyleSheet("color: #c00000")
         self.layout.addRow(self.status)
-        self.loading = True
-        try:
+        with self.filling():
             self.load()
-        finally:
-            self.loading = False
         self.proxy.quiet = True
         self.show_status()
         self.shown()
@@ -183,6 +182,21 @@ class TaskPanel:
         """After the form is filled and after each preview (the Revolve axis drawing)."""
 
     # -- live preview -----------------------------------------------------------------------------
+
+    @contextlib.contextmanager
+    def filling(self):
+        """While the panel writes its own widgets: their change signals are not the user's edits."""
+        self.loading = True
+        try:
+            yield
+        finally:
+            self.loading = False
+
+    def reload(self):
+        """Properties -> widgets again (the panel changed properties itself), then the preview."""
+        with self.filling():
+            self.load()
+        self.changed()
 
     def changed(self, *_):
         if self.loading:
@@ -376,6 +390,26 @@ class ProfilePanel(TaskPanel):
         self.profile_label.setText(describe_link(link))
         self.changed()
 
+    def add_line_modes(self, label, modes, tooltip):
+        """The combo box of the ways to give the axis or direction (modes: (name, text) pairs), and below
+        it the label that names the picked edge or datum line when that is the way."""
+        combo = QtGui.QComboBox()
+        for _, text in modes:
+            combo.addItem(translate(text))
+        combo.setToolTip(tooltip)
+        combo.currentIndexChanged.connect(self.changed)
+        self.layout.addRow(translate(label), combo)
+        self.reference_label = QtGui.QLabel()
+        self.layout.addRow("", self.reference_label)
+        return combo
+
+    def show_reference(self):
+        """The picked line's name, or how to pick one, while picking_line()."""
+        if self.picking_line():
+            self.reference_label.setText(describe_link(self.reference) if self.reference
+                                         else translate("Select a straight edge or a datum line"))
+        self.reference_label.setVisible(self.picking_line())
+
     def picking_line(self):
         """Whether a click on a straight edge or datum line in the 3D view or the tree sets the line."""
         return False
@@ -418,17 +452,10 @@ class RevolvePanel(ProfilePanel):
 
     def build(self):
         self.add_profile_row()
-        self.axis_mode = QtGui.QComboBox()
-        for _, text in _AXIS_MODES:
-            self.axis_mode.addItem(translate(text))
-        self.axis_mode.setToolTip(translate(
+        self.axis_mode = self.add_line_modes("Axis", _AXIS_MODES, translate(
             "The axis: the profile plane's vertical or horizontal axis (a sketch's V or H axis), a global "
             "axis through the origin, a straight edge or datum line picked in the 3D view or the tree, or "
             "any point and direction"))
-        self.axis_mode.currentIndexChanged.connect(self.changed)
-        self.layout.addRow(translate("Axis"), self.axis_mode)
-        self.reference_label = QtGui.QLabel()
-        self.layout.addRow("", self.reference_label)
         self.point, self.direction = self.add_vectors(["Axis point", "Axis direction"], ["mm", ""],
                                                       [self.tooltip("AxisPoint"), self.tooltip("AxisDirection")])
         self.angle = self.add_number("Angle", "deg", 1e-6, 360.0, self.tooltip("Angle"))
@@ -479,10 +506,7 @@ class RevolvePanel(ProfilePanel):
         custom = self.mode() == "Custom"
         self.point.set_enabled(custom)
         self.direction.set_enabled(custom)
-        if self.mode() == "Reference":
-            self.reference_label.setText(describe_link(self.reference) if self.reference
-                                         else translate("Select a straight edge or a datum line"))
-        self.reference_label.setVisible(self.mode() == "Reference")
+        self.show_reference()
 
     def store(self):
         obj = self.obj
@@ -504,14 +528,11 @@ class RevolvePanel(ProfilePanel):
         obj.Reversed = self.reversed.isChecked()
 
     def shown(self):
-        self.loading = True
-        try:
+        with self.filling():
             if self.mode() != "Custom":
                 self.point.set_value(self.obj.AxisPoint)
                 self.direction.set_value(self.obj.AxisDirection)
             self.update_fields()
-        finally:
-            self.loading = False
         self.draw_axis()
 
     def draw_axis(self):
@@ -567,14 +588,7 @@ class ExtrudePanel(ProfilePanel):
 
     def build(self):
         self.add_profile_row()
-        self.direction_mode = QtGui.QComboBox()
-        for _, text in _DIRECTION_MODES:
-            self.direction_mode.addItem(translate(text))
-        self.direction_mode.setToolTip(self.tooltip("DirectionMode"))
-        self.direction_mode.currentIndexChanged.connect(self.changed)
-        self.layout.addRow(translate("Direction"), self.direction_mode)
-        self.reference_label = QtGui.QLabel()
-        self.layout.addRow("", self.reference_label)
+        self.direction_mode = self.add_line_modes("Direction", _DIRECTION_MODES, self.tooltip("DirectionMode"))
         self.direction, = self.add_vectors(["Custom direction"], [""], [self.tooltip("Direction")])
         self.distance = self.add_number("Distance", "mm", -1e9, 1e9, self.tooltip("Distance"))
         self.reversed = self.add_check("Reversed", self.tooltip("Reversed"))
@@ -599,10 +613,7 @@ class ExtrudePanel(ProfilePanel):
 
     def update_fields(self):
         self.direction.set_enabled(self.mode() == "Custom")
-        if self.mode() == "Edge":
-            self.reference_label.setText(describe_link(self.reference) if self.reference
-                                         else translate("Select a straight edge or a datum line"))
-        self.reference_label.setVisible(self.mode() == "Edge")
+        self.show_reference()
 
     def store(self):
         obj = self.obj
@@ -725,13 +736,6 @@ class BezierCurvePanel(TaskPanel):
         self.obj.Poles, self.obj.Weights = poles, weights
         self.reload()
 
-    def reload(self):
-        self.loading = True
-        try:
-            self.load()
-        finally:
-            self.loading = False
-        self.changed()
 
 
 class BezierSurfacePanel(TaskPanel):
@@ -766,12 +770,7 @@ class BezierSurfacePanel(TaskPanel):
             return
         # The feature regenerates a net of the new size over the same extent (BezierSurface.onChanged).
         self.obj.DegreeU, self.obj.DegreeV = self.degrees[0].value(), self.degrees[1].value()
-        self.loading = True
-        try:
-            self.load()
-        finally:
-            self.loading = False
-        self.changed()
+        self.reload()
 
     def store(self):
         self.obj.DegreeU, self.obj.DegreeV = self.degrees[0].value(), self.degrees[1].value()
