@@ -199,9 +199,9 @@ def export_openscad(obj, path, tolerance=None):
 
 
 def check_occt(obj):
-    """ratbez.occt_check of the object's solid: a dict with at least valid, max_deviation, volume and
-    occt_volume."""
-    return dict(kernel.ratbez().occt_check(solid_of(obj)))
+    """ratbez.occt_check of the object's solid in the representation FreeCAD gets (bezier_faces): a dict
+    with at least valid, max_deviation, volume and occt_volume."""
+    return dict(kernel.ratbez().occt_check(solid_of(obj), bezier_faces=True))
 
 
 _REPORT_ROWS = (
