@@ -14,11 +14,14 @@ class RatBezWorkbench(FreeCADGui.Workbench):
         self.__class__.Icon = resources.icon("RatBezWorkbench")
 
     def Initialize(self):
-        from ratbez_wb import commands
+        from ratbez_wb import commands, preferences_page
+        from ratbez_wb.i18n import QT_TRANSLATE_NOOP
         commands.register()
-        self.appendToolbar("RatBez", commands.CREATE_COMMAND_NAMES)
-        self.appendToolbar("RatBez tools", commands.TOOL_COMMAND_NAMES)
-        self.appendMenu("RatBez", commands.CREATE_COMMAND_NAMES + ["Separator"] + commands.TOOL_COMMAND_NAMES)
+        self.appendToolbar(QT_TRANSLATE_NOOP("Workbench", "RatBez"), commands.CREATE_COMMAND_NAMES)
+        self.appendToolbar(QT_TRANSLATE_NOOP("Workbench", "RatBez tools"), commands.TOOL_COMMAND_NAMES)
+        self.appendMenu(QT_TRANSLATE_NOOP("Workbench", "RatBez"),
+                        commands.CREATE_COMMAND_NAMES + ["Separator"] + commands.TOOL_COMMAND_NAMES)
+        FreeCADGui.addPreferencePage(preferences_page.PreferencesPage, "RatBez")
 
     def Activated(self):
         pass

@@ -21,10 +21,11 @@ import FreeCAD as App
 import Part
 
 from ratbez_wb import conversion, features, kernel
+from ratbez_wb import text as text_tools
 
 __all__ = ["make_bezier_curve", "make_bezier_surface", "make_cylinder", "make_cone", "make_sphere",
            "make_torus", "make_revolve", "make_extrude", "is_solid", "solid_of", "export_openscad",
-           "check_occt", "format_check_report", "export"]
+           "check_occt", "format_check_report", "check_passed", "safe_label", "export"]
 
 _DEFAULT_NAMES = {
     "bezier_curve": "BezierCurve", "bezier_surface": "BezierSurface", "cylinder": "Cylinder",
@@ -37,14 +38,12 @@ _COMMON_PROPERTIES = ("Label", "Placement")
 def _profile_link(doc, value):
     """A PropertyLinkSub value from what a script naturally passes as a profile: a document object
     (a sketch, a wire feature), (object, "Edge1") or (object, ["Edge1", ...]), or a bare Part shape
-    (an edge or wire, which is added to the document as a hidden Part::Feature)."""
+    (an edge, wire or face, which is added to the document as a Part::Feature)."""
     if value is None:
         return None
     if isinstance(value, Part.Shape):
         holder = doc.addObject("Part::Feature", "Profile")
         holder.Shape = value
-        if App.GuiUp and holder.ViewObject:
-            holder.ViewObject.Visibility = False
         return (holder, [])
     if isinstance(value, (tuple, list)):
         if len(value) != 2:
@@ -64,6 +63,10 @@ def _make(kind, doc, properties):
             ", ".join(sorted(allowed))))
     if doc is None:
         doc = App.ActiveDocument or App.newDocument()
+    properties = dict(properties)
+    if "Profile" in properties:
+        properties["Profile"] = _profile_link(doc, properties["Profile"])
+    _complete(kind, properties)
     obj = doc.addObject("Part::FeaturePython", _DEFAULT_NAMES[kind])
     cls(obj)
     if App.GuiUp:
@@ -72,13 +75,30 @@ def _make(kind, doc, properties):
     # Degrees first, so that a net given together with them is not replaced by a default net.
     ordered = sorted(properties.items(), key=lambda item: item[0] not in ("DegreeU", "DegreeV"))
     for name, value in ordered:
-        if name == "Profile":
-            value = _profile_link(doc, value)
-            if App.GuiUp and value is not None and value[0] is not None and value[0].ViewObject:
-                value[0].ViewObject.Visibility = False
         setattr(obj, name, value)
+    profile = properties.get("Profile")
+    if App.GuiUp and profile is not None and conversion.is_whole_profile_object(profile):
+        profile[0].ViewObject.Visibility = False
     doc.recompute()
     return obj
+
+
+def _complete(kind, properties):
+    """Defaults that depend on other properties: a revolve's axis is the profile's vertical axis (as for a
+    sketch in Sketcher and PartDesign) unless one is given; an extrusion given a Direction or a
+    DirectionReference goes along it."""
+    if kind == "revolve" and properties.get("Profile") and not (
+            {"AxisPoint", "AxisDirection", "AxisReference"} & set(properties)):
+        try:
+            point, direction = conversion.revolve_axis(properties["Profile"])
+        except conversion.ProfileError:
+            return  # not planar: the recompute says so
+        properties["AxisPoint"], properties["AxisDirection"] = point, direction
+    if kind == "extrude" and "DirectionMode" not in properties:
+        if properties.get("DirectionReference"):
+            properties["DirectionMode"] = "Edge"
+        elif "Direction" in properties:
+            properties["DirectionMode"] = "Custom"
 
 
 def make_bezier_curve(doc=None, **properties):
@@ -112,13 +132,16 @@ def make_torus(doc=None, **properties):
 
 
 def make_revolve(doc=None, **properties):
-    """A solid of revolution. Properties: Profile (sketch, wire, edge, (object, subnames) or a Part
-    shape), AxisPoint, AxisDirection, Angle (degrees)."""
+    """A solid of revolution. Properties: Profile (sketch, wire, edge, face, (object, subnames) or a Part
+    shape), AxisReference (a straight edge or datum line) or AxisPoint and AxisDirection (default: the
+    profile's vertical axis, as a sketch revolves), Angle (degrees, in (0, 360]), Symmetric, Reversed."""
     return _make("revolve", doc, properties)
 
 
 def make_extrude(doc=None, **properties):
-    """A prism. Properties: Profile (closed and planar), Direction (zero: the profile's normal), Distance."""
+    """A prism. Properties: Profile (closed and planar; inner loops are holes), DirectionMode ("Normal",
+    "Edge" along DirectionReference, "Custom" along Direction; given a Direction, Custom), Distance
+    (negative: the other way), Reversed, Symmetric."""
     return _make("extrude", doc, properties)
 
 
@@ -141,6 +164,11 @@ def _placement_matrix_rows(placement):
     m = placement.toMatrix()
     return [[m.A11, m.A12, m.A13, m.A14], [m.A21, m.A22, m.A23, m.A24],
             [m.A31, m.A32, m.A33, m.A34], [0.0, 0.0, 0.0, 1.0]]
+
+
+def safe_label(text):
+    """A Label fit for one line of a file or message (text.one_line: control characters escaped)."""
+    return text_tools.one_line(text)
 
 
 def export_openscad(obj, path, tolerance=None):
@@ -166,28 +194,37 @@ def export_openscad(obj, path, tolerance=None):
                         for row in _placement_matrix_rows(placement))
     with open(path, "w") as target:
         target.write("// RatBez '{}' with its FreeCAD Placement\nmultmatrix([\n  {}]) {{\n{}\n}}\n".format(
-            obj.Label, rows, body))
+            safe_label(obj.Label), rows, body))
     return path
 
 
 def check_occt(obj):
-    """ratbez.occt_check of the object's solid: a dict with at least valid, max_deviation, volume and
-    occt_volume."""
-    return dict(kernel.ratbez().occt_check(solid_of(obj)))
+    """ratbez.occt_check of the object's solid in the representation FreeCAD gets (bezier_faces): a dict
+    with at least valid, max_deviation, volume and occt_volume."""
+    return dict(kernel.ratbez().occt_check(solid_of(obj), bezier_faces=True))
+
+
+_REPORT_ROWS = (
+    ("valid", "BRepCheck valid"), ("closed", "shell closed"), ("max_deviation", "max |ours - OCCT| (mm)"),
+    ("max_analytic_deviation", "max distance to the analytic surface (mm)"), ("volume", "volume, exact (mm^3)"),
+    ("occt_volume", "volume, OCCT (mm^3)"), ("closed_form_volume", "volume, closed form (mm^3)"),
+    ("area", "area, exact (mm^2)"), ("occt_area", "area, OCCT (mm^2)"), ("passed", "passed"),
+)
 
 
 def format_check_report(obj, report):
-    """A readable, multi-line text of a check_occt report."""
-    lines = ["RatBez OpenCASCADE check of '{}' ({}):".format(obj.Label, obj.Name)]
-    width = max((len(str(k)) for k in report), default=0)
-    for key, value in report.items():
-        if isinstance(value, float):
-            text = "{:.6g}".format(value)
-        elif isinstance(value, (list, tuple)):
-            text = "; ".join(str(v) for v in value) if value else "-"
-        else:
-            text = str(value)
-        lines.append("  {:<{}}  {}".format(str(key), width, text))
+    """A readable, multi-line text of a check_occt report: each quantity once, none that does not apply."""
+    lines = ["RatBez OpenCASCADE check of '{}' ({}):".format(safe_label(obj.Label), obj.Name)]
+    width = max(len(title) for _, title in _REPORT_ROWS)
+    for key, title in _REPORT_ROWS:
+        value = report.get(key)
+        if value is None:
+            continue
+        text = "{:.9g}".format(value) if isinstance(value, float) else ("yes" if value is True else
+                                                                       "no" if value is False else str(value))
+        lines.append("  {:<{}}  {}".format(title, width, text))
+    for failure in report.get("failures") or []:
+        lines.append("  FAILED: {}".format(failure))
     return "\n".join(lines) + "\n"
 
 

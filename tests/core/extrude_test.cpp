@@ -97,6 +97,61 @@ TEST(Extrude, ExtremeWeightsDoNotHideTheProfileFromTheAreaCheck) {
     }
 }
 
+TEST(Extrude, HolesGoThroughThePrism) {
+    // A 10 x 6 rectangle with a circular hole (radius 1.5) and a rounded-rectangle hole, in a random frame;
+    // the holes drawn in either orientation, the sweep either way and oblique.
+    const double w = 10, h = 6, r = 1.5;
+    const double hole_area = pi * r * r + (2 * 1.2 - (4 - pi) * 0.2 * 0.2);
+    for (int trial = 0; trial < 4; ++trial) {
+        const Frame f = frame_from_axis(random_point(10), random_unit());
+        const Profile outer = rounded_rectangle(f, w, h, 0.5, trial % 2 == 0);
+        const Profile round(std::vector<NurbsCurve>{circle(r, f.to_world({-2, 0, 0}), f.z_axis * (trial < 2 ? 1.0 : -1.0))});
+        const Frame shifted{f.to_world({2.5, 0, 0}), f.x_axis, f.y_axis, f.z_axis};
+        const Profile slot = rounded_rectangle(shifted, 2, 1.2, 0.2, trial % 3 == 0);
+        const double outer_area = w * h - (4 - pi) * 0.25;
+        const double d = uniform(0.5, 4);
+        const Vec3 direction = f.z_axis * (trial % 2 == 0 ? 1.0 : -1.0) + f.x_axis * (trial == 3 ? 0.5 : 0.0);
+        const Solid prism = extrude(outer, direction, d, {round, slot});
+        EXPECT_EQ(prism.faces().size(), 8u + 1u + 8u + 2u);
+        EXPECT_EQ(prism.euler_characteristic(), -2);  // genus 2
+        const double height = d * std::abs(dot(direction, f.z_axis)) / norm(direction);
+        const double volume = (outer_area - hole_area) * height;
+        EXPECT_LT(std::abs(prism.volume() - volume) / volume, 1e-10) << trial;
+        const double sign = trial % 2 == 0 ? 1.0 : -1.0;
+        if (trial < 3)
+            test::expect_outward(prism, [&](const Vec3& p) {
+                const Vec3 q = p - f.origin;
+                const double x = dot(q, f.x_axis), y = dot(q, f.y_axis), z = sign * dot(q, f.z_axis);
+                const double dx = std::max(std::abs(x) - (w / 2 - 0.5), 0.0), dy = std::max(std::abs(y) - (h / 2 - 0.5), 0.0);
+                const bool in_outer = std::hypot(dx, dy) < 0.5;
+                const bool in_round = std::hypot(x + 2, y) < r;
+                const double sx = std::max(std::abs(x - 2.5) - 0.8, 0.0), sy = std::max(std::abs(y) - 0.4, 0.0);
+                const bool in_slot = std::hypot(sx, sy) < 0.2;
+                return z > 0 && z < d && in_outer && !in_round && !in_slot;
+            }, 1e-7, 20);
+    }
+}
+
+TEST(Extrude, RefusesHolesThatAreNotInsideApartAndPlanar) {
+    const Profile square({line_segment({0, 0, 0}, {10, 0, 0}), line_segment({10, 0, 0}, {10, 6, 0}),
+                          line_segment({10, 6, 0}, {0, 6, 0}), line_segment({0, 6, 0}, {0, 0, 0})});
+    const auto hole = [](double radius, Vec3 centre) { return Profile(std::vector<NurbsCurve>{circle(radius, centre)}); };
+    const auto message = [&](const std::vector<Profile>& holes) {
+        return test::error_message([&] { extrude(square, {0, 0, 1}, 1.0, holes); });
+    };
+    // Crossing the outer boundary, outside it, nested in another hole, crossing another hole, off the plane, open.
+    EXPECT_TRUE(test::starts_with(message({hole(1.5, {9, 3, 0})}), "holes: piece 1 of the profile and piece 0 of hole 0"))
+        << message({hole(1.5, {9, 3, 0})});
+    EXPECT_TRUE(test::starts_with(message({hole(1, {20, 3, 0})}), "holes[0]: must lie inside the profile"));
+    EXPECT_TRUE(test::starts_with(message({hole(2, {3, 3, 0}), hole(1, {3, 3, 0})}), "holes[1]: lies inside holes[0]"));
+    EXPECT_TRUE(test::starts_with(message({hole(2, {3, 3, 0}), hole(1.5, {6, 3, 0})}), "holes: piece 0 of hole 0 and piece 0 of hole 1"));
+    EXPECT_TRUE(test::starts_with(message({hole(1, {3, 3, 0.5})}), "holes[0]: must be planar"));
+    EXPECT_TRUE(test::starts_with(message({Profile({arc(1, 0, 180, {3, 3, 0})})}), "holes[0]: must be closed"));
+    // A hole that touches the boundary in one point is refused too (the caps would not be faces).
+    EXPECT_TRUE(test::starts_with(message({hole(1, {1, 3, 0})}), "holes: piece 3 of the profile and piece 0 of hole 0"))
+        << message({hole(1, {1, 3, 0})});
+}
+
 TEST(Extrude, RejectsBadInputNamingTheArgument) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const Profile square({line_segment({0, 0, 0}, {1, 0, 0}), line_segment({1, 0, 0}, {1, 1, 0}),

@@ -161,5 +161,32 @@ TEST(ProfileCrossings, RevolveAndExtrudeRefuseACrossingProfile) {
     EXPECT_ERROR_NAMING(extrude(in_xy, {0, 0, 1}, 1.0), "profile");
 }
 
+TEST(ProfileCrossings, WindingNumberCountsTurnsAboutAPoint) {
+    const Vec3 o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0};
+    const Profile ccw(std::vector<NurbsCurve>{circle(2.0)});
+    EXPECT_EQ(winding_number(ccw, {0.5, -0.3, 0}, o, x, y, "p"), 1);
+    EXPECT_EQ(winding_number(ccw.reversed(), {0.5, -0.3, 0}, o, x, y, "p"), -1);
+    EXPECT_EQ(winding_number(ccw, {2.5, 0, 0}, o, x, y, "p"), 0);
+    // Near the curve (1e-9 inside and outside), and seen from the other side of the plane.
+    EXPECT_EQ(winding_number(ccw, {2 - 1e-9, 0, 0}, o, x, y, "p"), 1);
+    EXPECT_EQ(winding_number(ccw, {0, 2 + 1e-9, 0}, o, x, y, "p"), 0);
+    EXPECT_EQ(winding_number(ccw, {0.1, 0.1, 0}, o, y, x, "p"), -1);
+    // A non-convex star with extreme rational weights on one side: its reflex corners are outside.
+    std::vector<Vec3> star;
+    for (int k = 0; k < 10; ++k) {
+        const double r = k % 2 == 0 ? 1.0 : 0.4, a = k * 0.6283185307179586;
+        star.push_back({r * std::cos(a), r * std::sin(a), 0});
+    }
+    std::vector<NurbsCurve> pieces;
+    for (std::size_t i = 0; i < star.size(); ++i)
+        pieces.push_back(NurbsCurve::from_bezier(BezierCurve({star[i], star[(i + 1) % star.size()]}, {1e6, 1e-6})));
+    const Profile spiky(pieces);
+    EXPECT_EQ(winding_number(spiky, {0, 0, 0}, o, x, y, "p"), 1);
+    EXPECT_EQ(winding_number(spiky, {0.6 * std::cos(0.3141592653589793), 0.6 * std::sin(0.3141592653589793), 0}, o, x, y, "p"), 0);
+    EXPECT_EQ(winding_number(spiky, {0.3, 0.05, 0}, o, x, y, "p"), 1);
+    // A point on the curve cannot be decided.
+    EXPECT_ERROR_NAMING(winding_number(ccw, {2, 0, 0}, o, x, y, "holes"), "holes");
+}
+
 }  // namespace
 }  // namespace ratbez::detail

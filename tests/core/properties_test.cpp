@@ -97,6 +97,9 @@ TEST(Properties, FaceAreasAddUpAndPlanarCapsAreDisks) {
     EXPECT_NEAR(surface_area(cyl.faces()[1]), pi * 4, 1e-12);
     EXPECT_NEAR(surface_area(cyl.faces()[2]), pi * 4, 1e-12);
     EXPECT_NEAR(surface_area(cyl), 2 * pi * 2 * 5 + 8 * pi, 1e-11);
+    // An untrimmed surface by itself: the lateral face's surface, and a sphere's (4 pi r^2).
+    EXPECT_NEAR(surface_area(cyl.faces()[0].surface()), 2 * pi * 2 * 5, 1e-11);
+    EXPECT_NEAR(surface_area(sphere(3).faces()[0].surface()), 4 * pi * 9, 1e-11);
 }
 
 // ------------------------------------------------------------------------------ extreme weights

@@ -1,9 +1,13 @@
-"""GUI smoke test of the RatBez workbench, run as `xvfb-run ... freecad test_gui.py` by run_freecad.py.
+"""GUI test of the RatBez workbench, run as `xvfb-run ... freecad test_gui.py` by run_freecad.py: one
+FreeCAD session for every command.
 
-Activates the workbench, checks the commands' IsActive rules, runs every command on a fresh document
-(selecting what Revolve, Extrude, Export and Check need first), saves a screenshot of the 3D view to
-$RATBEZ_TEST_OUT/ratbez_gui.png, checks it is not blank, and checks that no Python exception reached
-the report view. A watchdog ends FreeCAD if anything hangs (a modal dialog, a crash in the loop).
+Each creating command runs through Gui.runCommand (with the selection it needs), opens its task panel,
+the test sets values in the panel's widgets, checks the live preview changed the object, saves a
+screenshot of the main window ($RATBEZ_TEST_OUT/gui/<command>.png, the 3D view painted in: Xvfb's grab
+of the window leaves the OpenGL view blank) and presses OK or Cancel through the panel's
+accept()/reject(). Also: double-click editing with Cancel and OK as one undo step each, the commands'
+IsActive rules, a refused selection leaving nothing behind, Export/Check, the preferences page, and no
+traceback in the report view. A watchdog ends FreeCAD if anything hangs (a modal dialog, a crash).
 """
 
 import math
@@ -18,14 +22,14 @@ import FreeCADGui as Gui  # noqa: E402
 import Part  # noqa: E402
 from PySide import QtCore, QtGui  # noqa: E402
 
-from harness import Suite, check, say  # noqa: E402
+from harness import Suite, check, close, say  # noqa: E402
 
 OUT = os.environ.get("RATBEZ_TEST_OUT", "/tmp")
-SCREENSHOT = os.path.join(OUT, "ratbez_gui.png")
+SHOTS = os.path.join(OUT, "gui")
 V = App.Vector
 PI = math.pi
 
-watchdog = threading.Timer(240, lambda: (say("RATBEZ_TEST_FAILED: watchdog fired"), os._exit(3)))
+watchdog = threading.Timer(170, lambda: (say("RATBEZ_TEST_FAILED: watchdog fired"), os._exit(3)))
 watchdog.daemon = True
 watchdog.start()
 
@@ -36,21 +40,20 @@ _output_params.SetBool("RedirectPythonOutput", True)
 _output_params.SetBool("checkShowReportViewOnError", False)
 
 suite = Suite()
-CREATE = ["RatBez_BezierCurve", "RatBez_BezierSurface", "RatBez_Cylinder", "RatBez_Cone",
-          "RatBez_Sphere", "RatBez_Torus"]
-ALL = CREATE + ["RatBez_Revolve", "RatBez_Extrude", "RatBez_ExportOpenSCAD", "RatBez_CheckOCCT"]
+PRIMITIVES = ["RatBez_Cylinder", "RatBez_Cone", "RatBez_Sphere", "RatBez_Torus"]
+CREATE = ["RatBez_BezierCurve", "RatBez_BezierSurface"] + PRIMITIVES + ["RatBez_Revolve", "RatBez_Extrude"]
+ALL = CREATE + ["RatBez_ExportOpenSCAD", "RatBez_CheckOCCT"]
+doc = None
 
 
 def report_text():
-    window = Gui.getMainWindow()
-    texts = [w.toPlainText() for w in window.findChildren(QtGui.QTextEdit)
-             if "report" in (w.objectName() + w.windowTitle()).lower()]
-    return "\n".join(texts)
+    return "\n".join(w.toPlainText() for w in Gui.getMainWindow().findChildren(QtGui.QTextEdit)
+                     if "report" in (w.objectName() + w.windowTitle()).lower())
 
 
-def report_widget_found():
-    return any("report" in (w.objectName() + w.windowTitle()).lower()
-               for w in Gui.getMainWindow().findChildren(QtGui.QTextEdit))
+def process_events():
+    for _ in range(5):
+        QtGui.QApplication.processEvents()
 
 
 def is_active(name):
@@ -59,94 +62,330 @@ def is_active(name):
     return command.isActive()
 
 
-def process_events():
-    for _ in range(5):
-        QtGui.QApplication.processEvents()
+def select(obj, *subs):
+    Gui.Selection.clearSelection()
+    if subs:
+        for sub in subs:
+            Gui.Selection.addSelection(obj, sub)
+    elif obj is not None:
+        Gui.Selection.addSelection(obj)
+    process_events()
 
 
-def run(name):
+def screenshot(name):
+    """The main window with the 3D view painted in, to SHOTS/name.png."""
+    Gui.ActiveDocument.ActiveView.viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    process_events()
+    window = Gui.getMainWindow()
+    pixmap = window.grab()
+    view = Gui.ActiveDocument.ActiveView
+    graphics = view.graphicsView()
+    corner = graphics.mapTo(window, QtCore.QPoint(0, 0))
+    view_image = os.path.join(SHOTS, name + ".view.png")
+    view.saveImage(view_image, graphics.width(), graphics.height(), "Current")
+    painter = QtGui.QPainter(pixmap)
+    painter.drawImage(corner, QtGui.QImage(view_image))
+    painter.end()
+    os.remove(view_image)
+    path = os.path.join(SHOTS, name + ".png")
+    pixmap.save(path)
+    image = QtGui.QImage(path)
+    check(not image.isNull(), "screenshot unreadable: " + path)
+    # The 3D view must show something besides its background gradient: count pixels far from the
+    # colour of their row's left border.
+    coloured = 0
+    for y in range(corner.y() + 10, corner.y() + graphics.height() - 10, 12):
+        background = QtGui.QColor(image.pixel(corner.x() + 3, y))
+        for x in range(corner.x() + 20, corner.x() + graphics.width() - 20, 12):
+            c = QtGui.QColor(image.pixel(x, y))
+            if abs(c.red() - background.red()) + abs(c.green() - background.green()) + abs(c.blue() - background.blue()) > 60:
+                coloured += 1
+    check(coloured > 40, "{}: the 3D view looks empty ({} pixels off the background)".format(name, coloured))
+    return path
+
+
+def run_command(name):
+    """Run a creating command; returns (new object, its open panel)."""
+    from ratbez_wb import task_panels
+    before = set(o.Name for o in doc.Objects)
     Gui.runCommand(name)
     process_events()
+    created = [o for o in doc.Objects if o.Name not in before]
+    check(len(created) == 1, "{} created {} objects".format(name, len(created)))
+    obj = created[0]
+    panel = task_panels.panel_of(obj)
+    check(Gui.Control.activeDialog() and panel is not None, name + ": no task panel")
+    check(obj.ViewObject.Proxy is not None, name + ": no view provider proxy")
+    return obj, panel
 
+
+def accept(panel, name):
+    status = panel.status.text()
+    check(panel.accept() is True, name + ": OK refused: " + status)
+    process_events()
+    check(not Gui.Control.activeDialog(), name + ": dialog still open after OK")
+
+
+def new_document(name):
+    global doc
+    for doc_name in list(App.listDocuments()):
+        App.closeDocument(doc_name)
+    doc = App.newDocument(name)
+    process_events()
+    return doc
+
+
+# ---------------------------------------------------------------------------------------------------
 
 @suite.test
-def test_workbench_activates_and_registers_commands():
+def test_workbench_registers_commands_and_preferences():
     Gui.activateWorkbench("RatBezWorkbench")
     process_events()
+    window = Gui.getMainWindow()
+    combo = window.findChild(QtGui.QDockWidget, "Combo View")
+    if combo is not None:
+        window.resizeDocks([combo], [430], QtCore.Qt.Horizontal)
+    os.makedirs(SHOTS, exist_ok=True)
     check(Gui.activeWorkbench().MenuText == "RatBez", "RatBez workbench active")
     for name in ALL:
         check(Gui.Command.get(name) is not None, name + " not registered")
-    check(report_widget_found(), "report view widget not found")
     for name in list(App.listDocuments()):
         App.closeDocument(name)
     process_events()
     for name in ALL:
         check(not is_active(name), name + " active without a document")
+    # The preferences page loads and saves the three settings.
+    from ratbez_wb import preferences, preferences_page
+    page = preferences_page.PreferencesPage()
+    page.loadSettings()
+    page.tolerance.setValue(0.05)
+    page.folder.setText(OUT)
+    page.tracebacks.setChecked(False)
+    page.saveSettings()
+    check(preferences.default_tolerance() == 0.05 and preferences.export_directory() == OUT, "preferences saved")
 
 
 @suite.test
-def test_every_command_on_a_fresh_document():
-    doc = App.newDocument("RatBezGui")
-    process_events()
-    for name in CREATE:
-        check(is_active(name), name + " inactive with a document")
-    for name in ("RatBez_Revolve", "RatBez_Extrude", "RatBez_ExportOpenSCAD", "RatBez_CheckOCCT"):
-        check(not is_active(name), name + " active with nothing selected")
-
-    spacing = 24.0
-    for index, name in enumerate(CREATE):
-        before = set(o.Name for o in doc.Objects)
-        run(name)
-        created = [o for o in doc.Objects if o.Name not in before]
-        check(len(created) == 1, "{} created {} objects".format(name, len(created)))
-        obj = created[0]
-        check(obj.isValid() and obj.Shape.isValid(), name + " made an invalid object")
-        check(obj.ViewObject.Proxy is not None, name + ": no view provider proxy")
-        obj.Placement = App.Placement(V(spacing * (index % 3), -spacing * (index // 3), 0), App.Rotation())
-    doc.recompute()
-
-    # A profile in the XZ plane, revolved (the command picks the Z axis: it lies in the sketch plane).
-    sketch = doc.addObject("Sketcher::SketchObject", "RevolveProfile")
-    sketch.Placement = App.Placement(V(0, 2 * spacing, 0), App.Rotation(V(1, 0, 0), 90))
-    sketch.addGeometry(Part.LineSegment(V(2, 0, 0), V(6, 0, 0)))
-    sketch.addGeometry(Part.ArcOfCircle(Part.Circle(V(6, 3, 0), V(0, 0, 1), 3), -PI / 2, PI / 2))
-    sketch.addGeometry(Part.LineSegment(V(6, 6, 0), V(2, 6, 0)))
-    sketch.addGeometry(Part.LineSegment(V(2, 6, 0), V(2, 0, 0)))
-    circle = doc.addObject("Sketcher::SketchObject", "ExtrudeProfile")
-    circle.Placement = App.Placement(V(spacing, 2 * spacing, 0), App.Rotation())
-    circle.addGeometry(Part.Circle(V(0, 0, 0), V(0, 0, 1), 4))
-    doc.recompute()
-
-    for name, profile in (("RatBez_Revolve", sketch), ("RatBez_Extrude", circle)):
-        Gui.Selection.clearSelection()
-        Gui.Selection.addSelection(profile)
+def test_primitives_through_their_task_panels():
+    new_document("Primitives")
+    dimensions = {"RatBez_Cylinder": ("Radius", 3.0), "RatBez_Cone": ("Radius2", 1.0),
+                  "RatBez_Sphere": ("Radius", 4.0), "RatBez_Torus": ("MinorRadius", 3.0)}
+    for index, name in enumerate(PRIMITIVES):
+        obj, panel = run_command(name)
+        volume = obj.Shape.Volume
+        prop, value = dimensions[name]
+        panel.dimensions[prop].set_value(value)
+        panel.center.set_value(V(30.0 * index, 0, 0))
         process_events()
-        check(is_active(name), name + " inactive with a sketch selected")
-        before = set(o.Name for o in doc.Objects)
-        run(name)
-        created = [o for o in doc.Objects if o.Name not in before]
-        check(len(created) == 1, "{} created {} objects".format(name, len(created)))
-        obj = created[0]
-        check(obj.isValid() and obj.Shape.isValid() and obj.Shape.isClosed(), name + " made a bad solid")
-        check(obj.Profile[0] == profile, name + ": profile not linked")
-        check(not profile.ViewObject.Visibility, name + ": profile still shown")
-    revolve = doc.getObject("Revolve")
-    check(abs(revolve.AxisPoint.y - 2 * spacing) < 1e-9 and abs(revolve.AxisDirection.z - 1) < 1e-9,
-          "Revolve's default axis is the Z axis through the sketch origin")
-
-    # A profile is not a valid selection for Export/Check; a RatBez solid is, and not for Revolve.
-    check(not is_active("RatBez_ExportOpenSCAD"), "Export active with a sketch selected")
-    cylinder = doc.getObject("Cylinder")
-    Gui.Selection.clearSelection()
-    Gui.Selection.addSelection(cylinder)
+        check(getattr(obj, prop).Value == value and obj.Center.x == 30.0 * index, name + ": fields not applied")
+        check(abs(obj.Shape.Volume - volume) > 1e-6 * volume, name + ": the preview did not change the shape")
+        close(obj.Shape.Volume, obj.ExactVolume, 1e-6, name + " Shape.Volume")
+        screenshot(name)
+        accept(panel, name)
+        check(doc.UndoNames[0].startswith("Create"), "{}: undo names {}".format(name, doc.UndoNames))
+    check(len(doc.UndoNames) == len(PRIMITIVES), "one undo step per primitive: {}".format(doc.UndoNames))
+    # A bad value shows in the panel, not the report view, and OK is refused until it is fixed.
+    torus = doc.getObject("Torus")
+    Gui.ActiveDocument.setEdit(torus.Name, 0)
     process_events()
+    from ratbez_wb import task_panels
+    panel = task_panels.panel_of(torus)
+    panel.dimensions["MinorRadius"].set_value(20.0)
+    process_events()
+    check("MinorRadius" in panel.status.text() and panel.status.isVisible(), "status: " + panel.status.text())
+    check(panel.accept() is False and Gui.Control.activeDialog(), "OK accepted an invalid torus")
+    panel.reject()
+    process_events()
+    check(torus.MinorRadius.Value == 3.0 and torus.isValid(), "Cancel restored the torus")
+    check("RatBez: Torus" not in report_text(), "a failure in an open panel went to the report view")
+
+
+@suite.test
+def test_bezier_curve_and_surface_tables():
+    new_document("Bezier")
+    curve, panel = run_command("RatBez_BezierCurve")
+    table = panel.poles.table
+    check(table.rowCount() == len(curve.Poles), "one row per pole")
+    table.item(1, 1).setText("9")
+    panel.poles.rational.setChecked(True)
+    table.item(1, 3).setText("2.5")
+    process_events()
+    check(curve.Poles[1].y == 9 and list(curve.Weights)[1] == 2.5, "table edits reach Poles and Weights")
+    check(curve.Shape.Edges[0].Curve.isRational(), "a rational curve after the weight")
+    before = len(curve.Poles)
+    panel.add_pole()
+    check(len(curve.Poles) == before + 1 and table.rowCount() == before + 1, "Add pole")
+    table.item(0, 3).setText("0")
+    process_events()
+    check("Weights: weight 1 of" in panel.status.text(), "status: " + panel.status.text())
+    table.item(0, 3).setText("1")
+    process_events()
+    screenshot("RatBez_BezierCurve")
+    accept(panel, "BezierCurve")
+    surface, panel = run_command("RatBez_BezierSurface")
+    panel.degrees[0].setValue(2)
+    process_events()
+    check(len(surface.Poles) == 3 * 4 and panel.poles.table.rowCount() == 12, "DegreeU 2: a 3 x 4 net")
+    panel.poles.table.item(5, 2).setText("7")
+    process_events()
+    check(surface.Poles[5].z == 7, "surface pole edited")
+    screenshot("RatBez_BezierSurface")
+    accept(panel, "BezierSurface")
+
+
+@suite.test
+def test_revolve_panel_axes_and_live_preview():
+    new_document("Revolve")
+    circle = doc.addObject("Part::Circle", "Circle")
+    circle.Radius = 2
+    circle.Placement.Base = V(5, 0, 0)
+    line = doc.addObject("Part::Line", "Line")
+    line.X1, line.Y1, line.Z1, line.X2, line.Y2, line.Z2 = -1, -3, 0, -1, 3, 0
+    doc.recompute()
+    check(not is_active("RatBez_Revolve"), "Revolve active with nothing selected")
+    select(circle)
+    check(is_active("RatBez_Revolve"), "Revolve inactive with a Part circle selected")
+    obj, panel = run_command("RatBez_Revolve")
+    check(panel.mode() == "Vertical" and (obj.AxisDirection - V(0, 1, 0)).Length < 1e-12, "vertical axis: Y")
+    check(not circle.ViewObject.Visibility, "the whole circle (a profile) is hidden")
+    close(obj.ExactVolume, 2 * PI * 5 * PI * 4, 1e-9, "ring")
+    panel.angle.set_value(270)
+    process_events()
+    close(obj.ExactVolume, 2 * PI * 5 * PI * 4 * 0.75, 1e-9, "ring after Angle 270")
+    # The X axis crosses the circle: the panel says so and OK is refused.
+    panel.axis_mode.setCurrentIndex(2)
+    process_events()
+    check("Profile:" in panel.status.text() and panel.accept() is False, "status: " + panel.status.text())
+    # Pick the line in the 3D view: the axis follows it (a line along Y at x = -1).
+    panel.axis_mode.setCurrentIndex(5)
+    select(line, "Edge1")
+    check(obj.AxisReference and obj.AxisReference[0] == line, "picked edge became AxisReference")
+    check(abs(obj.AxisPoint.x + 1) < 1e-12 and obj.isValid(), "axis along the line: {}".format(obj.AxisPoint))
+    close(obj.ExactVolume, 2 * PI * 6 * PI * 4 * 0.75, 1e-9, "ring about x = -1")
+    panel.axis_mode.setCurrentIndex(0)
+    panel.symmetric.setChecked(True)
+    process_events()
+    check(obj.isValid() and obj.Symmetric and not obj.AxisReference, "back to the vertical axis, symmetric")
+    check(panel.axis_node is not None, "the axis is drawn while the panel is open")
+    Gui.Selection.clearSelection()
+    path = screenshot("RatBez_Revolve")
+    say("README screenshot: " + path)
+    accept(panel, "Revolve")
+    check(panel.axis_node is None, "the axis drawing is removed with the panel")
+
+
+@suite.test
+def test_extrude_panel_holes_and_box_face():
+    new_document("Extrude")
+    plate = doc.addObject("Sketcher::SketchObject", "Plate")
+    for a, b in (((0, 0), (10, 0)), ((10, 0), (10, 6)), ((10, 6), (0, 6)), ((0, 6), (0, 0))):
+        plate.addGeometry(Part.LineSegment(V(*a, 0), V(*b, 0)))
+    plate.addGeometry(Part.Circle(V(3, 3, 0), V(0, 0, 1), 1.5))
+    plate.Placement.Base = V(0, 0, 20)
+    box = doc.addObject("Part::Box", "Box")
+    edge = doc.addObject("Part::Line", "Edge")
+    doc.recompute()
+    select(edge)
+    check(not is_active("RatBez_Extrude"), "Extrude active for a single straight edge (not closed)")
+    check(is_active("RatBez_Revolve"), "Revolve inactive for a straight edge")
+    select(box)
+    check(not is_active("RatBez_Extrude") and not is_active("RatBez_Revolve"), "active for a whole solid")
+    select(plate)
+    obj, panel = run_command("RatBez_Extrude")
+    area = 60 - PI * 2.25
+    close(obj.ExactVolume, area * 10, 1e-9, "plate with a hole, Distance 10")
+    panel.distance.set_value(4)
+    panel.reversed.setChecked(True)
+    process_events()
+    close(obj.ExactVolume, area * 4, 1e-9, "Distance 4")
+    check(abs(obj.Shape.BoundBox.ZMax - 20) < 1e-9, "Reversed: below the sketch")
+    panel.symmetric.setChecked(True)
+    process_events()
+    check(abs(obj.Shape.BoundBox.ZMax - 22) < 1e-9, "Symmetric")
+    panel.direction_mode.setCurrentIndex(2)
+    panel.direction.set_value(V(1, 0, 1))
+    process_events()
+    close(obj.ExactVolume, area * 4 / math.sqrt(2), 1e-9, "custom direction")
+    screenshot("RatBez_Extrude")
+    accept(panel, "Extrude")
+    # One face of a box: the box stays visible.
+    select(box, "Face6")
+    face, panel = run_command("RatBez_Extrude")
+    check(box.ViewObject.Visibility, "using one face of a box hid the box")
+    accept(panel, "Extrude of a box face")
+    close(face.ExactVolume, 1000, 1e-9, "box face extruded 10")
+
+
+@suite.test
+def test_cancel_and_double_click_edit_are_one_undo_step():
+    new_document("Undo")
+    circle = doc.addObject("Part::Circle", "Circle")
+    circle.Placement.Base = V(5, 0, 0)
+    doc.recompute()
+    steps = len(doc.UndoNames)
+    select(circle)
+    obj, panel = run_command("RatBez_Revolve")
+    name = obj.Name
+    panel.reject()
+    process_events()
+    check(doc.getObject(name) is None, "Cancel of a new revolve left it behind")
+    check(circle.ViewObject.Visibility, "Cancel did not show the profile again")
+    check(len(doc.UndoNames) == steps, "Cancel left an undo step: {}".format(doc.UndoNames))
+    Gui.Selection.clearSelection()
+    sphere, panel = run_command("RatBez_Sphere")
+    accept(panel, "Sphere")
+    steps = len(doc.UndoNames)
+    from ratbez_wb import task_panels
+    sphere.ViewObject.Proxy.doubleClicked(sphere.ViewObject)
+    process_events()
+    panel = task_panels.panel_of(sphere)
+    check(panel is not None, "double-click opened no panel")
+    panel.dimensions["Radius"].set_value(9)
+    process_events()
+    check(sphere.Radius.Value == 9, "preview")
+    panel.reject()
+    process_events()
+    check(sphere.Radius.Value == 5 and abs(sphere.Shape.Volume - 4 / 3 * PI * 125) < 1e-6, "Cancel restored Radius")
+    check(len(doc.UndoNames) == steps, "Cancel of an edit left an undo step: {}".format(doc.UndoNames))
+    Gui.ActiveDocument.setEdit(sphere.Name, 0)
+    process_events()
+    panel = task_panels.panel_of(sphere)
+    panel.dimensions["Radius"].set_value(2)
+    accept(panel, "edit")
+    check(len(doc.UndoNames) == steps + 1, "an edit is one undo step: {}".format(doc.UndoNames))
+    doc.undo()
+    doc.recompute()
+    check(sphere.Radius.Value == 5, "undo restored Radius 5")
+
+
+@suite.test
+def test_refused_selection_leaves_nothing_behind():
+    new_document("Refused")
+    holed = doc.addObject("Part::Feature", "Holed")
+    holed.Shape = Part.Face([Part.Wire(Part.makeCircle(2, V(5, 0, 0))), Part.Wire(Part.makeCircle(1, V(5, 0, 0)))])
+    doc.recompute()
+    select(holed)
+    check(is_active("RatBez_Revolve"), "Revolve is offered for a face (it cannot know about the hole cheaply)")
+    count = len(doc.Objects)
+    Gui.runCommand("RatBez_Revolve")
+    process_events()
+    check(len(doc.Objects) == count and not Gui.Control.activeDialog(), "a refused selection left an object")
+    check("RatBez: Revolve: Profile: the face has 1 hole" in report_text(), "refusal not reported")
+
+
+@suite.test
+def test_export_and_check_commands():
+    new_document("Tools")
+    Gui.Selection.clearSelection()
+    cylinder, panel = run_command("RatBez_Cylinder")
+    accept(panel, "Cylinder")
+    select(cylinder)
     for name in ("RatBez_ExportOpenSCAD", "RatBez_CheckOCCT"):
         check(is_active(name), name + " inactive with a RatBez solid selected")
-    check(not is_active("RatBez_Revolve"), "Revolve active with a RatBez solid selected")
-
-    run("RatBez_CheckOCCT")
+    Gui.runCommand("RatBez_CheckOCCT")
+    process_events()
     check("OpenCASCADE check of 'Cylinder'" in report_text(), "check report not in the report view")
-
     from ratbez_wb import dialogs
     path = os.path.join(OUT, "ratbez_gui_cylinder.scad")
     if os.path.exists(path):
@@ -155,48 +394,11 @@ def test_every_command_on_a_fresh_document():
     original = dialogs.ask_export_options
     dialogs.ask_export_options = lambda obj: (asked.append(obj.Name), (path, 0.05))[1]
     try:
-        run("RatBez_ExportOpenSCAD")
+        Gui.runCommand("RatBez_ExportOpenSCAD")
+        process_events()
     finally:
         dialogs.ask_export_options = original
-    check(asked == ["Cylinder"], "export dialog not asked for the cylinder: {}".format(asked))
-    check(os.path.isfile(path) and "polyhedron" in open(path).read(), "export wrote no polyhedron")
-
-    # Undo/redo of a creation command works through the transaction.
-    count = len(doc.Objects)
-    Gui.Selection.clearSelection()
-    run("RatBez_Sphere")
-    check(len(doc.Objects) == count + 1, "sphere not created")
-    doc.undo()
-    process_events()
-    check(len(doc.Objects) == count, "undo did not remove the sphere")
-
-
-@suite.test
-def test_screenshot_shows_the_shapes():
-    Gui.Selection.clearSelection()
-    view = Gui.ActiveDocument.ActiveView
-    view.viewIsometric()
-    view.fitAll()
-    process_events()
-    if os.path.exists(SCREENSHOT):
-        os.remove(SCREENSHOT)
-    view.saveImage(SCREENSHOT, 1280, 960, "White")
-    check(os.path.isfile(SCREENSHOT), "no screenshot written")
-    image = QtGui.QImage(SCREENSHOT)
-    check(not image.isNull(), "screenshot unreadable")
-    values, coloured = [], 0
-    for y in range(0, image.height(), 8):
-        for x in range(0, image.width(), 8):
-            colour = QtGui.QColor(image.pixel(x, y))
-            grey = (colour.red() + colour.green() + colour.blue()) / 3.0
-            values.append(grey)
-            if colour.red() < 235 or colour.green() < 235 or colour.blue() < 235:
-                coloured += 1
-    mean = sum(values) / len(values)
-    variance = sum((v - mean) ** 2 for v in values) / len(values)
-    say("screenshot {}: variance {:.1f}, {:.1%} non-white".format(SCREENSHOT, variance, coloured / len(values)))
-    check(variance > 100, "screenshot looks blank (variance {:.1f})".format(variance))
-    check(coloured / len(values) > 0.015, "screenshot is almost all white")
+    check(asked == ["Cylinder"] and "polyhedron" in open(path).read(), "export")
 
 
 @suite.test
@@ -204,9 +406,8 @@ def test_no_python_exception_in_the_report_view():
     process_events()
     text = report_text()
     say("---- report view ----\n" + text + "\n---- end of report view ----")
-    for marker in ("Traceback", "Exception", "<class '", "RatBez: internal error", "Recompute failed"):
+    for marker in ("Traceback", "<class '", "internal error"):
         check(marker not in text, "'{}' in the report view".format(marker))
-    check("RatBez:" not in text.replace("RatBez: wrote", ""), "RatBez error in the report view")
 
 
 def main():

@@ -38,7 +38,7 @@ def test_keyword_names():
         (ratbez.sphere, ["radius", "center"]),
         (ratbez.torus, ["major_radius", "minor_radius", "center", "axis"]),
         (ratbez.revolve, ["profile", "axis_point", "axis_dir", "angle"]),
-        (ratbez.extrude, ["profile", "direction", "distance"]),
+        (ratbez.extrude, ["profile", "direction", "distance", "holes"]),  # holes: an addition, optional
         (ratbez.BezierCurve.point, ["u"]),
         (ratbez.BezierCurve.derivative, ["u", "order"]),
         (ratbez.BezierCurve.split, ["u"]),
@@ -55,9 +55,10 @@ def test_keyword_names():
         expected.append((ratbez.export_openscad, ["solid_or_mesh", "path", "tolerance"]))
         expected.append((ratbez.write_stl, ["solid_or_mesh", "path", "tolerance"]))
     if ratbez.has_occt:
-        expected.append((ratbez.write_step, ["solid", "path"]))
-        expected.append((ratbez.write_brep, ["solid", "path"]))
-        expected.append((ratbez.occt_check, ["solid", "grid", "deviation_limit", "volume_limit"]))
+        # bezier_faces: an addition, optional (one face per Bézier patch, for FreeCAD's measurements)
+        expected.append((ratbez.write_step, ["solid", "path", "bezier_faces"]))
+        expected.append((ratbez.write_brep, ["solid", "path", "bezier_faces"]))
+        expected.append((ratbez.occt_check, ["solid", "grid", "deviation_limit", "volume_limit", "bezier_faces"]))
     for function, names in expected:
         assert keywords(function) == names, function.__name__
     # Constructors: __init__(self, ...).

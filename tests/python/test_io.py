@@ -72,6 +72,22 @@ def test_step_and_brep(tmp_path):
 
 
 @needs_occt
+def test_bezier_faces_keyword(tmp_path):
+    # One face per Bézier patch: a sphere's 4 x 2 patches; the same solid to OCCT (occt_check passes).
+    solid = ratbez.sphere(2)
+    native, patches = ratbez.brep_string(solid), ratbez.brep_string(solid, bezier_faces=True)
+    assert native.count("\nFa\n") == 1 and patches.count("\nFa\n") == 8
+    ratbez.write_brep(solid, tmp_path / "s.brep", bezier_faces=True)
+    assert (tmp_path / "s.brep").read_text().count("\nFa\n") == 8
+    ratbez.write_step(solid, tmp_path / "s.step", bezier_faces=True)
+    assert (tmp_path / "s.step").read_text().count("ADVANCED_FACE") == 8
+    report = ratbez.occt_check(solid, bezier_faces=True)
+    assert report["passed"] is True, report["failures"]
+    assert report["occt_volume"] == pytest.approx(solid.volume(), rel=1e-7)  # BRepGProp with eps 1e-9
+    raises_naming("solid", ratbez.brep_string, "sphere", bezier_faces=True)
+
+
+@needs_occt
 @pytest.mark.parametrize("make, volume", [
     (lambda: ratbez.sphere(1.5), 4 / 3 * math.pi * 1.5 ** 3),
     (lambda: ratbez.cylinder(1, 2, axis=(1, 0, 1)), 2 * math.pi),

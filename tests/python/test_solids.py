@@ -140,3 +140,22 @@ def test_mesh_from_tables():
     assert mesh.volume() == pytest.approx(1 / 6)
     assert not ratbez.Mesh(vertices, triangles[:3]).is_closed()
     assert np.array_equal(mesh.triangles, np.array(triangles))
+
+
+def test_extrude_with_holes():
+    # A 10 x 6 rectangle with a circular hole and a square hole drawn clockwise: volume (A - holes) d.
+    corners = [(0, 0), (10, 0), (10, 6), (0, 6)]
+    outer = [ratbez.line_segment(corners[k], corners[(k + 1) % 4]) for k in range(4)]
+    square = [(6, 2), (6, 4), (8, 4), (8, 2)]
+    hole_square = [ratbez.line_segment(square[k], square[(k + 1) % 4]) for k in range(4)]
+    solid = ratbez.extrude(outer, (0, 0, 1), 2.0, holes=[ratbez.circle(1.5, (3, 3, 0)), hole_square])
+    assert solid.volume() == pytest.approx((60 - math.pi * 2.25 - 4) * 2, rel=1e-12)
+    assert solid.euler_characteristic() == -2
+    assert len(solid.faces) == 4 + 1 + 4 + 2  # a circle is one piece
+    assert solid.tessellate(0.01).is_closed()
+    with pytest.raises(ratbez.Error, match=r"^holes\[0\]: must lie inside the profile"):
+        ratbez.extrude(outer, (0, 0, 1), 2.0, holes=[ratbez.circle(1, (20, 3, 0))])
+    with pytest.raises(ratbez.Error, match=r"^holes: expected a list"):
+        ratbez.extrude(outer, (0, 0, 1), 2.0, holes=ratbez.circle(1, (3, 3, 0)))
+    with pytest.raises(ratbez.Error, match=r"^holes\[1\]: expected a BezierCurve"):
+        ratbez.extrude(outer, (0, 0, 1), 2.0, holes=[ratbez.circle(1, (3, 3, 0)), 5])

@@ -1,13 +1,13 @@
 """The Part::FeaturePython proxies of the RatBez workbench.
 
 Every feature rebuilds its shape from the ratbez kernel on each recompute. Solids are handed to FreeCAD
-as the exact B-spline B-rep (see conversion.shape_from_solid); Bézier curves and surfaces, which
-OpenCASCADE represents exactly, become Part.BezierCurve / Part.BezierSurface built from the same
-poles and weights the kernel validated, cross-checked point by point against the kernel.
+as the exact B-spline B-rep, one face per Bézier patch (see conversion.shape_from_solid); Bézier curves
+and surfaces, which OpenCASCADE represents exactly, become Part.BezierCurve / Part.BezierSurface built
+from the same poles and weights the kernel validated, cross-checked point by point against the kernel.
 
-Bad input (a zero radius, a weight <= 0, a profile crossing the axis, ...) makes execute() raise:
-FreeCAD then marks the object invalid ("Recompute failed"), keeps its last good shape, and the
-kernel's message is printed to the report view.
+Bad input (a zero radius, a weight <= 0, a profile crossing the axis, ...) fails the recompute:
+FreeCAD marks the object invalid and keeps its last good shape, and one line in the property editor's
+words goes to the report view (errors.py).
 """
 
 import math
@@ -16,12 +16,19 @@ import traceback
 import FreeCAD as App
 import Part
 
-from . import conversion, kernel
+from . import conversion, errors, kernel
+from .errors import Failure, MessageContext
+from .i18n import QT_TRANSLATE_NOOP, translate
 
 V = App.Vector
 
 # addProperty status bits (App::Property::Status): read-only and output (does not touch the object).
 _READ_ONLY_OUTPUT = 1 | 8
+
+
+def _tip(text):
+    # Property tooltips are translated by FreeCAD in the "App::Property" context.
+    return QT_TRANSLATE_NOOP("App::Property", text)
 
 
 class RatBezFeature:
@@ -44,9 +51,16 @@ class RatBezFeature:
         return [p[1] for p in cls.PROPERTIES]
 
     def ensure_properties(self, obj):
-        """Add the properties this version declares (also to objects saved by an older version)."""
+        """Add the properties this version declares (also to objects saved by an older version), and
+        change the type of those an older version declared differently (keeping their values)."""
         for type_name, name, tooltip, default in self.PROPERTIES:
             if name in obj.PropertiesList:
+                if obj.getTypeIdOfProperty(name) == type_name:
+                    continue
+                kept = _plain_value(getattr(obj, name))
+                obj.removeProperty(name)
+                obj.addProperty(type_name, name, self.GROUP, tooltip)
+                setattr(obj, name, kept)
                 continue
             obj.addProperty(type_name, name, self.GROUP, tooltip)
             if default is not None:
@@ -57,16 +71,26 @@ class RatBezFeature:
     def build_shape(self, obj):
         raise NotImplementedError
 
+    def message_context(self, obj):
+        """What errors.property_message needs to say a kernel error in this feature's terms."""
+        return MessageContext()
+
     def execute(self, obj):
+        failure = None
         try:
             shape = self.build_shape(obj)
+        except Failure as error:
+            failure = (str(error), None, error)
         except kernel.error_types() as error:
-            App.Console.PrintError("RatBez: {} ({}): {}\n".format(obj.Label, obj.Name, error))
-            raise
-        except Exception as error:
-            App.Console.PrintError("RatBez: {} ({}): internal error: {}\n{}".format(
-                obj.Label, obj.Name, error, traceback.format_exc()))
-            raise
+            argument, reason = kernel.error_parts(error)
+            failure = (errors.property_message(argument, reason, self.message_context(obj)), None, error)
+        except Exception as error:  # a bug: say so in one line, the traceback with the debug preference
+            failure = (translate("internal error: {}").format(error), traceback.format_exc(), error)
+        if failure is not None:
+            # Outside the except clauses: an exception raised while handling another one gets it as its
+            # context, which makes Python build it as an object (errors._raise_reported needs it not to).
+            errors.fail(obj, self, *failure)
+        errors.succeeded(self)
         placement = obj.Placement
         shape.Placement = placement.multiply(shape.Placement)
         obj.Shape = shape
@@ -94,10 +118,15 @@ class RatBezFeature:
         self.loads(state)
 
 
+def _plain_value(value):
+    """A property value as something a property of another type accepts (a Quantity's number)."""
+    return getattr(value, "Value", value)
+
+
 def _finite_vector(name, vector):
     values = conversion.vector_tuple(vector)
     if not all(math.isfinite(c) for c in values):
-        raise ValueError("{} must have finite coordinates, got {}".format(name, values))
+        raise Failure(name, translate("must have finite coordinates, got {}").format(values))
     return values
 
 
@@ -109,8 +138,13 @@ class SolidFeature(RatBezFeature):
 
     KERNEL_PROPERTIES = (
         ("App::PropertyFloat", "ExactVolume",
-         "Volume of the exact solid computed by the ratbez kernel (Gauss quadrature on the exact "
-         "surfaces), in mm^3, before the Placement is applied"),
+         _tip("Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the "
+              "exact surfaces), in mm^3, Placement not applied. FreeCAD's own Shape.Volume, Part > Check "
+              "geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per Bézier patch, "
+              "refined for OpenCASCADE's fixed Gauss rule) and agree with this to about 1e-9")),
+        ("App::PropertyFloat", "ExactArea",
+         _tip("Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD's Shape.Area "
+              "agrees with it to about 1e-9 (see ExactVolume)")),
     )
 
     def ensure_properties(self, obj):
@@ -127,47 +161,56 @@ class SolidFeature(RatBezFeature):
         solid = self.build_solid(obj)
         shape = conversion.shape_from_solid(solid)
         obj.ExactVolume = solid.volume()
+        obj.ExactArea = solid.area()
         return shape
+
+
+def _length(name, tooltip, default):
+    return ("App::PropertyLength", name, _tip(tooltip), default)
+
+
+def _center(tooltip):
+    return ("App::PropertyVector", "Center", _tip(tooltip), lambda: V(0, 0, 0))
+
+
+def _axis(tooltip):
+    return ("App::PropertyVector", "Axis", _tip(tooltip), lambda: V(0, 0, 1))
 
 
 class Cylinder(SolidFeature):
     TYPE = "RatBez::Cylinder"
     PROPERTIES = (
-        ("App::PropertyLength", "Radius", "Radius of the cylinder", 2.0),
-        ("App::PropertyLength", "Height", "Height of the cylinder along its axis", 10.0),
-        ("App::PropertyVector", "Center", "Center of the base circle", lambda: V(0, 0, 0)),
-        ("App::PropertyVector", "Axis", "Direction of the cylinder's axis (any non-zero length)",
-         lambda: V(0, 0, 1)),
+        _length("Radius", "Radius of the cylinder", 2.0),
+        _length("Height", "Height of the cylinder along its axis", 10.0),
+        _center("Center of the base circle"),
+        _axis("Direction of the cylinder's axis (any non-zero length)"),
     )
 
     def build_solid(self, obj):
-        return kernel.ratbez().cylinder(obj.Radius.Value, obj.Height.Value,
-                                        _finite_vector("Center", obj.Center),
+        return kernel.ratbez().cylinder(obj.Radius.Value, obj.Height.Value, _finite_vector("Center", obj.Center),
                                         _finite_vector("Axis", obj.Axis))
 
 
 class Cone(SolidFeature):
     TYPE = "RatBez::Cone"
     PROPERTIES = (
-        ("App::PropertyLength", "Radius1", "Radius of the base circle (at Center)", 2.0),
-        ("App::PropertyLength", "Radius2", "Radius of the top circle (0 for a pointed cone)", 4.0),
-        ("App::PropertyLength", "Height", "Height of the cone along its axis", 10.0),
-        ("App::PropertyVector", "Center", "Center of the base circle", lambda: V(0, 0, 0)),
-        ("App::PropertyVector", "Axis", "Direction of the cone's axis (any non-zero length)",
-         lambda: V(0, 0, 1)),
+        _length("Radius1", "Radius of the base circle (at Center)", 2.0),
+        _length("Radius2", "Radius of the top circle (0 for a pointed cone)", 4.0),
+        _length("Height", "Height of the cone along its axis", 10.0),
+        _center("Center of the base circle"),
+        _axis("Direction of the cone's axis (any non-zero length)"),
     )
 
     def build_solid(self, obj):
         return kernel.ratbez().cone(obj.Radius1.Value, obj.Radius2.Value, obj.Height.Value,
-                                    _finite_vector("Center", obj.Center),
-                                    _finite_vector("Axis", obj.Axis))
+                                    _finite_vector("Center", obj.Center), _finite_vector("Axis", obj.Axis))
 
 
 class Sphere(SolidFeature):
     TYPE = "RatBez::Sphere"
     PROPERTIES = (
-        ("App::PropertyLength", "Radius", "Radius of the sphere", 5.0),
-        ("App::PropertyVector", "Center", "Center of the sphere", lambda: V(0, 0, 0)),
+        _length("Radius", "Radius of the sphere", 5.0),
+        _center("Center of the sphere"),
     )
 
     def build_solid(self, obj):
@@ -177,63 +220,149 @@ class Sphere(SolidFeature):
 class Torus(SolidFeature):
     TYPE = "RatBez::Torus"
     PROPERTIES = (
-        ("App::PropertyLength", "MajorRadius",
-         "Distance from the axis to the center of the tube (must exceed MinorRadius)", 10.0),
-        ("App::PropertyLength", "MinorRadius", "Radius of the tube", 2.0),
-        ("App::PropertyVector", "Center", "Center of the torus", lambda: V(0, 0, 0)),
-        ("App::PropertyVector", "Axis", "Direction of the torus' axis (any non-zero length)",
-         lambda: V(0, 0, 1)),
+        _length("MajorRadius", "Distance from the axis to the center of the tube (must exceed MinorRadius)", 10.0),
+        _length("MinorRadius", "Radius of the tube", 2.0),
+        _center("Center of the torus"),
+        _axis("Direction of the torus' axis (any non-zero length)"),
     )
 
     def build_solid(self, obj):
         return kernel.ratbez().torus(obj.MajorRadius.Value, obj.MinorRadius.Value,
-                                     _finite_vector("Center", obj.Center),
-                                     _finite_vector("Axis", obj.Axis))
+                                     _finite_vector("Center", obj.Center), _finite_vector("Axis", obj.Axis))
 
 
-class Revolve(SolidFeature):
+class ProfileFeature(SolidFeature):
+    """A solid built from a linked profile; its error messages name the profile's edges."""
+
+    def message_context(self, obj):
+        profile = getattr(self, "profile", None)
+        return MessageContext(loops=profile.names if profile else [])
+
+
+class Revolve(ProfileFeature):
     TYPE = "RatBez::Revolve"
     PROPERTIES = (
         ("App::PropertyLinkSub", "Profile",
-         "Profile to revolve: a sketch, a wire, or edges/faces of a shape. It must be closed, or open "
-         "with both ends on the axis, and must not cross the axis", None),
-        ("App::PropertyVector", "AxisPoint", "A point on the axis of revolution", lambda: V(0, 0, 0)),
-        ("App::PropertyVector", "AxisDirection", "Direction of the axis of revolution",
-         lambda: V(0, 0, 1)),
-        ("App::PropertyAngle", "Angle",
-         "Angle of revolution in degrees, in (0, 360]; the profile turns counterclockwise about "
-         "AxisDirection", 360.0),
+         _tip("Profile to revolve: a sketch, a 2D object, a wire, edges or one face (without holes). It must be "
+              "closed, or open with both ends on the axis, and must not cross the axis"), None),
+        ("App::PropertyLinkSub", "AxisReference",
+         _tip("A straight edge or a datum line to revolve about. When set, it gives the axis and AxisPoint "
+              "and AxisDirection follow it"), None),
+        ("App::PropertyVector", "AxisPoint", _tip("A point on the axis of revolution"), lambda: V(0, 0, 0)),
+        ("App::PropertyVector", "AxisDirection", _tip("Direction of the axis of revolution"), lambda: V(0, 0, 1)),
+        ("App::PropertyFloat", "Angle",
+         _tip("Angle of revolution in degrees, in (0, 360]; other values are refused. The profile turns "
+              "counterclockwise about AxisDirection (clockwise with Reversed)"), 360.0),
+        ("App::PropertyBool", "Symmetric",
+         _tip("Revolve Angle / 2 to each side of the profile instead of Angle to one side"), False),
+        ("App::PropertyBool", "Reversed", _tip("Revolve the other way (clockwise about AxisDirection)"), False),
     )
 
+    def axis(self, obj):
+        """(point, unit direction) of the axis used, from AxisReference when set."""
+        if obj.AxisReference:
+            point, direction = conversion.straight_line(obj.AxisReference, "AxisReference")
+            if (obj.AxisPoint - point).Length > 1e-12 or (obj.AxisDirection - direction).Length > 1e-12:
+                obj.AxisPoint, obj.AxisDirection = point, direction
+        direction = V(*_finite_vector("AxisDirection", obj.AxisDirection))
+        if direction.Length <= 1e-12:
+            raise Failure("AxisDirection", translate("must not be the zero vector"))
+        return V(*_finite_vector("AxisPoint", obj.AxisPoint)), direction.normalize()
+
     def build_solid(self, obj):
-        profile = conversion.profile_from_link(obj.Profile)
-        return kernel.ratbez().revolve(profile, _finite_vector("AxisPoint", obj.AxisPoint),
-                                       _finite_vector("AxisDirection", obj.AxisDirection),
-                                       float(obj.Angle.Value))
+        self.profile = None
+        profile = conversion.resolve_profile(obj.Profile)
+        self.profile = profile
+        require_revolvable(profile)
+        angle = float(obj.Angle)
+        if not (0 < angle <= 360):
+            raise Failure("Angle", translate("must be in (0, 360] degrees, got {:g}").format(angle))
+        point, direction = self.axis(obj)
+        if obj.Reversed:
+            direction = direction * -1
+        if obj.Symmetric:
+            profile = profile.moved(App.Placement(V(0, 0, 0), App.Rotation(direction, -angle / 2), point))
+        return kernel.ratbez().revolve(profile.curves(), conversion.vector_tuple(point),
+                                       conversion.vector_tuple(direction), angle)
 
 
-class Extrude(SolidFeature):
+EXTRUDE_DIRECTION_MODES = ["Normal", "Edge", "Custom"]
+
+
+class Extrude(ProfileFeature):
     TYPE = "RatBez::Extrude"
     PROPERTIES = (
         ("App::PropertyLinkSub", "Profile",
-         "Closed planar profile to extrude: a sketch, a wire, or edges/faces of a shape", None),
+         _tip("Closed planar profile to extrude: a sketch, a 2D object, a wire, edges or one face. Closed loops "
+              "inside the outer one (a face's holes, inner loops of a sketch) become holes through the solid"),
+         None),
+        ("App::PropertyEnumeration", "DirectionMode",
+         _tip("Normal: along the profile's normal (a sketch's or face's normal); Edge: along DirectionReference; "
+              "Custom: along Direction"), lambda: list(EXTRUDE_DIRECTION_MODES)),
+        ("App::PropertyLinkSub", "DirectionReference",
+         _tip("A straight edge or datum line giving the direction when DirectionMode is Edge"), None),
         ("App::PropertyVector", "Direction",
-         "Direction of the extrusion; the zero vector means the normal of the profile's plane",
-         lambda: V(0, 0, 0)),
+         _tip("Direction of the extrusion when DirectionMode is Custom (any non-zero length)"), lambda: V(0, 0, 1)),
         ("App::PropertyDistance", "Distance",
-         "Length of the extrusion along Direction (negative: the opposite way)", 10.0),
+         _tip("Length of the extrusion along the direction; a negative Distance extrudes the other way"), 10.0),
+        ("App::PropertyBool", "Reversed", _tip("Extrude the other way"), False),
+        ("App::PropertyBool", "Symmetric", _tip("Extrude Distance / 2 to each side of the profile"), False),
     )
 
+    def ensure_properties(self, obj):
+        restoring = "DirectionMode" not in obj.PropertiesList and "Direction" in obj.PropertiesList
+        super().ensure_properties(obj)
+        if restoring:
+            # Saved before DirectionMode existed: a zero Direction meant the profile's normal.
+            obj.DirectionMode = "Normal" if obj.Direction.Length <= 1e-12 else "Custom"
+
+    def direction(self, obj):
+        """The unit extrusion direction before Reversed and the sign of Distance."""
+        if obj.DirectionMode == "Edge":
+            return conversion.straight_line(obj.DirectionReference, "DirectionReference")[1]
+        if obj.DirectionMode == "Custom":
+            direction = V(*_finite_vector("Direction", obj.Direction))
+            if direction.Length <= 1e-12:
+                raise Failure("Direction", translate("must not be the zero vector"))
+            return direction.normalize()
+        return conversion.profile_normal(obj.Profile)
+
     def build_solid(self, obj):
-        profile = conversion.profile_from_link(obj.Profile)
-        direction = V(*_finite_vector("Direction", obj.Direction))
-        if direction.Length <= 1e-12:
-            normal = conversion.profile_plane_normal(conversion.link_edges(obj.Profile))
-            if normal is None:
-                raise conversion.ProfileError("the profile is not planar, so Direction must be given")
-            direction = normal
+        self.profile = None
+        profile = conversion.resolve_profile(obj.Profile)
+        self.profile = profile
+        require_extrudable(profile)
         distance = float(obj.Distance.Value)
-        return kernel.ratbez().extrude(profile, conversion.vector_tuple(direction.normalize()), distance)
+        if distance == 0 or not math.isfinite(distance):
+            raise Failure("Distance", translate("must be a non-zero length (negative: the other way)"))
+        direction = self.direction(obj)
+        if obj.Reversed != (distance < 0):
+            direction = direction * -1
+        length = abs(distance)
+        if obj.Symmetric:
+            profile = profile.moved(App.Placement(direction * (-length / 2), App.Rotation()))
+        holes = [profile.curves(h + 1) for h in range(profile.hole_count)]
+        return kernel.ratbez().extrude(profile.curves(), conversion.vector_tuple(direction), length,
+                                       holes=holes or None)
+
+
+def require_revolvable(profile):
+    """What Revolve asks of a profile beyond the kernel's checks: no holes (the kernel's solids have one
+    shell)."""
+    if profile.hole_count:
+        raise conversion.ProfileError(translate(
+            "the face has {} hole(s); a face with holes cannot be revolved (select its outer edges)")
+            .format(profile.hole_count))
+
+
+def require_extrudable(profile):
+    """What Extrude asks first: a closed outer loop (to 1e-9 of its size, the kernel's joint tolerance).
+    Checked before planarity, so a single straight edge is told it is not closed."""
+    loop = profile.loops[0]
+    points = [p for piece in loop for p in piece["points"]]
+    size = math.dist([min(c) for c in zip(*points)], [max(c) for c in zip(*points)])
+    if math.dist(loop[0]["points"][0], loop[-1]["points"][-1]) > 1e-9 * size:
+        raise conversion.ProfileError(translate("is not closed; an extrusion needs a closed profile"))
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -256,25 +385,27 @@ def _check_against_kernel(kernel_point, occt_point, parameters, size, what):
         q = occt_point(*params)
         worst = max(worst, math.dist(p, (q.x, q.y, q.z)))
     if worst > 1e-9 * max(1.0, size):
-        raise ValueError("{}: OpenCASCADE's geometry departs from the kernel's by {:.3g}".format(what, worst))
+        raise Failure(what, translate("OpenCASCADE's geometry departs from the kernel's by {:.3g}").format(worst))
 
 
 class BezierCurve(RatBezFeature):
     TYPE = "RatBez::BezierCurve"
     PROPERTIES = (
-        ("App::PropertyVectorList", "Poles",
-         "Control points; the degree is their number minus one", 
+        ("App::PropertyVectorList", "Poles", _tip("Control points; the degree is their number minus one"),
          lambda: [V(0, 0, 0), V(3, 6, 0), V(7, -3, 0), V(10, 3, 0)]),
         ("App::PropertyFloatList", "Weights",
-         "One weight > 0 per pole for a rational curve; empty for a polynomial curve", lambda: []),
+         _tip("One weight > 0 per pole for a rational curve; empty for a polynomial curve"), lambda: []),
     )
+
+    def message_context(self, obj):
+        return MessageContext(counts={"Weights": len(obj.Weights), "Poles": len(obj.Poles)})
 
     def build_shape(self, obj):
         points = [conversion.vector_tuple(p) for p in obj.Poles]
         weights = _weights_or_none(obj)
         curve = kernel.ratbez().BezierCurve(points, weights)
         if curve.degree > MAX_OCCT_BEZIER_DEGREE:
-            raise ValueError("Poles: OpenCASCADE Bézier curves have at most {} poles, got {}".format(
+            raise Failure("Poles", translate("OpenCASCADE Bézier curves have at most {} poles, got {}").format(
                 MAX_OCCT_BEZIER_DEGREE + 1, len(points)))
         occt = Part.BezierCurve()
         occt.setPoles([V(*p) for p in points])
@@ -288,17 +419,21 @@ class BezierCurve(RatBezFeature):
 class BezierSurface(RatBezFeature):
     TYPE = "RatBez::BezierSurface"
     PROPERTIES = (
-        ("App::PropertyIntegerConstraint", "DegreeU",
-         "Degree in u: the net has DegreeU + 1 rows of poles", (3, 1, MAX_OCCT_BEZIER_DEGREE, 1)),
-        ("App::PropertyIntegerConstraint", "DegreeV",
-         "Degree in v: every row has DegreeV + 1 poles", (3, 1, MAX_OCCT_BEZIER_DEGREE, 1)),
+        ("App::PropertyIntegerConstraint", "DegreeU", _tip("Degree in u: the net has DegreeU + 1 rows of poles"),
+         (3, 1, MAX_OCCT_BEZIER_DEGREE, 1)),
+        ("App::PropertyIntegerConstraint", "DegreeV", _tip("Degree in v: every row has DegreeV + 1 poles"),
+         (3, 1, MAX_OCCT_BEZIER_DEGREE, 1)),
         ("App::PropertyVectorList", "Poles",
-         "Control net, row by row: (DegreeU + 1) rows along u of (DegreeV + 1) poles along v. "
-         "Changing a degree regenerates a flat net over the same extent", lambda: default_net(3, 3)),
+         _tip("Control net, row by row: (DegreeU + 1) rows along u of (DegreeV + 1) poles along v. Changing a "
+              "degree regenerates a flat net over the same extent"), lambda: default_net(3, 3)),
         ("App::PropertyFloatList", "Weights",
-         "One weight > 0 per pole, in the order of Poles, for a rational surface; empty for a "
-         "polynomial surface", lambda: []),
+         _tip("One weight > 0 per pole, in the order of Poles, for a rational surface; empty for a polynomial "
+              "surface"), lambda: []),
     )
+
+    def message_context(self, obj):
+        return MessageContext(counts={"Weights": len(obj.Weights), "Poles": len(obj.Poles)},
+                              net_columns=obj.DegreeV + 1)
 
     def onChanged(self, obj, prop):
         if prop not in ("DegreeU", "DegreeV") or "Restore" in obj.State:
@@ -315,14 +450,14 @@ class BezierSurface(RatBezFeature):
         rows, columns = obj.DegreeU + 1, obj.DegreeV + 1
         poles = [conversion.vector_tuple(p) for p in obj.Poles]
         if len(poles) != rows * columns:
-            raise ValueError("Poles: the net needs (DegreeU + 1) * (DegreeV + 1) = {} poles, got {}".format(
-                rows * columns, len(poles)))
+            raise Failure("Poles", translate("the net needs (DegreeU + 1) x (DegreeV + 1) = {} poles, got {}")
+                          .format(rows * columns, len(poles)))
         net = [poles[i * columns:(i + 1) * columns] for i in range(rows)]
         flat_weights = _weights_or_none(obj)
         weights = None
         if flat_weights is not None:
             if len(flat_weights) != rows * columns:
-                raise ValueError("Weights: one weight per pole is needed ({}), got {}".format(
+                raise Failure("Weights", translate("one weight per pole is needed ({}), got {}").format(
                     rows * columns, len(flat_weights)))
             weights = [flat_weights[i * columns:(i + 1) * columns] for i in range(rows)]
         surface = kernel.ratbez().BezierSurface(net, weights)
@@ -339,7 +474,7 @@ class BezierSurface(RatBezFeature):
         _check_against_kernel(surface.point, occt.value, grid, size, "Poles")
         face = Part.Face(occt)
         if not face.isValid():
-            raise ValueError("the Bézier surface does not give a valid face")
+            raise Failure("Poles", translate("the Bézier surface does not give a valid face"))
         return face
 
 

@@ -35,3 +35,17 @@ def error_types():
     except KernelMissing:
         pass
     return tuple(types)
+
+
+def error_parts(error):
+    """(argument, reason) of a kernel error: the argument it names ("minor_radius", "weights",
+    "holes[1]") and why. ratbez.Error carries them as .argument and .reason where the module is new
+    enough; otherwise its message is "<argument>: <reason>". ("", message) when it names none."""
+    argument, reason = getattr(error, "argument", None), getattr(error, "reason", None)
+    if isinstance(argument, str) and isinstance(reason, str):
+        return argument, reason
+    text = str(error)
+    head, separator, tail = text.partition(": ")
+    if separator and head and " " not in head.strip("[]0123456789"):
+        return head, tail
+    return "", text

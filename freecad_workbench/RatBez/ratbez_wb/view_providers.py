@@ -1,8 +1,8 @@
-"""View providers of the RatBez features: icons, the profile as tree child, showing it again on delete."""
-
-import FreeCAD as App
+"""View providers of the RatBez features: icons, the profile as tree child, the task panel on
+double-click (setEdit), showing the profile again on delete."""
 
 from . import features, resources
+from .i18n import translate
 
 _ICONS = {
     "RatBez::BezierCurve": "RatBez_BezierCurve",
@@ -14,6 +14,9 @@ _ICONS = {
     "RatBez::Revolve": "RatBez_Revolve",
     "RatBez::Extrude": "RatBez_Extrude",
 }
+
+# Edit mode 0 (Gui::ViewProvider::Default) is the task panel; other modes (Transform, ...) stay FreeCAD's.
+_DEFAULT_EDIT = 0
 
 
 def _profile_object(obj):
@@ -45,6 +48,32 @@ class ViewProviderRatBez:
             child.ViewObject.Visibility = True
         return True
 
+    # -- editing: the task panel ------------------------------------------------------------------
+
+    def setEdit(self, vobj, mode=0):
+        if mode != _DEFAULT_EDIT:
+            return None  # FreeCAD's own (the transform dragger for Transform)
+        from . import task_panels
+        return task_panels.open_for(vobj.Object)
+
+    def unsetEdit(self, vobj, mode=0):
+        if mode != _DEFAULT_EDIT:
+            return None
+        from . import task_panels
+        task_panels.close_for(vobj.Object)
+        return True
+
+    def doubleClicked(self, vobj):
+        import FreeCADGui as Gui
+        Gui.ActiveDocument.setEdit(vobj.Object.Name, _DEFAULT_EDIT)
+        return True
+
+    def setupContextMenu(self, vobj, menu):
+        from PySide import QtGui
+        action = QtGui.QAction(translate("Edit {}").format(vobj.Object.Label), menu)
+        action.triggered.connect(lambda: self.doubleClicked(vobj))
+        menu.addAction(action)
+
     def updateData(self, obj, prop):
         pass
 
@@ -62,3 +91,4 @@ class ViewProviderRatBez:
 
     def __setstate__(self, state):
         return None
+

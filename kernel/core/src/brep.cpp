@@ -228,7 +228,13 @@ std::vector<VertexPtr> Solid::vertices() const {
 int Solid::euler_characteristic() const {
     const std::vector<EdgePtr> all = edges();
     const auto proper = std::count_if(all.begin(), all.end(), [](const EdgePtr& e) { return !e->degenerate; });
-    return static_cast<int>(vertices().size()) - static_cast<int>(proper) + static_cast<int>(faces_.size());
+    // A face with holes is not a disc: each hole loop (a ring) lowers V - E + F by one (the Euler-Poincaré
+    // formula V - E + F - R = 2 (S - G) with R rings), so the rings are subtracted to keep 2 - 2 genus.
+    std::size_t rings = 0;
+    for (const Face& face : faces_)
+        if (face.kind() == Face::Kind::planar) rings += face.loops().size() - 1;
+    return static_cast<int>(vertices().size()) - static_cast<int>(proper) + static_cast<int>(faces_.size()) -
+           static_cast<int>(rings);
 }
 
 Box Solid::bounding_box() const {

@@ -531,9 +531,13 @@ void add_planar(const Face& face, double factor, Problem& problem) {
                       coedge.reversed ? -factor : factor, problem);
 }
 
+void add_surface_area(const NurbsSurface& surface, Problem& problem) {
+    add_surface(surface, [](const SurfaceFirstDerivatives& d) { return norm(cross(d.su, d.sv)); }, 0, problem);
+}
+
 void add_face_area(const Face& face, Problem& problem) {
     if (face.kind() == Face::Kind::planar) return add_planar(face, 1.0, problem);
-    add_surface(face.surface(), [](const SurfaceFirstDerivatives& d) { return norm(cross(d.su, d.sv)); }, 0, problem);
+    add_surface_area(face.surface(), problem);
 }
 
 // The face's contribution to the volume: (1/3) of the flux of (x - c) through it; (S - c) · (S_u x S_v)
@@ -565,11 +569,16 @@ double volume_of_faces(const std::vector<Face>& faces, Budget budget) {
     return integrate(std::move(problem), budget);
 }
 
-double area_of_faces(const std::vector<Face>& faces, Budget budget) {
-    const double size = box_of(faces).diagonal();
+// An area problem at the tolerance of a part of size `size` (its box diagonal).
+Problem area_problem(double size) {
     Problem problem;
     problem.tolerance = kRelativeTolerance * size * size;
     problem.noise_scale = kNoiseFactor * size;
+    return problem;
+}
+
+double area_of_faces(const std::vector<Face>& faces, Budget budget) {
+    Problem problem = area_problem(box_of(faces).diagonal());
     for (const Face& face : faces) add_face_area(face, problem);
     return integrate(std::move(problem), budget);
 }
@@ -582,6 +591,13 @@ double faces_volume(const std::vector<Face>& faces, std::string_view argument, b
 
 double faces_area(const std::vector<Face>& faces, std::string_view argument) {
     return area_of_faces(faces, Budget{argument});
+}
+
+double surface_area(const NurbsSurface& surface, std::string_view argument) {
+    Problem problem = area_problem(surface.control_box().diagonal());
+    add_surface_area(surface, problem);
+    Budget budget{argument};
+    return integrate(std::move(problem), budget);
 }
 
 double green_area(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,

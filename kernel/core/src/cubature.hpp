@@ -130,6 +130,8 @@ double span_rule(const SpanNet& net, int points_u, int points_v, const SpanInteg
 double faces_volume(const std::vector<Face>& faces, std::string_view argument, bool quick = false);
 // The area of faces, to about 1e-14 of their size squared; errors as above.
 double faces_area(const std::vector<Face>& faces, std::string_view argument);
+// The area of an untrimmed surface, to about 1e-14 of its control box's diagonal squared; errors as above.
+double surface_area(const NurbsSurface& surface, std::string_view argument);
 
 // (1/2) ∮ (x dy - y dx) of a curve in a plane frame (x = (C - origin)·x_axis, y = (C - origin)·y_axis):
 // the signed area contribution of one loop piece (Green's theorem), to within `absolute_tolerance`.

@@ -4,7 +4,9 @@
 #include "ratbez/extrude.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "cubature.hpp"
 #include "geometry_internal.hpp"
@@ -29,18 +31,13 @@ NurbsSurface extrude_surface(const NurbsCurve& curve, const Vec3& displacement) 
                                           curve.is_rational());
 }
 
-Solid extrude(const Profile& profile, const Vec3& direction, double distance) {
-    const Vec3 unit = frame_from_axis({}, direction, "direction").z_axis;
-    require_finite(distance, "distance");
-    require(distance > 0, "distance", "must be greater than 0");
-    require(profile.is_closed(), "profile", "must be closed to bound the caps of an extrusion");
-    const double tol = profile.tolerance();
-    const double size = profile.size();
+namespace {
 
-    // The profile's area vector (1/2) ∮ (C - C0) x C' dt: its direction is the plane's normal about
-    // which the profile runs counterclockwise, its length the enclosed area.
-    const Vec3 reference = profile.start_point();
-    Vec3 area_vector{};
+// The area vector (1/2) ∮ (C - reference) x C' dt of a closed profile: its direction is the normal of the
+// plane about which the profile runs counterclockwise, its length the enclosed area.
+Vec3 area_vector(const Profile& profile, const Vec3& reference, const std::string& argument) {
+    const double size = profile.size();
+    Vec3 result{};
     const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     for (int a = 0; a < 3; ++a) {
         // Component a of the area vector is Green's integral in the coordinate plane normal to axes[a].
@@ -48,58 +45,121 @@ Solid extrude(const Profile& profile, const Vec3& direction, double distance) {
         const Vec3& y = axes[(a + 2) % 3];
         double component = 0;
         for (const NurbsCurve& piece : profile.pieces())
-            component += detail::green_area(piece, reference, x, y, 1e-15 * size * size, "profile");
-        (a == 0 ? area_vector.x : a == 1 ? area_vector.y : area_vector.z) = component;
+            component += detail::green_area(piece, reference, x, y, 1e-15 * size * size, argument);
+        (a == 0 ? result.x : a == 1 ? result.y : result.z) = component;
     }
-    require(norm(area_vector) > 1e-12 * size * size, "profile", "encloses no area");
-    Vec3 normal = area_vector / norm(area_vector);
-    for (const NurbsCurve& piece : profile.pieces())
-        for (const Vec4& pw : piece.homogeneous_points())
-            require(std::abs(dot(project(pw) - reference, normal)) <= tol, "profile",
-                    "must be planar (a control point is " +
-                        std::to_string(std::abs(dot(project(pw) - reference, normal))) + " off the profile's plane)");
-    const Frame plane = frame_from_axis(reference, normal);
-    detail::require_no_crossings(profile, reference, plane.x_axis, plane.y_axis);
-    const double cosine = dot(unit, normal);
-    require(std::abs(cosine) > 1e-9, "direction", "must not be parallel to the profile's plane");
+    return result;
+}
 
-    // Outward lateral faces need the profile counterclockwise about the side the sweep goes to: then
-    // S_u x S_v = C' x D points away from the enclosed region.
-    const Profile oriented = cosine > 0 ? profile : profile.reversed();
-    if (cosine < 0) normal = -normal;
-    const Vec3 displacement = unit * distance;
+void require_in_plane(const Profile& profile, const Vec3& reference, const Vec3& normal, double tol,
+                      const std::string& argument) {
+    for (const NurbsCurve& piece : profile.pieces())
+        for (const Vec4& pw : piece.homogeneous_points()) {
+            const double off = std::abs(dot(project(pw) - reference, normal));
+            require(off <= tol, argument, [&] {
+                return "must be planar (a control point is " + std::to_string(off) + " off the profile's plane)";
+            });
+        }
+}
+
+// The side faces of one loop, running counterclockwise about the sweep for the outer loop and clockwise for
+// a hole, so that S_u x S_v = C' x D points out of the solid; and the loop's edges at both ends.
+struct SweptLoop {
+    std::vector<Face> faces;
+    std::vector<EdgePtr> bottom, top;
+};
+
+SweptLoop sweep_loop(const Profile& oriented, const Vec3& displacement) {
     const std::vector<NurbsCurve>& pieces = oriented.pieces();
     const std::size_t m = pieces.size();
-
     std::vector<NurbsSurface> surfaces;
     for (const NurbsCurve& piece : pieces) surfaces.push_back(extrude_surface(piece, displacement));
     std::vector<VertexPtr> bottom_vertices, top_vertices;
     for (std::size_t k = 0; k < m; ++k) {
-        const Vec3 corner = project(surfaces[k].homogeneous_point(0, 0));
-        bottom_vertices.push_back(detail::make_vertex(corner));
+        bottom_vertices.push_back(detail::make_vertex(project(surfaces[k].homogeneous_point(0, 0))));
         top_vertices.push_back(detail::make_vertex(project(surfaces[k].homogeneous_point(0, 1))));
     }
-    std::vector<EdgePtr> bottom_edges, top_edges, vertical_edges;
+    SweptLoop out;
+    std::vector<EdgePtr> vertical;
     for (std::size_t k = 0; k < m; ++k) {
         const std::size_t next = (k + 1) % m;
-        bottom_edges.push_back(detail::make_edge(surfaces[k].isocurve_v(0.0), bottom_vertices[k], bottom_vertices[next]));
-        top_edges.push_back(detail::make_edge(surfaces[k].isocurve_v(1.0), top_vertices[k], top_vertices[next]));
-        vertical_edges.push_back(
+        out.bottom.push_back(detail::make_edge(surfaces[k].isocurve_v(0.0), bottom_vertices[k], bottom_vertices[next]));
+        out.top.push_back(detail::make_edge(surfaces[k].isocurve_v(1.0), top_vertices[k], top_vertices[next]));
+        vertical.push_back(
             detail::make_edge(surfaces[k].isocurve_u(surfaces[k].domain_u().min), bottom_vertices[k], top_vertices[k]));
     }
-    std::vector<Face> faces;
     for (std::size_t k = 0; k < m; ++k)
-        faces.push_back(Face::from_surface(surfaces[k], {Coedge{bottom_edges[k], false}, Coedge{vertical_edges[(k + 1) % m], false},
-                                                         Coedge{top_edges[k], true}, Coedge{vertical_edges[k], true}}));
-    // Bottom cap: outward normal -n, the profile backwards; top cap: normal n, the profile forwards.
-    std::vector<Coedge> bottom_loop, top_loop;
-    for (std::size_t k = m; k-- > 0;) bottom_loop.push_back(Coedge{bottom_edges[k], true});
-    for (std::size_t k = 0; k < m; ++k) top_loop.push_back(Coedge{top_edges[k], false});
+        out.faces.push_back(Face::from_surface(surfaces[k], {Coedge{out.bottom[k], false}, Coedge{vertical[(k + 1) % m], false},
+                                                             Coedge{out.top[k], true}, Coedge{vertical[k], true}}));
+    return out;
+}
+
+}  // namespace
+
+Solid extrude(const Profile& profile, const Vec3& direction, double distance, const std::vector<Profile>& holes) {
+    const Vec3 unit = frame_from_axis({}, direction, "direction").z_axis;
+    require_finite(distance, "distance");
+    require(distance > 0, "distance", "must be greater than 0");
+    require(profile.is_closed(), "profile", "must be closed to bound the caps of an extrusion");
+    const double tol = profile.tolerance();
+    const double size = profile.size();
+
+    const Vec3 reference = profile.start_point();
+    const Vec3 outer_area = area_vector(profile, reference, "profile");
+    require(norm(outer_area) > 1e-12 * size * size, "profile", "encloses no area");
+    Vec3 normal = outer_area / norm(outer_area);
+    require_in_plane(profile, reference, normal, tol, "profile");
+    const Frame plane = frame_from_axis(reference, normal);
+    for (std::size_t h = 0; h < holes.size(); ++h) {
+        const std::string name = "holes[" + std::to_string(h) + "]";
+        require(holes[h].is_closed(), name, "must be closed");
+        require_in_plane(holes[h], reference, normal, tol, name);
+        require(norm(area_vector(holes[h], holes[h].start_point(), name)) > 1e-12 * size * size, name, "encloses no area");
+    }
+    std::vector<Profile> loops{profile};
+    loops.insert(loops.end(), holes.begin(), holes.end());
+    detail::require_no_crossings(loops, reference, plane.x_axis, plane.y_axis);
+    // Loops that do not touch are nested or apart as one point of each says.
+    for (std::size_t h = 0; h < holes.size(); ++h) {
+        const std::string name = "holes[" + std::to_string(h) + "]";
+        const Vec3 point = holes[h].start_point();
+        require(detail::winding_number(profile, point, reference, plane.x_axis, plane.y_axis, "holes") != 0, name,
+                "must lie inside the profile");
+        for (std::size_t g = 0; g < holes.size(); ++g)
+            require(g == h || detail::winding_number(holes[g], point, reference, plane.x_axis, plane.y_axis, "holes") == 0,
+                    name, [&] { return "lies inside holes[" + std::to_string(g) + "]; holes must not nest"; });
+    }
+    const double cosine = dot(unit, normal);
+    require(std::abs(cosine) > 1e-9, "direction", "must not be parallel to the profile's plane");
+
+    // Outward lateral faces need the profile counterclockwise about the side the sweep goes to (then
+    // S_u x S_v = C' x D points away from the enclosed region) and every hole clockwise.
+    if (cosine < 0) normal = -normal;
+    const auto counterclockwise = [&](const Profile& loop, bool want) {
+        const bool is = dot(area_vector(loop, loop.start_point(), "holes"), normal) > 0;
+        return is == want ? loop : loop.reversed();
+    };
+    const Vec3 displacement = unit * distance;
+    std::vector<SweptLoop> swept{sweep_loop(counterclockwise(profile, true), displacement)};
+    for (const Profile& hole : holes) swept.push_back(sweep_loop(counterclockwise(hole, false), displacement));
+
+    std::vector<Face> faces;
+    for (SweptLoop& loop : swept) std::move(loop.faces.begin(), loop.faces.end(), std::back_inserter(faces));
+    // Bottom cap: outward normal -n, every loop backwards; top cap: normal n, every loop forwards. The outer
+    // loop comes first in both, as Face::planar wants.
+    std::vector<std::vector<Coedge>> bottom_loops, top_loops;
+    for (const SweptLoop& loop : swept) {
+        auto& bottom = bottom_loops.emplace_back();
+        auto& top = top_loops.emplace_back();
+        for (std::size_t k = loop.bottom.size(); k-- > 0;) bottom.push_back(Coedge{loop.bottom[k], true});
+        for (const EdgePtr& edge : loop.top) top.push_back(Coedge{edge, false});
+    }
     const Frame bottom_frame = frame_from_axis(reference, -normal);
     const Frame top_frame = frame_from_axis(reference + displacement, normal);
     faces.push_back(Face::planar(Plane{bottom_frame.origin, bottom_frame.x_axis, bottom_frame.y_axis, bottom_frame.z_axis},
-                                 {bottom_loop}));
-    faces.push_back(Face::planar(Plane{top_frame.origin, top_frame.x_axis, top_frame.y_axis, top_frame.z_axis}, {top_loop}));
+                                 std::move(bottom_loops)));
+    faces.push_back(
+        Face::planar(Plane{top_frame.origin, top_frame.x_axis, top_frame.y_axis, top_frame.z_axis}, std::move(top_loops)));
     return Solid(std::move(faces));
 }
 

@@ -3,7 +3,10 @@
 #include "profile_crossings.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -131,29 +134,47 @@ bool meet_only_at_joint(const Arc& first, const Arc& second) {
 
 class CrossingCheck {
 public:
-    CrossingCheck(const Profile& profile, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis)
-        : origin_(origin),
-          x_axis_(x_axis),
-          y_axis_(y_axis),
-          tol_(profile.tolerance()),
-          resolution_(kResolution * tol_),
-          closed_(profile.is_closed()) {
+    // loops[0] is the profile (open or closed), further loops are closed holes (extrude); all in one plane.
+    CrossingCheck(std::span<const Profile> loops, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis)
+        : origin_(origin), x_axis_(x_axis), y_axis_(y_axis), several_loops_(loops.size() > 1) {
+        for (const Profile& loop : loops) tol_ = std::max(tol_, loop.tolerance());
+        resolution_ = kResolution * tol_;
+        for (std::size_t l = 0; l < loops.size(); ++l) add_loop(loops[l], l);
+        budget_ = 1'000'000 + 64 * cells_.size();
+    }
+
+    void run() {
+        for (const Arc& cell : cells_) check_self(cell);
+        // Sweep the cells in order of their boxes' left sides: only boxes that overlap in x can meet.
+        std::vector<const Arc*> order;
+        for (const Arc& cell : cells_) order.push_back(&cell);
+        std::sort(order.begin(), order.end(), [](const Arc* a, const Arc* b) { return a->low.x < b->low.x; });
+        for (std::size_t i = 0; i < order.size(); ++i)
+            for (std::size_t j = i + 1; j < order.size() && order[j]->low.x <= order[i]->high.x + tol_; ++j) {
+                spend();
+                if (!boxes_apart(*order[i], *order[j], tol_)) check_pair(*order[i], *order[j]);
+            }
+    }
+
+private:
+    // The cells of one loop, in order. Every joint once: each cell starts where the one before ends (a
+    // closed loop's first where its last ends). A run of cells of one piece that are each below tol and
+    // together below the resolution (the crawl of a weight such as 1e300 leaves thousands of them on one
+    // point) is checked as the straight arc between its ends: what it hides is below the resolution.
+    void add_loop(const Profile& profile, std::size_t loop) {
         std::vector<std::vector<Vec3>> rows;
         std::vector<std::size_t> row_pieces;
         for (std::size_t k = 0; k < profile.pieces().size(); ++k)
             for (const BezierCurve& span : profile.pieces()[k].bezier_segments()) {
                 std::vector<Vec3> homogeneous;
                 for (const Vec4& pw : span.homogeneous_points()) {
-                    const Vec3 p = project(pw) - origin;
-                    homogeneous.push_back(Vec3{dot(p, x_axis), dot(p, y_axis), 1.0} * pw.w);
+                    const Vec3 p = project(pw) - origin_;
+                    homogeneous.push_back(Vec3{dot(p, x_axis_), dot(p, y_axis_), 1.0} * pw.w);
                 }
                 add_cells(homogeneous, k, rows, row_pieces);
             }
-        // Every joint once: each cell starts where the one before ends (a closed profile's first where its
-        // last ends). A run of cells of one piece that are each below tol and together below the resolution
-        // (the crawl of a weight such as 1e300 leaves thousands of them on one point) is checked as the
-        // straight arc between its ends: what it hides is below the resolution.
-        Vec3 joint = euclidean(closed_ ? rows.back().back() : rows.front().front());
+        loops_.push_back(Loop{cells_.size(), cells_.size(), profile.is_closed()});
+        Vec3 joint = euclidean(profile.is_closed() ? rows.back().back() : rows.front().front());
         for (std::size_t i = 0; i < rows.size();) {
             const std::size_t piece = row_pieces[i];
             Vec3 end = euclidean(rows[i].back());
@@ -173,27 +194,13 @@ public:
                 }
                 cell = make_arc({{joint.x, joint.y, 1.0}, {end.x, end.y, 1.0}}, joint, end, cells_.size(), 0.0, 1.0);
             }
-            add_cell(std::move(cell), piece);
+            add_cell(std::move(cell), piece, loop);
             joint = end;
             i = next;
         }
-        budget_ = 1'000'000 + 64 * cells_.size();
+        loops_.back().end = cells_.size();
     }
 
-    void run() {
-        for (const Arc& cell : cells_) check_self(cell);
-        // Sweep the cells in order of their boxes' left sides: only boxes that overlap in x can meet.
-        std::vector<const Arc*> order;
-        for (const Arc& cell : cells_) order.push_back(&cell);
-        std::sort(order.begin(), order.end(), [](const Arc* a, const Arc* b) { return a->low.x < b->low.x; });
-        for (std::size_t i = 0; i < order.size(); ++i)
-            for (std::size_t j = i + 1; j < order.size() && order[j]->low.x <= order[i]->high.x + tol_; ++j) {
-                spend();
-                if (!boxes_apart(*order[i], *order[j], tol_)) check_pair(*order[i], *order[j]);
-            }
-    }
-
-private:
     // The cells of one span, in order: its pieces of the weight certificate (for_each_certified_piece).
     // Within a cell the parameter moves at a speed bounded relative to the cell's size, so halving a cell
     // halves its geometry roughly too; in a raw span with weights 1e-3 .. 1e3 most of the parameter can
@@ -208,17 +215,20 @@ private:
                                  });
     }
 
-    void add_cell(Arc cell, std::size_t piece) {
+    void add_cell(Arc cell, std::size_t piece, std::size_t loop) {
         std::vector<Vec4> plane_points;
         for (const Vec3& h : cell.homogeneous) plane_points.push_back({h.x, h.y, 0.0, h.z});
         plane_cells_.push_back(BezierCurve::from_homogeneous(std::move(plane_points)));
         cells_.push_back(std::move(cell));
         piece_of_.push_back(piece);
+        loop_of_.push_back(loop);
     }
 
+    // The cell after s along its loop (a closed loop's first after its last), or kNoCell.
     std::size_t next_cell(std::size_t s) const {
-        if (s + 1 < cells_.size()) return s + 1;
-        return closed_ ? 0 : kNoCell;
+        const Loop& loop = loops_[loop_of_[s]];
+        if (s + 1 < loop.end) return s + 1;
+        return loop.closed ? loop.begin : kNoCell;
     }
     // `a` runs into `b`: b starts at the parameter where a ends, on the same cell or the next one.
     bool runs_into(const Arc& a, const Arc& b) const {
@@ -305,25 +315,107 @@ private:
     // joint, when its two sides leave it in the same direction: a cusp or a fold).
     [[noreturn]] void report(const Arc& a, const Arc& b) const {
         const std::size_t pa = piece_of_[a.cell], pb = piece_of_[b.cell];
+        const std::size_t la = loop_of_[a.cell], lb = loop_of_[b.cell];
         const std::string where = format_point(in_space(0.5 * (a.start() + b.start())));
-        if (pa == pb) fail("profile", "piece " + std::to_string(pa) + " crosses or touches itself near " + where);
-        fail("profile", "pieces " + std::to_string(std::min(pa, pb)) + " and " + std::to_string(std::max(pa, pb)) +
-                            " cross or touch near " + where + " (a profile must not cross itself)");
+        if (!several_loops_ || (la == 0 && lb == 0)) {
+            if (pa == pb) fail("profile", "piece " + std::to_string(pa) + " crosses or touches itself near " + where);
+            fail("profile", "pieces " + std::to_string(std::min(pa, pb)) + " and " + std::to_string(std::max(pa, pb)) +
+                                " cross or touch near " + where + " (a profile must not cross itself)");
+        }
+        const auto name = [](std::size_t loop, std::size_t piece) {
+            return "piece " + std::to_string(piece) + (loop == 0 ? " of the profile" : " of hole " + std::to_string(loop - 1));
+        };
+        if (la == lb && pa == pb) fail("holes", name(la, pa) + " crosses or touches itself near " + where);
+        fail("holes", name(std::min(la, lb), la <= lb ? pa : pb) + " and " + name(std::max(la, lb), la <= lb ? pb : pa) +
+                          " cross or touch near " + where +
+                          " (holes must lie inside the profile, apart from it and from each other)");
     }
 
+    // A loop's cells are cells_[begin, end).
+    struct Loop {
+        std::size_t begin, end;
+        bool closed;
+    };
+
     Vec3 origin_, x_axis_, y_axis_;
-    double tol_, resolution_;
-    bool closed_;
+    double tol_ = 0, resolution_ = 0;
+    bool several_loops_;
+    std::vector<Loop> loops_;
     std::vector<Arc> cells_;
     std::vector<BezierCurve> plane_cells_;  // the same cells, (x, y, 0) in the plane, for lengths between arcs
-    std::vector<std::size_t> piece_of_;
+    std::vector<std::size_t> piece_of_, loop_of_;
     std::size_t steps_ = 0, budget_ = 0;
 };
 
 }  // namespace
 
 void require_no_crossings(const Profile& profile, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis) {
-    CrossingCheck(profile, origin, x_axis, y_axis).run();
+    CrossingCheck(std::span<const Profile>(&profile, 1), origin, x_axis, y_axis).run();
+}
+
+namespace {
+
+// True when every point lies strictly on one side of some line through the origin: the largest angular
+// gap between the points' directions exceeds pi.
+bool in_open_half_plane(const std::vector<Vec3>& points) {
+    std::vector<double> angles;
+    angles.reserve(points.size());
+    for (const Vec3& p : points) {
+        if (p.x == 0 && p.y == 0) return false;
+        angles.push_back(std::atan2(p.y, p.x));
+    }
+    std::sort(angles.begin(), angles.end());
+    double gap = angles.front() + 2 * std::numbers::pi - angles.back();
+    for (std::size_t i = 0; i + 1 < angles.size(); ++i) gap = std::max(gap, angles[i + 1] - angles[i]);
+    return gap > std::numbers::pi;
+}
+
+// Euclidean control points (x, y, 0) of a homogeneous plane row (x w, y w, w).
+std::vector<Vec3> euclidean_points(const std::vector<Vec3>& homogeneous) {
+    std::vector<Vec3> points;
+    points.reserve(homogeneous.size());
+    for (const Vec3& h : homogeneous) points.push_back(euclidean(h));
+    return points;
+}
+
+// The angle a cell (homogeneous plane coordinates relative to the point) turns through about the origin.
+double turning_angle(const std::vector<Vec3>& homogeneous, int halvings_left, std::string_view argument) {
+    const std::vector<Vec3> points = euclidean_points(homogeneous);
+    if (in_open_half_plane(points)) {
+        const Vec3& a = points.front();
+        const Vec3& b = points.back();
+        return std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y);
+    }
+    if (halvings_left <= 0) fail(argument, "a point of one loop lies on another loop");
+    const auto [left, right] = halve_bezier(homogeneous);
+    return turning_angle(left, halvings_left - 1, argument) + turning_angle(right, halvings_left - 1, argument);
+}
+
+}  // namespace
+
+int winding_number(const Profile& loop, const Vec3& point, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
+                   std::string_view argument) {
+    const Vec3 offset = point - origin;
+    const Vec3 centre{dot(offset, x_axis), dot(offset, y_axis), 0.0};
+    double angle = 0;
+    for (const NurbsCurve& piece : loop.pieces())
+        for (const BezierCurve& span : piece.bezier_segments()) {
+            std::vector<Vec3> homogeneous;
+            for (const Vec4& pw : span.homogeneous_points()) {
+                const Vec3 p = project(pw) - origin;
+                homogeneous.push_back(Vec3{dot(p, x_axis) - centre.x, dot(p, y_axis) - centre.y, 1.0} * pw.w);
+            }
+            for_each_certified_piece(std::vector<std::vector<Vec3>>{homogeneous}, [](const Vec3& h) { return h.z; },
+                                     kMaxCellDepth, [&](const std::vector<std::vector<Vec3>>& lines, double, double) {
+                                         // 50 halvings shrink a certified cell below 1e-15 of its size.
+                                         angle += turning_angle(lines.front(), 50, argument);
+                                     });
+        }
+    return static_cast<int>(std::lround(angle / (2 * std::numbers::pi)));
+}
+
+void require_no_crossings(std::span<const Profile> loops, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis) {
+    CrossingCheck(loops, origin, x_axis, y_axis).run();
 }
 
 }  // namespace ratbez::detail

@@ -2,7 +2,11 @@
 // The check that a planar profile is a simple curve: its pieces meet only where consecutive pieces (and
 // consecutive Bézier spans of one piece) join, and there at a non-zero angle. Revolve and extrude call it
 // before they build faces, which would otherwise pass through each other (a solid that OCCT calls
-// invalid, that no mesh of can be closed, and whose volume means nothing).
+// invalid, that no mesh of can be closed, and whose volume means nothing). Extrude with holes checks
+// all its loops together, and where each hole lies by the winding number.
+
+#include <span>
+#include <string_view>
 
 #include "ratbez/profile.hpp"
 #include "ratbez/vec.hpp"
@@ -31,5 +35,21 @@ namespace ratbez::detail {
 // is within the resolution. A profile that needs more than a fixed budget of subdivision steps (64 per
 // cell plus a million) is refused as too intricate to certify, rather than accepted unchecked.
 void require_no_crossings(const Profile& profile, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis);
+
+// The same for several loops in one plane: loops[0] the profile, the others closed holes; besides each
+// loop being simple, no two loops may come within tol of each other (the larger of their tolerances).
+// Crossings between loops throw Error naming "holes" and the pieces ("piece 2 of hole 0").
+void require_no_crossings(std::span<const Profile> loops, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis);
+
+// How many times the closed `loop` winds counterclockwise (seen from cross(x_axis, y_axis)) about `point`
+// of the plane: +1 or -1 inside a simple loop, 0 outside. `point` must not lie on the loop (require_no_crossings
+// of the loop and of the loop holding `point` makes it at least tol away).
+// Method: the angle C(t) - point turns through is summed over the loop's Bézier cells (weight-certified
+// as above). A cell whose control points all lie in an open half-plane seen from `point` holds the curve
+// there (convex hull property), so its angle is the principal angle between its end points; other cells
+// are halved (deCasteljau, A1.5). Throws Error naming `argument` if the point is within about 1e-15 of
+// the loop's size from it.
+int winding_number(const Profile& loop, const Vec3& point, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
+                   std::string_view argument);
 
 }  // namespace ratbez::detail

@@ -11,6 +11,8 @@ namespace ratbez {
 
 double surface_area(const Face& face) { return detail::faces_area({face}, "face"); }
 
+double surface_area(const NurbsSurface& surface) { return detail::surface_area(surface, "surface"); }
+
 double surface_area(const Solid& solid) {
     const double area = detail::faces_area(solid.faces(), "solid");
     require(std::isfinite(area), "solid", "its area is not a finite double (the solid is too large to measure)");

@@ -73,32 +73,38 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
     for (std::size_t f = 0; f < solid.faces().size(); ++f) {
         const Face& face = solid.faces()[f];
         const NurbsSurface& surface = face.surface();
-        const Interval du = surface.domain_u(), dv = surface.domain_v();
-        const Handle(Geom_Surface) occt_surface = BRep_Tool::Surface(converted.faces[f]);
-        const GeomAdaptor_Surface adaptor(occt_surface);
-        const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(occt_surface);
-        for (int i = 0; i < grid; ++i)
-            for (int j = 0; j < grid; ++j) {
-                const double u = sample(du.min, du.max, i, grid), v = sample(dv.min, dv.max, j, grid);
-                const Vec3 ours = surface.point(u, v);
-                if (face.kind() == Face::Kind::planar) {
-                    // Our plane patch against OCCT's plane: the distance from it (the patch's own (u, v)
-                    // are not the plane's).
-                    worst = std::max(worst, plane->Pln().Distance(to_occt_point(ours)));
-                } else {
-                    worst = std::max(worst, distance(ours, from_occt(adaptor.Value(u, v))));
+        // Each OCCT face of ours (one, or its Bézier patches) on its own part of our parameter rectangle.
+        for (std::size_t k = converted.first_face[f]; k < converted.first_face[f + 1]; ++k) {
+            const Handle(Geom_Surface) occt_surface = BRep_Tool::Surface(converted.faces[k]);
+            const GeomAdaptor_Surface adaptor(occt_surface);
+            const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(occt_surface);
+            const auto& [u0, u1, v0, v1] = converted.face_domains[k];
+            double occt_u0 = u0, occt_u1 = u1, occt_v0 = v0, occt_v1 = v1;
+            if (plane.IsNull()) occt_surface->Bounds(occt_u0, occt_u1, occt_v0, occt_v1);
+            for (int i = 0; i < grid; ++i)
+                for (int j = 0; j < grid; ++j) {
+                    const Vec3 ours = surface.point(sample(u0, u1, i, grid), sample(v0, v1, j, grid));
+                    if (!plane.IsNull()) {
+                        // Our plane patch (or flat patch) against OCCT's plane: the distance from it (the
+                        // patch's own (u, v) are not the plane's).
+                        worst = std::max(worst, plane->Pln().Distance(to_occt_point(ours)));
+                    } else {
+                        const gp_Pnt theirs = adaptor.Value(sample(occt_u0, occt_u1, i, grid), sample(occt_v0, occt_v1, j, grid));
+                        worst = std::max(worst, distance(ours, from_occt(theirs)));
+                    }
                 }
-            }
-    }
-    for (const auto& [edge, occt_edge] : converted.edges) {
-        double first = 0, last = 0;
-        const Handle(Geom_Curve) curve = BRep_Tool::Curve(occt_edge, first, last);
-        const GeomAdaptor_Curve adaptor(curve, first, last);
-        for (int i = 0; i < grid; ++i) {
-            const double t = sample(first, last, i, grid);
-            worst = std::max(worst, distance(edge->curve.point(t), from_occt(adaptor.Value(t))));
         }
     }
+    for (const auto& [edge, pieces] : converted.edges)
+        for (const TopoDS_Edge& occt_edge : pieces) {
+            double first = 0, last = 0;
+            const Handle(Geom_Curve) curve = BRep_Tool::Curve(occt_edge, first, last);
+            const GeomAdaptor_Curve adaptor(curve, first, last);
+            for (int i = 0; i < grid; ++i) {
+                const double t = sample(first, last, i, grid);
+                worst = std::max(worst, distance(edge->curve.point(t), from_occt(adaptor.Value(t))));
+            }
+        }
     return worst;
 }
 
@@ -231,7 +237,7 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
     validate(options);
     CheckReport report;
     report.size = solid.bounding_box().diagonal();
-    const ConvertedSolid converted = convert(solid);
+    const ConvertedSolid converted = convert(solid, options.convert);
 
     try {
         report.valid = BRepCheck_Analyzer(converted.solid).IsValid();

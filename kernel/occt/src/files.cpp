@@ -63,9 +63,9 @@ void require_writable(const std::string& path) {
 
 }  // namespace
 
-void write_step(const Solid& solid, const std::string& path) {
+void write_step(const Solid& solid, const std::string& path, const ConvertOptions& options) {
     require_writable(path);
-    const TopoDS_Solid shape = to_occt(solid);
+    const TopoDS_Solid shape = to_occt(solid, options);
     QuietMessenger quiet;
     try {
         STEPControl_Writer writer;  // its constructor initialises the STEP statics (STEPControl_Controller::Init)
@@ -78,18 +78,18 @@ void write_step(const Solid& solid, const std::string& path) {
     }
 }
 
-void write_brep(const Solid& solid, const std::string& path) {
+void write_brep(const Solid& solid, const std::string& path, const ConvertOptions& options) {
     require_writable(path);
-    const TopoDS_Solid shape = to_occt(solid);
+    const TopoDS_Solid shape = to_occt(solid, options);
     require(BRepTools::Write(shape, path.c_str()), "path", "cannot write '" + path + "'");
 }
 
-std::string brep_string(const Solid& solid) {
+std::string brep_string(const Solid& solid, const ConvertOptions& options) {
     std::ostringstream out;
     // BRepTools::Write(shape, file) starts the file with this line (the Draw shape tag) and the stream
     // version does not; write it so the string is exactly the file's text. Both readers accept either.
     out << "DBRep_DrawableShape\n";
-    BRepTools::Write(to_occt(solid), out);
+    BRepTools::Write(to_occt(solid, options), out);
     return out.str();
 }
 

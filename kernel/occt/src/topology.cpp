@@ -4,10 +4,19 @@
 
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Curve.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom2d_Line.hxx>
+#include <GeomAPI.hxx>
 #include <Geom_Plane.hxx>
+#include <gp.hxx>
+#include <gp_Pln.hxx>
+#include <gp_Vec.hxx>
 #include <Precision.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Ax3.hxx>
@@ -16,9 +25,13 @@
 #include <gp_Pnt2d.hxx>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
 #include <string>
 #include <utility>
 
+#include "gprop_patches.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 
@@ -45,9 +58,35 @@ Handle(Geom2d_Curve) side_pcurve(int side, double fixed, double a, double b, boo
     return new Geom2d_Line(gp_Pnt2d(fixed, start), gp_Dir2d(0, sign));
 }
 
+// Which way a face runs along side s (brep.hpp): v_min and u_max with increasing parameter, v_max and
+// u_min decreasing.
+bool traversal_increasing(int side) { return side == static_cast<int>(Side::v_min) || side == static_cast<int>(Side::u_max); }
+bool along_u(int side) { return side == static_cast<int>(Side::v_min) || side == static_cast<int>(Side::v_max); }
+
+// The distinct interior knots of a knot vector.
+std::vector<double> interior_knots(const std::vector<double>& knots) {
+    std::vector<double> values;
+    for (double k : knots)
+        if (k != knots.front() && k != knots.back() && (values.empty() || values.back() != k)) values.push_back(k);
+    return values;
+}
+
+// The straight pcurve from a (at t0) to b (at t1), parameterised by t: a degree 1 B-spline.
+Handle(Geom2d_Curve) linear_pcurve(const gp_Pnt2d& a, const gp_Pnt2d& b, double t0, double t1) {
+    TColgp_Array1OfPnt2d poles(1, 2);
+    poles.SetValue(1, a);
+    poles.SetValue(2, b);
+    TColStd_Array1OfReal knots(1, 2);
+    knots.SetValue(1, t0);
+    knots.SetValue(2, t1);
+    TColStd_Array1OfInteger multiplicities(1, 2);
+    multiplicities.Init(2);
+    return new Geom2d_BSplineCurve(poles, knots, multiplicities, 1);
+}
+
 class Converter {
 public:
-    explicit Converter(const Solid& solid) : solid_(solid) {
+    Converter(const Solid& solid, const ConvertOptions& options) : solid_(solid), options_(options) {
         const Box box = solid.bounding_box();
         // Our geometry is exact to rounding, but OCCT evaluates an edge's 3D curve and the face
         // surface through its pcurve by different routes, and with rational weights 10^+-3 these
@@ -60,20 +99,26 @@ public:
     ConvertedSolid run() {
         builder_.MakeShell(out_.shell);
         const auto& faces = solid_.faces();
+        if (options_.bezier_faces) plan_patches();
         for (std::size_t i = 0; i < faces.size(); ++i) {
-            TopoDS_Face face;
+            out_.first_face.push_back(out_.faces.size());
             try {
-                face = faces[i].kind() == Face::Kind::surface ? surface_face(faces[i]) : planar_face(faces[i]);
+                const Interval du = faces[i].surface().domain_u(), dv = faces[i].surface().domain_v();
+                if (faces[i].kind() == Face::Kind::planar) {
+                    add(planar_face(faces[i]), {du.min, du.max, dv.min, dv.max});
+                } else if (options_.bezier_faces) {
+                    patch_faces(faces[i], grids_.at(i));
+                } else {
+                    add(surface_face(faces[i]), {du.min, du.max, dv.min, dv.max});
+                }
             } catch (const Error& e) {
                 throw Error("solid: face " + std::to_string(i) + ": " + e.what());
             }
-            builder_.Add(out_.shell, face);
-            out_.faces.push_back(face);
         }
+        out_.first_face.push_back(out_.faces.size());
         // Pcurves were added after the 3D ranges: give every representation the edge's range again.
-        for (auto& [edge, occt_edge] : out_.edges) {
-            const Interval domain = edge->curve.domain();
-            builder_.Range(occt_edge, domain.min, domain.max);
+        for (const auto& [occt_edge, range] : ranges_) {
+            builder_.Range(occt_edge, range.min, range.max);
             builder_.SameRange(occt_edge, Standard_True);
             builder_.SameParameter(occt_edge, Standard_True);
         }
@@ -84,28 +129,65 @@ public:
     }
 
 private:
+    // `domain`: our parameter rectangle the face covers (u0, u1, v0, v1).
+    void add(const TopoDS_Face& face, const std::array<double, 4>& domain) {
+        builder_.Add(out_.shell, face);
+        out_.faces.push_back(face);
+        out_.face_domains.push_back(domain);
+    }
+
     TopoDS_Vertex vertex(const VertexPtr& v) {
         auto it = out_.vertices.find(v.get());
         if (it != out_.vertices.end()) return it->second;
-        TopoDS_Vertex made;
-        builder_.MakeVertex(made, to_occt_point(v->point), out_.tolerance);
+        TopoDS_Vertex made = new_vertex(v->point);
         out_.vertices.emplace(v.get(), made);
         return made;
     }
 
-    // The shared TopoDS_Edge of a non-degenerate Edge: 3D curve, range, start vertex FORWARD and end
-    // vertex REVERSED (OCCT's convention; a closed edge has the same vertex twice).
-    TopoDS_Edge edge(const EdgePtr& e) {
+    TopoDS_Vertex new_vertex(const Vec3& point) {
+        TopoDS_Vertex made;
+        builder_.MakeVertex(made, to_occt_point(point), out_.tolerance);
+        return made;
+    }
+
+    // A non-degenerate TopoDS_Edge on `curve` over [first, last]: start vertex FORWARD and end vertex
+    // REVERSED (OCCT's convention; a closed edge has the same vertex twice).
+    TopoDS_Edge new_edge(const Handle(Geom_Curve)& curve, const Interval& range, const TopoDS_Vertex& start,
+                         const TopoDS_Vertex& end) {
+        TopoDS_Edge made;
+        builder_.MakeEdge(made, curve, out_.tolerance);
+        builder_.Add(made, start.Oriented(TopAbs_FORWARD));
+        builder_.Add(made, end.Oriented(TopAbs_REVERSED));
+        builder_.Range(made, range.min, range.max);
+        ranges_.emplace_back(made, range);
+        return made;
+    }
+
+    // The shared pieces of a non-degenerate Edge, cut at cuts_[e] (none without bezier_faces): each piece
+    // is the edge's curve segmented to its range, so that no edge curve keeps a C0 knot.
+    const std::vector<TopoDS_Edge>& pieces(const EdgePtr& e) {
         auto it = out_.edges.find(e.get());
         if (it != out_.edges.end()) return it->second;
-        TopoDS_Edge made;
-        builder_.MakeEdge(made, to_occt(e->curve), out_.tolerance);
-        builder_.Add(made, vertex(e->start).Oriented(TopAbs_FORWARD));
-        builder_.Add(made, vertex(e->end).Oriented(TopAbs_REVERSED));
         const Interval domain = e->curve.domain();
-        builder_.Range(made, domain.min, domain.max);
-        out_.edges.emplace(e.get(), made);
-        return made;
+        std::vector<double>& cuts = cut_parameters_[e.get()];
+        cuts = {domain.min};
+        if (auto planned = cuts_.find(e.get()); planned != cuts_.end()) cuts.insert(cuts.end(), planned->second.begin(), planned->second.end());
+        cuts.push_back(domain.max);
+        std::vector<TopoDS_Vertex>& at = cut_vertices_[e.get()];
+        at.push_back(vertex(e->start));
+        for (std::size_t k = 1; k + 1 < cuts.size(); ++k) at.push_back(new_vertex(e->curve.point(cuts[k])));
+        at.push_back(vertex(e->end));
+        const Handle(Geom_BSplineCurve) whole = to_occt(e->curve);
+        std::vector<TopoDS_Edge> made;
+        for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+            Handle(Geom_BSplineCurve) piece = whole;
+            if (cuts.size() > 2) {
+                piece = Handle(Geom_BSplineCurve)::DownCast(whole->Copy());
+                piece->Segment(cuts[k], cuts[k + 1]);
+            }
+            made.push_back(new_edge(piece, Interval{cuts[k], cuts[k + 1]}, at[k], at[k + 1]));
+        }
+        return out_.edges.emplace(e.get(), std::move(made)).first->second;
     }
 
     // A degenerate edge for one use: no 3D curve, a pcurve only, flagged Degenerated (OCCT's own spheres
@@ -146,43 +228,218 @@ private:
         }
     }
 
+    // The uses along side s of a surface face between the surface parameters x0 < x1 (its whole side
+    // without bezier_faces): the pieces of its edge there in the face's direction of travel, or one
+    // degenerate edge. `fixed` is the other parameter of the side. With `unit_cell`, the face is a Bézier
+    // patch whose own parameters run over [0, 1]^2 where ours run over the cell: x0 .. x1 along the side,
+    // and `fixed` is then 0 or 1.
+    std::vector<Use> side_uses(const Coedge& coedge, int s, double fixed, double x0, double x1, bool unit_cell) {
+        const bool edge_with_parameter = traversal_increasing(s) != coedge.reversed;
+        const TopAbs_Orientation orientation = coedge.reversed ? TopAbs_REVERSED : TopAbs_FORWARD;
+        if (coedge.edge->degenerate) {
+            const Interval range = unit_cell ? Interval{0, 1} : Interval{x0, x1};
+            Use use{degenerate_edge(*coedge.edge), orientation,
+                    side_pcurve(s, fixed, range.min, range.max, edge_with_parameter)};
+            degenerate_ranges_.emplace_back(use.edge, range);
+            return {use};
+        }
+        const std::vector<TopoDS_Edge>& all = pieces(coedge.edge);
+        const std::vector<double>& cuts = cut_parameters_.at(coedge.edge.get());
+        const Interval domain = coedge.edge->curve.domain();
+        // The surface parameter of the edge's parameter t (t -> a + b - t when the edge runs against it).
+        const auto along = [&](double t) { return edge_with_parameter ? t : domain.min + domain.max - t; };
+        // The point of the unit cell at surface parameter x along the side.
+        const auto in_cell = [&](double x) {
+            const double w = (x - x0) / (x1 - x0);
+            return along_u(s) ? gp_Pnt2d(w, fixed) : gp_Pnt2d(fixed, w);
+        };
+        const Handle(Geom2d_Curve) pcurve = side_pcurve(s, fixed, domain.min, domain.max, edge_with_parameter);
+        std::vector<Use> uses;
+        for (std::size_t k = 0; k < all.size(); ++k) {
+            const double middle = along(0.5 * (cuts[k] + cuts[k + 1]));
+            if (!(middle > x0 && middle < x1)) continue;
+            uses.push_back(Use{all[k], orientation,
+                               unit_cell ? linear_pcurve(in_cell(along(cuts[k])), in_cell(along(cuts[k + 1])), cuts[k], cuts[k + 1])
+                                         : pcurve});
+        }
+        if (coedge.reversed) std::reverse(uses.begin(), uses.end());
+        return uses;
+    }
+
+    // A surface face bounded by the four sides of its parameter rectangle (NaturalRestriction).
+    // `degenerate_before`: how many degenerate edges existed before this face's sides were made.
+    TopoDS_Face bounded_face(const Handle(Geom_Surface)& surface, const std::array<std::vector<Use>, 4>& sides,
+                             std::size_t degenerate_before) {
+        TopoDS_Face made;
+        builder_.MakeFace(made, surface, out_.tolerance);
+        std::vector<Use> uses;
+        for (const auto& side : sides) uses.insert(uses.end(), side.begin(), side.end());
+        attach_pcurves(made, uses);
+        // A degenerate edge had no representation to take its range from when its pcurve was added.
+        for (std::size_t k = degenerate_before; k < degenerate_ranges_.size(); ++k)
+            builder_.Range(degenerate_ranges_[k].first, degenerate_ranges_[k].second.min, degenerate_ranges_[k].second.max);
+        builder_.Add(made, wire(uses));
+        builder_.NaturalRestriction(made, Standard_True);
+        return made;
+    }
+
+    // The fixed parameter of side s on the rectangle [u0, u1] x [v0, v1].
+    static double fixed_of(int s, double u0, double u1, double v0, double v1) {
+        return s == 0 ? v0 : s == 1 ? u1 : s == 2 ? v1 : u0;
+    }
+
     TopoDS_Face surface_face(const Face& face) {
         const NurbsSurface& surface = face.surface();
         const Interval du = surface.domain_u(), dv = surface.domain_v();
-        TopoDS_Face made;
-        builder_.MakeFace(made, to_occt(surface), out_.tolerance);
-
-        std::vector<Use> uses;
+        std::array<std::vector<Use>, 4> sides;
+        const std::size_t before = degenerate_ranges_.size();
         for (int s = 0; s < 4; ++s) {
-            const Coedge& coedge = face.sides()[static_cast<std::size_t>(s)];
-            const bool along_u = s == static_cast<int>(Side::v_min) || s == static_cast<int>(Side::v_max);
-            const Interval domain = along_u ? du : dv;
-            const double fixed = s == 0 ? dv.min : s == 1 ? du.max : s == 2 ? dv.max : du.min;
-            // The face runs v_min and u_max with increasing parameter, v_max and u_min decreasing; the edge
-            // runs with the surface's parameter exactly when both directions agree (brep.hpp).
-            const bool traversal_increasing = s == 0 || s == 1;
-            const bool edge_with_parameter = traversal_increasing != coedge.reversed;
-            Use use;
-            use.orientation = coedge.reversed ? TopAbs_REVERSED : TopAbs_FORWARD;
-            if (coedge.edge->degenerate) {
-                use.edge = degenerate_edge(*coedge.edge);
-                use.pcurve = side_pcurve(s, fixed, domain.min, domain.max, edge_with_parameter);
-            } else {
-                use.edge = edge(coedge.edge);
-                const Interval edge_domain = coedge.edge->curve.domain();
-                use.pcurve = side_pcurve(s, fixed, edge_domain.min, edge_domain.max, edge_with_parameter);
-            }
-            uses.push_back(use);
+            const Interval range = along_u(s) ? du : dv;
+            sides[static_cast<std::size_t>(s)] = side_uses(face.sides()[static_cast<std::size_t>(s)], s,
+                                                           fixed_of(s, du.min, du.max, dv.min, dv.max), range.min, range.max,
+                                                           false);
         }
-        attach_pcurves(made, uses);
-        // A degenerate edge had no representation to take its range from when its pcurve was added.
-        for (std::size_t s = 0; s < 4; ++s)
-            if (face.sides()[s].edge->degenerate) {
-                const Interval domain = (s % 2 == 0) ? du : dv;
-                builder_.Range(uses[s].edge, domain.min, domain.max);
+        return bounded_face(to_occt(surface), sides, before);
+    }
+
+    // bezier_faces: the patch grid of every surface face, and where every edge is cut: at the grid lines
+    // of the faces beside it (in its own parameter) and at its own knots.
+    void plan_patches() {
+        const auto& faces = solid_.faces();
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+            const Face& face = faces[i];
+            if (face.kind() != Face::Kind::surface) continue;
+            detail::PatchGrid grid = detail::gprop_patch_grid(face.surface(), kGPropTolerance);
+            out_.gprop_tolerance_reached = out_.gprop_tolerance_reached && grid.reached;
+            for (int s = 0; s < 4; ++s) {
+                const Coedge& coedge = face.sides()[static_cast<std::size_t>(s)];
+                if (coedge.edge->degenerate) continue;
+                const Interval domain = coedge.edge->curve.domain();
+                const bool edge_with_parameter = traversal_increasing(s) != coedge.reversed;
+                const std::vector<double>& lines = along_u(s) ? grid.u : grid.v;
+                for (std::size_t k = 1; k + 1 < lines.size(); ++k)
+                    cuts_[coedge.edge.get()].insert(edge_with_parameter ? lines[k] : domain.min + domain.max - lines[k]);
             }
+            grids_.emplace(i, std::move(grid));
+        }
+        for (const EdgePtr& edge : solid_.edges())
+            if (!edge->degenerate)
+                for (double knot : interior_knots(edge->curve.knots())) cuts_[edge.get()].insert(knot);
+    }
+
+    // The vertex at grid point (i, j) of a face's patch grid: inside, a new one; on the boundary, the
+    // vertex of its side's edge piece there (the face's corner vertex, or a pole).
+    TopoDS_Vertex grid_vertex(const Face& face, const detail::PatchGrid& grid, std::size_t i, std::size_t j,
+                              std::map<std::pair<std::size_t, std::size_t>, TopoDS_Vertex>& inner) {
+        const std::size_t nu = grid.u.size() - 1, nv = grid.v.size() - 1;
+        int s = -1;
+        double x = 0;
+        if (j == 0) s = 0, x = grid.u[i];
+        else if (i == nu) s = 1, x = grid.v[j];
+        else if (j == nv) s = 2, x = grid.u[i];
+        else if (i == 0) s = 3, x = grid.v[j];
+        if (s < 0) {
+            auto it = inner.find({i, j});
+            if (it == inner.end())
+                it = inner.emplace(std::pair{i, j}, new_vertex(face.surface().point(grid.u[i], grid.v[j]))).first;
+            return it->second;
+        }
+        const Coedge& coedge = face.sides()[static_cast<std::size_t>(s)];
+        if (coedge.edge->degenerate) return vertex(coedge.edge->start);
+        pieces(coedge.edge);
+        const Interval domain = coedge.edge->curve.domain();
+        const double t = traversal_increasing(s) != coedge.reversed ? x : domain.min + domain.max - x;
+        const std::vector<double>& cuts = cut_parameters_.at(coedge.edge.get());
+        const auto nearest = std::min_element(cuts.begin(), cuts.end(), [t](double a, double b) {
+            return std::abs(a - t) < std::abs(b - t);
+        });
+        return cut_vertices_.at(coedge.edge.get())[static_cast<std::size_t>(nearest - cuts.begin())];
+    }
+
+    // bezier_faces: one face per cell of the face's patch grid, on the cell's unit-square patch. Cells on the
+    // boundary take the pieces of the face's edges (or degenerate edges); neighbouring cells share the
+    // isocurve edges between them, whose curves come from the cell patch (one knot span long in the
+    // unrefined u direction; in v at most C1 knots), parameterised over [0, 1].
+    void patch_faces(const Face& face, const detail::PatchGrid& grid) {
+        const std::size_t nu = grid.u.size() - 1, nv = grid.v.size() - 1;
+        std::map<std::pair<std::size_t, std::size_t>, TopoDS_Vertex> inner;
+        std::map<std::pair<std::size_t, std::size_t>, TopoDS_Edge> along_u_edges, along_v_edges;
+        // The edge along u at grid line v[j] over cell column i, and along v at u[i] over cell row j.
+        const auto u_edge = [&](std::size_t j, std::size_t i) {
+            auto it = along_u_edges.find({j, i});
+            if (it != along_u_edges.end()) return it->second;
+            const Handle(Geom_Curve) curve = j < nv ? grid.cell(i, j)->VIso(0.0) : grid.cell(i, j - 1)->VIso(1.0);
+            const TopoDS_Edge made = new_edge(curve, Interval{0, 1}, grid_vertex(face, grid, i, j, inner),
+                                              grid_vertex(face, grid, i + 1, j, inner));
+            return along_u_edges.emplace(std::pair{j, i}, made).first->second;
+        };
+        const auto v_edge = [&](std::size_t i, std::size_t j) {
+            auto it = along_v_edges.find({i, j});
+            if (it != along_v_edges.end()) return it->second;
+            const Handle(Geom_Curve) curve = i < nu ? grid.cell(i, j)->UIso(0.0) : grid.cell(i - 1, j)->UIso(1.0);
+            const TopoDS_Edge made = new_edge(curve, Interval{0, 1}, grid_vertex(face, grid, i, j, inner),
+                                              grid_vertex(face, grid, i, j + 1, inner));
+            return along_v_edges.emplace(std::pair{i, j}, made).first->second;
+        };
+        for (std::size_t i = 0; i < nu; ++i)
+            for (std::size_t j = 0; j < nv; ++j) {
+                const double u0 = grid.u[i], u1 = grid.u[i + 1], v0 = grid.v[j], v1 = grid.v[j + 1];
+                const std::size_t before = degenerate_ranges_.size();
+                std::array<std::vector<Use>, 4> sides;
+                // An inner side: its isocurve edge, with the cell's parameter, travelled as the side goes.
+                const auto inner_side = [&](int s, const TopoDS_Edge& edge) {
+                    return std::vector<Use>{Use{edge, traversal_increasing(s) ? TopAbs_FORWARD : TopAbs_REVERSED,
+                                                side_pcurve(s, fixed_of(s, 0, 1, 0, 1), 0, 1, true)}};
+                };
+                const auto outer_side = [&](int s) {
+                    const double a = along_u(s) ? u0 : v0, b = along_u(s) ? u1 : v1;
+                    return side_uses(face.sides()[static_cast<std::size_t>(s)], s, fixed_of(s, 0, 1, 0, 1), a, b, true);
+                };
+                sides[0] = j == 0 ? outer_side(0) : inner_side(0, u_edge(j, i));
+                sides[1] = i + 1 == nu ? outer_side(1) : inner_side(1, v_edge(i + 1, j));
+                sides[2] = j + 1 == nv ? outer_side(2) : inner_side(2, u_edge(j + 1, i));
+                sides[3] = i == 0 ? outer_side(3) : inner_side(3, v_edge(i, j));
+                const Handle(Geom_Plane) plane = flat_patch_plane(grid.cell(i, j));
+                add(plane.IsNull() ? bounded_face(grid.cell(i, j), sides, before) : plane_face(plane, sides),
+                    {u0, u1, v0, v1});
+            }
+    }
+
+    // The plane of a patch whose control points all lie in one (to rounding: 1e-12 of the solid's size), with
+    // the patch's orientation (normal S_u x S_v at its middle); null otherwise. Flat patches (the disc a
+    // profile line square to the axis sweeps, a side of a polygon's extrusion) become plane faces: OCCT's
+    // self-intersection check (FreeCAD's "Run BOP check") skips planes, and flags the B-spline disc at the
+    // top of the vase example at some sizes; Sketcher attaches to plane faces.
+    Handle(Geom_Plane) flat_patch_plane(const Handle(Geom_BSplineSurface)& patch) const {
+        gp_Pnt middle;
+        gp_Vec du, dv;
+        patch->D1(0.5, 0.5, middle, du, dv);
+        const gp_Vec normal = du.Crossed(dv);
+        if (normal.Magnitude() <= gp::Resolution()) return {};
+        const gp_Pln plane(middle, gp_Dir(normal));
+        const double flatness = 1e-12 * solid_.bounding_box().diagonal();
+        for (int i = 1; i <= patch->NbUPoles(); ++i)
+            for (int j = 1; j <= patch->NbVPoles(); ++j)
+                if (plane.Distance(patch->Pole(i, j)) > flatness) return {};
+        return new Geom_Plane(plane);
+    }
+
+    // A plane face bounded by the uses of a flat patch's sides: degenerate uses dropped (a plane has no
+    // singular point), pcurves the edges' 3D curves in the plane's coordinates (exact: GeomAPI::To2d of a
+    // B-spline in the plane maps its poles).
+    TopoDS_Face plane_face(const Handle(Geom_Plane)& plane, const std::array<std::vector<Use>, 4>& sides) {
+        TopoDS_Face made;
+        builder_.MakeFace(made, plane, out_.tolerance);
+        std::vector<Use> uses;
+        for (const auto& side : sides)
+            for (const Use& use : side) {
+                if (BRep_Tool::Degenerated(use.edge)) continue;
+                double first = 0, last = 0;
+                const Handle(Geom_Curve) curve = BRep_Tool::Curve(use.edge, first, last);
+                uses.push_back(Use{use.edge, use.orientation, GeomAPI::To2d(curve, plane->Pln())});
+            }
+        attach_pcurves(made, uses);
         builder_.Add(made, wire(uses));
-        builder_.NaturalRestriction(made, Standard_True);
         return made;
     }
 
@@ -199,12 +456,21 @@ private:
         for (const auto& loop : face.loops()) {
             auto& uses = loops.emplace_back();
             for (const Coedge& coedge : loop) {
-                Use use;
-                use.edge = edge(coedge.edge);
-                use.orientation = coedge.reversed ? TopAbs_REVERSED : TopAbs_FORWARD;
-                use.pcurve = to_occt_2d(coedge.edge->curve, plane.origin, plane.x_axis, plane.y_axis);
-                uses.push_back(use);
-                all.push_back(use);
+                const std::vector<TopoDS_Edge>& edge_pieces = pieces(coedge.edge);
+                const std::vector<double>& cuts = cut_parameters_.at(coedge.edge.get());
+                const Handle(Geom2d_BSplineCurve) whole = to_occt_2d(coedge.edge->curve, plane.origin, plane.x_axis, plane.y_axis);
+                std::vector<Use> piece_uses;
+                for (std::size_t k = 0; k < edge_pieces.size(); ++k) {
+                    Handle(Geom2d_BSplineCurve) pcurve = whole;
+                    if (edge_pieces.size() > 1) {
+                        pcurve = Handle(Geom2d_BSplineCurve)::DownCast(whole->Copy());
+                        pcurve->Segment(cuts[k], cuts[k + 1]);
+                    }
+                    piece_uses.push_back(Use{edge_pieces[k], coedge.reversed ? TopAbs_REVERSED : TopAbs_FORWARD, pcurve});
+                }
+                if (coedge.reversed) std::reverse(piece_uses.begin(), piece_uses.end());
+                uses.insert(uses.end(), piece_uses.begin(), piece_uses.end());
+                all.insert(all.end(), piece_uses.begin(), piece_uses.end());
             }
         }
         attach_pcurves(made, all);
@@ -213,12 +479,19 @@ private:
     }
 
     const Solid& solid_;
+    const ConvertOptions& options_;
     BRep_Builder builder_;
     ConvertedSolid out_;
+    std::vector<std::pair<TopoDS_Edge, Interval>> ranges_;             // every non-degenerate edge made
+    std::vector<std::pair<TopoDS_Edge, Interval>> degenerate_ranges_;  // every degenerate edge made
+    std::map<std::size_t, detail::PatchGrid> grids_;                   // bezier_faces: by face index
+    std::map<const Edge*, std::set<double>> cuts_;                     // bezier_faces: interior cuts per edge
+    std::map<const Edge*, std::vector<double>> cut_parameters_;        // the pieces' ends, domain ends included
+    std::map<const Edge*, std::vector<TopoDS_Vertex>> cut_vertices_;   // a vertex per entry of cut_parameters_
 };
 
 }  // namespace
 
-ConvertedSolid convert(const Solid& solid) { return Converter(solid).run(); }
+ConvertedSolid convert(const Solid& solid, const ConvertOptions& options) { return Converter(solid, options).run(); }
 
 }  // namespace ratbez::occt

@@ -221,11 +221,19 @@ void bind_solids(py::module_& m) {
         "Revolve a profile (BezierCurve, NurbsCurve or a list of them joined end to end) by angle degrees.");
     m.def(
         "extrude",
-        [](const py::object& profile, const py::object& direction, double distance) {
-            return extrude(to_profile(profile, "profile"), to_vec3(direction, "direction"), distance);
+        [](const py::object& profile, const py::object& direction, double distance, const py::object& holes) {
+            std::vector<Profile> hole_profiles;
+            if (!holes.is_none()) {
+                if (!py::isinstance<py::list>(holes) && !py::isinstance<py::tuple>(holes))
+                    throw Error("holes: expected a list of profiles");
+                std::size_t index = 0;
+                for (py::handle hole : holes) hole_profiles.push_back(to_profile(hole, "holes[" + std::to_string(index++) + "]"));
+            }
+            return extrude(to_profile(profile, "profile"), to_vec3(direction, "direction"), distance, hole_profiles);
         },
-        py::arg("profile"), py::arg("direction"), py::arg("distance"),
-        "Sweep a closed planar profile by distance along direction.");
+        py::arg("profile"), py::arg("direction"), py::arg("distance"), py::arg("holes") = py::none(),
+        "Sweep a closed planar profile by distance along direction; holes: closed profiles inside it (a list,\n"
+        "each a curve or a list of curves joined end to end) that become holes through the prism.");
 }
 
 }  // namespace ratbez::python

@@ -103,7 +103,8 @@ public:
     const std::vector<Face>& faces() const { return faces_; }
     std::vector<EdgePtr> edges() const;       // each distinct edge once, degenerate ones included
     std::vector<VertexPtr> vertices() const;  // each distinct vertex once
-    // V - E + F with degenerate edges not counted (their vertex is counted): 2 for a ball, 0 for a torus.
+    // V - E + F - R with degenerate edges not counted (their vertex is counted) and R the hole loops of planar
+    // faces: 2 - 2 genus, so 2 for a ball, 0 for a torus, -2 for a prism with two holes.
     int euler_characteristic() const;
 
     // Axis-aligned box of all control points: it contains the solid (convex hull property), but may be

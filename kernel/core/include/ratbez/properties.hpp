@@ -11,6 +11,7 @@
 namespace ratbez {
 
 double surface_area(const Face& face);
+double surface_area(const NurbsSurface& surface);  // the whole untrimmed surface
 double surface_area(const Solid& solid);
 double enclosed_volume(const Solid& solid);
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ratbez/brep.hpp"
+#include "ratbez/occt/convert_options.hpp"
 
 namespace ratbez::occt {
 
@@ -25,6 +26,7 @@ struct CheckOptions {
     double deviation_limit = 1e-9;    // relative to the solid's size: larger deviations fail the check
     double volume_limit = 1e-6;       // relative volume disagreement that fails the check
     AnalyticShape analytic{};
+    ConvertOptions convert{};         // the representation checked (validity, deviation, OCCT's volume)
 };
 
 struct CheckReport {

@@ -1,0 +1,790 @@
+"""Task panels of the RatBez features (GUI only): opened when a creating command makes an object and on
+double-click (the view provider's setEdit), as FreeCAD's Part primitives and PartDesign features do.
+
+Every change in the form is written to the object's properties and recomputed at once (live preview);
+a failure shows in the panel (not in the report view while the panel is open). The whole session is one
+undo step: the transaction FreeCAD keeps open while an edit started by a command or a double-click lasts
+(or one the panel opens), committed by OK and aborted by Cancel, so Cancel of a new object removes it and
+Cancel of an edit restores the old values. OK is refused while the object does not recompute.
+"""
+
+import contextlib
+
+import FreeCAD as App
+import FreeCADGui as Gui
+from PySide import QtCore, QtGui
+
+from . import conversion, features, resources
+from .errors import Failure
+from .i18n import translate
+
+V = App.Vector
+_open = {}  # object name -> its open panel
+
+
+def open_for(obj):
+    """Show the task panel of a RatBez object (the view provider's setEdit). False if another task
+    dialog is open."""
+    proxy = features.proxy_of(obj)
+    if proxy is None:
+        return False
+    if Gui.Control.activeDialog():
+        App.Console.PrintWarning(translate("RatBez: close the open task panel first\n"))
+        return False
+    panel = PANELS[proxy.TYPE](obj)
+    _open[obj.Name] = panel
+    Gui.Control.showDialog(panel)
+    return True
+
+
+def close_for(obj):
+    """The view provider's unsetEdit: forget the panel and close the dialog."""
+    panel = _open.pop(getattr(obj, "Name", None), None)
+    if panel is not None:
+        panel.cleanup()
+    Gui.Control.closeDialog()
+
+
+def panel_of(obj):
+    """The open panel of obj, or None (tests drive it)."""
+    return _open.get(obj.Name)
+
+
+# ---------------------------------------------------------------------------------------------------
+# Fields
+
+class NumberField:
+    """A number input with a unit: FreeCAD's Gui::QuantitySpinBox (units, expressions, as in FreeCAD's
+    own panels) or, where the UI loader cannot make one, a QDoubleSpinBox."""
+
+    def __init__(self, unit="mm", minimum=-1e9, maximum=1e9, step=1.0):
+        widget = Gui.UiLoader().createWidget("Gui::QuantitySpinBox")
+        self.quantity = widget is not None
+        if self.quantity:
+            widget.setProperty("unit", unit)
+            widget.setProperty("minimum", float(minimum))
+            widget.setProperty("maximum", float(maximum))
+            widget.setProperty("singleStep", float(step))
+        else:
+            widget = QtGui.QDoubleSpinBox()
+            widget.setRange(minimum, maximum)
+            widget.setDecimals(6)
+            widget.setSingleStep(step)
+            widget.setSuffix(" " + unit.replace("deg", "°") if unit else "")
+        self.widget = widget
+
+    def value(self):
+        return float(self.widget.property("rawValue")) if self.quantity else self.widget.value()
+
+    def set_value(self, value):
+        if self.quantity:
+            self.widget.setProperty("rawValue", float(value))
+        else:
+            self.widget.setValue(float(value))
+
+    def on_change(self, callback):
+        if self.quantity:
+            # PySide wraps the loader's Gui::QuantitySpinBox as a plain QAbstractSpinBox, whose Python
+            # class knows none of its signals: connect by the C++ signature.
+            QtCore.QObject.connect(self.widget, QtCore.SIGNAL("valueChanged(double)"), lambda *_: callback())
+        else:
+            self.widget.valueChanged.connect(lambda *_: callback())
+
+
+class VectorColumn:
+    """One vector (x, y, z) of a VectorGrid: three NumberFields."""
+
+    def __init__(self, fields):
+        self.fields = fields
+
+    def value(self):
+        return V(*(f.value() for f in self.fields))
+
+    def set_value(self, vector):
+        for field, component in zip(self.fields, (vector.x, vector.y, vector.z)):
+            field.set_value(component)
+
+    def on_change(self, callback):
+        for field in self.fields:
+            field.on_change(callback)
+
+    def set_enabled(self, enabled):
+        for field in self.fields:
+            field.widget.setEnabled(enabled)
+
+
+class VectorGrid:
+    """Vectors side by side, one column each, rows X, Y, Z: the layout of Part Revolve's Center and
+    Direction, narrow enough for the task view."""
+
+    def __init__(self, titles, units):
+        self.widget = QtGui.QWidget()
+        grid = QtGui.QGridLayout(self.widget)
+        grid.setContentsMargins(0, 0, 0, 0)
+        self.columns = []
+        for c, (title, unit) in enumerate(zip(titles, units)):
+            grid.addWidget(QtGui.QLabel(translate(title)), 0, c + 1)
+            fields = [NumberField(unit) for _ in range(3)]
+            for r, field in enumerate(fields):
+                grid.addWidget(field.widget, r + 1, c + 1)
+            self.columns.append(VectorColumn(fields))
+        for r, axis in enumerate("XYZ"):
+            grid.addWidget(QtGui.QLabel(axis), r + 1, 0)
+
+
+# ---------------------------------------------------------------------------------------------------
+# The panel framework
+
+class TaskPanel:
+    """Base of every RatBez task panel: form, live preview, status, transaction, OK / Cancel."""
+
+    TITLE = ""
+    ICON = "RatBezWorkbench"
+
+    def __init__(self, obj):
+        self.obj = obj
+        self.name = obj.Name
+        self.doc = obj.Document
+        self.proxy = obj.Proxy
+        self.loading = False
+        link = getattr(obj, "Profile", None)
+        self.profile_object = conversion.link_object(link) if link else None
+        if not App.getActiveTransaction():
+            # Opened from the Python console (setEdit): no command or double-click transaction to join.
+            self.doc.openTransaction(translate("Edit {}").format(obj.Label))
+        self.form = QtGui.QWidget()
+        self.form.setWindowTitle(translate(self.TITLE))
+        self.form.setWindowIcon(QtGui.QIcon(resources.icon(self.ICON)))
+        self.layout = QtGui.QFormLayout(self.form)
+        self.build()
+        self.status = QtGui.QLabel()
+        self.status.setWordWrap(True)
+        self.status.setStyleSheet("color: #c00000")
+        self.layout.addRow(self.status)
+        with self.filling():
+            self.load()
+        self.proxy.quiet = True
+        self.show_status()
+        self.shown()
+
+    # -- subclasses -------------------------------------------------------------------------------
+
+    def build(self):
+        """Add the form's rows (self.layout) and connect their changes to self.changed."""
+
+    def load(self):
+        """Properties -> widgets."""
+
+    def store(self):
+        """Widgets -> properties; may raise Failure for input the widgets cannot hold."""
+
+    def shown(self):
+        """After the form is filled and after each preview (the Revolve axis drawing)."""
+
+    # -- live preview -----------------------------------------------------------------------------
+
+    @contextlib.contextmanager
+    def filling(self):
+        """While the panel writes its own widgets: their change signals are not the user's edits."""
+        self.loading = True
+        try:
+            yield
+        finally:
+            self.loading = False
+
+    def reload(self):
+        """Properties -> widgets again (the panel changed properties itself), then the preview."""
+        with self.filling():
+            self.load()
+        self.changed()
+
+    def changed(self, *_):
+        if self.loading:
+            return
+        try:
+            self.store()
+        except Failure as failure:
+            self.status.setText(str(failure))
+            return
+        self.doc.recompute()
+        self.show_status()
+        self.shown()
+
+    def failure(self):
+        """The object's failure, or None when it recomputes."""
+        if "Invalid" in self.obj.State or "Error" in self.obj.State:
+            return getattr(self.proxy, "last_failure", None) or self.obj.getStatusString()
+        return None
+
+    def show_status(self):
+        failure = self.failure()
+        self.status.setText(failure or "")
+        self.status.setVisible(bool(failure))
+
+    # -- OK / Cancel ------------------------------------------------------------------------------
+
+    def getStandardButtons(self):
+        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
+
+    def accept(self):
+        try:
+            self.store()
+        except Failure as failure:
+            self.status.setText(str(failure))
+            return False
+        self.doc.recompute()
+        if self.failure():
+            self.show_status()
+            return False
+        self.doc.commitTransaction()
+        self.finish()
+        return True
+
+    def reject(self):
+        self.doc.abortTransaction()
+        if self.doc.getObject(self.name) is None and self.profile_object is not None:
+            # Cancel of a new object: it is gone, show its profile again (hiding it was not undoable).
+            self.profile_object.ViewObject.Visibility = True
+        self.doc.recompute()
+        self.finish()
+        return True
+
+    def finish(self):
+        self.cleanup()
+        if Gui.ActiveDocument is not None and Gui.ActiveDocument.getInEdit() is not None:
+            Gui.ActiveDocument.resetEdit()
+
+    def cleanup(self):
+        """Undo what the panel set up (quiet reports, observers, drawings); safe to call twice."""
+        self.proxy.quiet = False
+        for name, panel in list(_open.items()):
+            if panel is self:
+                del _open[name]
+
+    def add_number(self, label, prop_unit="mm", minimum=-1e9, maximum=1e9, tooltip=""):
+        field = NumberField(prop_unit, minimum, maximum)
+        field.on_change(self.changed)
+        field.widget.setToolTip(tooltip)
+        self.layout.addRow(translate(label), field.widget)
+        return field
+
+    def add_vectors(self, titles, units, tooltips):
+        """A VectorGrid row; returns its columns, each connected to the live preview."""
+        grid = VectorGrid(titles, units)
+        for column, tooltip in zip(grid.columns, tooltips):
+            column.on_change(self.changed)
+            for field in column.fields:
+                field.widget.setToolTip(tooltip)
+        self.layout.addRow(grid.widget)
+        return grid.columns
+
+    def add_check(self, label, tooltip=""):
+        box = QtGui.QCheckBox(translate(label))
+        box.setToolTip(tooltip)
+        box.toggled.connect(self.changed)
+        self.layout.addRow(box)
+        return box
+
+    def tooltip(self, prop):
+        return translate(self.obj.getDocumentationOfProperty(prop), "App::Property")
+
+
+# ---------------------------------------------------------------------------------------------------
+# Primitives: dimensions, then where (Center) and which way (Axis)
+
+class PrimitivePanel(TaskPanel):
+    DIMENSIONS = ()        # property names of lengths
+    HAS_AXIS = True
+
+    def build(self):
+        self.dimensions = {}
+        for prop in self.DIMENSIONS:
+            minimum = 0.0 if prop in ("Radius2",) else 1e-7
+            self.dimensions[prop] = self.add_number(prop, "mm", minimum, 1e9, self.tooltip(prop))
+        titles, units, tips = ["Center"], ["mm"], [self.tooltip("Center")]
+        if self.HAS_AXIS:
+            titles, units, tips = titles + ["Axis"], units + [""], tips + [self.tooltip("Axis")]
+        self.layout.addRow(QtGui.QLabel("<b>{}</b>".format(translate("Location"))))
+        columns = self.add_vectors(titles, units, tips)
+        self.center = columns[0]
+        self.axis = columns[1] if self.HAS_AXIS else None
+
+    def load(self):
+        for prop, field in self.dimensions.items():
+            field.set_value(getattr(self.obj, prop).Value)
+        self.center.set_value(self.obj.Center)
+        if self.HAS_AXIS:
+            self.axis.set_value(self.obj.Axis)
+
+    def store(self):
+        for prop, field in self.dimensions.items():
+            setattr(self.obj, prop, field.value())
+        self.obj.Center = self.center.value()
+        if self.HAS_AXIS:
+            self.obj.Axis = self.axis.value()
+
+
+class CylinderPanel(PrimitivePanel):
+    TITLE, ICON, DIMENSIONS = "RatBez cylinder", "RatBez_Cylinder", ("Radius", "Height")
+
+
+class ConePanel(PrimitivePanel):
+    TITLE, ICON, DIMENSIONS = "RatBez cone", "RatBez_Cone", ("Radius1", "Radius2", "Height")
+
+
+class SpherePanel(PrimitivePanel):
+    TITLE, ICON, DIMENSIONS, HAS_AXIS = "RatBez sphere", "RatBez_Sphere", ("Radius",), False
+
+
+class TorusPanel(PrimitivePanel):
+    TITLE, ICON, DIMENSIONS = "RatBez torus", "RatBez_Torus", ("MajorRadius", "MinorRadius")
+
+
+# ---------------------------------------------------------------------------------------------------
+# Profile features: the profile, and a line (axis or direction) picked from presets or the 3D view
+
+def describe_link(link):
+    obj = conversion.link_object(link)
+    if obj is None:
+        return translate("(none)")
+    subs = [s for s in (link[1] or []) if s] if len(link) > 1 else []
+    return "{}: {}".format(obj.Label, ", ".join(subs)) if subs else obj.Label
+
+
+def selected_link(accept):
+    """The current selection as a PropertyLinkSub value if `accept(link)` says it fits, else None."""
+    selection = Gui.Selection.getSelectionEx()
+    if len(selection) != 1:
+        return None
+    link = (selection[0].Object, [s for s in selection[0].SubElementNames if s])
+    return link if accept(link) else None
+
+
+class ProfilePanel(TaskPanel):
+    """A panel with a Profile row ("Use selection" relinks it) and a line reference picked in the 3D view
+    while its mode asks for one (a selection observer, as PartDesign's "Select reference...")."""
+
+    LINE_PROPERTY = ""     # AxisReference / DirectionReference
+
+    def add_profile_row(self):
+        row = QtGui.QWidget()
+        layout = QtGui.QHBoxLayout(row)
+        layout.setContentsMargins(0, 0, 0, 0)
+        self.profile_label = QtGui.QLabel()
+        self.profile_button = QtGui.QPushButton(translate("Use selection"))
+        self.profile_button.setToolTip(translate("Make the selected sketch, wire, edges or face the profile"))
+        self.profile_button.clicked.connect(self.use_selected_profile)
+        layout.addWidget(self.profile_label, 1)
+        layout.addWidget(self.profile_button)
+        self.layout.addRow(translate("Profile"), row)
+        self.reference = None
+        Gui.Selection.addObserver(self)
+
+    def use_selected_profile(self):
+        link = selected_link(lambda candidate: candidate[0] is not self.obj)
+        if link is None:
+            self.status.setText(translate("Select a sketch, a wire, edges or one face first"))
+            self.status.setVisible(True)
+            return
+        self.obj.Profile = link
+        self.profile_label.setText(describe_link(link))
+        self.changed()
+
+    def add_line_modes(self, label, modes, tooltip):
+        """The combo box of the ways to give the axis or direction (modes: (name, text) pairs), and below
+        it the label that names the picked edge or datum line when that is the way."""
+        combo = QtGui.QComboBox()
+        for _, text in modes:
+            combo.addItem(translate(text))
+        combo.setToolTip(tooltip)
+        combo.currentIndexChanged.connect(self.changed)
+        self.layout.addRow(translate(label), combo)
+        self.reference_label = QtGui.QLabel()
+        self.layout.addRow("", self.reference_label)
+        return combo
+
+    def show_reference(self):
+        """The picked line's name, or how to pick one, while picking_line()."""
+        if self.picking_line():
+            self.reference_label.setText(describe_link(self.reference) if self.reference
+                                         else translate("Select a straight edge or a datum line"))
+        self.reference_label.setVisible(self.picking_line())
+
+    def picking_line(self):
+        """Whether a click on a straight edge or datum line in the 3D view or the tree sets the line."""
+        return False
+
+    # Gui.Selection observer
+    def addSelection(self, document, name, sub, point):
+        if not self.picking_line() or document != self.doc.Name:
+            return
+        obj = self.doc.getObject(name)
+        if obj is None or obj is self.obj:
+            return
+        link = (obj, [sub] if sub else [])
+        try:
+            conversion.straight_line(link, self.LINE_PROPERTY)
+        except Failure:
+            return
+        self.reference = link
+        self.changed()
+
+    def cleanup(self):
+        super().cleanup()
+        try:
+            Gui.Selection.removeObserver(self)
+        except Exception:  # already removed
+            pass
+
+
+_AXIS_MODES = [
+    ("Vertical", "Vertical axis of the profile"),
+    ("Horizontal", "Horizontal axis of the profile"),
+    ("X", "X axis"), ("Y", "Y axis"), ("Z", "Z axis"),
+    ("Reference", "Straight edge or datum line (pick it)"),
+    ("Custom", "Custom"),
+]
+_GLOBAL_AXES = {"X": V(1, 0, 0), "Y": V(0, 1, 0), "Z": V(0, 0, 1)}
+
+
+class RevolvePanel(ProfilePanel):
+    TITLE, ICON, LINE_PROPERTY = "RatBez revolve", "RatBez_Revolve", "AxisReference"
+
+    def build(self):
+        self.add_profile_row()
+        self.axis_mode = self.add_line_modes("Axis", _AXIS_MODES, translate(
+            "The axis: the profile plane's vertical or horizontal axis (a sketch's V or H axis), a global "
+            "axis through the origin, a straight edge or datum line picked in the 3D view or the tree, or "
+            "any point and direction"))
+        self.point, self.direction = self.add_vectors(["Axis point", "Axis direction"], ["mm", ""],
+                                                      [self.tooltip("AxisPoint"), self.tooltip("AxisDirection")])
+        self.angle = self.add_number("Angle", "deg", 1e-6, 360.0, self.tooltip("Angle"))
+        self.symmetric = self.add_check("Symmetric to the profile's plane", self.tooltip("Symmetric"))
+        self.reversed = self.add_check("Reversed", self.tooltip("Reversed"))
+        self.axis_node = None
+
+    def mode(self):
+        return _AXIS_MODES[self.axis_mode.currentIndex()][0]
+
+    def load(self):
+        obj = self.obj
+        self.profile_label.setText(describe_link(obj.Profile))
+        self.reference = obj.AxisReference if obj.AxisReference else None
+        self.axis_mode.setCurrentIndex([m for m, _ in _AXIS_MODES].index(self.guess_mode()))
+        self.point.set_value(obj.AxisPoint)
+        self.direction.set_value(obj.AxisDirection)
+        self.angle.set_value(obj.Angle)
+        self.symmetric.setChecked(obj.Symmetric)
+        self.reversed.setChecked(obj.Reversed)
+        self.update_fields()
+
+    def guess_mode(self):
+        """The preset the stored axis is, else Custom."""
+        obj = self.obj
+        if obj.AxisReference:
+            return "Reference"
+        point, direction = obj.AxisPoint, obj.AxisDirection
+        if direction.Length <= 1e-12:
+            return "Custom"
+        unit = V(direction).normalize()
+        for mode in ("Vertical", "Horizontal"):
+            try:
+                p, d = conversion.revolve_axis(obj.Profile, mode)
+            except Failure:
+                continue
+            if (unit - d).Length < 1e-9 and (point - p).Length < 1e-9:
+                return mode
+        for mode, axis in _GLOBAL_AXES.items():
+            if (unit - axis).Length < 1e-12 and point.Length < 1e-12:
+                return mode
+        return "Custom"
+
+    def picking_line(self):
+        return self.mode() == "Reference"
+
+    def update_fields(self):
+        custom = self.mode() == "Custom"
+        self.point.set_enabled(custom)
+        self.direction.set_enabled(custom)
+        self.show_reference()
+
+    def store(self):
+        obj = self.obj
+        mode = self.mode()
+        if mode != "Reference" and obj.AxisReference:
+            obj.AxisReference = None
+        if mode in ("Vertical", "Horizontal"):
+            obj.AxisPoint, obj.AxisDirection = conversion.revolve_axis(obj.Profile, mode)
+        elif mode in _GLOBAL_AXES:
+            obj.AxisPoint, obj.AxisDirection = V(0, 0, 0), _GLOBAL_AXES[mode]
+        elif mode == "Reference":
+            if self.reference is None:
+                raise Failure("AxisReference", translate("select a straight edge or a datum line"))
+            obj.AxisReference = self.reference
+        else:
+            obj.AxisPoint, obj.AxisDirection = self.point.value(), self.direction.value()
+        obj.Angle = self.angle.value()
+        obj.Symmetric = self.symmetric.isChecked()
+        obj.Reversed = self.reversed.isChecked()
+
+    def shown(self):
+        with self.filling():
+            if self.mode() != "Custom":
+                self.point.set_value(self.obj.AxisPoint)
+                self.direction.set_value(self.obj.AxisDirection)
+            self.update_fields()
+        self.draw_axis()
+
+    def draw_axis(self):
+        """The axis as a dashed line through the profile and the solid, in the 3D view."""
+        from pivy import coin
+        view = Gui.ActiveDocument.ActiveView if Gui.ActiveDocument else None
+        if view is None or not hasattr(view, "getSceneGraph"):
+            return
+        if self.axis_node is None:
+            self.axis_node = coin.SoSeparator()
+            style = coin.SoDrawStyle()
+            style.lineWidth = 3
+            style.linePattern = 0xF0F0
+            color = coin.SoBaseColor()
+            color.rgb = (0.85, 0.15, 0.15)
+            self.axis_coordinates = coin.SoCoordinate3()
+            self.axis_node.addChild(style)
+            self.axis_node.addChild(color)
+            self.axis_node.addChild(self.axis_coordinates)
+            self.axis_node.addChild(coin.SoLineSet())
+            view.getSceneGraph().addChild(self.axis_node)
+        box = App.BoundBox()
+        for obj in (self.obj, conversion.link_object(self.obj.Profile)):
+            shape = getattr(obj, "Shape", None)
+            if shape is not None and not shape.isNull():
+                box.add(shape.BoundBox)
+        direction = V(self.obj.AxisDirection)
+        if direction.Length <= 1e-12:
+            return
+        direction.normalize()
+        point = V(self.obj.AxisPoint)
+        middle = point + direction * direction.dot((box.Center if box.isValid() else point) - point)
+        half = 0.6 * (box.DiagonalLength if box.isValid() and box.DiagonalLength > 0 else 10.0)
+        ends = [middle - direction * half, middle + direction * half]
+        self.axis_coordinates.point.setValues(0, 2, [[e.x, e.y, e.z] for e in ends])
+
+    def cleanup(self):
+        super().cleanup()
+        if self.axis_node is not None and Gui.ActiveDocument and hasattr(Gui.ActiveDocument.ActiveView, "getSceneGraph"):
+            Gui.ActiveDocument.ActiveView.getSceneGraph().removeChild(self.axis_node)
+        self.axis_node = None
+
+
+_DIRECTION_MODES = [
+    ("Normal", "Normal of the profile"),
+    ("Edge", "Straight edge or datum line (pick it)"),
+    ("Custom", "Custom direction"),
+]
+
+
+class ExtrudePanel(ProfilePanel):
+    TITLE, ICON, LINE_PROPERTY = "RatBez extrude", "RatBez_Extrude", "DirectionReference"
+
+    def build(self):
+        self.add_profile_row()
+        self.direction_mode = self.add_line_modes("Direction", _DIRECTION_MODES, self.tooltip("DirectionMode"))
+        self.direction, = self.add_vectors(["Custom direction"], [""], [self.tooltip("Direction")])
+        self.distance = self.add_number("Distance", "mm", -1e9, 1e9, self.tooltip("Distance"))
+        self.reversed = self.add_check("Reversed", self.tooltip("Reversed"))
+        self.symmetric = self.add_check("Symmetric to the profile's plane", self.tooltip("Symmetric"))
+
+    def mode(self):
+        return _DIRECTION_MODES[self.direction_mode.currentIndex()][0]
+
+    def picking_line(self):
+        return self.mode() == "Edge"
+
+    def load(self):
+        obj = self.obj
+        self.profile_label.setText(describe_link(obj.Profile))
+        self.reference = obj.DirectionReference if obj.DirectionReference else None
+        self.direction_mode.setCurrentIndex([m for m, _ in _DIRECTION_MODES].index(obj.DirectionMode))
+        self.direction.set_value(obj.Direction)
+        self.distance.set_value(obj.Distance.Value)
+        self.reversed.setChecked(obj.Reversed)
+        self.symmetric.setChecked(obj.Symmetric)
+        self.update_fields()
+
+    def update_fields(self):
+        self.direction.set_enabled(self.mode() == "Custom")
+        self.show_reference()
+
+    def store(self):
+        obj = self.obj
+        mode = self.mode()
+        if mode == "Edge":
+            if self.reference is None:
+                raise Failure("DirectionReference", translate("select a straight edge or a datum line"))
+            obj.DirectionReference = self.reference
+        elif obj.DirectionReference:
+            obj.DirectionReference = None
+        obj.DirectionMode = mode
+        if mode == "Custom":
+            obj.Direction = self.direction.value()
+        obj.Distance = self.distance.value()
+        obj.Reversed = self.reversed.isChecked()
+        obj.Symmetric = self.symmetric.isChecked()
+
+    def shown(self):
+        self.update_fields()
+
+
+# ---------------------------------------------------------------------------------------------------
+# Bézier curve and surface: a table of poles and weights
+
+class PoleTable:
+    """A table of poles (X, Y, Z) and weights, with a 'Rational' switch for the weight column."""
+
+    def __init__(self, panel, row_label):
+        self.panel, self.row_label = panel, row_label
+        self.table = QtGui.QTableWidget(0, 4)
+        self.table.setHorizontalHeaderLabels(["X", "Y", "Z", translate("Weight")])
+        self.table.horizontalHeader().setSectionResizeMode(QtGui.QHeaderView.Stretch)
+        self.table.setMinimumHeight(160)
+        self.table.itemChanged.connect(panel.changed)
+        self.rational = QtGui.QCheckBox(translate("Rational (a weight per pole)"))
+        self.rational.toggled.connect(self.rational_toggled)
+
+    def rational_toggled(self, *_):
+        self.table.setColumnHidden(3, not self.rational.isChecked())
+        self.panel.changed()
+
+    def fill(self, poles, weights, labels):
+        self.table.setRowCount(len(poles))
+        self.table.setVerticalHeaderLabels(labels)
+        for row, pole in enumerate(poles):
+            for column, value in enumerate((pole.x, pole.y, pole.z)):
+                self.table.setItem(row, column, QtGui.QTableWidgetItem("{:.10g}".format(value)))
+            weight = weights[row] if row < len(weights) else 1.0
+            self.table.setItem(row, 3, QtGui.QTableWidgetItem("{:.10g}".format(weight)))
+        self.rational.setChecked(bool(weights))
+        self.table.setColumnHidden(3, not weights)
+
+    def _number(self, row, column):
+        item = self.table.item(row, column)
+        text = item.text().strip() if item else ""
+        try:
+            return float(text.replace(",", "."))
+        except ValueError:
+            what = ["X", "Y", "Z", translate("weight")][column]
+            raise Failure("Weights" if column == 3 else "Poles",
+                          translate("{} of {} is not a number: '{}'").format(what, self.row_label(row), text))
+
+    def poles(self):
+        return [V(*(self._number(row, c) for c in range(3))) for row in range(self.table.rowCount())]
+
+    def weights(self):
+        if not self.rational.isChecked():
+            return []
+        return [self._number(row, 3) for row in range(self.table.rowCount())]
+
+
+class BezierCurvePanel(TaskPanel):
+    TITLE, ICON = "RatBez Bézier curve", "RatBez_BezierCurve"
+
+    def build(self):
+        self.poles = PoleTable(self, lambda row: translate("pole {}").format(row + 1))
+        self.layout.addRow(self.poles.table)
+        buttons = QtGui.QWidget()
+        row = QtGui.QHBoxLayout(buttons)
+        row.setContentsMargins(0, 0, 0, 0)
+        add = QtGui.QPushButton(translate("Add pole"))
+        add.setToolTip(translate("Append a pole beyond the last one (the degree goes up by one)"))
+        add.clicked.connect(self.add_pole)
+        remove = QtGui.QPushButton(translate("Remove pole"))
+        remove.setToolTip(translate("Remove the selected pole, or the last one"))
+        remove.clicked.connect(self.remove_pole)
+        row.addWidget(add)
+        row.addWidget(remove)
+        row.addWidget(self.poles.rational)
+        self.layout.addRow(buttons)
+
+    def load(self):
+        count = len(self.obj.Poles)
+        self.poles.fill(self.obj.Poles, list(self.obj.Weights),
+                        [translate("P{}").format(k + 1) for k in range(count)])
+
+    def store(self):
+        poles, weights = self.poles.poles(), self.poles.weights()
+        self.obj.Poles = poles
+        self.obj.Weights = weights
+
+    def add_pole(self):
+        poles, weights = list(self.obj.Poles), list(self.obj.Weights)
+        step = poles[-1] - poles[-2] if len(poles) > 1 else V(1, 0, 0)
+        poles.append(poles[-1] + step)
+        if weights:
+            weights.append(1.0)
+        self.obj.Poles, self.obj.Weights = poles, weights
+        self.reload()
+
+    def remove_pole(self):
+        poles, weights = list(self.obj.Poles), list(self.obj.Weights)
+        if len(poles) <= 2:
+            return
+        row = self.poles.table.currentRow()
+        index = row if 0 <= row < len(poles) else len(poles) - 1
+        del poles[index]
+        if weights:
+            del weights[index]
+        self.obj.Poles, self.obj.Weights = poles, weights
+        self.reload()
+
+
+
+class BezierSurfacePanel(TaskPanel):
+    TITLE, ICON = "RatBez Bézier surface", "RatBez_BezierSurface"
+
+    def build(self):
+        self.degrees = []
+        for prop in ("DegreeU", "DegreeV"):
+            spin = QtGui.QSpinBox()
+            spin.setRange(1, features.MAX_OCCT_BEZIER_DEGREE)
+            spin.setToolTip(self.tooltip(prop))
+            spin.valueChanged.connect(self.degree_changed)
+            self.layout.addRow(translate(prop), spin)
+            self.degrees.append(spin)
+        self.poles = PoleTable(self, self.pole_name)
+        self.layout.addRow(self.poles.table)
+        self.layout.addRow(self.poles.rational)
+
+    def pole_name(self, row):
+        """'P2,3': row 2 (along u) and column 3 (along v) of the net, counted from 1 as in the messages."""
+        columns = self.obj.DegreeV + 1
+        return "P{},{}".format(row // columns + 1, row % columns + 1)
+
+    def load(self):
+        self.degrees[0].setValue(self.obj.DegreeU)
+        self.degrees[1].setValue(self.obj.DegreeV)
+        self.poles.fill(self.obj.Poles, list(self.obj.Weights),
+                        [self.pole_name(k) for k in range(len(self.obj.Poles))])
+
+    def degree_changed(self, *_):
+        if self.loading:
+            return
+        # The feature regenerates a net of the new size over the same extent (BezierSurface.onChanged).
+        self.obj.DegreeU, self.obj.DegreeV = self.degrees[0].value(), self.degrees[1].value()
+        self.reload()
+
+    def store(self):
+        self.obj.DegreeU, self.obj.DegreeV = self.degrees[0].value(), self.degrees[1].value()
+        self.obj.Poles = self.poles.poles()
+        self.obj.Weights = self.poles.weights()
+
+
+PANELS = {
+    "RatBez::Cylinder": CylinderPanel,
+    "RatBez::Cone": ConePanel,
+    "RatBez::Sphere": SpherePanel,
+    "RatBez::Torus": TorusPanel,
+    "RatBez::Revolve": RevolvePanel,
+    "RatBez::Extrude": ExtrudePanel,
+    "RatBez::BezierCurve": BezierCurvePanel,
+    "RatBez::BezierSurface": BezierSurfacePanel,
+}

@@ -1,0 +1,17 @@
+#pragma once
+// How a ratbez::Solid is handed to OpenCASCADE (topology.hpp has the construction). OCCT-free header, so
+// that files.hpp and check.hpp can take it beside CGAL.
+
+namespace ratbez::occt {
+
+// Relative accuracy per face that bezier_faces asks of OCCT's fixed Gauss rule (area, against the kernel).
+inline constexpr double kGPropTolerance = 1e-9;
+
+struct ConvertOptions {
+    // false: one OCCT face per face of ours. true: one face per rational Bézier patch of every surface face,
+    // refined so that OCCT's fixed Gauss rule — FreeCAD's Shape.Volume, Area, CenterOfMass — reads each
+    // to kGPropTolerance, with no C0 knot left in any surface or edge curve (topology.hpp says why).
+    bool bezier_faces = false;
+};
+
+}  // namespace ratbez::occt

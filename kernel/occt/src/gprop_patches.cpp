@@ -1,0 +1,167 @@
+// Bézier patches refined for OpenCASCADE's fixed Gauss rule (see gprop_patches.hpp).
+
+#include "gprop_patches.hpp"
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <Precision.hxx>
+#include <TopoDS_Shape.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "ratbez/occt/geometry.hpp"
+#include "ratbez/properties.hpp"
+
+namespace ratbez::occt::detail {
+namespace {
+
+// math::GaussPointsMax(): BRepGProp never uses more points per direction.
+constexpr int kMaxGaussPoints = 61;
+// Halvings of a cell whose rule misses the tolerance even at kMaxGaussPoints.
+constexpr int kMaxHalvings = 3;
+// The kernel's weight certificate (core/src/cubature.hpp, kMaxWeightSpread): a patch whose weights vary
+// by at most this factor along each line of control points has no pole of its rational integrand near
+// the cell, so a Gauss rule of moderate size converges on it. Halvings to get there are bounded too.
+constexpr double kMaxWeightSpread = 4;
+constexpr int kMaxCertificateHalvings = 24;
+// Subdivisions of a patch in v tried in turn (the rule grows with them until the cap).
+constexpr int kVSpans[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32};
+
+std::vector<double> distinct(const std::vector<double>& knots) {
+    std::vector<double> values(knots);
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+    return values;
+}
+
+// The surface with every grid line a knot of full multiplicity, so that its Bézier patches are the cells.
+NurbsSurface on_grid(NurbsSurface surface, const std::vector<double>& u, const std::vector<double>& v) {
+    for (std::size_t i = 1; i + 1 < u.size(); ++i) {
+        const auto count = std::count(surface.knots_u().begin(), surface.knots_u().end(), u[i]);
+        if (count < surface.degree_u()) surface = surface.insert_knot_u(u[i], surface.degree_u() - static_cast<int>(count));
+    }
+    for (std::size_t j = 1; j + 1 < v.size(); ++j) {
+        const auto count = std::count(surface.knots_v().begin(), surface.knots_v().end(), v[j]);
+        if (count < surface.degree_v()) surface = surface.insert_knot_v(v[j], surface.degree_v() - static_cast<int>(count));
+    }
+    return surface;
+}
+
+// The largest max / min of the weights along one line of control points in u (along_u) or v.
+double weight_spread(const BezierSurface& patch, bool along_u) {
+    const int rows = patch.degree_u() + 1, columns = patch.degree_v() + 1;
+    double spread = 1;
+    for (int line = 0; line < (along_u ? columns : rows); ++line) {
+        double low = std::numeric_limits<double>::infinity(), high = 0;
+        for (int k = 0; k < (along_u ? rows : columns); ++k) {
+            const double w = along_u ? patch.homogeneous_point(k, line).w : patch.homogeneous_point(line, k).w;
+            low = std::min(low, w);
+            high = std::max(high, w);
+        }
+        spread = std::max(spread, high / low);
+    }
+    return spread;
+}
+
+// Adds the middle of [lines[k], lines[k + 1]] for every k in `cells`, keeping `lines` sorted.
+void halve(std::vector<double>& lines, const std::set<std::size_t>& cells) {
+    std::vector<double> middles;
+    for (std::size_t k : cells) middles.push_back(0.5 * (lines[k] + lines[k + 1]));
+    lines.insert(lines.end(), middles.begin(), middles.end());
+    std::sort(lines.begin(), lines.end());
+}
+
+// The area OCCT's fixed rule gives the face of the whole patch (BRepGProp::SurfaceProperties, no eps).
+double fixed_rule_area(const Handle(Geom_BSplineSurface)& patch) {
+    BRepBuilderAPI_MakeFace make(patch, Precision::Confusion());
+    const TopoDS_Shape face = make.Shape();
+    GProp_GProps properties;
+    BRepGProp::SurfaceProperties(face, properties);
+    return properties.Mass();
+}
+
+// The patch with its v direction raised to `degree` and cut into `spans` equal knot spans.
+Handle(Geom_BSplineSurface) refined(const Handle(Geom_BSplineSurface)& patch, int degree, int spans) {
+    Handle(Geom_BSplineSurface) copy = Handle(Geom_BSplineSurface)::DownCast(patch->Copy());
+    if (degree > copy->VDegree()) copy->IncreaseDegree(copy->UDegree(), degree);
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    copy->Bounds(u0, u1, v0, v1);
+    for (int k = 1; k < spans; ++k) copy->InsertVKnot(v0 + (v1 - v0) * k / spans, 1, Precision::PConfusion());
+    return copy;
+}
+
+struct Refinement {
+    Handle(Geom_BSplineSurface) patch;
+    bool reached = false;
+};
+
+// The first refinement (in rule size) whose fixed-rule area is within the tolerance of `exact`.
+Refinement refine(const Handle(Geom_BSplineSurface)& patch, double exact, double relative_tolerance) {
+    const int q = patch->VDegree();
+    const int u_order = gprop_integration_order(patch->UDegree(), 1);
+    Refinement best;
+    int previous_order = 0;
+    for (int spans : kVSpans) {
+        // Simple knots in a degree 1 direction would make the face C0: elevate it first.
+        const int degree = (q == 1 && spans > 1) ? 2 : q;
+        const int order = std::min(kMaxGaussPoints, gprop_integration_order(degree, spans));
+        if (order <= previous_order || order < u_order) continue;
+        previous_order = order;
+        best.patch = refined(patch, degree, spans);
+        if (std::abs(fixed_rule_area(best.patch) - exact) <= relative_tolerance * exact) {
+            best.reached = true;
+            return best;
+        }
+        if (order >= kMaxGaussPoints) break;
+    }
+    return best;
+}
+
+}  // namespace
+
+int gprop_integration_order(int degree, int spans) { return std::max(8, 2 * std::max(4, (degree + 1) * spans)); }
+
+PatchGrid gprop_patch_grid(const NurbsSurface& surface, double relative_tolerance) {
+    PatchGrid grid;
+    grid.u = distinct(surface.knots_u());
+    grid.v = distinct(surface.knots_v());
+    // First the certificate: halve the columns / rows of cells whose weights spread too far along u / v.
+    for (int round = 0; round < kMaxCertificateHalvings; ++round) {
+        const auto patches = on_grid(surface, grid.u, grid.v).bezier_patches();
+        std::set<std::size_t> columns, rows;
+        for (std::size_t i = 0; i + 1 < grid.u.size(); ++i)
+            for (std::size_t j = 0; j + 1 < grid.v.size(); ++j) {
+                if (weight_spread(patches[i][j], true) > kMaxWeightSpread) columns.insert(i);
+                if (weight_spread(patches[i][j], false) > kMaxWeightSpread) rows.insert(j);
+            }
+        if (columns.empty() && rows.empty()) break;
+        halve(grid.u, columns);
+        halve(grid.v, rows);
+    }
+    // Then each cell refined for OCCT's rule; a cell that misses even at the cap halves its column and row.
+    for (int round = 0;; ++round) {
+        const auto patches = on_grid(surface, grid.u, grid.v).bezier_patches();
+        grid.cells.clear();
+        grid.reached = true;
+        std::set<std::size_t> columns, rows;
+        for (std::size_t i = 0; i + 1 < grid.u.size(); ++i)
+            for (std::size_t j = 0; j + 1 < grid.v.size(); ++j) {
+                const NurbsSurface cell = NurbsSurface::from_bezier(patches[i][j]);
+                const Refinement refinement = refine(to_occt(cell), surface_area(cell), relative_tolerance);
+                grid.cells.push_back(refinement.patch);
+                if (!refinement.reached) {
+                    grid.reached = false;
+                    columns.insert(i);
+                    rows.insert(j);
+                }
+            }
+        if (grid.reached || round == kMaxHalvings) return grid;
+        halve(grid.u, columns);
+        halve(grid.v, rows);
+    }
+}
+
+}  // namespace ratbez::occt::detail
