@@ -188,9 +188,8 @@ ratbez::Mesh tessellate_for(const ShapeSpec& spec, double tolerance, std::option
     try {
         return ratbez::tessellate(spec.solid, ratbez::TessellationOptions{tolerance, angle});
     } catch (const ratbez::Error& e) {
-        const std::string message = e.what();
-        if (message.rfind("tolerance:", 0) == 0) throw UsageError("--tolerance", message.substr(11));
-        if (message.rfind("angle_deg:", 0) == 0) throw UsageError("--angle", message.substr(11));
+        if (e.argument() == "tolerance") throw UsageError("--tolerance", std::string(e.reason()));
+        if (e.argument() == "angle_deg") throw UsageError("--angle", std::string(e.reason()));
         throw;
     }
 }
@@ -252,7 +251,7 @@ int command_export(const std::vector<std::string>& raw) {
         ratbez::exporter::export_mesh(mesh, *output, options);
     } catch (const ratbez::Error& e) {
         // A mesh refused by the CGAL checks is our failure, not the user's input.
-        if (std::string(e.what()).rfind("mesh:", 0) == 0) {
+        if (e.argument() == "mesh") {
             std::cerr << "error: " << one_line(e.what()) << '\n';
             return 1;
         }
@@ -444,10 +443,10 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
         const fs::path scad = out_dir / (spec.name + ".scad");
         {
             std::ofstream out(scad, std::ios::binary);
-            if (!out) throw ratbez::Error("path: cannot open '" + scad.string() + "' for writing");
+            if (!out) throw ratbez::Error("path", "cannot open '" + scad.string() + "' for writing");
             ratbez::exporter::write_openscad(mesh, out);
             out.close();
-            if (!out) throw ratbez::Error("path: writing '" + scad.string() + "' failed");
+            if (!out) throw ratbez::Error("path", "writing '" + scad.string() + "' failed");
         }
         ratbez::occt::write_step(spec.solid, (out_dir / (spec.name + ".step")).string());
 
@@ -469,7 +468,7 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
                     << "difference() {\n  union() { include <" << spec.name << ".scad> }\n  translate(["
                     << format_number(box.max.x + far, 17) << ", " << format_number(box.max.y + far, 17) << ", "
                     << format_number(box.max.z + far, 17) << "]) cube(" << format_number(far * 1e-3, 17) << ");\n}\n";
-                if (!out) throw ratbez::Error("path: cannot write '" + wrapper.string() + "'");
+                if (!out) throw ratbez::Error("path", "cannot write '" + wrapper.string() + "'");
             }
             const fs::path png = out_dir / (spec.name + ".png");
             std::error_code ignored;

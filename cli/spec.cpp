@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <numbers>
@@ -24,9 +25,6 @@
 
 namespace ratbez::spec {
 
-SpecError::SpecError(std::string path, std::string reason)
-    : Error(path + ": " + reason), path_(std::move(path)), reason_(std::move(reason)) {}
-
 bool is_valid_name(std::string_view name) {
     if (name.empty() || name.size() > 64) return false;
     const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
@@ -45,6 +43,9 @@ std::string join(std::initializer_list<const char*> words) {
     for (const char* w : words) text += (text.empty() ? "" : ", ") + std::string(w);
     return text;
 }
+
+// Kernel argument name -> the spec field it came from (looked up by the string_view Error::argument()).
+using FieldNames = std::map<std::string, std::string, std::less<>>;
 
 // A JSON object being read: rejects unknown keys up front (so a typo is reported as the typo, not as
 // the required field it was meant to be), then hands out fields with their paths.
@@ -90,8 +91,8 @@ public:
     // For build(): the field a kernel Error about an argument belongs under — the field of the same name,
     // or the one `renames` gives where the kernel's name differs from the spec's ({"start", "from"}).
     using Renames = std::initializer_list<std::pair<const std::string, std::string>>;
-    std::map<std::string, std::string> fields(Renames renames = {}) const {
-        std::map<std::string, std::string> argument_to_field(renames);
+    FieldNames fields(Renames renames = {}) const {
+        FieldNames argument_to_field(renames);
         for (const char* key : allowed_) argument_to_field.emplace(key, key);
         return argument_to_field;
     }
@@ -188,21 +189,16 @@ std::vector<double> weight_list(const json& value, const std::string& path, std:
     return weights;
 }
 
-// The kernel names its arguments ("radius: must be greater than 0"); report that under the JSON path of
-// the field the argument came from, or under the object's path when it is no field of its own.
-[[noreturn]] void rethrow_kernel_error(const Error& error, const std::string& path,
-                                       const std::map<std::string, std::string>& argument_to_field) {
-    const std::string message = error.what();
-    const auto colon = message.find(": ");
-    if (colon != std::string::npos) {
-        const auto it = argument_to_field.find(message.substr(0, colon));
-        if (it != argument_to_field.end()) throw SpecError(path + "." + it->second, message.substr(colon + 2));
-    }
-    throw SpecError(path, message);
+// The kernel names its arguments (Error("radius", "must be greater than 0")); report that under the JSON
+// path of the field the argument came from, or under the object's path when it is no field of its own.
+[[noreturn]] void rethrow_kernel_error(const Error& error, const std::string& path, const FieldNames& argument_to_field) {
+    if (const auto it = argument_to_field.find(error.argument()); it != argument_to_field.end())
+        throw SpecError(Error(it->second, error.reason()).under(path));
+    throw SpecError(path, error.what());
 }
 
 template <class Build>
-auto build(const std::string& path, const std::map<std::string, std::string>& argument_to_field, Build&& make) {
+auto build(const std::string& path, const FieldNames& argument_to_field, Build&& make) {
     try {
         return make();
     } catch (const SpecError&) {

@@ -18,14 +18,12 @@
 
 namespace ratbez::spec {
 
+// A ratbez::Error whose argument is the JSON path of the field at fault.
 class SpecError : public Error {
 public:
-    SpecError(std::string path, std::string reason);
-    const std::string& path() const { return path_; }      // "shape.radius", "shape.profile[2].knots", ...
-    const std::string& reason() const { return reason_; }  // "must be a positive number"
-
-private:
-    std::string path_, reason_;
+    SpecError(std::string_view path, std::string_view reason) : Error(path, reason) {}
+    explicit SpecError(const Error& error) : Error(error) {}  // a kernel error already put under its path
+    std::string_view path() const noexcept { return argument(); }  // "shape.radius", "shape.profile[2].knots", ...
 };
 
 // What the spec says the solid is, for closed-form volumes and OCCT's analytic-surface comparisons.

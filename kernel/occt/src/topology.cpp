@@ -65,7 +65,7 @@ public:
             try {
                 face = faces[i].kind() == Face::Kind::surface ? surface_face(faces[i]) : planar_face(faces[i]);
             } catch (const Error& e) {
-                throw Error("solid: face " + std::to_string(i) + ": " + e.what());
+                throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
             }
             builder_.Add(out_.shell, face);
             out_.faces.push_back(face);

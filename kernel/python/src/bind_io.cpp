@@ -45,11 +45,11 @@ namespace {
         return tessellate(solid, requested ? *requested : default_tolerance(solid));
     }
     if (py::isinstance<Mesh>(shape)) return shape.cast<Mesh>();
-    throw Error("solid_or_mesh: expected a ratbez.Solid or a ratbez.Mesh");
+    throw Error("solid_or_mesh", "expected a ratbez.Solid or a ratbez.Mesh");
 }
 
 [[maybe_unused]] const Solid& solid_of(const py::object& shape) {
-    if (!py::isinstance<Solid>(shape)) throw Error("solid: expected a ratbez.Solid");
+    if (!py::isinstance<Solid>(shape)) throw Error("solid", "expected a ratbez.Solid");
     return shape.cast<const Solid&>();
 }
 
@@ -62,7 +62,7 @@ void bind_io(py::module_& m) {
         "export_openscad",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance) {
             const std::string file = to_path(path, "path");
-            if (!has_extension(file, ".scad")) throw Error("path: an OpenSCAD file name must end in .scad");
+            if (!has_extension(file, ".scad")) throw Error("path", "an OpenSCAD file name must end in .scad");
             const Mesh mesh = mesh_of(solid_or_mesh, tolerance);
             py::gil_scoped_release release;
             exporter::export_mesh(mesh, file);
@@ -73,7 +73,7 @@ void bind_io(py::module_& m) {
         "write_stl",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance) {
             const std::string file = to_path(path, "path");
-            if (!has_extension(file, ".stl")) throw Error("path: an STL file name must end in .stl");
+            if (!has_extension(file, ".stl")) throw Error("path", "an STL file name must end in .stl");
             const Mesh mesh = mesh_of(solid_or_mesh, tolerance);
             py::gil_scoped_release release;
             exporter::export_mesh(mesh, file);

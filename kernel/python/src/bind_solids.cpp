@@ -34,14 +34,14 @@ std::optional<NurbsCurve> profile_piece(py::handle value) {
 
 Profile to_profile(py::handle value, const std::string& argument) {
     if (auto piece = profile_piece(value)) return Profile({std::move(*piece)});
-    const std::string expected = argument + ": expected a BezierCurve, a NurbsCurve or a list of them";
-    if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value)) throw Error(expected);
+    if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value))
+        throw Error(argument, "expected a BezierCurve, a NurbsCurve or a list of them");
     std::vector<NurbsCurve> pieces;
     std::size_t index = 0;
     for (py::handle item : value) {
         auto piece = profile_piece(item);
         if (!piece)
-            throw Error(argument + "[" + std::to_string(index) + "]: expected a BezierCurve or a NurbsCurve");
+            throw Error(argument + "[" + std::to_string(index) + "]", "expected a BezierCurve or a NurbsCurve");
         pieces.push_back(std::move(*piece));
         ++index;
     }
@@ -75,19 +75,19 @@ Mesh make_mesh(const py::object& vertices, const py::object& triangles) {
     mesh.vertices = to_points(vertices, "vertices");
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
         if (!is_finite(mesh.vertices[i]))
-            throw Error("vertices[" + std::to_string(i) + "]: coordinates must be finite numbers");
+            throw Error("vertices[" + std::to_string(i) + "]", "coordinates must be finite numbers");
     std::size_t index = 0;
     if (py::isinstance<py::str>(triangles) || !PySequence_Check(triangles.ptr()))
-        throw Error("triangles: expected a sequence of index triples");
+        throw Error("triangles", "expected a sequence of index triples");
     for (py::handle row : triangles) {
         const std::string name = "triangles[" + std::to_string(index) + "]";
         if (py::isinstance<py::str>(row) || !PySequence_Check(row.ptr()) || py::len(row) != 3)
-            throw Error(name + ": expected 3 vertex indices");
+            throw Error(name, "expected 3 vertex indices");
         std::array<std::uint32_t, 3> triangle{};
         for (std::size_t k = 0; k < 3; ++k) {
             const int vertex = to_int(row[py::int_(k)], name);
             if (vertex < 0 || static_cast<std::size_t>(vertex) >= mesh.vertices.size())
-                throw Error(name + ": vertex index " + std::to_string(vertex) + " is out of range [0, " +
+                throw Error(name, "vertex index " + std::to_string(vertex) + " is out of range [0, " +
                             std::to_string(mesh.vertices.size()) + ")");
             triangle[k] = static_cast<std::uint32_t>(vertex);
         }
