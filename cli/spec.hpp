@@ -14,7 +14,6 @@
 
 #include "ratbez/brep.hpp"
 #include "ratbez/error.hpp"
-#include "ratbez/vec.hpp"
 
 namespace ratbez::spec {
 
@@ -26,22 +25,13 @@ public:
     std::string_view path() const noexcept { return argument(); }  // "shape.radius", "shape.profile[2].knots", ...
 };
 
-// What the spec says the solid is, for closed-form volumes and OCCT's analytic-surface comparisons.
-struct Analytic {
-    enum class Kind { none, cylinder, cone, sphere, torus, revolution } kind = Kind::none;
-    Vec3 center{}, axis{0, 0, 1};  // revolution: axis_point, axis_dir
-    double radius1 = 0, radius2 = 0, height = 0;  // as in ratbez::occt::AnalyticShape
-    std::optional<double> closed_form_volume;
-};
-
 struct ShapeSpec {
     std::string name;                         // `name`, else the fallback (the file's stem)
     std::string description;
     std::string type;                         // shape.type
     std::optional<double> tolerance;          // absolute chordal tolerance for tessellation
     std::optional<double> tessellation_angle; // degrees
-    Solid solid;
-    Analytic analytic;
+    Solid solid;                              // solid.construction(): what it was built as
 };
 
 // Parses and builds. `fallback_name` is used when the document has no `name`; it must itself be a

@@ -100,7 +100,7 @@ Solid extrude(const Profile& profile, const Vec3& direction, double distance) {
     faces.push_back(Face::planar(Plane{bottom_frame.origin, bottom_frame.x_axis, bottom_frame.y_axis, bottom_frame.z_axis},
                                  {bottom_loop}));
     faces.push_back(Face::planar(Plane{top_frame.origin, top_frame.x_axis, top_frame.y_axis, top_frame.z_axis}, {top_loop}));
-    return Solid(std::move(faces));
+    return Solid(std::move(faces), Construction::Extrusion{unit, distance});
 }
 
 }  // namespace ratbez

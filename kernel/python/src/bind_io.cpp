@@ -152,23 +152,15 @@ void bind_io(py::module_& m) {
                 report = occt::check(s, options);
             }
             py::dict result;
-            result["valid"] = report.valid;
-            result["closed"] = report.closed;
-            result["max_deviation"] = report.max_deviation;
-            result["max_analytic_deviation"] = report.max_analytic_deviation;
-            result["volume"] = report.volume;
-            result["occt_volume"] = report.occt_volume;
-            result["area"] = report.area;
-            result["occt_area"] = report.occt_area;
-            result["closed_form_volume"] = report.closed_form_volume;
-            result["size"] = report.size;
-            result["passed"] = report.passed;
-            result["failures"] = report.failures;
+            occt::for_each_entry(report, [&](const char* name, const auto& value) { result[name] = value; });
             result["report"] = occt::format_report(report);
             return result;
         },
         py::arg("solid"), py::arg("grid") = 50, py::arg("deviation_limit") = 1e-9, py::arg("volume_limit") = 1e-6,
-        "Convert to an OpenCASCADE solid and compare: validity, evaluation deviation, volume and area.");
+        "Convert to an OpenCASCADE solid and compare: validity, evaluation deviation, volume and area; for a\n"
+        "cylinder, cone, sphere, torus or revolution also the distance to OCCT's analytic surface of that kind\n"
+        "(max_analytic_deviation) and, for the four primitives, the closed-form volume (closed_form_volume);\n"
+        "both None otherwise.");
 #else
     m.attr("has_occt") = false;
 #endif

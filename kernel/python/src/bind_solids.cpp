@@ -9,6 +9,7 @@
 
 #include "convert.hpp"
 #include "ratbez/brep.hpp"
+#include "ratbez/construction.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/extrude.hpp"
@@ -97,6 +98,41 @@ Mesh make_mesh(const py::object& vertices, const py::object& triangles) {
     return mesh;
 }
 
+// Solid.parameters: keyed by the Python arguments of the function that builds that kind, so that
+// ratbez.cylinder(**s.parameters) builds s again (revolve and extrude take the profile besides).
+py::dict construction_parameters(const Construction& construction) {
+    py::dict parameters;
+    const auto place = [&](const Vec3& center, const Vec3& axis) {
+        parameters["center"] = to_tuple(center);
+        parameters["axis"] = to_tuple(axis);
+    };
+    if (const auto* c = construction.get<Construction::Cylinder>()) {
+        parameters["radius"] = c->radius;
+        parameters["height"] = c->height;
+        place(c->center, c->axis);
+    } else if (const auto* k = construction.get<Construction::Cone>()) {
+        parameters["radius1"] = k->radius1;
+        parameters["radius2"] = k->radius2;
+        parameters["height"] = k->height;
+        place(k->center, k->axis);
+    } else if (const auto* s = construction.get<Construction::Sphere>()) {
+        parameters["radius"] = s->radius;
+        parameters["center"] = to_tuple(s->center);
+    } else if (const auto* t = construction.get<Construction::Torus>()) {
+        parameters["major_radius"] = t->major_radius;
+        parameters["minor_radius"] = t->minor_radius;
+        place(t->center, t->axis);
+    } else if (const auto* r = construction.get<Construction::Revolution>()) {
+        parameters["axis_point"] = to_tuple(r->axis_point);
+        parameters["axis_dir"] = to_tuple(r->axis_dir);
+        parameters["angle"] = r->angle_deg;
+    } else if (const auto* e = construction.get<Construction::Extrusion>()) {
+        parameters["direction"] = to_tuple(e->direction);
+        parameters["distance"] = e->distance;
+    }
+    return parameters;
+}
+
 NurbsCurve coedge_curve(const Coedge& coedge) {
     return coedge.reversed ? coedge.edge->curve.reversed() : coedge.edge->curve;
 }
@@ -168,6 +204,21 @@ void bind_solids(py::module_& m) {
 
     py::class_<Solid>(m, "Solid", "A closed shell of exact NURBS faces.")
         .def_property_readonly("faces", &Solid::faces)
+        .def_property_readonly(
+            "kind", [](const Solid& s) { return std::string(s.construction().kind()); },
+            "What the solid was built as: 'cylinder', 'cone', 'sphere', 'torus', 'revolution', 'extrusion', "
+            "or 'none' (assembled from faces).")
+        .def_property_readonly(
+            "parameters", [](const Solid& s) { return construction_parameters(s.construction()); },
+            "The arguments it was built with, keyed as the building function's (axes and directions as unit "
+            "vectors): {'radius': 2.0, 'center': (0.0, 0.0, 0.0)} for a sphere; revolve's and extrude's "
+            "without the profile; {} for 'none'.")
+        .def_property_readonly(
+            "exact_volume", [](const Solid& s) { return s.construction().exact_volume(); },
+            "The closed-form volume of a cylinder, cone, sphere or torus; None for other kinds.")
+        .def_property_readonly(
+            "exact_area", [](const Solid& s) { return s.construction().exact_area(); },
+            "The closed-form surface area of a cylinder, cone, sphere or torus; None for other kinds.")
         .def("volume", &Solid::volume, py::call_guard<py::gil_scoped_release>())
         .def("area", &Solid::area, py::call_guard<py::gil_scoped_release>())
         .def("euler_characteristic", &Solid::euler_characteristic)
