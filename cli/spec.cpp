@@ -195,7 +195,8 @@ std::vector<double> weight_list(const json& value, const std::string& path, std:
 
 // The kernel names its arguments (Error("radius", "must be greater than 0")); report that under the JSON
 // path of the field the argument came from, or under the object's path when it is no field of its own.
-[[noreturn]] void rethrow_kernel_error(const Error& error, const std::string& path, const FieldNames& argument_to_field) {
+[[noreturn]] void rethrow_kernel_error(const Error& error, const std::string& path,
+                                       const FieldNames& argument_to_field) {
     if (const auto it = argument_to_field.find(error.argument()); it != argument_to_field.end())
         throw SpecError(Error(it->second, error.reason()).under(path));
     throw SpecError(path, error.what());

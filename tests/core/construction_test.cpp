@@ -77,8 +77,10 @@ TEST(Construction, PrimitivesRecordTheirArguments) {
 }
 
 TEST(Construction, SweepsRecordTheirParametersAndHaveNoClosedForm) {
-    const Profile square = Profile::from_beziers({BezierCurve({{1, 0, 0}, {2, 0, 0}}), BezierCurve({{2, 0, 0}, {2, 0, 1}}),
-                                                  BezierCurve({{2, 0, 1}, {1, 0, 1}}), BezierCurve({{1, 0, 1}, {1, 0, 0}})});
+    const Profile square = Profile::from_beziers({BezierCurve({{1, 0, 0}, {2, 0, 0}}),
+                                                  BezierCurve({{2, 0, 0}, {2, 0, 1}}),
+                                                  BezierCurve({{2, 0, 1}, {1, 0, 1}}),
+                                                  BezierCurve({{1, 0, 1}, {1, 0, 0}})});
     const Solid turned = revolve(square, {0, 0, 0}, {0, 0, 3}, 270);
     expect_record(turned, "revolution", Construction::Revolution{{0, 0, 0}, {0, 0, 1}, 270});
     const Solid prism = extrude(square, {0, 2, 0}, 1.5);

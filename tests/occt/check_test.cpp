@@ -65,9 +65,10 @@ TEST(Check, EveryPrimitivePassesAgainstItsAnalyticSurface) {
 
 TEST(Check, WithoutAnAnalyticSurfaceThereIsNoAnalyticRow) {
     // An extrusion has no analytic surface or closed form here; the same faces of kind none neither.
-    const Solid prism = extrude(Profile::from_beziers({BezierCurve({{0, 0, 0}, {2, 0, 0}}), BezierCurve({{2, 0, 0}, {0, 1, 0}}),
-                                                       BezierCurve({{0, 1, 0}, {0, 0, 0}})}),
-                                {0, 0, 1}, 1.5);
+    const Profile triangle = Profile::from_beziers({BezierCurve({{0, 0, 0}, {2, 0, 0}}),
+                                                    BezierCurve({{2, 0, 0}, {0, 1, 0}}),
+                                                    BezierCurve({{0, 1, 0}, {0, 0, 0}})});
+    const Solid prism = extrude(triangle, {0, 0, 1}, 1.5);
     for (const Solid& solid : {prism, Solid(sphere(1).faces())}) {
         const CheckReport report = check(solid, with_grid(10));
         EXPECT_TRUE(report.passed) << format_report(report);

@@ -13,14 +13,6 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-// std::visit with one lambda per kind.
-template <class... Visitors>
-struct Overloaded : Visitors... {
-    using Visitors::operator()...;
-};
-template <class... Visitors>
-Overloaded(Visitors...) -> Overloaded<Visitors...>;  // clang 14 (the fuzz build) lacks C++20's aggregate deduction
-
 void require_point(const Vec3& point, const char* argument) {
     require(is_finite(point), argument, "must have finite coordinates");
 }
@@ -45,42 +37,33 @@ void require_non_negative(double value, const char* argument) {
 }  // namespace
 
 Construction::Parameters Construction::validated(Parameters parameters) {
-    std::visit(Overloaded{
-                   [](std::monostate) {},
-                   [](Cylinder& c) {
-                       place(c.center, c.axis);
-                       require_positive(c.radius, "construction.radius");
-                       require_positive(c.height, "construction.height");
-                   },
-                   [](Cone& c) {
-                       place(c.center, c.axis);
-                       require_non_negative(c.radius1, "construction.radius1");
-                       require_non_negative(c.radius2, "construction.radius2");
-                       require(c.radius1 > 0 || c.radius2 > 0, "construction.radius1", "radius1 and radius2 cannot both be 0");
-                       require_positive(c.height, "construction.height");
-                   },
-                   [](Sphere& s) {
-                       require_point(s.center, "construction.center");
-                       require_positive(s.radius, "construction.radius");
-                   },
-                   [](Torus& t) {
-                       place(t.center, t.axis);
-                       require_positive(t.minor_radius, "construction.minor_radius");  // major_radius: finite and greater
-                       require(t.minor_radius < t.major_radius && std::isfinite(t.major_radius), "construction.minor_radius",
-                               "must be less than a finite major_radius");
-                   },
-                   [](Revolution& r) {
-                       require_point(r.axis_point, "construction.axis_point");
-                       r.axis_dir = unit(r.axis_dir, "construction.axis_dir");
-                       require(std::isfinite(r.angle_deg) && r.angle_deg > 0 && r.angle_deg <= 360,
-                               "construction.angle_deg", "must be in (0, 360] degrees");
-                   },
-                   [](Extrusion& e) {
-                       e.direction = unit(e.direction, "construction.direction");
-                       require_positive(e.distance, "construction.distance");
-                   },
-               },
-               parameters);
+    if (auto* c = std::get_if<Cylinder>(&parameters)) {
+        place(c->center, c->axis);
+        require_positive(c->radius, "construction.radius");
+        require_positive(c->height, "construction.height");
+    } else if (auto* k = std::get_if<Cone>(&parameters)) {
+        place(k->center, k->axis);
+        require_non_negative(k->radius1, "construction.radius1");
+        require_non_negative(k->radius2, "construction.radius2");
+        require(k->radius1 > 0 || k->radius2 > 0, "construction.radius1", "radius1 and radius2 cannot both be 0");
+        require_positive(k->height, "construction.height");
+    } else if (auto* s = std::get_if<Sphere>(&parameters)) {
+        require_point(s->center, "construction.center");
+        require_positive(s->radius, "construction.radius");
+    } else if (auto* t = std::get_if<Torus>(&parameters)) {
+        place(t->center, t->axis);
+        require_positive(t->minor_radius, "construction.minor_radius");
+        require(t->minor_radius < t->major_radius && std::isfinite(t->major_radius), "construction.minor_radius",
+                "must be less than a finite major_radius");
+    } else if (auto* r = std::get_if<Revolution>(&parameters)) {
+        require_point(r->axis_point, "construction.axis_point");
+        r->axis_dir = unit(r->axis_dir, "construction.axis_dir");
+        require(std::isfinite(r->angle_deg) && r->angle_deg > 0 && r->angle_deg <= 360, "construction.angle_deg",
+                "must be in (0, 360] degrees");
+    } else if (auto* e = std::get_if<Extrusion>(&parameters)) {
+        e->direction = unit(e->direction, "construction.direction");
+        require_positive(e->distance, "construction.distance");
+    }
     return parameters;
 }
 
@@ -91,32 +74,25 @@ std::string_view Construction::kind() const {
 }
 
 std::optional<double> Construction::exact_volume() const {
-    return std::visit(Overloaded{
-                          [](const Cylinder& c) -> std::optional<double> { return pi * c.radius * c.radius * c.height; },
-                          [](const Cone& c) -> std::optional<double> {
-                              return pi * c.height * (c.radius1 * c.radius1 + c.radius1 * c.radius2 + c.radius2 * c.radius2) / 3;
-                          },
-                          [](const Sphere& s) -> std::optional<double> { return 4 * pi * s.radius * s.radius * s.radius / 3; },
-                          [](const Torus& t) -> std::optional<double> {
-                              return 2 * pi * pi * t.major_radius * t.minor_radius * t.minor_radius;
-                          },
-                          [](const auto&) -> std::optional<double> { return std::nullopt; },
-                      },
-                      parameters_);
+    if (const auto* c = get<Cylinder>()) return pi * c->radius * c->radius * c->height;
+    if (const auto* k = get<Cone>()) {
+        const double a = k->radius1, b = k->radius2;
+        return pi * k->height * (a * a + a * b + b * b) / 3;
+    }
+    if (const auto* s = get<Sphere>()) return 4 * pi * s->radius * s->radius * s->radius / 3;
+    if (const auto* t = get<Torus>()) return 2 * pi * pi * t->major_radius * t->minor_radius * t->minor_radius;
+    return std::nullopt;
 }
 
 std::optional<double> Construction::exact_area() const {
-    return std::visit(Overloaded{
-                          [](const Cylinder& c) -> std::optional<double> { return 2 * pi * c.radius * (c.radius + c.height); },
-                          [](const Cone& c) -> std::optional<double> {
-                              const double slant = std::hypot(c.height, c.radius1 - c.radius2);
-                              return pi * ((c.radius1 + c.radius2) * slant + c.radius1 * c.radius1 + c.radius2 * c.radius2);
-                          },
-                          [](const Sphere& s) -> std::optional<double> { return 4 * pi * s.radius * s.radius; },
-                          [](const Torus& t) -> std::optional<double> { return 4 * pi * pi * t.major_radius * t.minor_radius; },
-                          [](const auto&) -> std::optional<double> { return std::nullopt; },
-                      },
-                      parameters_);
+    if (const auto* c = get<Cylinder>()) return 2 * pi * c->radius * (c->radius + c->height);
+    if (const auto* k = get<Cone>()) {
+        const double a = k->radius1, b = k->radius2;
+        return pi * ((a + b) * std::hypot(k->height, a - b) + a * a + b * b);  // lateral: (a + b) π times the slant
+    }
+    if (const auto* s = get<Sphere>()) return 4 * pi * s->radius * s->radius;
+    if (const auto* t = get<Torus>()) return 4 * pi * pi * t->major_radius * t->minor_radius;
+    return std::nullopt;
 }
 
 }  // namespace ratbez

@@ -116,11 +116,11 @@ public:
         if (const auto* c = construction.get<Construction::Cylinder>()) {
             surface_ = new Geom_CylindricalSurface(frame(c->center, c->axis), c->radius);
         } else if (const auto* c = construction.get<Construction::Cone>()) {
+            const double semi_angle = std::atan2(c->radius2 - c->radius1, c->height);
             if (c->radius1 == c->radius2)
                 surface_ = new Geom_CylindricalSurface(frame(c->center, c->axis), c->radius1);
             else
-                surface_ = new Geom_ConicalSurface(frame(c->center, c->axis), std::atan2(c->radius2 - c->radius1, c->height),
-                                                   c->radius1);
+                surface_ = new Geom_ConicalSurface(frame(c->center, c->axis), semi_angle, c->radius1);
         } else if (const auto* s = construction.get<Construction::Sphere>()) {
             surface_ = new Geom_SphericalSurface(frame(s->center, {0, 0, 1}), s->radius);
         } else if (const auto* t = construction.get<Construction::Torus>()) {
@@ -158,7 +158,8 @@ public:
         if (revolution_) {
             // Geom_SurfaceOfRevolution's U is the angle about the axis (right-handed, as revolve turns).
             const Vec3 radial = radial_part(p);
-            const double angle = std::atan2(dot(radial, cross(revolution_->axis_dir, start_radial_)), dot(radial, start_radial_));
+            const Vec3 quarter_turn = cross(revolution_->axis_dir, start_radial_);
+            const double angle = std::atan2(dot(radial, quarter_turn), dot(radial, start_radial_));
             return distance(p, from_occt(surface_->Value(angle < 0 ? angle + 2 * std::numbers::pi : angle, v)));
         }
         const gp_Pnt local = to_occt_point(p).Transformed(to_local_);
