@@ -33,6 +33,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -154,26 +155,6 @@ const std::string& single_spec(const Arguments& args, const std::string& command
 
 // ---- shared steps ----------------------------------------------------------------------------------
 
-ratbez::occt::AnalyticShape analytic_shape(const ratbez::spec::Analytic& a) {
-    using Kind = ratbez::occt::AnalyticShape::Kind;
-    ratbez::occt::AnalyticShape shape;
-    switch (a.kind) {
-    case ratbez::spec::Analytic::Kind::none: shape.kind = Kind::none; break;
-    case ratbez::spec::Analytic::Kind::cylinder: shape.kind = Kind::cylinder; break;
-    case ratbez::spec::Analytic::Kind::cone: shape.kind = Kind::cone; break;
-    case ratbez::spec::Analytic::Kind::sphere: shape.kind = Kind::sphere; break;
-    case ratbez::spec::Analytic::Kind::torus: shape.kind = Kind::torus; break;
-    case ratbez::spec::Analytic::Kind::revolution: shape.kind = Kind::revolution; break;
-    }
-    shape.center = a.center;
-    shape.axis = a.axis;
-    shape.radius1 = a.radius1;
-    shape.radius2 = a.radius2;
-    shape.height = a.height;
-    shape.closed_form_volume = a.closed_form_volume;
-    return shape;
-}
-
 // The mesh of a tolerance-t tessellation lies within t of the surface everywhere, so its volume differs
 // from the exact one by at most t times the area swept (either surface's area bounds it).
 ratbez::exporter::MeshCheckOptions mesh_checks_for(const ratbez::Solid& solid, const ratbez::Mesh& mesh, double tolerance) {
@@ -188,9 +169,8 @@ ratbez::Mesh tessellate_for(const ShapeSpec& spec, double tolerance, std::option
     try {
         return ratbez::tessellate(spec.solid, ratbez::TessellationOptions{tolerance, angle});
     } catch (const ratbez::Error& e) {
-        const std::string message = e.what();
-        if (message.rfind("tolerance:", 0) == 0) throw UsageError("--tolerance", message.substr(11));
-        if (message.rfind("angle_deg:", 0) == 0) throw UsageError("--angle", message.substr(11));
+        if (e.argument() == "tolerance") throw UsageError("--tolerance", std::string(e.reason()));
+        if (e.argument() == "angle_deg") throw UsageError("--angle", std::string(e.reason()));
         throw;
     }
 }
@@ -252,7 +232,7 @@ int command_export(const std::vector<std::string>& raw) {
         ratbez::exporter::export_mesh(mesh, *output, options);
     } catch (const ratbez::Error& e) {
         // A mesh refused by the CGAL checks is our failure, not the user's input.
-        if (std::string(e.what()).rfind("mesh:", 0) == 0) {
+        if (e.argument() == "mesh") {
             std::cerr << "error: " << one_line(e.what()) << '\n';
             return 1;
         }
@@ -265,29 +245,21 @@ int command_export(const std::vector<std::string>& raw) {
 
 // ---- check -----------------------------------------------------------------------------------------
 
-nlohmann::json report_json(const ratbez::occt::CheckReport& r) {
+nlohmann::json report_json(const ratbez::occt::CheckReport& report) {
     nlohmann::json j;
-    j["valid"] = r.valid;
-    j["closed"] = r.closed;
-    j["max_deviation"] = r.max_deviation;
-    j["max_analytic_deviation"] = r.max_analytic_deviation ? nlohmann::json(*r.max_analytic_deviation) : nlohmann::json();
-    j["volume"] = r.volume;
-    j["occt_volume"] = r.occt_volume;
-    j["closed_form_volume"] = r.closed_form_volume ? nlohmann::json(*r.closed_form_volume) : nlohmann::json();
-    j["area"] = r.area;
-    j["occt_area"] = r.occt_area;
-    j["size"] = r.size;
-    j["passed"] = r.passed;
-    j["failures"] = r.failures;
+    ratbez::occt::for_each_entry(report, [&]<class Value>(const char* name, const Value& value) {
+        if constexpr (std::is_same_v<Value, std::optional<double>>)
+            j[name] = value ? nlohmann::json(*value) : nlohmann::json();  // null when absent
+        else
+            j[name] = value;
+    });
     return j;
 }
 
 int command_check(const std::vector<std::string>& raw) {
     const Arguments args = parse_arguments("check", raw, {}, {"--json"});
     const ShapeSpec spec = ratbez::spec::load_spec(single_spec(args, "check"));
-    ratbez::occt::CheckOptions options;
-    options.analytic = analytic_shape(spec.analytic);
-    const ratbez::occt::CheckReport report = ratbez::occt::check(spec.solid, options);
+    const ratbez::occt::CheckReport report = ratbez::occt::check(spec.solid);
     if (args.flag("--json")) {
         nlohmann::json j = report_json(report);
         j["name"] = spec.name;
@@ -444,16 +416,14 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
         const fs::path scad = out_dir / (spec.name + ".scad");
         {
             std::ofstream out(scad, std::ios::binary);
-            if (!out) throw ratbez::Error("path: cannot open '" + scad.string() + "' for writing");
+            if (!out) throw ratbez::Error("path", "cannot open '" + scad.string() + "' for writing");
             ratbez::exporter::write_openscad(mesh, out);
             out.close();
-            if (!out) throw ratbez::Error("path: writing '" + scad.string() + "' failed");
+            if (!out) throw ratbez::Error("path", "writing '" + scad.string() + "' failed");
         }
         ratbez::occt::write_step(spec.solid, (out_dir / (spec.name + ".step")).string());
 
-        ratbez::occt::CheckOptions check_options;
-        check_options.analytic = analytic_shape(spec.analytic);
-        const auto occt_report = ratbez::occt::check(spec.solid, check_options);
+        const auto occt_report = ratbez::occt::check(spec.solid);
         row.occt = occt_report.passed ? "ok" : "FAIL";
         for (const auto& f : occt_report.failures) row.failures.push_back("OCCT: " + f);
 
@@ -469,7 +439,7 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
                     << "difference() {\n  union() { include <" << spec.name << ".scad> }\n  translate(["
                     << format_number(box.max.x + far, 17) << ", " << format_number(box.max.y + far, 17) << ", "
                     << format_number(box.max.z + far, 17) << "]) cube(" << format_number(far * 1e-3, 17) << ");\n}\n";
-                if (!out) throw ratbez::Error("path: cannot write '" + wrapper.string() + "'");
+                if (!out) throw ratbez::Error("path", "cannot write '" + wrapper.string() + "'");
             }
             const fs::path png = out_dir / (spec.name + ".png");
             std::error_code ignored;

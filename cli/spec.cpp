@@ -4,9 +4,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <map>
-#include <numbers>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -23,9 +23,6 @@
 #include "ratbez/revolve.hpp"
 
 namespace ratbez::spec {
-
-SpecError::SpecError(std::string path, std::string reason)
-    : Error(path + ": " + reason), path_(std::move(path)), reason_(std::move(reason)) {}
 
 bool is_valid_name(std::string_view name) {
     if (name.empty() || name.size() > 64) return false;
@@ -45,6 +42,9 @@ std::string join(std::initializer_list<const char*> words) {
     for (const char* w : words) text += (text.empty() ? "" : ", ") + std::string(w);
     return text;
 }
+
+// Kernel argument name -> the spec field it came from (looked up by the string_view Error::argument()).
+using FieldNames = std::map<std::string, std::string, std::less<>>;
 
 // A JSON object being read: rejects unknown keys up front (so a typo is reported as the typo, not as
 // the required field it was meant to be), then hands out fields with their paths.
@@ -86,12 +86,17 @@ public:
     Vec3 direction(const char* key) const;
     Vec3 point_or(const char* key, Vec3 fallback) const;
     Vec3 direction_or(const char* key, Vec3 fallback) const;
+    // A primitive's optional `center` and `axis`, with the kernel's defaults (the origin, +z).
+    struct Placement {
+        Vec3 center, axis;
+    };
+    Placement placement() const { return {point_or("center", {}), direction_or("axis", {0, 0, 1})}; }
 
     // For build(): the field a kernel Error about an argument belongs under — the field of the same name,
     // or the one `renames` gives where the kernel's name differs from the spec's ({"start", "from"}).
     using Renames = std::initializer_list<std::pair<const std::string, std::string>>;
-    std::map<std::string, std::string> fields(Renames renames = {}) const {
-        std::map<std::string, std::string> argument_to_field(renames);
+    FieldNames fields(Renames renames = {}) const {
+        FieldNames argument_to_field(renames);
         for (const char* key : allowed_) argument_to_field.emplace(key, key);
         return argument_to_field;
     }
@@ -188,21 +193,17 @@ std::vector<double> weight_list(const json& value, const std::string& path, std:
     return weights;
 }
 
-// The kernel names its arguments ("radius: must be greater than 0"); report that under the JSON path of
-// the field the argument came from, or under the object's path when it is no field of its own.
+// The kernel names its arguments (Error("radius", "must be greater than 0")); report that under the JSON
+// path of the field the argument came from, or under the object's path when it is no field of its own.
 [[noreturn]] void rethrow_kernel_error(const Error& error, const std::string& path,
-                                       const std::map<std::string, std::string>& argument_to_field) {
-    const std::string message = error.what();
-    const auto colon = message.find(": ");
-    if (colon != std::string::npos) {
-        const auto it = argument_to_field.find(message.substr(0, colon));
-        if (it != argument_to_field.end()) throw SpecError(path + "." + it->second, message.substr(colon + 2));
-    }
-    throw SpecError(path, message);
+                                       const FieldNames& argument_to_field) {
+    if (const auto it = argument_to_field.find(error.argument()); it != argument_to_field.end())
+        throw SpecError(Error(it->second, error.reason()).under(path));
+    throw SpecError(path, error.what());
 }
 
 template <class Build>
-auto build(const std::string& path, const std::map<std::string, std::string>& argument_to_field, Build&& make) {
+auto build(const std::string& path, const FieldNames& argument_to_field, Build&& make) {
     try {
         return make();
     } catch (const SpecError&) {
@@ -212,11 +213,16 @@ auto build(const std::string& path, const std::map<std::string, std::string>& ar
     }
 }
 
+// The `type` of a curve or shape object, read before the object's other fields (they depend on it).
+std::string type_field(const json& object, const std::string& path) {
+    const auto type = object.find("type");
+    if (type == object.end()) throw SpecError(path + ".type", "is required");
+    return text(*type, path + ".type");
+}
+
 NurbsCurve parse_curve(const json& value, const std::string& path) {
     if (!value.is_object()) throw SpecError(path, "must be a JSON object (a curve)");
-    const auto type_it = value.find("type");
-    if (type_it == value.end()) throw SpecError(path + ".type", "is required");
-    const std::string type = text(*type_it, path + ".type");
+    const std::string type = type_field(value, path);
 
     if (type == "bezier") {
         const ObjectReader curve(value, path, {"type", "points", "weights"});
@@ -284,58 +290,39 @@ Profile parse_profile(const json& value, const std::string& path) {
 struct BuiltShape {
     std::string type;
     Solid solid;
-    Analytic analytic;
 };
 
 BuiltShape parse_shape(const json& value, const std::string& path) {
     if (!value.is_object()) throw SpecError(path, "must be a JSON object");
-    const auto type_it = value.find("type");
-    if (type_it == value.end()) throw SpecError(path + ".type", "is required");
-    const std::string type = text(*type_it, path + ".type");
-    const double pi = std::numbers::pi;
+    const std::string type = type_field(value, path);
 
     if (type == "cylinder") {
         const ObjectReader shape(value, path, {"type", "radius", "height", "center", "axis"});
         const double radius = shape.positive("radius");
         const double height = shape.positive("height");
-        const Vec3 center = shape.point_or("center", {});
-        const Vec3 axis = shape.direction_or("axis", {0, 0, 1});
-        Solid solid = build(path, shape.fields(),
-                            [&] { return cylinder(radius, height, center, axis); });
-        Analytic analytic{Analytic::Kind::cylinder, center, axis, radius, radius, height, pi * radius * radius * height};
-        return {type, std::move(solid), analytic};
+        const auto at = shape.placement();
+        return {type, build(path, shape.fields(), [&] { return cylinder(radius, height, at.center, at.axis); })};
     }
     if (type == "cone") {
         const ObjectReader shape(value, path, {"type", "radius1", "radius2", "height", "center", "axis"});
         const double radius1 = shape.non_negative("radius1");
         const double radius2 = shape.non_negative("radius2");
         const double height = shape.positive("height");
-        const Vec3 center = shape.point_or("center", {});
-        const Vec3 axis = shape.direction_or("axis", {0, 0, 1});
-        Solid solid = build(path, shape.fields(),
-                            [&] { return cone(radius1, radius2, height, center, axis); });
-        const double volume = pi * height * (radius1 * radius1 + radius1 * radius2 + radius2 * radius2) / 3.0;
-        Analytic analytic{Analytic::Kind::cone, center, axis, radius1, radius2, height, volume};
-        return {type, std::move(solid), analytic};
+        const auto at = shape.placement();
+        return {type, build(path, shape.fields(), [&] { return cone(radius1, radius2, height, at.center, at.axis); })};
     }
     if (type == "sphere") {
         const ObjectReader shape(value, path, {"type", "radius", "center"});
         const double radius = shape.positive("radius");
         const Vec3 center = shape.point_or("center", {});
-        Solid solid = build(path, shape.fields(), [&] { return sphere(radius, center); });
-        Analytic analytic{Analytic::Kind::sphere, center, {0, 0, 1}, radius, 0, 0, 4.0 / 3.0 * pi * radius * radius * radius};
-        return {type, std::move(solid), analytic};
+        return {type, build(path, shape.fields(), [&] { return sphere(radius, center); })};
     }
     if (type == "torus") {
         const ObjectReader shape(value, path, {"type", "major_radius", "minor_radius", "center", "axis"});
         const double major = shape.positive("major_radius");
         const double minor = shape.positive("minor_radius");
-        const Vec3 center = shape.point_or("center", {});
-        const Vec3 axis = shape.direction_or("axis", {0, 0, 1});
-        Solid solid = build(path, shape.fields(),
-                            [&] { return torus(major, minor, center, axis); });
-        Analytic analytic{Analytic::Kind::torus, center, axis, major, minor, 0, 2.0 * pi * pi * major * minor * minor};
-        return {type, std::move(solid), analytic};
+        const auto at = shape.placement();
+        return {type, build(path, shape.fields(), [&] { return torus(major, minor, at.center, at.axis); })};
     }
     if (type == "revolve") {
         const ObjectReader shape(value, path, {"type", "profile", "axis_point", "axis_dir", "angle"});
@@ -347,19 +334,16 @@ BuiltShape parse_shape(const json& value, const std::string& path) {
             angle = number(*a, shape.child("angle"));
             if (!(angle > 0 && angle <= 360)) throw SpecError(shape.child("angle"), "must be in (0, 360] degrees");
         }
-        Solid solid = build(path, shape.fields({{"axis", "axis_dir"}, {"angle_deg", "angle"}}),
-                            [&] { return revolve(profile, axis_point, axis_dir, angle); });
-        Analytic analytic{Analytic::Kind::revolution, axis_point, axis_dir, 0, 0, 0, std::nullopt};
-        return {type, std::move(solid), analytic};
+        return {type, build(path, shape.fields({{"axis", "axis_dir"}, {"angle_deg", "angle"}}),
+                            [&] { return revolve(profile, axis_point, axis_dir, angle); })};
     }
     if (type == "extrude") {
         const ObjectReader shape(value, path, {"type", "profile", "direction", "distance"});
         Profile profile = parse_profile(shape.required("profile"), shape.child("profile"));
         const Vec3 dir = shape.direction("direction");
         const double distance = shape.positive("distance");
-        Solid solid = build(path, shape.fields({{"displacement", "direction"}}),
-                            [&] { return extrude(profile, dir, distance); });
-        return {type, std::move(solid), Analytic{}};
+        return {type, build(path, shape.fields({{"displacement", "direction"}}),
+                            [&] { return extrude(profile, dir, distance); })};
     }
     throw SpecError(path + ".type",
                     "unknown shape type '" + type + "' (expected cylinder, cone, sphere, torus, revolve or extrude)");
@@ -407,7 +391,7 @@ ShapeSpec parse_spec(std::string_view json_text, const std::string& fallback_nam
         if (!shape) throw SpecError("shape", "is required");
         BuiltShape built = parse_shape(*shape, "shape");
         return ShapeSpec{std::move(name), std::move(description), std::move(built.type), tolerance, angle,
-                         std::move(built.solid), built.analytic};
+                         std::move(built.solid)};
     } catch (const json::exception& e) {
         // Unreachable for a well-typed reader; kept so that no JSON library error escapes as another type.
         throw SpecError("document", json_message(e));

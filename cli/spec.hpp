@@ -14,26 +14,15 @@
 
 #include "ratbez/brep.hpp"
 #include "ratbez/error.hpp"
-#include "ratbez/vec.hpp"
 
 namespace ratbez::spec {
 
+// A ratbez::Error whose argument is the JSON path of the field at fault.
 class SpecError : public Error {
 public:
-    SpecError(std::string path, std::string reason);
-    const std::string& path() const { return path_; }      // "shape.radius", "shape.profile[2].knots", ...
-    const std::string& reason() const { return reason_; }  // "must be a positive number"
-
-private:
-    std::string path_, reason_;
-};
-
-// What the spec says the solid is, for closed-form volumes and OCCT's analytic-surface comparisons.
-struct Analytic {
-    enum class Kind { none, cylinder, cone, sphere, torus, revolution } kind = Kind::none;
-    Vec3 center{}, axis{0, 0, 1};  // revolution: axis_point, axis_dir
-    double radius1 = 0, radius2 = 0, height = 0;  // as in ratbez::occt::AnalyticShape
-    std::optional<double> closed_form_volume;
+    SpecError(std::string_view path, std::string_view reason) : Error(path, reason) {}
+    explicit SpecError(const Error& error) : Error(error) {}  // a kernel error already put under its path
+    std::string_view path() const noexcept { return argument(); }  // "shape.radius", "shape.profile[2].knots", ...
 };
 
 struct ShapeSpec {
@@ -42,8 +31,7 @@ struct ShapeSpec {
     std::string type;                         // shape.type
     std::optional<double> tolerance;          // absolute chordal tolerance for tessellation
     std::optional<double> tessellation_angle; // degrees
-    Solid solid;
-    Analytic analytic;
+    Solid solid;                              // solid.construction(): what it was built as
 };
 
 // Parses and builds. `fallback_name` is used when the document has no `name`; it must itself be a

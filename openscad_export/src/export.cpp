@@ -23,7 +23,7 @@ Format format_from_path(const std::string& path) {
     if (extension == ".scad") return Format::openscad;
     if (extension == ".stl") return Format::stl;
     if (extension == ".off") return Format::off;
-    throw Error("path: unknown extension '" + extension + "' in '" + path + "' (expected .scad, .stl or .off)");
+    throw Error("path", "unknown extension '" + extension + "' in '" + path + "' (expected .scad, .stl or .off)");
 }
 
 }  // namespace
@@ -33,10 +33,10 @@ void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions&
 
     const MeshReport report = check_mesh(mesh, options.checks);
     if (!report.ok()) {
-        std::string message = "mesh: refusing to export an invalid mesh: ";
+        std::string reason = "refusing to export an invalid mesh: ";
         for (std::size_t i = 0; i < report.problems.size(); ++i)
-            message += (i ? "; " : "") + report.problems[i];
-        throw Error(message);
+            reason += (i ? "; " : "") + report.problems[i];
+        throw Error("mesh", reason);
     }
 
     // Write beside the target and rename at the end, so a failure never leaves a truncated file that
@@ -44,7 +44,7 @@ void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions&
     const std::string temporary = path + ".ratbez-partial";
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error("path: cannot open '" + path + "' for writing: " + std::strerror(errno));
+        if (!out) throw Error("path", "cannot open '" + path + "' for writing: " + std::strerror(errno));
         try {
             switch (format) {
             case Format::openscad: write_openscad(mesh, out, options.openscad); break;
@@ -57,12 +57,12 @@ void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions&
             case Format::off: write_off(mesh, out); break;
             }
             out.close();
-            if (!out) throw Error("path: writing '" + path + "' failed");
+            if (!out) throw Error("path", "writing '" + path + "' failed");
         } catch (const Error& e) {
             std::error_code ignored;
             std::filesystem::remove(temporary, ignored);
             // A write failure of the stream is a failure of the path (disk full, ...); option errors pass as they are.
-            if (std::string(e.what()).rfind("out:", 0) == 0) throw Error("path: writing '" + path + "' failed");
+            if (e.argument() == "out") throw Error("path", "writing '" + path + "' failed");
             throw;
         }
     }
@@ -71,7 +71,7 @@ void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions&
     if (error) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
-        throw Error("path: cannot write '" + path + "': " + error.message());
+        throw Error("path", "cannot write '" + path + "': " + error.message());
     }
 }
 

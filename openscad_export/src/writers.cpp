@@ -94,7 +94,7 @@ private:
     void write_through(const char* data, std::size_t n) {
         if (n == 0) return;
         out_.write(data, static_cast<std::streamsize>(n));
-        if (!out_) throw Error("out: writing the mesh failed");
+        if (!out_) throw Error("out", "writing the mesh failed");
     }
 
     std::ostream& out_;

@@ -280,7 +280,7 @@ BezierCurve rational_profile() {
 const Face& surface_face(const Solid& solid) {
     for (const Face& face : solid.faces())
         if (face.kind() == Face::Kind::surface) return face;
-    throw Error("test: no surface face");
+    fail("test", "no surface face");
 }
 
 // ---- curves

@@ -27,7 +27,7 @@ namespace {
 const Face& surface_face(const Solid& solid) {
     for (const Face& face : solid.faces())
         if (face.kind() == Face::Kind::surface) return face;
-    throw Error("test: no surface face");
+    fail("test", "no surface face");
 }
 
 // The planned and refined grid of a solid's (first) surface face.

@@ -150,3 +150,41 @@ def test_parameters_outside_the_domain():
         ratbez.BezierSurface(NET).point(0.5, 2.0)
     with pytest.raises(ratbez.Error):
         ratbez.NurbsCurve(1, [0, 0, 1, 2, 2], P3).point(3.0)
+
+
+@pytest.mark.parametrize(
+    "argument, reason, call",
+    [
+        ("radius", "must be greater than 0", lambda: ratbez.sphere(-1)),
+        ("minor_radius", "must be less than major_radius (else the tube meets the axis)", lambda: ratbez.torus(1, 2)),
+        ("points[1]", "expected a point of 2 or 3 numbers, got 1", lambda: ratbez.BezierCurve([(0, 0), (1,)])),
+        ("axis", "must be a non-zero vector", lambda: ratbez.cylinder(1, 1, axis=(0, 0, 0))),
+        ("profile", "must be closed to bound the caps of an extrusion",
+         lambda: ratbez.extrude(ratbez.line_segment((0, 0), (1, 0)), (0, 0, 1), 1.0)),
+    ],
+)
+def test_error_carries_argument_and_reason(argument, reason, call):
+    with pytest.raises(ratbez.Error) as info:
+        call()
+    error = info.value
+    assert error.argument == argument
+    assert error.reason == reason
+    assert isinstance(error.argument, str) and isinstance(error.reason, str)
+    assert str(error) == argument + ": " + reason  # the message is unchanged: the two fields joined
+
+
+def test_error_reason_may_contain_the_separator():
+    # A nested reason keeps its own "x: y"; the argument is what the kernel named, not a split of the text.
+    corners = [(1, 0), (2, 1), (2, 0), (1, 1)]
+    bow_tie = [ratbez.line_segment(corners[i], corners[(i + 1) % 4]) for i in range(4)]
+    with pytest.raises(ratbez.Error) as info:
+        ratbez.revolve(bow_tie, axis_dir=(0, 1, 0))
+    assert info.value.argument == "profile"
+    assert str(info.value) == "profile: " + info.value.reason
+
+
+def test_error_raised_from_python_has_no_fields():
+    error = ratbez.Error("made by hand")
+    assert isinstance(error, ValueError) and str(error) == "made by hand"
+    assert error.argument is None and error.reason is None
+    assert "argument" in ratbez.Error.__doc__

@@ -105,3 +105,27 @@ def test_occt_check(make, volume):
     assert report["volume"] == pytest.approx(volume, rel=1e-8)
     assert report["occt_volume"] == pytest.approx(volume, rel=1e-5)
     assert isinstance(report["report"], str)
+    # What the solid was built as reaches the check on its own: its analytic surface and closed form.
+    assert report["max_analytic_deviation"] is not None and report["max_analytic_deviation"] < 1e-9
+    assert report["closed_form_volume"] == pytest.approx(volume, rel=1e-14)
+    assert "max analytic distance" in report["report"] and "volume (closed form)" in report["report"]
+
+
+@needs_occt
+def test_occt_check_of_a_claimless_solid_has_no_analytic_comparison():
+    # An extrusion has no analytic surface or closed form here: the two entries are None.
+    square = [ratbez.line_segment(a, b) for a, b in [((0, 0), (1, 0)), ((1, 0), (1, 1)), ((1, 1), (0, 1)),
+                                                       ((0, 1), (0, 0))]]
+    report = ratbez.occt_check(ratbez.extrude(square, (0, 0, 1), 2.0), grid=10)
+    assert report["passed"] is True, report["failures"]
+    assert report["max_analytic_deviation"] is None
+    assert report["closed_form_volume"] is None
+
+
+@needs_occt
+def test_occt_check_reports_the_analytic_distance_of_a_sphere():
+    # The distance to OCCT's Geom_SphericalSurface is a real measurement: rounding, not zero, not None.
+    report = ratbez.occt_check(ratbez.sphere(2.5, center=(3, 1, -2)), grid=20)
+    assert report["passed"] is True, report["failures"]
+    assert 0 <= report["max_analytic_deviation"] < 1e-12 * report["size"] * 100
+    assert report["closed_form_volume"] == pytest.approx(4 / 3 * math.pi * 2.5 ** 3, rel=1e-15)

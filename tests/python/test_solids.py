@@ -159,3 +159,44 @@ def test_extrude_with_holes():
         ratbez.extrude(outer, (0, 0, 1), 2.0, holes=ratbez.circle(1, (3, 3, 0)))
     with pytest.raises(ratbez.Error, match=r"^holes\[1\]: expected a BezierCurve"):
         ratbez.extrude(outer, (0, 0, 1), 2.0, holes=[ratbez.circle(1, (3, 3, 0)), 5])
+
+
+@pytest.mark.parametrize(
+    "make, kind, parameters",
+    [
+        (lambda: ratbez.sphere(2.0, center=(1, 2)), "sphere", {"radius": 2.0, "center": (1.0, 2.0, 0.0)}),
+        (lambda: ratbez.cylinder(1.0, 2.0, center=(1, 1, 1), axis=(0, 0, 3)), "cylinder",
+         {"radius": 1.0, "height": 2.0, "center": (1.0, 1.0, 1.0), "axis": (0.0, 0.0, 1.0)}),
+        (lambda: ratbez.cone(2, 0, 1, axis=(0, 2, 0)), "cone",
+         {"radius1": 2.0, "radius2": 0.0, "height": 1.0, "center": (0.0, 0.0, 0.0), "axis": (0.0, 1.0, 0.0)}),
+        (lambda: ratbez.torus(3, 1, center=(0, 0, 5)), "torus",
+         {"major_radius": 3.0, "minor_radius": 1.0, "center": (0.0, 0.0, 5.0), "axis": (0.0, 0.0, 1.0)}),
+    ],
+)
+def test_primitives_remember_what_they_were_built_as(make, kind, parameters):
+    s = make()
+    assert s.kind == kind
+    assert s.parameters == parameters
+    # The parameters are the building function's keywords: they build the same solid again.
+    again = getattr(ratbez, kind)(**s.parameters)
+    assert again.parameters == s.parameters and again.volume() == s.volume()
+    # The closed forms against the cubature of the exact faces.
+    assert isinstance(s.exact_volume, float) and isinstance(s.exact_area, float)
+    assert s.exact_volume == pytest.approx(s.volume(), rel=1e-12)
+    assert s.exact_area == pytest.approx(s.area(), rel=1e-12)
+
+
+def test_sweeps_remember_their_parameters_without_closed_forms():
+    turned = ratbez.revolve(square_profile_2d(), axis_dir=(0, 2, 0), angle=90)
+    assert turned.kind == "revolution"
+    assert turned.parameters == {"axis_point": (0.0, 0.0, 0.0), "axis_dir": (0.0, 1.0, 0.0), "angle": 90.0}
+    assert turned.exact_volume is None and turned.exact_area is None
+    again = ratbez.revolve(square_profile_2d(), **turned.parameters)
+    assert again.volume() == turned.volume()
+
+    prism = ratbez.extrude(square_profile_2d(), (0, 0, 2), 3.0)
+    assert prism.kind == "extrusion"
+    assert prism.parameters == {"direction": (0.0, 0.0, 1.0), "distance": 3.0}
+    assert prism.exact_volume is None and prism.exact_area is None
+    for name in ("kind", "parameters", "exact_volume", "exact_area"):
+        assert getattr(ratbez.Solid, name).__doc__, name

@@ -181,7 +181,7 @@ void for_each_coedge(const std::vector<Face>& faces, Visitor visit) {
 
 }  // namespace
 
-Solid::Solid(std::vector<Face> faces) {
+Solid::Solid(std::vector<Face> faces, Construction construction) : construction_(std::move(construction)) {
     require(!faces.empty(), "faces", "a solid needs at least one face");
     // Closure: count the uses of every edge in each direction, in first-seen order for the messages.
     std::map<const Edge*, std::pair<int, int>> uses;

@@ -160,7 +160,7 @@ Solid extrude(const Profile& profile, const Vec3& direction, double distance, co
                                  std::move(bottom_loops)));
     faces.push_back(
         Face::planar(Plane{top_frame.origin, top_frame.x_axis, top_frame.y_axis, top_frame.z_axis}, std::move(top_loops)));
-    return Solid(std::move(faces));
+    return Solid(std::move(faces), Construction::Extrusion{unit, distance});
 }
 
 }  // namespace ratbez

@@ -54,7 +54,7 @@ std::optional<Vec3> limit_normal(const LimitNormalPartials& partials, double a, 
 }
 
 void throw_no_tangent_plane(const std::string& u, const std::string& v) {
-    throw Error("(u, v): the surface has no tangent plane at (" + u + ", " + v +
+    throw Error("(u, v)", "the surface has no tangent plane at (" + u + ", " + v +
                 "); its partial derivatives are parallel or zero to order " +
                 std::to_string(limit_normal_taylor_order + 1));
 }

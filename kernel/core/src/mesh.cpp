@@ -17,7 +17,7 @@ void require_valid_indices(const Mesh& mesh) {
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
         for (const std::uint32_t index : mesh.triangles[t])
             if (index >= count)  // not require(): the message is built only on failure
-                throw Error("mesh: triangle " + std::to_string(t) + " refers to vertex " + std::to_string(index) +
+                throw Error("mesh", "triangle " + std::to_string(t) + " refers to vertex " + std::to_string(index) +
                             " but there are only " + std::to_string(count) + " vertices");
 }
 

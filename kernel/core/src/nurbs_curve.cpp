@@ -217,7 +217,7 @@ std::vector<Vec3> NurbsCurve::derivatives(double u, int order) const {
     // scales like 1 / (knot span)^k: a span of 1e-300 overflows the second): an Error, not inf or NaN.
     for (std::size_t k = 0; k < result.size(); ++k)
         if (!is_finite(result[k]))
-            throw Error("u: the derivative of order " + std::to_string(k) + " at u = " + number(u) +
+            throw Error("u", "the derivative of order " + std::to_string(k) + " at u = " + number(u) +
                         " is not a finite number (a knot span or weight ratio too extreme for double precision)");
     return result;
 }

@@ -33,7 +33,7 @@ Frame meridian_frame(const Frame& frame, const Vec3& origin) {
 
 // The lateral face of a cylinder or cone (the segment from radius r1 at the base to r2 at height h,
 // revolved), and planar caps where the radius is not zero; a zero radius is an apex (degenerate edge).
-Solid conical_solid(const Frame& frame, double radius1, double radius2, double height) {
+Solid conical_solid(const Frame& frame, double radius1, double radius2, double height, Construction construction) {
     const Vec3 bottom = frame.origin + frame.x_axis * radius1;
     const Vec3 top = frame.origin + frame.z_axis * height + frame.x_axis * radius2;
     detail::RevolutionShell shell =
@@ -45,7 +45,7 @@ Solid conical_solid(const Frame& frame, double radius1, double radius2, double h
     if (radius2 > 0)
         faces.push_back(Face::planar(Plane{frame.origin + frame.z_axis * height, frame.x_axis, frame.y_axis, frame.z_axis},
                                      {{Coedge{shell.joint_edges[1], false}}}));
-    return Solid(std::move(faces));
+    return Solid(std::move(faces), std::move(construction));
 }
 
 }  // namespace
@@ -53,7 +53,8 @@ Solid conical_solid(const Frame& frame, double radius1, double radius2, double h
 Solid cylinder(double radius, double height, const Vec3& center, const Vec3& axis) {
     require_positive(radius, "radius");
     require_positive(height, "height");
-    return conical_solid(placed_frame(center, axis), radius, radius, height);
+    const Frame frame = placed_frame(center, axis);
+    return conical_solid(frame, radius, radius, height, Construction::Cylinder{center, frame.z_axis, radius, height});
 }
 
 Solid cone(double radius1, double radius2, double height, const Vec3& center, const Vec3& axis) {
@@ -63,7 +64,9 @@ Solid cone(double radius1, double radius2, double height, const Vec3& center, co
     require(radius2 >= 0, "radius2", "must be at least 0 (0 puts the apex at the top)");
     require(radius1 > 0 || radius2 > 0, "radius1", "radius1 and radius2 cannot both be 0");
     require_positive(height, "height");
-    return conical_solid(placed_frame(center, axis), radius1, radius2, height);
+    const Frame frame = placed_frame(center, axis);
+    return conical_solid(frame, radius1, radius2, height,
+                         Construction::Cone{center, frame.z_axis, radius1, radius2, height});
 }
 
 Solid sphere(double radius, const Vec3& center) {
@@ -73,7 +76,7 @@ Solid sphere(double radius, const Vec3& center) {
     // quarter circles; its ends lie exactly on the axis (cos_deg(±90) == 0), so the poles are exact.
     const NurbsCurve semicircle = detail::arc_in_frame(meridian_frame(frame, center), radius, radius, -90.0, 180.0);
     detail::RevolutionShell shell = detail::build_revolution({semicircle}, false, center, frame.z_axis, 360.0);
-    return Solid(std::move(shell.faces));
+    return Solid(std::move(shell.faces), Construction::Sphere{center, radius});
 }
 
 Solid torus(double major_radius, double minor_radius, const Vec3& center, const Vec3& axis) {
@@ -86,7 +89,7 @@ Solid torus(double major_radius, double minor_radius, const Vec3& center, const 
     const NurbsCurve tube =
         detail::arc_in_frame(meridian_frame(frame, center + frame.x_axis * major_radius), minor_radius, minor_radius, 0.0, 360.0);
     detail::RevolutionShell shell = detail::build_revolution({tube}, true, center, frame.z_axis, 360.0);
-    return Solid(std::move(shell.faces));
+    return Solid(std::move(shell.faces), Construction::Torus{center, frame.z_axis, major_radius, minor_radius});
 }
 
 }  // namespace ratbez

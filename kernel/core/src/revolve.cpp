@@ -256,7 +256,7 @@ Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_d
         const Vec3 e_end = e * detail::cos_deg(angle_deg) + cross(d, e) * detail::sin_deg(angle_deg);
         faces.push_back(Face::planar(Plane{axis_point, d, e_end, cross(d, e_end)}, {end_loop}));
     }
-    return Solid(std::move(faces));
+    return Solid(std::move(faces), Construction::Revolution{axis_point, d, angle_deg});
 }
 
 }  // namespace ratbez

@@ -48,12 +48,12 @@ void validate_parameters(std::span<const double> ts, const Interval& domain, con
     for (std::size_t k = 0; k < ts.size(); ++k) {
         const double t = ts[k];
         if (!std::isfinite(t))
-            throw Error(std::string(argument) + ": element " + std::to_string(k) + " is not a finite number");
+            throw Error(argument, "element " + std::to_string(k) + " is not a finite number");
         if (t < domain.min || t > domain.max)
-            throw Error(std::string(argument) + ": element " + std::to_string(k) + " (" + number(t) +
+            throw Error(argument, "element " + std::to_string(k) + " (" + number(t) +
                         ") is outside the domain [" + number(domain.min) + ", " + number(domain.max) + "]");
         if (k > 0 && t < ts[k - 1])
-            throw Error(std::string(argument) + ": must be non-decreasing, but element " + std::to_string(k) +
+            throw Error(argument, "must be non-decreasing, but element " + std::to_string(k) +
                         " (" + number(t) + ") is less than element " + std::to_string(k - 1) + " (" +
                         number(ts[k - 1]) + ")");
     }

@@ -180,9 +180,9 @@ bool is_crease(const Edge& edge, const EdgeUse& a, const EdgeUse& b) {
 }  // namespace
 
 [[noreturn]] void throw_over_budget(double estimate, std::size_t budget) {
-    throw Error("tolerance: too fine for max_triangles: the mesh would need about " +
-                std::to_string(static_cast<long long>(std::min(estimate, 9e18))) + " triangles, more than " +
-                std::to_string(budget));
+    fail("tolerance", "too fine for max_triangles: the mesh would need about " +
+                          std::to_string(static_cast<long long>(std::min(estimate, 9e18))) + " triangles, more than " +
+                          std::to_string(budget));
 }
 
 double curvature_sample_count(const NurbsSurface& s, std::size_t per_span) {
@@ -346,11 +346,11 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
     const double samples = curvature_sample_count(face.surface(), kCoarseSamplesPerSpan);
     const double sample_budget = std::max(4.0 * static_cast<double>(settings.max_triangles), 262'144.0);
     if (samples > sample_budget)
-        throw Error("max_triangles: a face with " + std::to_string(face.surface().knots_u().size()) + " x " +
-                    std::to_string(face.surface().knots_v().size()) + " knots needs " +
-                    std::to_string(static_cast<long long>(samples)) + " curvature samples, more than " +
-                    std::to_string(static_cast<long long>(sample_budget)) + " that a budget of " +
-                    std::to_string(settings.max_triangles) + " triangles allows");
+        fail("max_triangles", "a face with " + std::to_string(face.surface().knots_u().size()) + " x " +
+                                  std::to_string(face.surface().knots_v().size()) + " knots needs " +
+                                  std::to_string(static_cast<long long>(samples)) + " curvature samples, more than " +
+                                  std::to_string(static_cast<long long>(sample_budget)) + " that a budget of " +
+                                  std::to_string(settings.max_triangles) + " triangles allows");
     SurfacePlan plan;
     plan.face = &face;
     plan.evaluator = std::make_shared<const SurfaceEvaluator>(face.surface());

@@ -74,7 +74,7 @@ void write_step(const Solid& solid, const std::string& path, const ConvertOption
                 "OpenCASCADE could not translate it to STEP");
         require(writer.Write(path.c_str()) == IFSelect_RetDone, "path", "cannot write '" + path + "'");
     } catch (const Standard_Failure& failure) {
-        throw Error(std::string("path: writing STEP to '") + path + "' failed: " + failure.GetMessageString());
+        throw Error("path", "writing STEP to '" + path + "' failed: " + failure.GetMessageString());
     }
 }
 

@@ -73,7 +73,7 @@ auto guarded(const std::string& argument, Make&& make) {
         return make();
     } catch (const Standard_Failure& failure) {
         const char* message = failure.GetMessageString();
-        throw Error(argument + ": OpenCASCADE rejected the geometry (" + failure.DynamicType()->Name() +
+        throw Error(argument, std::string("OpenCASCADE rejected the geometry (") + failure.DynamicType()->Name() +
                     (message && *message ? std::string(": ") + message : std::string()) + ")");
     }
 }

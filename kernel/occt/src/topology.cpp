@@ -112,7 +112,7 @@ public:
                     add(surface_face(faces[i]), {du.min, du.max, dv.min, dv.max});
                 }
             } catch (const Error& e) {
-                throw Error("solid: face " + std::to_string(i) + ": " + e.what());
+                throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
             }
         }
         out_.first_face.push_back(out_.faces.size());

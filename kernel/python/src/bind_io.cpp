@@ -45,11 +45,11 @@ namespace {
         return tessellate(solid, requested ? *requested : default_tolerance(solid));
     }
     if (py::isinstance<Mesh>(shape)) return shape.cast<Mesh>();
-    throw Error("solid_or_mesh: expected a ratbez.Solid or a ratbez.Mesh");
+    throw Error("solid_or_mesh", "expected a ratbez.Solid or a ratbez.Mesh");
 }
 
 [[maybe_unused]] const Solid& solid_of(const py::object& shape) {
-    if (!py::isinstance<Solid>(shape)) throw Error("solid: expected a ratbez.Solid");
+    if (!py::isinstance<Solid>(shape)) throw Error("solid", "expected a ratbez.Solid");
     return shape.cast<const Solid&>();
 }
 
@@ -62,7 +62,7 @@ void bind_io(py::module_& m) {
         "export_openscad",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance) {
             const std::string file = to_path(path, "path");
-            if (!has_extension(file, ".scad")) throw Error("path: an OpenSCAD file name must end in .scad");
+            if (!has_extension(file, ".scad")) throw Error("path", "an OpenSCAD file name must end in .scad");
             const Mesh mesh = mesh_of(solid_or_mesh, tolerance);
             py::gil_scoped_release release;
             exporter::export_mesh(mesh, file);
@@ -73,7 +73,7 @@ void bind_io(py::module_& m) {
         "write_stl",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance) {
             const std::string file = to_path(path, "path");
-            if (!has_extension(file, ".stl")) throw Error("path: an STL file name must end in .stl");
+            if (!has_extension(file, ".stl")) throw Error("path", "an STL file name must end in .stl");
             const Mesh mesh = mesh_of(solid_or_mesh, tolerance);
             py::gil_scoped_release release;
             exporter::export_mesh(mesh, file);
@@ -160,25 +160,16 @@ void bind_io(py::module_& m) {
                 report = occt::check(s, options);
             }
             py::dict result;
-            result["valid"] = report.valid;
-            result["closed"] = report.closed;
-            result["max_deviation"] = report.max_deviation;
-            result["max_analytic_deviation"] = report.max_analytic_deviation;
-            result["volume"] = report.volume;
-            result["occt_volume"] = report.occt_volume;
-            result["area"] = report.area;
-            result["occt_area"] = report.occt_area;
-            result["closed_form_volume"] = report.closed_form_volume;
-            result["size"] = report.size;
-            result["passed"] = report.passed;
-            result["failures"] = report.failures;
+            occt::for_each_entry(report, [&](const char* name, const auto& value) { result[name] = value; });
             result["report"] = occt::format_report(report);
             return result;
         },
         py::arg("solid"), py::arg("grid") = 50, py::arg("deviation_limit") = 1e-9, py::arg("volume_limit") = 1e-6,
         py::arg("bezier_faces") = false,
         "Convert to an OpenCASCADE solid (bezier_faces: as brep_string) and compare: validity, evaluation\n"
-        "deviation, volume and area.");
+        "deviation, volume and area; for a cylinder, cone, sphere, torus or revolution also the distance to\n"
+        "OCCT's analytic surface of that kind (max_analytic_deviation) and, for the four primitives, the\n"
+        "closed-form volume (closed_form_volume); both None otherwise.");
 #else
     m.attr("has_occt") = false;
 #endif

@@ -9,6 +9,7 @@
 
 #include "convert.hpp"
 #include "ratbez/brep.hpp"
+#include "ratbez/construction.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/extrude.hpp"
@@ -34,14 +35,14 @@ std::optional<NurbsCurve> profile_piece(py::handle value) {
 
 Profile to_profile(py::handle value, const std::string& argument) {
     if (auto piece = profile_piece(value)) return Profile({std::move(*piece)});
-    const std::string expected = argument + ": expected a BezierCurve, a NurbsCurve or a list of them";
-    if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value)) throw Error(expected);
+    if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value))
+        throw Error(argument, "expected a BezierCurve, a NurbsCurve or a list of them");
     std::vector<NurbsCurve> pieces;
     std::size_t index = 0;
     for (py::handle item : value) {
         auto piece = profile_piece(item);
         if (!piece)
-            throw Error(argument + "[" + std::to_string(index) + "]: expected a BezierCurve or a NurbsCurve");
+            throw Error(argument + "[" + std::to_string(index) + "]", "expected a BezierCurve or a NurbsCurve");
         pieces.push_back(std::move(*piece));
         ++index;
     }
@@ -75,19 +76,19 @@ Mesh make_mesh(const py::object& vertices, const py::object& triangles) {
     mesh.vertices = to_points(vertices, "vertices");
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
         if (!is_finite(mesh.vertices[i]))
-            throw Error("vertices[" + std::to_string(i) + "]: coordinates must be finite numbers");
+            throw Error("vertices[" + std::to_string(i) + "]", "coordinates must be finite numbers");
     std::size_t index = 0;
     if (py::isinstance<py::str>(triangles) || !PySequence_Check(triangles.ptr()))
-        throw Error("triangles: expected a sequence of index triples");
+        throw Error("triangles", "expected a sequence of index triples");
     for (py::handle row : triangles) {
         const std::string name = "triangles[" + std::to_string(index) + "]";
         if (py::isinstance<py::str>(row) || !PySequence_Check(row.ptr()) || py::len(row) != 3)
-            throw Error(name + ": expected 3 vertex indices");
+            throw Error(name, "expected 3 vertex indices");
         std::array<std::uint32_t, 3> triangle{};
         for (std::size_t k = 0; k < 3; ++k) {
             const int vertex = to_int(row[py::int_(k)], name);
             if (vertex < 0 || static_cast<std::size_t>(vertex) >= mesh.vertices.size())
-                throw Error(name + ": vertex index " + std::to_string(vertex) + " is out of range [0, " +
+                throw Error(name, "vertex index " + std::to_string(vertex) + " is out of range [0, " +
                             std::to_string(mesh.vertices.size()) + ")");
             triangle[k] = static_cast<std::uint32_t>(vertex);
         }
@@ -95,6 +96,41 @@ Mesh make_mesh(const py::object& vertices, const py::object& triangles) {
         ++index;
     }
     return mesh;
+}
+
+// Solid.parameters: keyed by the Python arguments of the function that builds that kind, so that
+// ratbez.cylinder(**s.parameters) builds s again (revolve and extrude take the profile besides).
+py::dict construction_parameters(const Construction& construction) {
+    py::dict parameters;
+    const auto place = [&](const Vec3& center, const Vec3& axis) {
+        parameters["center"] = to_tuple(center);
+        parameters["axis"] = to_tuple(axis);
+    };
+    if (const auto* c = construction.get<Construction::Cylinder>()) {
+        parameters["radius"] = c->radius;
+        parameters["height"] = c->height;
+        place(c->center, c->axis);
+    } else if (const auto* k = construction.get<Construction::Cone>()) {
+        parameters["radius1"] = k->radius1;
+        parameters["radius2"] = k->radius2;
+        parameters["height"] = k->height;
+        place(k->center, k->axis);
+    } else if (const auto* s = construction.get<Construction::Sphere>()) {
+        parameters["radius"] = s->radius;
+        parameters["center"] = to_tuple(s->center);
+    } else if (const auto* t = construction.get<Construction::Torus>()) {
+        parameters["major_radius"] = t->major_radius;
+        parameters["minor_radius"] = t->minor_radius;
+        place(t->center, t->axis);
+    } else if (const auto* r = construction.get<Construction::Revolution>()) {
+        parameters["axis_point"] = to_tuple(r->axis_point);
+        parameters["axis_dir"] = to_tuple(r->axis_dir);
+        parameters["angle"] = r->angle_deg;
+    } else if (const auto* e = construction.get<Construction::Extrusion>()) {
+        parameters["direction"] = to_tuple(e->direction);
+        parameters["distance"] = e->distance;
+    }
+    return parameters;
 }
 
 NurbsCurve coedge_curve(const Coedge& coedge) {
@@ -168,6 +204,21 @@ void bind_solids(py::module_& m) {
 
     py::class_<Solid>(m, "Solid", "A closed shell of exact NURBS faces.")
         .def_property_readonly("faces", &Solid::faces)
+        .def_property_readonly(
+            "kind", [](const Solid& s) { return std::string(s.construction().kind()); },
+            "What the solid was built as: 'cylinder', 'cone', 'sphere', 'torus', 'revolution', 'extrusion', "
+            "or 'none' (assembled from faces).")
+        .def_property_readonly(
+            "parameters", [](const Solid& s) { return construction_parameters(s.construction()); },
+            "The arguments it was built with, keyed as the building function's (axes and directions as unit "
+            "vectors): {'radius': 2.0, 'center': (0.0, 0.0, 0.0)} for a sphere; revolve's and extrude's "
+            "without the profile; {} for 'none'.")
+        .def_property_readonly(
+            "exact_volume", [](const Solid& s) { return s.construction().exact_volume(); },
+            "The closed-form volume of a cylinder, cone, sphere or torus; None for other kinds.")
+        .def_property_readonly(
+            "exact_area", [](const Solid& s) { return s.construction().exact_area(); },
+            "The closed-form surface area of a cylinder, cone, sphere or torus; None for other kinds.")
         .def("volume", &Solid::volume, py::call_guard<py::gil_scoped_release>())
         .def("area", &Solid::area, py::call_guard<py::gil_scoped_release>())
         .def("euler_characteristic", &Solid::euler_characteristic)
@@ -225,7 +276,7 @@ void bind_solids(py::module_& m) {
             std::vector<Profile> hole_profiles;
             if (!holes.is_none()) {
                 if (!py::isinstance<py::list>(holes) && !py::isinstance<py::tuple>(holes))
-                    throw Error("holes: expected a list of profiles");
+                    fail("holes", "expected a list of profiles");
                 std::size_t index = 0;
                 for (py::handle hole : holes) hole_profiles.push_back(to_profile(hole, "holes[" + std::to_string(index++) + "]"));
             }

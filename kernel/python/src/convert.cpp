@@ -12,11 +12,11 @@ namespace {
 std::vector<py::object> sequence_items(py::handle value, const std::string& argument, const char* what) {
     if (value.is_none() || py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) ||
         !PySequence_Check(value.ptr()))
-        throw Error(argument + ": expected " + what);
+        throw Error(argument, std::string("expected ") + what);
     const Py_ssize_t size = PySequence_Size(value.ptr());
     if (size < 0) {
         PyErr_Clear();
-        throw Error(argument + ": expected " + what);
+        throw Error(argument, std::string("expected ") + what);
     }
     std::vector<py::object> items;
     items.reserve(static_cast<std::size_t>(size));
@@ -37,11 +37,11 @@ std::string element(const std::string& argument, std::size_t index) {
 double to_double(py::handle value, const std::string& argument) {
     // Numbers and anything with __float__ (numpy scalars); not strings, not None.
     if (value.is_none() || py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value))
-        throw Error(argument + ": expected a number");
+        throw Error(argument, "expected a number");
     const double result = PyFloat_AsDouble(value.ptr());
     if (result == -1.0 && PyErr_Occurred()) {
         PyErr_Clear();
-        throw Error(argument + ": expected a number");
+        throw Error(argument, "expected a number");
     }
     return result;
 }
@@ -49,24 +49,24 @@ double to_double(py::handle value, const std::string& argument) {
 int to_int(py::handle value, const std::string& argument) {
     // Integers and anything with __index__ (numpy integers); 2.0 is refused rather than truncated.
     if (value.is_none() || py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
-        throw Error(argument + ": expected an integer");
+        throw Error(argument, "expected an integer");
     PyObject* index = PyNumber_Index(value.ptr());
     if (index == nullptr) {
         PyErr_Clear();
-        throw Error(argument + ": expected an integer");
+        throw Error(argument, "expected an integer");
     }
     const auto owner = py::reinterpret_steal<py::object>(index);
     int overflow = 0;
     const long long result = PyLong_AsLongLongAndOverflow(index, &overflow);
     if (overflow != 0 || result < -1'000'000'000LL || result > 1'000'000'000LL)
-        throw Error(argument + ": integer out of range");
+        throw Error(argument, "integer out of range");
     return static_cast<int>(result);
 }
 
 Vec3 to_vec3(py::handle value, const std::string& argument) {
     const auto items = sequence_items(value, argument, "a point: a sequence of 2 or 3 numbers");
     if (items.size() != 2 && items.size() != 3)
-        throw Error(argument + ": expected a point of 2 or 3 numbers, got " + std::to_string(items.size()));
+        throw Error(argument, "expected a point of 2 or 3 numbers, got " + std::to_string(items.size()));
     Vec3 point{to_double(items[0], argument), to_double(items[1], argument),
                items.size() == 3 ? to_double(items[2], argument) : 0.0};
     return point;
@@ -106,16 +106,16 @@ std::vector<std::vector<double>> to_double_rows(py::handle value, const std::str
 
 std::string to_path(py::handle value, const std::string& argument) {
     if (!py::isinstance<py::str>(value) && !PyObject_HasAttrString(value.ptr(), "__fspath__"))
-        throw Error(argument + ": expected a path (str or os.PathLike)");
+        throw Error(argument, "expected a path (str or os.PathLike)");
     PyObject* fspath = PyOS_FSPath(value.ptr());
     if (fspath == nullptr) {
         PyErr_Clear();
-        throw Error(argument + ": expected a path (str or os.PathLike)");
+        throw Error(argument, "expected a path (str or os.PathLike)");
     }
     const auto path = py::reinterpret_steal<py::object>(fspath);
-    if (!py::isinstance<py::str>(path)) throw Error(argument + ": expected a str path, not bytes");
+    if (!py::isinstance<py::str>(path)) throw Error(argument, "expected a str path, not bytes");
     auto text = path.cast<std::string>();
-    if (text.empty()) throw Error(argument + ": must not be empty");
+    if (text.empty()) throw Error(argument, "must not be empty");
     return text;
 }
 

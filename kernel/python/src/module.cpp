@@ -1,14 +1,57 @@
 // The Python module `ratbez`: the public contract of DESIGN.md. Bindings only; the math is in kernel/core.
 
+#include <exception>
+#include <string_view>
+
 #include "convert.hpp"
 #include "ratbez/error.hpp"
 
+namespace {
+
+namespace py = pybind11;
+
+// ratbez.Error, kept for the life of the process (a deliberately leaked reference: exceptions are
+// translated until the interpreter is gone, and no destructor may then touch Python).
+PyObject* error_type = nullptr;
+
+// Kernel text as a Python str; bytes that are not UTF-8 (a file name from the system) become U+FFFD
+// rather than a UnicodeDecodeError in place of the real error.
+py::str python_text(std::string_view text) {
+    return py::reinterpret_steal<py::str>(
+        PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "replace"));
+}
+
+// ratbez::Error -> a ratbez.Error instance with str() = what() and the attributes argument and reason.
+void translate_error(std::exception_ptr error) {
+    try {
+        if (error) std::rethrow_exception(error);
+    } catch (const ratbez::Error& e) {
+        try {
+            const py::object instance = py::handle(error_type)(python_text(e.what()));
+            instance.attr("argument") = python_text(e.argument());
+            instance.attr("reason") = python_text(e.reason());
+            PyErr_SetObject(error_type, instance.ptr());
+        } catch (py::error_already_set& failure) {
+            failure.restore();  // building the instance failed (out of memory): raise that instead
+        }
+    }
+}
+
+}  // namespace
+
 PYBIND11_MODULE(ratbez, m) {
-    namespace py = pybind11;
     m.doc() = "ratbez: exact rational Bezier / NURBS geometry and B-rep solids";
     m.attr("__version__") = RATBEZ_VERSION;
     // ratbez::Error -> ratbez.Error, a ValueError: bad input is a value problem, and `except ValueError` catches it.
-    py::register_exception<ratbez::Error>(m, "Error", PyExc_ValueError);
+    const py::exception<ratbez::Error> error(m, "Error", PyExc_ValueError);
+    error.attr("__doc__") =
+        "Bad input to ratbez. str(e) is 'argument: reason'; e.argument names the argument at fault (a path "
+        "such as 'radius' or 'profile[1]') and e.reason says what is wrong with it (both str; None on an "
+        "instance raised from Python).";
+    error.attr("argument") = py::none();
+    error.attr("reason") = py::none();
+    error_type = error.inc_ref().ptr();
+    py::register_exception_translator(&translate_error);
     ratbez::python::bind_core(m);
     ratbez::python::bind_solids(m);
     ratbez::python::bind_io(m);

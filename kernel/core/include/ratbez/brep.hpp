@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "ratbez/box.hpp"
+#include "ratbez/construction.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/nurbs_surface.hpp"
 #include "ratbez/vec.hpp"
@@ -98,9 +99,12 @@ class Solid {
 public:
     // Validates closure: every non-degenerate edge is used exactly twice, once in each direction, and
     // orientation: the enclosed volume (a low-order quadrature, enough for its sign) is positive.
-    explicit Solid(std::vector<Face> faces);
+    // `construction` records what the faces were built as (the builders of primitives.hpp, revolve.hpp
+    // and extrude.hpp pass theirs); a Solid assembled from faces alone is of kind none.
+    explicit Solid(std::vector<Face> faces, Construction construction = {});
 
     const std::vector<Face>& faces() const { return faces_; }
+    const Construction& construction() const { return construction_; }
     std::vector<EdgePtr> edges() const;       // each distinct edge once, degenerate ones included
     std::vector<VertexPtr> vertices() const;  // each distinct vertex once
     // V - E + F - R with degenerate edges not counted (their vertex is counted) and R the hole loops of planar
@@ -117,6 +121,7 @@ public:
 
 private:
     std::vector<Face> faces_;
+    Construction construction_;
 };
 
 }  // namespace ratbez

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <concepts>
+#include <cstddef>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -11,19 +12,45 @@
 
 namespace ratbez {
 
+// what() is "<argument>: <reason>"; argument() and reason() are its two parts, kept apart so that a
+// caller reporting the error elsewhere (the CLI's JSON paths, Python's ratbez.Error attributes) reads
+// them instead of taking the text apart. The argument is a path: "radius", "profile[1]", "options.grid".
+// The text is the only storage (two offsets mark the parts), so copying an Error cannot throw.
 class Error : public std::invalid_argument {
 public:
-    using std::invalid_argument::invalid_argument;
+    Error(std::string_view argument, std::string_view reason)
+        : std::invalid_argument(join(argument, reason)),
+          argument_size_(argument.size()),
+          reason_start_(argument.size() + 2) {}
+
+    std::string_view argument() const noexcept { return std::string_view(what(), argument_size_); }
+    std::string_view reason() const noexcept { return std::string_view(what()).substr(reason_start_); }
+
+    // The same reason, its argument put under `parent`: an Error about "weights" raised while building
+    // shape.profile[1] becomes one about "shape.profile[1].weights". An empty parent changes nothing.
+    Error under(std::string_view parent) const {
+        if (parent.empty()) return *this;
+        std::string path(parent);
+        path += '.';
+        path += argument();
+        return Error(path, reason());
+    }
+
+private:
+    static std::string join(std::string_view argument, std::string_view reason) {
+        std::string message(argument);
+        message += ": ";
+        message += reason;
+        return message;
+    }
+
+    std::size_t argument_size_ = 0;
+    std::size_t reason_start_ = 0;
 };
 
-[[noreturn]] inline void fail(std::string_view argument, std::string_view reason) {
-    std::string message(argument);
-    message += ": ";
-    message += reason;
-    throw Error(message);
-}
+[[noreturn]] inline void fail(std::string_view argument, std::string_view reason) { throw Error(argument, reason); }
 
-// Throws Error("<argument>: <reason>") unless `condition` holds.
+// Throws Error(argument, reason) unless `condition` holds.
 inline void require(bool condition, std::string_view argument, std::string_view reason) {
     if (!condition) [[unlikely]] fail(argument, reason);
 }

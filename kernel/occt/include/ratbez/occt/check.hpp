@@ -1,7 +1,8 @@
 #pragma once
 // Checking a solid against OpenCASCADE: validity of the converted B-rep, our evaluation against OCCT's
-// evaluation of the converted geometry, our points against OCCT's analytic surface of the same
-// primitive, and volumes (ours / OCCT / closed form). OCCT-free header (see files.hpp).
+// evaluation of the converted geometry, our points against OCCT's analytic surface of what the solid
+// was built as (Solid::construction(): the primitive's quadric or torus, a revolution's surface of
+// revolution), and volumes (ours / OCCT / the construction's closed form). OCCT-free header (see files.hpp).
 
 #include <optional>
 #include <string>
@@ -12,20 +13,10 @@
 
 namespace ratbez::occt {
 
-// What the solid is known to be, for the analytic-surface and closed-form comparisons.
-struct AnalyticShape {
-    enum class Kind { none, cylinder, cone, sphere, torus, revolution } kind = Kind::none;
-    Vec3 center{}, axis{0, 0, 1};
-    double radius1 = 0, radius2 = 0, height = 0;  // cylinder: radius1, height; cone: radius1, radius2, height;
-                                                   // sphere: radius1; torus: radius1 = major, radius2 = minor
-    std::optional<double> closed_form_volume;
-};
-
 struct CheckOptions {
     int grid = 50;                    // samples per face direction for the deviation grids
     double deviation_limit = 1e-9;    // relative to the solid's size: larger deviations fail the check
     double volume_limit = 1e-6;       // relative volume disagreement that fails the check
-    AnalyticShape analytic{};
     ConvertOptions convert{};         // the representation checked (validity, deviation, OCCT's volume)
 };
 
@@ -33,15 +24,35 @@ struct CheckReport {
     bool valid = false;               // BRepCheck_Analyzer
     bool closed = false;              // every edge of the shell shared by two faces
     double max_deviation = 0;         // |ours - OCCT D0| over the grids of every face (absolute)
-    std::optional<double> max_analytic_deviation;  // distance of our points to OCCT's analytic surface
+    std::optional<double> max_analytic_deviation;  // distance of our points to OCCT's analytic surface (a
+                                                   // revolution: to its point at the same profile parameter);
+                                                   // none for an extrusion or a Solid of kind none
     double volume = 0, occt_volume = 0, area = 0, occt_area = 0;
-    std::optional<double> closed_form_volume;
+    std::optional<double> closed_form_volume;      // Construction::exact_volume()
     double size = 0;                  // bounding-box diagonal, the scale deviations are relative to
     bool passed = false;              // everything above within the limits
     std::vector<std::string> failures;  // one line per failed check
 };
 
 CheckReport check(const Solid& solid, const CheckOptions& options = {});
+
+// Every entry of the report under its name, the keys of `ratbez check --json` and of Python's occt_check
+// dict: visit(name, value) with a bool, a double, a std::optional<double> or the failures.
+template <class Visit>
+void for_each_entry(const CheckReport& report, Visit&& visit) {
+    visit("valid", report.valid);
+    visit("closed", report.closed);
+    visit("max_deviation", report.max_deviation);
+    visit("max_analytic_deviation", report.max_analytic_deviation);
+    visit("volume", report.volume);
+    visit("occt_volume", report.occt_volume);
+    visit("area", report.area);
+    visit("occt_area", report.occt_area);
+    visit("closed_form_volume", report.closed_form_volume);
+    visit("size", report.size);
+    visit("passed", report.passed);
+    visit("failures", report.failures);
+}
 
 // A human-readable table of the report (one row per quantity, a PASS / FAIL column).
 std::string format_report(const CheckReport& report);
