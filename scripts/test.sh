@@ -48,6 +48,7 @@ ctest --test-dir "$build" --output-on-failure -j "$jobs" 2>&1 | tee "$logs/relea
 end_stage
 
 begin_stage sanitizers "ASan + UBSan build ($asan/) and its ctest, C++ suites only"
+release_only='^TessellateEconomy\.|_1e_minus_4'
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
@@ -55,7 +56,10 @@ cmake -S . -B "$asan" -G Ninja -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG
   -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE -DRATBEZ_WITH_PYTHON=OFF -DRATBEZ_TEST_FREECAD=OFF \
   -DRATBEZ_TEST_OPENSCAD=OFF -DRATBEZ_BUILD_BENCH=OFF >/dev/null
 if cmake --build "$asan" -j "$jobs"; then
-  ctest --test-dir "$asan" --output-on-failure -j "$jobs" 2>&1 | tee "$logs/asan.txt" || status=1
+  # Left out here, run in Release only: the triangle-economy comparisons and the 1e-4 meshes of every
+  # shape repeat the code paths of the coarser tolerances at many times the cost, and prove counts, not
+  # memory safety.
+  ctest --test-dir "$asan" --output-on-failure -j "$jobs" -E "$release_only" 2>&1 | tee "$logs/asan.txt" || status=1
 else
   echo "test.sh: the sanitizer build failed" | tee "$logs/asan.txt"
   status=1
