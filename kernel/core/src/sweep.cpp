@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "geometry_internal.hpp"
+#include "knot_removal.hpp"
 #include "numeric_internal.hpp"
 #include "planar_profile.hpp"
 #include "ratbez/bspline_basis.hpp"
@@ -62,7 +63,7 @@ NurbsSurface transposed(const NurbsSurface& s) {
 // ---- the path, span by span
 
 struct PathPoint {
-    Vec3 x, d1, d2;  // position and the first two derivatives in the path's parameter
+    Vec3 x, d1, d2, d3;  // position and the first three derivatives in the path's parameter
 };
 
 // The path as its Bézier spans, each evaluated on its own (so derivatives at a span's ends are one-sided).
@@ -81,8 +82,8 @@ public:
     PathPoint at(std::size_t span, double t) const {
         const double a = breaks_[span], h = breaks_[span + 1] - a;
         const double s = std::clamp((t - a) / h, 0.0, 1.0);
-        const std::vector<Vec3> d = spans_[span].derivatives(s, 2);
-        return {d[0], d[1] / h, d[2] / (h * h)};
+        const std::vector<Vec3> d = spans_[span].derivatives(s, 3);
+        return {d[0], d[1] / h, d[2] / (h * h), d[3] / (h * h * h)};
     }
 
 private:
@@ -163,10 +164,12 @@ std::optional<Arc> as_arc(const Path& path) {
 
 // ---- the rotation-minimising frame along a general path
 
+// The frame at a path parameter with its first two derivatives in that parameter (the trajectories' Hermite
+// data): position x, unit tangent t, the rotation-minimising normals r and s = t x r.
 struct FrameData {
-    Vec3 x, x1;      // position and velocity
-    Vec3 t, t1;      // unit tangent and its derivative in the path parameter
-    Vec3 r, r1, s, s1;
+    Vec3 x, x1, x2;
+    Vec3 t, t1, t2;
+    Vec3 r, r1, r2, s, s1, s2;
 };
 
 struct Reference {
@@ -235,22 +238,34 @@ public:
         FrameData f;
         f.x = p.x;
         f.x1 = p.d1;
-        const double speed = norm(p.d1);
-        f.t = p.d1 / speed;
-        f.t1 = (p.d2 - f.t * dot(p.d2, f.t)) / speed;
+        f.x2 = p.d2;
+        // sigma t = x' with sigma = |x'|, differentiated twice: t' = (x'' - sigma' t) / sigma,
+        // t'' = (x''' - sigma'' t - 2 sigma' t') / sigma, sigma' = x'' . t, sigma'' = x''' . t + x'' . t'.
+        const double sigma = norm(p.d1);
+        f.t = p.d1 / sigma;
+        const double sigma1 = dot(p.d2, f.t);
+        f.t1 = (p.d2 - f.t * sigma1) / sigma;
+        const double sigma2 = dot(p.d3, f.t) + dot(p.d2, f.t1);
+        f.t2 = (p.d3 - f.t * sigma2 - f.t1 * (2 * sigma1)) / sigma;
         const auto above = std::upper_bound(samples_.begin(), samples_.end(), t,
                                             [](double value, const Reference& s) { return value < s.t; });
         const Reference& below = *(above == samples_.begin() ? above : above - 1);
         const Vec3 r = below.t == t ? below.r : double_reflection(below.x, below.tangent, below.r, f.x, f.t);
         const Vec3 s = cross(f.t, r);
-        // r' = -(t' . r) t (no spin about the tangent), and the same for s = t x r.
+        // No spin about the tangent: r' = -(t' . r) t, so r'' = -(t'' . r) t - (t' . r) t' (t' . r' = 0);
+        // the same for s = t x r.
         const Vec3 r1 = f.t * -dot(f.t1, r), s1 = f.t * -dot(f.t1, s);
-        const double phi = twist(t), phi1 = twist_rate();
+        const Vec3 r2 = f.t * -dot(f.t2, r) - f.t1 * dot(f.t1, r), s2 = f.t * -dot(f.t2, s) - f.t1 * dot(f.t1, s);
+        // Turned back by phi (linear in t, phi' = w): r~ = c r + sn s, s~ = c s - sn r, and
+        // r~' = c r' + sn s' + w s~, r~'' = c r'' + sn s'' + 2 w (c s' - sn r') - w^2 r~ (s~ alike).
+        const double phi = twist(t), w = twist_rate();
         const double c = std::cos(phi), sn = std::sin(phi);
         f.r = r * c + s * sn;
         f.s = s * c - r * sn;
-        f.r1 = r1 * c + s1 * sn + f.s * phi1;
-        f.s1 = s1 * c - r1 * sn - f.r * phi1;
+        f.r1 = r1 * c + s1 * sn + f.s * w;
+        f.s1 = s1 * c - r1 * sn - f.r * w;
+        f.r2 = r2 * c + s2 * sn + (s1 * c - r1 * sn) * (2 * w) - f.r * (w * w);
+        f.s2 = s2 * c - r2 * sn - (r1 * c + s1 * sn) * (2 * w) - f.s * (w * w);
         return f;
     }
 
@@ -272,6 +287,7 @@ struct Local {
 };
 Vec3 position(const FrameData& f, const Local& l) { return f.x + f.r * l.x + f.s * l.y + f.t * l.z; }
 Vec3 velocity(const FrameData& f, const Local& l) { return f.x1 + f.r1 * l.x + f.s1 * l.y + f.t1 * l.z; }
+Vec3 acceleration(const FrameData& f, const Local& l) { return f.x2 + f.r2 * l.x + f.s2 * l.y + f.t2 * l.z; }
 
 // ---- checks shared by every method
 
@@ -379,14 +395,22 @@ void check_far_parts(const std::vector<Reference>& samples, double rho, bool clo
 
 // ---- the approximation
 
+// The trajectories are quintic: Hermite data Q, Q', Q'' at the interval ends (error O(h^6)), joined C2
+// inside a path span.
+constexpr int kDegree = 5;
+
 struct Interval3 {
     std::size_t span;
     double a, b;
 };
 
-// Cubic Hermite data of every trajectory on one interval, as Bézier points B0..B3 per trajectory.
+using Quintic = std::array<Vec3, kDegree + 1>;
+
+// Quintic Hermite data of every trajectory on one interval as Bezier points: with h = b - a and
+// C'(0) = 5 (B1 - B0) / h, C''(0) = 20 (B2 - 2 B1 + B0) / h^2 (and mirrored at the end),
+// B1 = Q + h Q' / 5, B2 = Q + 2 h Q' / 5 + h^2 Q'' / 20.
 struct HermitePiece {
-    std::vector<std::array<Vec3, 4>> bezier;
+    std::vector<Quintic> bezier;
 };
 
 HermitePiece hermite_piece(const MovingFrame& frame, const Interval3& iv, const std::vector<Local>& locals) {
@@ -395,15 +419,17 @@ HermitePiece hermite_piece(const MovingFrame& frame, const Interval3& iv, const 
     HermitePiece piece;
     piece.bezier.reserve(locals.size());
     for (const Local& l : locals) {
-        const Vec3 qa = position(fa, l), qb = position(fb, l);
-        piece.bezier.push_back({qa, qa + velocity(fa, l) * (h / 3), qb - velocity(fb, l) * (h / 3), qb});
+        const Vec3 q0 = position(fa, l), d0 = velocity(fa, l) * h, a0 = acceleration(fa, l) * (h * h);
+        const Vec3 q1 = position(fb, l), d1 = velocity(fb, l) * h, a1 = acceleration(fb, l) * (h * h);
+        piece.bezier.push_back({q0, q0 + d0 / 5.0, q0 + d0 * 0.4 + a0 / 20.0, q1 - d1 * 0.4 + a1 / 20.0, q1 - d1 / 5.0, q1});
     }
     return piece;
 }
 
-Vec3 cubic(const std::array<Vec3, 4>& b, double s) {
-    const double u = 1 - s;
-    return b[0] * (u * u * u) + b[1] * (3 * u * u * s) + b[2] * (3 * u * s * s) + b[3] * (s * s * s);
+Vec3 quintic(const Quintic& b, double s) {
+    const double u = 1 - s, s2 = s * s, u2 = u * u;
+    return b[0] * (u2 * u2 * u) + b[1] * (5 * u2 * u2 * s) + b[2] * (10 * u2 * u * s2) + b[3] * (10 * u2 * s2 * s) +
+           b[4] * (5 * u * s2 * s2) + b[5] * (s2 * s2 * s);
 }
 
 double piece_error(const MovingFrame& frame, const Interval3& iv, const HermitePiece& piece,
@@ -413,7 +439,7 @@ double piece_error(const MovingFrame& frame, const Interval3& iv, const HermiteP
         const double s = static_cast<double>(k) / (samples + 1);
         const FrameData f = frame.at(iv.span, iv.a + (iv.b - iv.a) * s);
         for (std::size_t i = 0; i < locals.size(); ++i)
-            worst = std::max(worst, distance(cubic(piece.bezier[i], s), position(f, locals[i])));
+            worst = std::max(worst, distance(quintic(piece.bezier[i], s), position(f, locals[i])));
     }
     return worst;
 }
@@ -421,16 +447,13 @@ double piece_error(const MovingFrame& frame, const Interval3& iv, const HermiteP
 struct Approximation {
     std::vector<Interval3> intervals;
     std::vector<HermitePiece> pieces;
-    double error = 0;
 };
 
-Approximation approximate(const Path& path, const MovingFrame& frame, const std::vector<Local>& locals, double budget) {
-    std::vector<Interval3> pending;
-    for (std::size_t k = path.spans(); k-- > 0;)
-        for (int i = 3; i >= 0; --i) {
-            const double a = path.start(k), h = path.end(k) - a;
-            pending.push_back({k, a + h * i / 4, i == 3 ? path.end(k) : a + h * (i + 1) / 4});
-        }
+// Hermite pieces on `intervals` (in order), each halved until its error at kErrorSamples points is below
+// `budget`.
+Approximation approximate(const std::vector<Interval3>& intervals, const MovingFrame& frame,
+                          const std::vector<Local>& locals, double budget) {
+    std::vector<Interval3> pending(intervals.rbegin(), intervals.rend());
     // Depth first from the path's start, so that the accepted intervals come out in order.
     Approximation result;
     while (!pending.empty()) {
@@ -439,7 +462,7 @@ Approximation approximate(const Path& path, const MovingFrame& frame, const std:
         HermitePiece piece = hermite_piece(frame, iv, locals);
         const double error = piece_error(frame, iv, piece, locals, kErrorSamples);
         const double mid = 0.5 * (iv.a + iv.b);
-        if (error > 0.5 * budget && mid > iv.a && mid < iv.b) {
+        if (error > budget && mid > iv.a && mid < iv.b) {
             require(result.intervals.size() + pending.size() < kMaxIntervals, "tolerance",
                     "needs more than 200,000 spans along the path: too fine for this sweep");
             pending.push_back({iv.span, mid, iv.b});
@@ -452,45 +475,81 @@ Approximation approximate(const Path& path, const MovingFrame& frame, const std:
     return result;
 }
 
-// The knot multiplicity where two intervals meet: 2 (C1) inside a path span or where the path is C2,
-// 3 (C0) where the path's derivatives jump (the trajectories' derivatives then jump too).
+// The knot multiplicity where two intervals meet: 3 (C2) inside a path span and where the path is C3; 4 (C1)
+// where only its third derivative jumps (the trajectories' Q'' holds t'', which holds x'''); 5 (C0) where
+// its second derivative or its speed jumps (Q' holds t').
 int joint_multiplicity(const Path& path, const Interval3& left, const Interval3& right) {
-    if (left.span == right.span) return 2;
+    if (left.span == right.span) return 3;
     const double t = left.b;
     const PathPoint l = path.at(left.span, t), r = path.at(right.span, t);
-    const double d1 = std::max(norm(l.d1), norm(r.d1)), d2 = std::max(norm(l.d2), norm(r.d2));
-    const bool smooth = norm(l.d1 - r.d1) <= 1e-9 * d1 && norm(l.d2 - r.d2) <= 1e-9 * d2 + 1e-12 * d1 * d1 / path.size();
-    return smooth ? 2 : 3;
+    const double speed = std::max(norm(l.d1), norm(r.d1)), scale = speed / path.size();
+    auto same = [&](const Vec3& a, const Vec3& b, double order_scale) {
+        return norm(a - b) <= 1e-9 * std::max(norm(a), norm(b)) + 1e-12 * order_scale;
+    };
+    if (!same(l.d1, r.d1, speed) || !same(l.d2, r.d2, speed * scale)) return 5;
+    return same(l.d3, r.d3, speed * scale * scale) ? 3 : 4;
 }
 
-// The B-spline in v of every trajectory: knots (mapped to [0, 1]) and control points per trajectory.
+// The B-spline in v of every trajectory: the Hermite pieces joined as quintic Bezier segments (every joint
+// of multiplicity 5), then each joint's knot removed (A5.8) down to the multiplicity its continuity
+// allows. The pieces have that continuity by construction, so the removal is unconditional; what it
+// changes (rounding) is in the measurement that follows. Knots mapped to [0, 1].
 struct Trajectories {
     std::vector<double> knots;
     std::vector<std::vector<Vec3>> points;  // points[i]: trajectory i
+    double map(double t) const { return t == t1 ? 1.0 : (t - t0) / (t1 - t0); }
+    double t0 = 0, t1 = 1;
 };
 
 Trajectories assemble(const Path& path, const Approximation& approx, std::size_t count, bool closed) {
     Trajectories out;
-    out.points.assign(count, {});
-    const double t0 = approx.intervals.front().a, t1 = approx.intervals.back().b;
-    auto map = [&](double t) { return t == t1 ? 1.0 : (t - t0) / (t1 - t0); };
-    out.knots.assign(4, 0.0);
-    for (std::size_t n = 0; n < approx.intervals.size(); ++n) {
-        const int multiplicity = n == 0 ? 0 : joint_multiplicity(path, approx.intervals[n - 1], approx.intervals[n]);
-        if (n > 0) out.knots.insert(out.knots.end(), static_cast<std::size_t>(multiplicity), map(approx.intervals[n].a));
-        for (std::size_t i = 0; i < count; ++i) {
-            const auto& b = approx.pieces[n].bezier[i];
-            // A C1 joint (multiplicity 2) implies the joint point B3 = (h2 B2 + h1 B1') / (h1 + h2) (001's
-            // breakpoint formula), so only a C0 joint (3) stores it.
-            if (n == 0 || multiplicity == 3) out.points[i].push_back(b[0]);
-            out.points[i].push_back(b[1]);
-            out.points[i].push_back(b[2]);
-        }
+    out.t0 = approx.intervals.front().a;
+    out.t1 = approx.intervals.back().b;
+    const std::size_t degree = kDegree;
+    std::vector<double> bezier_knots(degree + 1, 0.0);
+    std::vector<std::pair<double, int>> joints;  // mapped parameter and the multiplicity it keeps
+    for (std::size_t n = 1; n < approx.intervals.size(); ++n) {
+        const double v = out.map(approx.intervals[n].a);
+        bezier_knots.insert(bezier_knots.end(), degree, v);
+        joints.push_back({v, joint_multiplicity(path, approx.intervals[n - 1], approx.intervals[n])});
     }
-    out.knots.insert(out.knots.end(), 4, 1.0);
-    for (std::size_t i = 0; i < count; ++i)
-        out.points[i].push_back(closed ? out.points[i].front() : approx.pieces.back().bezier[i][3]);
+    bezier_knots.insert(bezier_knots.end(), degree + 1, 1.0);
+    out.points.assign(count, {});
+    for (std::size_t i = 0; i < count; ++i) {
+        std::vector<Vec4> pw;
+        for (std::size_t n = 0; n < approx.pieces.size(); ++n) {
+            const Quintic& b = approx.pieces[n].bezier[i];
+            for (std::size_t k = n == 0 ? 0 : 1; k <= degree; ++k) pw.push_back(homogenize(b[k], 1.0));
+        }
+        if (closed) pw.back() = pw.front();
+        std::vector<double> knots = bezier_knots;
+        for (const auto& [v, multiplicity] : joints)
+            detail::remove_knot(kDegree, knots, pw, v, kDegree - multiplicity, std::numeric_limits<double>::infinity());
+        for (const Vec4& q : pw) out.points[i].push_back(weighted_part(q));
+        if (i == 0) out.knots = std::move(knots);
+    }
     return out;
+}
+
+// The largest distance of the assembled trajectories from the exact ones at `samples` points inside each
+// interval, per interval.
+std::vector<double> measured_errors(const MovingFrame& frame, const Approximation& approx,
+                                    const Trajectories& trajectories, const std::vector<Local>& locals, int samples) {
+    std::vector<NurbsCurve> curves;
+    for (const std::vector<Vec3>& points : trajectories.points) curves.emplace_back(kDegree, trajectories.knots, points);
+    std::vector<double> errors;
+    for (const Interval3& iv : approx.intervals) {
+        double worst = 0;
+        for (int k = 1; k <= samples; ++k) {
+            const double t = iv.a + (iv.b - iv.a) * k / (samples + 1);
+            const FrameData f = frame.at(iv.span, t);
+            const double v = trajectories.map(t);
+            for (std::size_t i = 0; i < locals.size(); ++i)
+                worst = std::max(worst, distance(curves[i].point(v), position(f, locals[i])));
+        }
+        errors.push_back(worst);
+    }
+    return errors;
 }
 
 }  // namespace
@@ -564,18 +623,44 @@ Sweep sweep_surfaces(const std::vector<NurbsCurve>& sections, const NurbsCurve& 
     for (const Reference& s : frame->samples()) check_bend(frame->at(s.span, s.t), locals, s.t, argument);
     check_far_parts(frame->samples(), rho, closed, argument);
 
+    // Pieces from one interval per path span, halved until their estimate (8 points) is below the budget; then
+    // the assembled trajectories measured at 24 points per interval, and the intervals still above it halved
+    // and everything built again, until the measurement holds.
     const double frame_error = frame->error() * rho;
-    Approximation approx = approximate(path, *frame, locals, tolerance - frame_error);
-    double measured = 0;
-    for (std::size_t n = 0; n < approx.intervals.size(); ++n)
-        measured = std::max(measured, piece_error(*frame, approx.intervals[n], approx.pieces[n], locals, kVerificationSamples));
+    const double budget = tolerance - frame_error;
+    std::vector<Interval3> intervals;
+    for (std::size_t k = 0; k < path.spans(); ++k) intervals.push_back({k, path.start(k), path.end(k)});
+    Approximation approx;
+    Trajectories trajectories;
+    for (;;) {
+        approx = approximate(intervals, *frame, locals, budget);
+        trajectories = assemble(path, approx, locals.size(), closed);
+        const std::vector<double> errors = measured_errors(*frame, approx, trajectories, locals, kVerificationSamples);
+        intervals.clear();
+        bool refined = false;
+        double worst = 0;
+        for (std::size_t n = 0; n < errors.size(); ++n) {
+            const Interval3& iv = approx.intervals[n];
+            const double mid = 0.5 * (iv.a + iv.b);
+            if (errors[n] > budget && mid > iv.a && mid < iv.b) {
+                intervals.push_back({iv.span, iv.a, mid});
+                intervals.push_back({iv.span, mid, iv.b});
+                refined = true;
+            } else {
+                intervals.push_back(iv);
+                worst = std::max(worst, errors[n]);
+            }
+        }
+        if (!refined) {
+            result.max_error = worst + frame_error;
+            break;
+        }
+    }
     result.method = SweepMethod::approximation;
-    result.max_error = measured + frame_error;
     require(result.max_error <= tolerance, "tolerance", [&] {
         return "could not be verified: the approximation measured " + number(result.max_error) + " from the sweep";
     });
 
-    const Trajectories trajectories = assemble(path, approx, locals.size(), closed);
     std::size_t first = 0;
     for (const NurbsCurve& c : sections) {
         const std::vector<Vec4>& pw = c.homogeneous_points();
@@ -585,7 +670,7 @@ Sweep sweep_surfaces(const std::vector<NurbsCurve>& sections, const NurbsCurve& 
         for (std::size_t i = 0; i < pw.size(); ++i)
             for (const Vec3& q : trajectories.points[first + i]) net.push_back(homogenize(q, pw[i].w));
         result.surfaces.push_back(
-            NurbsSurface::from_homogeneous(c.degree(), 3, c.knots(), trajectories.knots, std::move(net), c.is_rational()));
+            NurbsSurface::from_homogeneous(c.degree(), kDegree, c.knots(), trajectories.knots, std::move(net), c.is_rational()));
         first += pw.size();
     }
     const FrameData end = frame->at(path.spans() - 1, path.end(path.spans() - 1));

@@ -41,10 +41,11 @@ TopoDS_Shape thru_sections(const std::vector<Profile>& profiles, bool ruled) {
     }
 }
 
-TopoDS_Shape pipe_shell(const Profile& profile, const NurbsCurve& path) {
+TopoDS_Shape pipe_shell(const Profile& profile, const NurbsCurve& path, double tolerance) {
     try {
         BRepOffsetAPI_MakePipeShell pipe(to_occt_wire({path}));
         pipe.SetMode(Standard_False);  // CorrectedFrenet
+        pipe.SetTolerance(tolerance, tolerance, 1e-2);
         pipe.Add(to_occt_wire(profile.pieces()));
         pipe.Build();
         require(pipe.IsDone(), "path", "BRepOffsetAPI_MakePipeShell failed");

@@ -15,15 +15,18 @@
 //    closes it (a torus from a circle).
 // Otherwise a NURBS approximation. Each control point P_i (weight w_i) of the section moves along a
 // trajectory Q_i(v) = x(v) + M(v) L_i (L_i its coordinates in the start frame); the surface
-// S^w = sum_ij N_i(u) M_j(v) w_i Q~_ij with every trajectory approximated by a C1 piecewise cubic Q~_i
-// (Hermite data Q_i, Q_i' at the interval ends, the derivative of the frame from r' = -(t' . r) t)
+// S^w = sum_ij N_i(u) M_j(v) w_i Q~_ij with every trajectory approximated by a piecewise quintic Q~_i
+// (Hermite data Q_i, Q_i', Q_i'' at the interval ends, the frame's derivatives from r' = -(t' . r) t)
 // deviates from the true sweep by at most max_i |Q~_i(v) - Q_i(v)|, since S(u, v) is a convex combination
-// of the Q~_i(v) with the section's rational basis functions R_i(u) >= 0. That maximum is measured at
-// 8 points inside each interval and intervals are halved until it is below half the tolerance; the frame
-// (double reflection on a reference subdivision of the path, its error estimated by Richardson from the
-// half subdivision) is refined until it contributes below a tenth. The knots across are the interval ends
-// (multiplicity 2, C1; 3, C0, at the path's knots where its second derivative jumps); the start and end
-// sections are exact rigid images of the section.
+// of the Q~_i(v) with the section's rational basis functions R_i(u) >= 0. The intervals start as the path's
+// knot spans and are halved while that maximum, estimated at 8 points inside each, exceeds the tolerance;
+// then the assembled trajectories are measured at 24 points per interval and the intervals still above it
+// halved again, until the measurement holds. The frame (double reflection on a reference subdivision of the
+// path, its error estimated by Richardson from the half subdivision) is refined first until it contributes
+// below a tenth of the tolerance, and that tenth is left out of the trajectories' budget. The pieces join
+// with knots of multiplicity 3 (C2) inside a path span and where the path is C3, 4 (C1) where only its
+// third derivative jumps and 5 (C0) where its second does (the sweep itself has a crease of speed there);
+// the start and end sections are exact rigid images of the section.
 // A closed path (ending where it starts, with the same tangent) closes the sweep; on a non-planar closed
 // path the RMF comes back turned by the path's holonomy angle, and that angle is spread uniformly over the
 // path's parameter so that the sweep closes (the only case where the frame is not strictly

@@ -23,8 +23,9 @@ TopoDS_Wire to_occt_wire(const std::vector<NurbsCurve>& pieces);
 TopoDS_Shape thru_sections(const std::vector<Profile>& profiles, bool ruled);
 
 // MakePipeShell of the profile along the path (its spine wire) with the corrected Frenet trihedron (OCCT's
-// rotation-minimising-like mode), made solid. Throws Error naming "path" when OCCT fails to build it.
-TopoDS_Shape pipe_shell(const Profile& profile, const NurbsCurve& path);
+// rotation-minimising-like mode), made solid; `tolerance` is its 3D approximation tolerance (SetTolerance;
+// OCCT's default 1e-4). Throws Error naming "path" when OCCT fails to build it.
+TopoDS_Shape pipe_shell(const Profile& profile, const NurbsCurve& path, double tolerance = 1e-4);
 
 // What the comparisons report of a shape: BRepCheck validity, volume (BRepGProp with eps 1e-9) and the
 // number of control points of its B-spline faces (planes count 0).
