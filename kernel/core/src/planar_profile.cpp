@@ -30,6 +30,7 @@ PlanarProfile analyse_planar_profile(const Profile& profile, const std::string& 
             component += green_area(piece, reference, x, y, 1e-15 * size * size, argument);
         (a == 0 ? area_vector.x : a == 1 ? area_vector.y : area_vector.z) = component;
     }
+    require(std::isfinite(norm(area_vector)), argument, "is too large: its area overflows double precision");
     require(norm(area_vector) > 1e-12 * size * size, argument, "encloses no area");
     const Vec3 normal = area_vector / norm(area_vector);
     for (const NurbsCurve& piece : profile.pieces())
