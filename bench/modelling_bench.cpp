@@ -26,11 +26,10 @@
 #include <string>
 #include <vector>
 
+#include "../tests/core/modelling_test_support.hpp"
 #include "bench_shapes.hpp"
 #include "ratbez/closest_point.hpp"
 #include "ratbez/curves.hpp"
-#include "ratbez/hermite.hpp"
-#include "ratbez/join.hpp"
 #include "ratbez/loft.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/reference_modelling.hpp"
@@ -42,36 +41,6 @@ namespace ratbez::bench {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-
-NurbsCurve helix(double a, double c, int quarter_turns) {
-    const double step = pi / 2;
-    auto point = [&](double t) { return Vec3{a * std::cos(t), a * std::sin(t), c * t}; };
-    auto tangent = [&](double t) { return Vec3{-a * std::sin(t), a * std::cos(t), c} * step; };
-    std::vector<NurbsCurve> parts;
-    for (int k = 0; k < quarter_turns; ++k)
-        parts.push_back(NurbsCurve::from_bezier(hermite_to_bezier(point(k * step), tangent(k * step), point((k + 1) * step),
-                                                                  tangent((k + 1) * step))));
-    return join(parts);
-}
-
-// The length of a curve: 16-point Gauss-Legendre on 64 pieces of every span.
-double curve_length(const NurbsCurve& c) {
-    static const double x[8] = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274, 0.6178762444026438,
-                                0.7554044083550030, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499};
-    static const double w[8] = {0.1894506104550685, 0.1826034150449236, 0.1691565193950025, 0.1495959888165767,
-                                0.1246289712555339, 0.0951585116824928, 0.0622535239386479, 0.0271524594117541};
-    const std::vector<double> breaks = breakpoints(c.degree(), c.knots());
-    double total = 0;
-    for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
-        for (int piece = 0; piece < 64; ++piece) {
-            const double a = breaks[k] + (breaks[k + 1] - breaks[k]) * piece / 64.0;
-            const double b = breaks[k] + (breaks[k + 1] - breaks[k]) * (piece + 1) / 64.0;
-            const double m = 0.5 * (a + b), h = 0.5 * (b - a);
-            for (int i = 0; i < 8; ++i)
-                for (const double s : {-1.0, 1.0}) total += h * w[i] * norm(c.derivative(m + s * h * x[i]));
-        }
-    return total;
-}
 
 // The largest | distance to the path - r | over 61 x 61 grids of the surfaces, offset from the knots
 // (interval ends are exact, so a grid on them would see nothing): how far a tube of radius r (its
@@ -140,10 +109,10 @@ std::vector<Case> cases() {
     out.push_back({"sweep", "torus", [tube] { return sweep(tube, circle(2.0)); },
                    [tube] { return occt::pipe_shell(tube, circle(2.0)); }, 2 * pi * pi * 2 * 0.25, "MakePipeShell",
                    circle(2.0), 0.5});
-    const NurbsCurve path = helix(2.0, 0.4, 12);
+    const NurbsCurve path = test::helix_path(2.0, 0.4, 12);
     const double r = 0.3;
     const Profile section({circle(r, path.start_point(), path.derivative(path.domain().min))});
-    const double pappus = pi * r * r * curve_length(path);
+    const double pappus = pi * r * r * test::curve_length(path);
     for (const double tolerance : {1e-4, 1e-6}) {
         const std::string name = tolerance == 1e-4 ? "helix_1e-4" : "helix_1e-6";
         out.push_back({"sweep", name, [section, path, tolerance] { return sweep(section, path, tolerance); },

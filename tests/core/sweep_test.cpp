@@ -14,52 +14,17 @@
 #include "ratbez/closest_point.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/deviation.hpp"
-#include "ratbez/hermite.hpp"
 #include "ratbez/join.hpp"
 #include "ratbez/properties.hpp"
 #include "ratbez/rotation_minimizing_frame.hpp"
 #include "ratbez/tessellate.hpp"
+#include "modelling_test_support.hpp"
 #include "test_support.hpp"
 
 namespace ratbez {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-
-// The helix (a cos t, a sin t, c t) for t in [0, turns 2 pi] as C1 piecewise cubic Hermite pieces, a quarter
-// turn each, joined into one NurbsCurve.
-NurbsCurve helix_path(double a, double c, double turns) {
-    const int pieces = static_cast<int>(std::lround(turns * 4));
-    const double step = 2 * pi * turns / pieces;
-    auto point = [&](double t) { return Vec3{a * std::cos(t), a * std::sin(t), c * t}; };
-    auto tangent = [&](double t) { return Vec3{-a * std::sin(t), a * std::cos(t), c} * step; };
-    std::vector<NurbsCurve> parts;
-    for (int k = 0; k < pieces; ++k) {
-        const double t0 = k * step, t1 = (k + 1) * step;
-        parts.push_back(NurbsCurve::from_bezier(hermite_to_bezier(point(t0), tangent(t0), point(t1), tangent(t1))));
-    }
-    return join(parts);
-}
-
-// Length of a curve by 16-point Gauss on each of 64 pieces of every span (a smooth polynomial: exact to
-// rounding for these tests).
-double length(const NurbsCurve& c) {
-    const std::vector<double> breaks = breakpoints(c.degree(), c.knots());
-    static const double x[8] = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274, 0.6178762444026438,
-                                0.7554044083550030, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499};
-    static const double w[8] = {0.1894506104550685, 0.1826034150449236, 0.1691565193950025, 0.1495959888165767,
-                                0.1246289712555339, 0.0951585116824928, 0.0622535239386479, 0.0271524594117541};
-    double total = 0;
-    for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
-        for (int piece = 0; piece < 64; ++piece) {
-            const double a = breaks[k] + (breaks[k + 1] - breaks[k]) * piece / 64.0;
-            const double b = breaks[k] + (breaks[k + 1] - breaks[k]) * (piece + 1) / 64.0;
-            const double m = 0.5 * (a + b), h = 0.5 * (b - a);
-            for (int i = 0; i < 8; ++i)
-                for (const double s : {-1.0, 1.0}) total += h * w[i] * norm(c.derivative(m + s * h * x[i]));
-        }
-    return total;
-}
 
 // A circle of radius r around the path's start, in the plane normal to its tangent there.
 Profile section_circle(const NurbsCurve& path, double r) {
@@ -118,7 +83,7 @@ TEST(SweepExact, DiscAlongALineIsTheCylinder) {
 
 TEST(SweepApproximate, TubeAlongAHelixIsWithinToleranceAndMatchesPappus) {
     const double a = 2.0, c = 0.4, r = 0.3, tolerance = 1e-6;
-    const NurbsCurve path = helix_path(a, c, 1.5);
+    const NurbsCurve path = test::helix_path(a, c, 6);
     const Profile section = section_circle(path, r);
     const Sweep swept = sweep_surfaces(section.pieces(), path, tolerance);
     EXPECT_EQ(swept.method, SweepMethod::approximation);
@@ -136,7 +101,7 @@ TEST(SweepApproximate, TubeAlongAHelixIsWithinToleranceAndMatchesPappus) {
     }
     // Pappus: V = pi r^2 L; the surface within the tolerance moves the volume by at most tolerance x area.
     const Solid tube = sweep(section, path, tolerance);
-    const double L = length(path);
+    const double L = test::curve_length(path);
     EXPECT_NEAR(enclosed_volume(tube), pi * r * r * L, tolerance * 2 * pi * r * L);
     const Mesh mesh = tessellate(tube, 1e-3);
     EXPECT_TRUE(mesh.is_closed());
@@ -160,7 +125,7 @@ TEST(SweepApproximate, ClosedSpacePathClosesTheTube) {
     EXPECT_TRUE(swept.closed);
     const Solid tube = sweep(section, path, 1e-6);
     EXPECT_EQ(tube.faces().size(), 1u);
-    EXPECT_NEAR(enclosed_volume(tube), pi * r * r * length(path), 1e-6 * 2 * pi * r * length(path));
+    EXPECT_NEAR(enclosed_volume(tube), pi * r * r * test::curve_length(path), 1e-6 * 2 * pi * r * test::curve_length(path));
 }
 
 TEST(SweepErrors, CornersAndSelfIntersectionsAreRefused) {
@@ -169,7 +134,7 @@ TEST(SweepErrors, CornersAndSelfIntersectionsAreRefused) {
     // The section reaches past the bend's centre of curvature (radius 1 around an arc of radius 0.5).
     EXPECT_ERROR_NAMING(sweep(Profile({circle(1.0, {0.5, 0, 0}, {0, 1, 0})}), arc(0.5, 0, 90)), "profile");
     // A helix whose turns are closer than the tube's diameter.
-    const NurbsCurve tight = helix_path(2.0, 0.05, 2);
+    const NurbsCurve tight = test::helix_path(2.0, 0.05, 8);
     EXPECT_ERROR_NAMING(sweep(section_circle(tight, 0.3), tight), "profile");
     // A profile in a plane containing the path's tangent.
     EXPECT_ERROR_NAMING(sweep(Profile({circle(1.0, {0, 0, 0}, {1, 0, 0})}), line_segment({0, 0, 0}, {0, 0, 3})), "profile");
@@ -178,7 +143,7 @@ TEST(SweepErrors, CornersAndSelfIntersectionsAreRefused) {
 }
 
 TEST(SweepSurface, OpenCurveAlongAGeneralPathMovesRigidly) {
-    const NurbsCurve path = helix_path(3.0, 0.5, 0.75);
+    const NurbsCurve path = test::helix_path(3.0, 0.5, 3);
     const NurbsCurve curve = NurbsCurve::from_bezier(BezierCurve({{3, 0, -0.2}, {3.2, 0.1, 0}, {3.1, -0.1, 0.3}}, {1, 2, 1}));
     const NurbsSurface s = sweep_surface(curve, path, 1e-7);
     // v = 0 is the curve itself; v = 1 its rigid image: distances between its points are kept.

@@ -10,9 +10,8 @@
 #include <iostream>
 #include <numbers>
 
+#include "../core/modelling_test_support.hpp"
 #include "ratbez/curves.hpp"
-#include "ratbez/hermite.hpp"
-#include "ratbez/join.hpp"
 #include "ratbez/loft.hpp"
 #include "ratbez/occt/check.hpp"
 #include "ratbez/occt/files.hpp"
@@ -31,17 +30,6 @@ std::vector<Profile> circles(const std::vector<std::pair<double, double>>& radiu
     std::vector<Profile> out;
     for (const auto& [r, z] : radius_height) out.push_back(Profile({circle(r, {0, 0, z})}));
     return out;
-}
-
-NurbsCurve helix(double a, double c, int quarter_turns) {
-    const double step = pi / 2;
-    auto point = [&](double t) { return Vec3{a * std::cos(t), a * std::sin(t), c * t}; };
-    auto tangent = [&](double t) { return Vec3{-a * std::sin(t), a * std::cos(t), c} * step; };
-    std::vector<NurbsCurve> parts;
-    for (int k = 0; k < quarter_turns; ++k)
-        parts.push_back(NurbsCurve::from_bezier(hermite_to_bezier(point(k * step), tangent(k * step), point((k + 1) * step),
-                                                                  tangent((k + 1) * step))));
-    return join(parts);
 }
 
 // Valid through our conversion (BRepCheck, our evaluation against OCCT's, volumes) and written as STEP.
@@ -97,7 +85,7 @@ TEST(Modelling, SweepsAreValidAndMatchMakePipeShell) {
     EXPECT_NEAR(occt_torus.volume, enclosed_volume(torus), 1e-5 * enclosed_volume(torus));
     // Along a helix both approximate the same sweep (pi r^2 L by Pappus): ours within 1e-6, OCCT's within
     // its default 1e-4, which moves the volume by at most 1e-4 x the area 2 pi r L, 6.7e-4 of it for r = 0.3.
-    const NurbsCurve path = helix(2.0, 0.4, 6);
+    const NurbsCurve path = test::helix_path(2.0, 0.4, 6);
     const Profile section({circle(0.3, path.start_point(), path.derivative(path.domain().min))});
     const Solid ours = sweep(section, path, 1e-6);
     expect_valid_and_writable(ours, "helix_sweep");

@@ -9,10 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "../core/modelling_test_support.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/export/mesh_checks.hpp"
-#include "ratbez/hermite.hpp"
-#include "ratbez/join.hpp"
 #include "ratbez/loft.hpp"
 #include "ratbez/properties.hpp"
 #include "ratbez/sweep.hpp"
@@ -20,8 +19,6 @@
 
 namespace ratbez::exporter {
 namespace {
-
-constexpr double pi = std::numbers::pi;
 
 void expect_cgal_clean(const Solid& solid, double tolerance, const std::string& name) {
     const Mesh mesh = tessellate(solid, tolerance);
@@ -32,17 +29,6 @@ void expect_cgal_clean(const Solid& solid, double tolerance, const std::string& 
     EXPECT_TRUE(report.ok()) << name << ": " << (report.problems.empty() ? "" : report.problems.front());
 }
 
-NurbsCurve helix(double a, double c, int quarter_turns) {
-    const double step = pi / 2;
-    auto point = [&](double t) { return Vec3{a * std::cos(t), a * std::sin(t), c * t}; };
-    auto tangent = [&](double t) { return Vec3{-a * std::sin(t), a * std::cos(t), c} * step; };
-    std::vector<NurbsCurve> parts;
-    for (int k = 0; k < quarter_turns; ++k)
-        parts.push_back(NurbsCurve::from_bezier(hermite_to_bezier(point(k * step), tangent(k * step), point((k + 1) * step),
-                                                                  tangent((k + 1) * step))));
-    return join(parts);
-}
-
 TEST(ModellingMeshes, LoftsAndSweepsPassTheCgalChecks) {
     const std::vector<Profile> circles{Profile({circle(1.0)}), Profile({circle(2.0, {0, 0, 1})}), Profile({circle(1.0, {0, 0, 2})})};
     expect_cgal_clean(loft(circles), 2e-3, "loft");
@@ -51,7 +37,7 @@ TEST(ModellingMeshes, LoftsAndSweepsPassTheCgalChecks) {
                           line_segment({-1, -1, 0}, {1, -1, 0}), line_segment({1, -1, 0}, {1, 1, 0})});
     expect_cgal_clean(loft({square, Profile({arc(1.2, 45, 405, {0, 0, 2})})}), 2e-3, "square to circle");
     expect_cgal_clean(sweep(Profile({circle(0.5, {2, 0, 0}, {0, 1, 0})}), circle(2.0)), 2e-3, "swept torus");
-    const NurbsCurve path = helix(2.0, 0.4, 6);
+    const NurbsCurve path = test::helix_path(2.0, 0.4, 6);
     expect_cgal_clean(sweep(Profile({circle(0.3, path.start_point(), path.derivative(0.0))}), path), 2e-3, "helix sweep");
 }
 
