@@ -12,7 +12,7 @@ import json
 import os
 import sys
 
-PROGRAMS = ("evaluation", "tessellation", "profile_check", "properties", "export")
+PROGRAMS = ("evaluation", "tessellation", "profile_check", "properties", "modelling", "export")
 
 
 def load(results, program):
@@ -134,6 +134,28 @@ def properties_rows(table, rows):
             table.row(label + " relative error", f"{b['relative_error']:.1e}", f"{o['relative_error']:.1e}", "")
 
 
+def modelling_rows(table, rows):
+    """Lofts against ThruSections and sweeps against MakePipeShell on the same input: time, control points,
+    volume error against the closed form, the tubes' deviation from the true sweep (its target: the
+    tolerance in the shape's name, e.g. helix_1e-4), and BRepCheck validity (the target: ours valid)."""
+    for occt_name in ("ThruSections", "MakePipeShell"):
+        for parts, b, o in against_occt(rows, occt_name):
+            label = f"{parts[0]}/{parts[1]} vs {occt_name}"
+            table.row(label + " time", f"{seconds(b) * 1e3:.3g} ms", f"{seconds(o) * 1e3:.3g} ms",
+                      faster_or_slower(seconds(b), seconds(o)))
+            table.row(label + " control points", si(b["control_points"]), si(o["control_points"]),
+                      f"{b['control_points'] / o['control_points']:.2f}")
+            table.row(label + " volume error", f"{b['volume_error']:.1e}", f"{o['volume_error']:.1e}", "")
+            if "deviation" in b and "deviation" in o:
+                tolerance = float(parts[1].rsplit("_", 1)[1]) if "_1e-" in parts[1] else None
+                status = "" if tolerance is None else ("PASS" if b["deviation"] <= tolerance else "FAIL")
+                table.row(label + " deviation", f"{b['deviation']:.1e}", f"{o['deviation']:.1e}", "",
+                          f"ours <= {tolerance:g}" if tolerance else "", status, verdict=status or None)
+            status = "PASS" if b["valid"] == 1 else "FAIL"
+            table.row(label + " valid (BRepCheck)", "yes" if b["valid"] == 1 else "no", "yes" if o["valid"] == 1 else "no",
+                      "", "ours valid", status, verdict=status)
+
+
 def export_rows(table, rows):
     """Writing meshes has no OCCT counterpart: triangles per second against the target."""
     for name, b in rows.items():
@@ -147,7 +169,7 @@ def export_rows(table, rows):
 
 
 SECTIONS = (("evaluation", evaluation_rows), ("tessellation", tessellation_rows), ("profile_check", profile_rows),
-            ("properties", properties_rows), ("export", export_rows))
+            ("properties", properties_rows), ("modelling", modelling_rows), ("export", export_rows))
 
 
 def main(results, cores):

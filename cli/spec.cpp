@@ -7,6 +7,7 @@
 #include <functional>
 #include <initializer_list>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -17,10 +18,13 @@
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/extrude.hpp"
+#include "ratbez/join.hpp"
+#include "ratbez/loft.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
 #include "ratbez/revolve.hpp"
+#include "ratbez/sweep.hpp"
 
 namespace ratbez::spec {
 
@@ -278,12 +282,17 @@ NurbsCurve parse_curve(const json& value, const std::string& path) {
     throw SpecError(path + ".type", "unknown curve type '" + type + "' (expected bezier, nurbs, line, arc or circle)");
 }
 
-Profile parse_profile(const json& value, const std::string& path) {
+std::vector<NurbsCurve> parse_curve_list(const json& value, const std::string& path) {
     if (!value.is_array()) throw SpecError(path, "must be a list of curves");
     if (value.empty()) throw SpecError(path, "must have at least one curve");
     std::vector<NurbsCurve> pieces;
     pieces.reserve(value.size());
     for (std::size_t i = 0; i < value.size(); ++i) pieces.push_back(parse_curve(value[i], index_path(path, i)));
+    return pieces;
+}
+
+Profile parse_profile(const json& value, const std::string& path) {
+    std::vector<NurbsCurve> pieces = parse_curve_list(value, path);
     return build(path, {}, [&] { return Profile(std::move(pieces)); });
 }
 
@@ -291,6 +300,69 @@ struct BuiltShape {
     std::string type;
     Solid solid;
 };
+
+// ---- the modelling kinds (issue 18): ruled, loft, sweep
+
+// A path: curves joined end to end into one (join.hpp); the kernel names it "curves", the spec `path`.
+NurbsCurve parse_path(const json& value, const std::string& path) {
+    std::vector<NurbsCurve> pieces = parse_curve_list(value, path);
+    try {
+        return join(pieces);
+    } catch (const Error& e) {
+        const Error named = e.argument().starts_with("curves") ? e.renamed("curves", path) : e.under(path);
+        throw SpecError(named.argument(), named.reason());
+    }
+}
+
+// The loft's kernel errors name "profiles[k]": they belong under shape.profiles[k].
+std::map<std::string, std::string> indexed_fields(const std::string& name, std::size_t count,
+                                                  std::map<std::string, std::string> fields) {
+    for (std::size_t k = 0; k < count; ++k) fields.emplace(index_path(name, k), index_path(name, k));
+    return fields;
+}
+
+std::optional<BuiltShape> parse_modelling_shape(const std::string& type, const json& value, const std::string& path) {
+    if (type == "ruled") {
+        const ObjectReader shape(value, path, {"type", "profile_a", "profile_b"});
+        Profile a = parse_profile(shape.required("profile_a"), shape.child("profile_a"));
+        Profile b = parse_profile(shape.required("profile_b"), shape.child("profile_b"));
+        Solid solid = build(path, shape.fields({{"profiles[0]", "profile_a"}, {"profiles[1]", "profile_b"}}),
+                            [&] { return loft({a, b}, 1, true); });
+        return BuiltShape{type, std::move(solid), };
+    }
+    if (type == "loft") {
+        const ObjectReader shape(value, path, {"type", "profiles", "degree", "ruled"});
+        const json& list = shape.required("profiles");
+        const std::string list_path = shape.child("profiles");
+        if (!list.is_array() || list.size() < 2) throw SpecError(list_path, "must be a list of at least 2 profiles");
+        std::vector<Profile> profiles;
+        for (std::size_t k = 0; k < list.size(); ++k) profiles.push_back(parse_profile(list[k], index_path(list_path, k)));
+        int degree = 3;
+        if (const json* d = shape.optional("degree")) {
+            if (!d->is_number_integer() || d->get<long long>() < 1 || d->get<long long>() > 10)
+                throw SpecError(shape.child("degree"), "must be an integer from 1 to 10");
+            degree = static_cast<int>(d->get<long long>());
+        }
+        bool ruled = false;
+        if (const json* r = shape.optional("ruled")) {
+            if (!r->is_boolean()) throw SpecError(shape.child("ruled"), "must be true or false");
+            ruled = r->get<bool>();
+        }
+        Solid solid = build(path, indexed_fields("profiles", profiles.size(), shape.fields()),
+                            [&] { return loft(profiles, degree, ruled); });
+        return BuiltShape{type, std::move(solid), };
+    }
+    if (type == "sweep") {
+        const ObjectReader shape(value, path, {"type", "profile", "path", "tolerance"});
+        Profile profile = parse_profile(shape.required("profile"), shape.child("profile"));
+        NurbsCurve along = parse_path(shape.required("path"), shape.child("path"));
+        double tolerance = 1e-6;
+        if (const json* t = shape.optional("tolerance")) tolerance = positive(*t, shape.child("tolerance"));
+        Solid solid = build(path, shape.fields(), [&] { return sweep(profile, along, tolerance); });
+        return BuiltShape{type, std::move(solid), };
+    }
+    return std::nullopt;
+}
 
 BuiltShape parse_shape(const json& value, const std::string& path) {
     if (!value.is_object()) throw SpecError(path, "must be a JSON object");
@@ -345,8 +417,9 @@ BuiltShape parse_shape(const json& value, const std::string& path) {
         return {type, build(path, shape.fields({{"displacement", "direction"}}),
                             [&] { return extrude(profile, dir, distance); })};
     }
-    throw SpecError(path + ".type",
-                    "unknown shape type '" + type + "' (expected cylinder, cone, sphere, torus, revolve or extrude)");
+    if (std::optional<BuiltShape> built = parse_modelling_shape(type, value, path)) return std::move(*built);
+    throw SpecError(path + ".type", "unknown shape type '" + type +
+                                        "' (expected cylinder, cone, sphere, torus, revolve, extrude, ruled, loft or sweep)");
 }
 
 // nlohmann's messages start with "[json.exception.parse_error.101] "; the reader needs only the rest.

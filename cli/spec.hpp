@@ -1,6 +1,6 @@
 #pragma once
 // The JSON shape spec of the `ratbez` command (documented in examples/README.md): a document with a
-// `shape` (cylinder, cone, sphere, torus, revolve, extrude) and optional `name`, `description`,
+// `shape` (cylinder, cone, sphere, torus, revolve, extrude, ruled, loft, sweep) and optional `name`, `description`,
 // `tolerance` and `tessellation_angle`. Parsing is strict: wrong types, out-of-range values, missing
 // and unknown fields (typos) all throw SpecError naming the JSON path of the field, e.g.
 // `shape.profile[1].points[0]: must be a list of 2 or 3 numbers`. Kernel validation errors raised

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the project as scripts/setup.sh does (the normal Release build in build/ includes bench/),
-# runs the benchmark programs (evaluation, tessellation, the profile check and volume/area against
-# OpenCASCADE in the same run, export alone) and prints ONE table: every row with ours / OCCT ratios and the target it is held to.
+# runs the benchmark programs (evaluation, tessellation, the profile check, volume/area and lofts/sweeps
+# against OpenCASCADE in the same run, export alone) and prints ONE table: every row with ours / OCCT ratios and the target it is held to.
 #
 # Times are CPU times of the (single-threaded) benchmark thread, the median of the repetitions: on a
 # shared machine wall time also counts other processes' turns. Google Benchmark's JSON is kept in
@@ -27,7 +27,7 @@ fi
 
 mkdir -p "$results"
 rm -f "$results"/*.json
-for program in evaluation tessellation profile_check properties export; do
+for program in evaluation tessellation profile_check properties modelling export; do
   echo "== bench_$program" >&2
   "$build/bench/bench_$program" --benchmark_filter="$filter" --benchmark_repetitions="$repetitions" \
     --benchmark_min_time="$min_time" --benchmark_report_aggregates_only=true \

@@ -27,10 +27,13 @@ def test_every_section_prints_its_rows_without_a_filter(capsys):
     names = labels(table)
     for prefix in ("eval/sphere/D0", "eval/sphere/D1", "tess/sphere tol 1e-2 time", "tess/sphere tol 1e-2 triangles",
                    "profile/circle_4_arcs", "volume/sphere vs BRepGProp time", "area/sphere vs BRepGProp_eps",
-                   "export/scad", "export/stl_binary"):
+                   "loft/circles vs ThruSections time", "loft/circles_ruled vs ThruSections control points",
+                   "sweep/torus vs MakePipeShell volume error", "sweep/helix_1e-4 vs MakePipeShell deviation",
+                   "sweep/helix_1e-6 vs MakePipeShell valid (BRepCheck)", "export/scad", "export/stl_binary"):
         assert any(n.startswith(prefix) for n in names), prefix
-    # The fixture's targets (evaluation >= 3x GeomAdaptor, tessellation, .scad export rate) all get a verdict.
-    assert len(table.verdicts) == 4 and set(table.verdicts) <= {"PASS", "FAIL"}
+    # The fixture's targets (evaluation >= 3x GeomAdaptor, tessellation, .scad export rate, each loft and
+    # sweep valid, the two helix sweeps within their tolerance) all get a verdict.
+    assert len(table.verdicts) == 4 + 5 + 2 and set(table.verdicts) <= {"PASS", "FAIL"}
     out = capsys.readouterr().out
     assert "targets met" in out and "ratbez benchmarks: nproc = 2" in out
     assert all(len(row) == len(table.rows[0]) for row in table.rows)
@@ -51,5 +54,26 @@ def test_a_program_that_matched_no_filter_has_no_rows(tmp_path, missing):
     table = report.main(str(tmp_path), "2")
     assert len(table.rows) > 1
     first = {"evaluation": "eval/", "tessellation": "tess/", "profile_check": "profile/",
-             "properties": "volume/", "export": "export/"}[missing]
+             "properties": "volume/", "modelling": "loft/", "export": "export/"}[missing]
     assert not any(n.startswith(first) for n in labels(table))
+
+
+def test_modelling_verdicts_follow_validity_and_tolerance(tmp_path):
+    """A sweep whose deviation exceeds the tolerance in its name, or an invalid loft, is a FAIL."""
+    import json
+    with open(os.path.join(FIXTURE, "modelling.json")) as f:
+        data = json.load(f)
+    for b in data["benchmarks"]:
+        if b["run_name"] == "sweep/helix_1e-6/ours":
+            b["deviation"] = 2e-6
+        if b["run_name"] == "loft/circles/ours":
+            b["valid"] = 0
+    with open(tmp_path / "modelling.json", "w") as f:
+        json.dump(data, f)
+    table = report.Table()
+    report.modelling_rows(table, report.load(str(tmp_path), "modelling")[1])
+    rows = {row[0]: row for row in table.rows[1:]}
+    assert rows["sweep/helix_1e-6 vs MakePipeShell deviation"][5] == "FAIL"
+    assert rows["sweep/helix_1e-4 vs MakePipeShell deviation"][5] == "PASS"
+    assert rows["loft/circles vs ThruSections valid (BRepCheck)"][5] == "FAIL"
+    assert table.verdicts.count("FAIL") == 2

@@ -120,7 +120,8 @@ TEST_F(Cli, NegativeOrZeroNumbers) {
 
 TEST_F(Cli, UnknownTypeAndUnknownFields) {
     expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "cube", "size": 1}})")}),
-                     "spec error: shape.type: unknown shape type 'cube' (expected cylinder, cone, sphere, torus, revolve or extrude)");
+                     "spec error: shape.type: unknown shape type 'cube' (expected cylinder, cone, sphere, torus, revolve, extrude, "
+                     "ruled, loft or sweep)");
     expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "sphere", "radius": 1, "centre": [0, 0, 0]}})")}),
                      "spec error: shape.centre: unknown field (expected one of: type, radius, center)");
     expect_bad_input(ratbez({"info", spec_file(R"({"tolerence": 0.1, "shape": {"type": "sphere", "radius": 1}})")}),
@@ -160,6 +161,38 @@ TEST_F(Cli, KernelErrorsNameTheField) {
         {"type": "line", "from": [1, 0, 0], "to": [2, 0, 1]}, {"type": "line", "from": [2, 0, 1], "to": [2, 0, 0]},
         {"type": "line", "from": [2, 0, 0], "to": [1, 0, 1]}, {"type": "line", "from": [1, 0, 1], "to": [1, 0, 0]}]}})")}),
                      "spec error: shape.profile: pieces 0 and 2 cross or touch near (1.5, 0, 0.5) (a profile must not cross itself)");
+}
+
+TEST_F(Cli, ModellingKindsNameTheirFields) {
+    // ruled / loft / sweep: the spec's own checks, and the kernel's errors under the field they belong to.
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "loft", "profiles": [[{"type": "circle", "radius": 1}]]}})")}),
+                     "spec error: shape.profiles: must be a list of at least 2 profiles");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "loft", "degree": 0, "profiles": [
+        [{"type": "circle", "radius": 1}], [{"type": "circle", "radius": 1, "center": [0, 0, 1]}]]}})")}),
+                     "spec error: shape.degree: must be an integer from 1 to 10");
+    expect_bad_input_prefix(ratbez({"info", spec_file(R"({"shape": {"type": "loft", "profiles": [
+        [{"type": "circle", "radius": 1}], [{"type": "circle", "radius": 1, "center": [0, 0, 0.5], "normal": [1, 0, 1]}]]}})")}),
+                            "spec error: shape.profiles[1]: must lie entirely in front of the plane of profiles[0]");
+    expect_bad_input_prefix(ratbez({"info", spec_file(R"({"shape": {"type": "ruled",
+        "profile_a": [{"type": "circle", "radius": 1}],
+        "profile_b": [{"type": "arc", "radius": 1, "start_deg": 0, "end_deg": 90, "center": [0, 0, 1]}]}})")}),
+                            "spec error: shape.profile_b: must be closed");
+    expect_bad_input_prefix(ratbez({"info", spec_file(R"({"shape": {"type": "sweep",
+        "profile": [{"type": "circle", "radius": 0.1, "normal": [1, 0, 0]}],
+        "path": [{"type": "line", "from": [0, 0, 0], "to": [1, 0, 0]}, {"type": "line", "from": [1, 0, 0], "to": [1, 1, 0]}]}})")}),
+                            "spec error: shape.path: has a corner at parameter 1");
+    expect_bad_input_prefix(ratbez({"info", spec_file(R"({"shape": {"type": "sweep",
+        "profile": [{"type": "circle", "radius": 0.1, "normal": [1, 0, 0]}],
+        "path": [{"type": "line", "from": [0, 0, 0], "to": [1, 0, 0]}, {"type": "line", "from": [2, 0, 0], "to": [3, 0, 0]}]}})")}),
+                            "spec error: shape.path: curve 1 starts at (2, 0, 0)");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "sweep", "tolerance": -1,
+        "profile": [{"type": "circle", "radius": 1}], "path": [{"type": "line", "from": [0, 0, 0], "to": [0, 0, 1]}]}})")}),
+                     "spec error: shape.tolerance: must be a positive number");
+    // A profile too large for the bend it is swept round.
+    expect_bad_input_prefix(ratbez({"info", spec_file(R"({"shape": {"type": "sweep",
+        "profile": [{"type": "circle", "radius": 1, "center": [0.5, 0, 0], "normal": [0, 1, 0]}],
+        "path": [{"type": "arc", "radius": 0.5, "start_deg": 0, "end_deg": 90}]}})")}),
+                            "spec error: shape.profile: reaches ");
 }
 
 TEST_F(Cli, NotJsonAndMissingFile) {

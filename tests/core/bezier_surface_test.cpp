@@ -20,7 +20,7 @@ constexpr double kExact = 1e-14;
 // Every way the surface can evaluate a point must give `expected`.
 void expect_all_evaluations(const BezierSurface& s, double u, double v, const Vec3& expected, double tolerance) {
     expect_near(s.point(u, v), expected, tolerance, "point");
-    expect_near(s.point_basis(u, v), expected, tolerance, "A1.6 (basis)");
+    expect_near(s.point_basis(u, v), expected, tolerance, "basis (A1.3 per direction)");
     expect_near(s.point_u_first(u, v), expected, tolerance, "A1.7 u first");
     expect_near(s.point_v_first(u, v), expected, tolerance, "A1.7 v first");
     expect_near(s.point_one_step(u, v), expected, tolerance, "one-step");
@@ -331,7 +331,7 @@ TEST(BezierSurfaceProperties, CornerInterpolationAndBoundaryCurves) {
 }
 
 TEST(BezierSurfaceProperties, AllFourEvaluationAlgorithmsAgree) {
-    // u first = v first = one-step = A1.6 (002 exercise 3, for every degree pair, rational too).
+    // u first = v first = one-step = basis form (002 exercise 3, for every degree pair, rational too).
     RandomInput random(43);
     for (int trial = 0; trial < 1000; ++trial) {
         const auto s = random_surface(random, trial % 2 == 1, 6);

@@ -26,12 +26,15 @@
 #include <vector>
 
 #include "ratbez/bezier_curve.hpp"
+#include "ratbez/bezier_surface.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
 #include "ratbez/revolve.hpp"
 #include "test_support.hpp"
+#include "../../kernel/core/src/point_inversion.hpp"
+#include "../../kernel/core/src/surface_evaluator.hpp"
 
 namespace ratbez {
 namespace {
@@ -444,6 +447,60 @@ TEST(ClosestPoint, OnePointFunctionsMatchTheProjectors) {
     // A point on the surface is its own foot.
     const Vec3 on = s.point(0.3, 0.7);
     EXPECT_LE(closest_point(s, on).distance, 1e-14);
+}
+
+TEST(ClosestPoint, InteriorMinimumBesideASideMinimumIsFound) {
+    // A random rational bicubic (found by the Python bindings' brute-force test): along v = 0 the distance
+    // has a minimum 1.639817 at u = 0.730; the surface's 1.639207 lies at (0.676, 0.0196), between the
+    // seeds and nearer the side than they are to each other. Newton from the side's minimum started again
+    // half a seed spacing inside finds it.
+    const std::vector<std::vector<Vec3>> net{
+        {{0, 0, 0.9457339541686962}, {0, 1, 0.5775223352115382}, {0, 2, 0.3498804807842337}, {0, 3, 0.24780616590787874}},
+        {{1, 0, -0.3960270929177625}, {1, 1, -0.7036829851535342}, {1, 2, -0.5415005736583696}, {1, 3, 0.7278916046211141}},
+        {{2, 0, 0.5273858345754241}, {2, 1, -0.9401550745810596}, {2, 2, 0.990806277275343}, {2, 3, -0.2665574493126992}},
+        {{3, 0, -0.25690244415244856}, {3, 1, 0.6400032090328192}, {3, 2, 0.917597147394742}, {3, 3, -0.6010585986442194}}};
+    const std::vector<std::vector<double>> weights{{0.8400152707822686, 0.6228871802734832, 0.7800937933811956, 1.0370707001185595},
+                                                   {0.5033586351802741, 1.9587442270341324, 1.950952081074143, 0.8761098175096202},
+                                                   {0.7311201145676083, 1.1332411523104968, 0.6784763897158019, 0.994470309851981},
+                                                   {1.6699168585729607, 1.3255391607598828, 1.22614763636592, 1.7313994507125143}};
+    const NurbsSurface s = NurbsSurface::from_bezier(BezierSurface(net, weights));
+    const SurfaceFoot foot = closest_point(s, {2.060019527124753, -0.5474279130113626, -1.4960269175145453});
+    EXPECT_NEAR(foot.distance, 1.639206996, 1e-9);
+    EXPECT_NEAR(foot.u, 0.67614, 1e-5);
+    EXPECT_NEAR(foot.v, 0.0196451, 1e-6);
+    // The same patch: the foot on the side u = 1 at v = 0.0306 (1.2487788, by a search of 400,000 points
+    // along that side) next to the side v = 0's minimum 1.2494945 at u = 0.957 that the seeds lead to; the
+    // sides are now searched as curves.
+    const SurfaceFoot side = closest_point(s, {3.54158989101568, -0.6597204349098514, 0.6612147066479315});
+    EXPECT_NEAR(side.distance, 1.248778778, 1e-9);
+    EXPECT_EQ(side.u, 1.0);
+    EXPECT_NEAR(side.v, 0.030579, 1e-6);
+}
+
+TEST(ClosestPoint, NewtonAlongASideConverges) {
+    // Along a side Newton's matrix across it may be indefinite (a saddle across the side) while the
+    // distance along it is convex: the 1D Newton step must be taken there, not Gauss-Newton's, which was
+    // twice too long on this random rational bicubic and oscillated about the side's minimum (1.626612 at
+    // u = 0.6243) for all 50 iterations, stopping at 1.627571 from (0.6, 0).
+    const std::vector<std::vector<Vec3>> net{
+        {{0, 0, 0.39621505304600957}, {0, 1, -0.042314407488069694}, {0, 2, 0.7755784375740211}, {0, 3, 0.07053351902728644}},
+        {{1, 0, -0.3118698979947687}, {1, 1, -0.037432463335092425}, {1, 2, -0.40289959102199346}, {1, 3, 0.16817663628051194}},
+        {{2, 0, -0.6249976084792574}, {2, 1, 0.9810396056870825}, {2, 2, -0.05741777451382446}, {2, 3, 0.883198602278439}},
+        {{3, 0, 0.1858430633002346}, {3, 1, 0.39197223030938555}, {3, 2, -0.39748948798618144}, {3, 3, -0.46906038763522506}}};
+    const std::vector<std::vector<double>> weights{{0.5208309079495963, 0.6107798396780195, 1.5845935782889116, 1.0401372374519497},
+                                                   {0.7295649335417153, 0.9279732888071782, 1.6062393196999112, 1.7719839696739628},
+                                                   {0.9431753722297034, 1.5164096345477114, 1.393515981132869, 1.1794038184037126},
+                                                   {1.0335262531319866, 1.8579359571366643, 1.0833768759191604, 1.691637749774323}};
+    const NurbsSurface s = NurbsSurface::from_bezier(BezierSurface(net, weights));
+    const Vec3 p{2.2529312067051324, -0.01605677095827729, -1.9023027710843725};
+    double reference = std::numeric_limits<double>::infinity();
+    for (int i = 0; i <= 100000; ++i) reference = std::min(reference, distance(s.point(i / 100000.0, 0.0), p));
+    const detail::SurfaceEvaluator evaluator(s);
+    const detail::ParameterFoot foot =
+        detail::newton_foot_on_surface(evaluator, p, {{0, 1}, {0, 1}}, 0.6, 0.0, {.max_iterations = 50, .at_rounding = true});
+    EXPECT_EQ(foot.v, 0.0);
+    EXPECT_NEAR(foot.distance, reference, 1e-9);
+    EXPECT_NEAR(closest_point(s, p).distance, reference, 1e-9);
 }
 
 TEST(ClosestPoint, RejectsNonFinitePoints) {

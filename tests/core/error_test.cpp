@@ -54,5 +54,14 @@ TEST(Error, UnderPutsTheArgumentBelowAPath) {
     EXPECT_STREQ(error.under("").what(), error.what());
 }
 
+TEST(Error, RenamedGivesTheCallersNameToTheArgumentAndItsParts) {
+    EXPECT_STREQ(Error("curves", "must not be empty").renamed("curves", "profiles").what(), "profiles: must not be empty");
+    EXPECT_STREQ(Error("curves[2]", "is open").renamed("curves", "path").what(), "path[2]: is open");
+    EXPECT_STREQ(Error("curves.weights", "bad").renamed("curves", "profiles[1]").what(), "profiles[1].weights: bad");
+    // A longer name that merely starts with `from`, and any other argument, are kept.
+    EXPECT_STREQ(Error("curvesx", "bad").renamed("curves", "path").what(), "curvesx: bad");
+    EXPECT_STREQ(Error("tolerance", "bad").renamed("curves", "path").what(), "tolerance: bad");
+}
+
 }  // namespace
 }  // namespace ratbez

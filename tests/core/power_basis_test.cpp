@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "bezier_test_support.hpp"
 #include "ratbez/bernstein.hpp"
 #include "ratbez/bezier_curve.hpp"
+#include "ratbez/bezier_surface.hpp"
 
 namespace ratbez {
 namespace {
@@ -101,6 +103,43 @@ TEST(PowerBasis, PowerCoefficientsAreTheScaledDerivativesAtZero) {
         if (i > 0) factorial *= static_cast<double>(i);
         expect_near(a[i], d[i] / factorial, 1e-13);
     }
+}
+
+TEST(Horner2, A16PowerBasisSurfaces) {
+    // The hyperbolic paraboloid S(u, v) = (u, v, u v) of Eq. 1.21 with a_10 = x, a_01 = y, a_11 = z.
+    const std::vector<std::vector<Vec3>> saddle{{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {0, 0, 1}}};
+    expect_near(horner(saddle, 0.5, 0.25), {0.5, 0.25, 0.125}, 0.0);
+    expect_near(horner(saddle, -2.0, 3.0), {-2.0, 3.0, -6.0}, 0.0);  // any finite u, v
+    // Random 3 x 4 coefficients: A1.6 equals the double sum, and the Bézier surface whose rows and columns
+    // are the Ex. 1.14 conversions of them.
+    std::mt19937_64 rng(1806);
+    std::uniform_real_distribution<double> x(-2, 2);
+    std::vector<std::vector<Vec3>> a(3, std::vector<Vec3>(4));
+    for (auto& row : a)
+        for (Vec3& c : row) c = {x(rng), x(rng), x(rng)};
+    // P = M_n^-1 a (M_m^-1)^T: convert every row (in v), then every column (in u).
+    std::vector<std::vector<Vec3>> rows;
+    for (const auto& row : a) rows.push_back(power_to_bezier(row));
+    std::vector<std::vector<Vec3>> net(3, std::vector<Vec3>(4));
+    for (std::size_t j = 0; j < 4; ++j) {
+        std::vector<Vec3> column;
+        for (std::size_t i = 0; i < 3; ++i) column.push_back(rows[i][j]);
+        const std::vector<Vec3> converted = power_to_bezier(column);
+        for (std::size_t i = 0; i < 3; ++i) net[i][j] = converted[i];
+    }
+    const BezierSurface bezier(net);
+    for (int k = 0; k < 50; ++k) {
+        const double u = (k % 7) / 6.0, v = (k % 11) / 10.0;
+        Vec3 sum{};
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 4; ++j) sum += a[i][j] * (std::pow(u, static_cast<double>(i)) * std::pow(v, static_cast<double>(j)));
+        expect_near(horner(a, u, v), sum, 1e-13);
+        expect_near(horner(a, u, v), bezier.point(u, v), 1e-13);
+    }
+    EXPECT_TRUE(starts_with(error_message([] { horner(std::vector<std::vector<Vec3>>{}, 0.5, 0.5); }), "coefficients:"));
+    EXPECT_TRUE(starts_with(error_message([&] { horner(std::vector<std::vector<Vec3>>{{{0, 0, 0}}, {}}, 0.5, 0.5); }),
+                            "coefficients:"));
+    EXPECT_TRUE(starts_with(error_message([&] { horner(saddle, 0.5, std::numeric_limits<double>::infinity()); }), "v:"));
 }
 
 TEST(PowerBasisErrors, EmptyInputNamesTheArgument) {

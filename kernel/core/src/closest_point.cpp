@@ -305,6 +305,14 @@ struct detail::SurfaceCells {
     std::vector<double> us, vs;  // the seed grid's parameters (detail::seed_params)
     std::vector<Vec3> points;    // its points, us.size() x vs.size(), row-major
     std::vector<char> usable;    // 0 at a seed that coincides with a neighbour (on a pole)
+    // The sides of the domain that do not collapse to a point, searched as curves (certified, above).
+    struct Side {
+        std::shared_ptr<const CurvePieces> curve;
+        Box bound;
+        bool fixed_u = false;  // the side is u = fixed (a curve in v), else v = fixed (a curve in u)
+        double fixed = 0;
+    };
+    std::vector<Side> sides;
 };
 
 namespace {
@@ -343,6 +351,14 @@ std::shared_ptr<const detail::SurfaceCells> make_pieces(const NurbsSurface& surf
     };
     const std::array<bool, 2> pole_v{collapsed(true, 0), collapsed(true, nv - 1)};
     const std::array<bool, 2> pole_u{collapsed(false, 0), collapsed(false, nu - 1)};
+    for (const bool fixed_u : {false, true})
+        for (const bool at_max : {false, true}) {
+            if (fixed_u ? pole_u[at_max ? 1 : 0] : pole_v[at_max ? 1 : 0]) continue;
+            const Interval d = fixed_u ? surface.domain_u() : surface.domain_v();
+            const double fixed = at_max ? d.max : d.min;
+            const NurbsCurve side = fixed_u ? surface.isocurve_u(fixed) : surface.isocurve_v(fixed);
+            data->sides.push_back({make_pieces(side), side.control_box(), fixed_u, fixed});
+        }
     const auto ranges_u = seed_ranges(along_u), ranges_v = seed_ranges(along_v);
     for (std::size_t a = 0; a < along_u.pieces.size(); ++a)
         for (std::size_t b = 0; b < along_v.pieces.size(); ++b) {
@@ -409,8 +425,27 @@ SurfaceFoot search(const detail::SurfaceCells& data, const Vec3& p) {
     // first set on the seed's own ring about the pole (Newton with the other parameter held), then Newton
     // runs free; if it still ends on the pole (the best angle drifts from ring to ring), once more from a
     // ring 64 times closer to it.
+    // A foot held on a side of the domain is a minimum along that side; an interior minimum can sit closer
+    // to the side than the seeds are to each other, in a basin between them that no seed starts in (a
+    // random rational bicubic: the side's minimum 1.63982 at (0.730, 0), the surface's 1.63921 at
+    // (0.676, 0.0196), seeds 1/12 apart). So once more from half a seed spacing inside.
+    const Interval domain_u{data.us.front(), data.us.back()}, domain_v{data.vs.front(), data.vs.back()};
+    auto from_inside = [&](const Cell& cell, const detail::ParameterFoot& foot) {
+        const double step_u = 0.5 * cell.params.u.width() / static_cast<double>(std::max<std::size_t>(cell.i1 - cell.i0, 1));
+        const double step_v = 0.5 * cell.params.v.width() / static_cast<double>(std::max<std::size_t>(cell.j1 - cell.j0, 1));
+        double u = foot.u, v = foot.v;
+        if (u == domain_u.min) u += step_u;
+        else if (u == domain_u.max) u -= step_u;
+        if (v == domain_v.min) v += step_v;
+        else if (v == domain_v.max) v -= step_v;
+        if (u != foot.u || v != foot.v) walk_on(&cell, newton(cell.params, u, v));
+    };
     auto from_seed = [&](const Cell& cell, double u, double v) {
-        if (!cell.has_pole) return walk_on(&cell, newton(cell.params, u, v));
+        if (!cell.has_pole) {
+            const detail::ParameterFoot foot = newton(cell.params, u, v);
+            walk_on(&cell, foot);
+            return from_inside(cell, foot);
+        }
         const bool fixed_v = cell.pole_at_fixed_v;
         double ring = fixed_v ? v : u, angle = fixed_v ? u : v;
         for (int attempt = 0; attempt < 2; ++attempt) {
@@ -441,6 +476,14 @@ SurfaceFoot search(const detail::SurfaceCells& data, const Vec3& p) {
         std::sort(starts.begin(), starts.end());
         if (starts.size() > kMaxStartsPerCell) starts.resize(kMaxStartsPerCell);
         for (const auto& [d, seed] : starts) from_seed(cell, data.us[seed / nv], data.vs[seed % nv]);
+    }
+    // A foot on a side of the domain: the side's own certified curve search, where its box is nearer.
+    for (const detail::SurfaceCells::Side& side : data.sides) {
+        if (side.bound.distance_to(p) >= best.distance) continue;
+        const CurveFoot foot = search(*side.curve, p);
+        if (foot.distance < best.distance)
+            best = side.fixed_u ? detail::ParameterFoot{side.fixed, foot.u, foot.distance}
+                                : detail::ParameterFoot{foot.u, side.fixed, foot.distance};
     }
     const Vec3 point = data.evaluator.point(best.u, best.v);
     return {best.u, best.v, point, distance(point, p)};

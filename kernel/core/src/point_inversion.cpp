@@ -73,8 +73,12 @@ ParameterFoot newton_foot_on_surface(const SurfaceEvaluator& s, const Vec3& p, c
         // Newton's matrix: the Gauss-Newton one plus the terms in the second derivatives (Eq. 6.8).
         const double ha = e.a + dot(e.r, d.suu), hb = e.b + dot(e.r, d.suv), hc = e.c + dot(e.r, d.svv);
         bool moved = false;
-        const bool newton_ok = ha > 0 && hc > 0 && ha * hc - hb * hb > 0 &&
-                               try_step(descent_step(ha, hb, hc, e.f, e.g, hold_u, hold_v), d.s, d.su, d.sv, moved);
+        // Only the free parameters' part of Newton's matrix must be positive definite: on a side (one
+        // parameter held) a saddle across it does not stop the 1D Newton step along it (random rational
+        // bicubics otherwise fell back to Gauss-Newton there, whose step along the side was twice too
+        // long, and oscillated about the side's minimum for all 50 iterations, stopping 2e-3 short).
+        const bool definite = hold_u ? (hold_v || hc > 0) : hold_v ? ha > 0 : ha > 0 && hc > 0 && ha * hc - hb * hb > 0;
+        const bool newton_ok = definite && try_step(descent_step(ha, hb, hc, e.f, e.g, hold_u, hold_v), d.s, d.su, d.sv, moved);
         if (!newton_ok && !try_step(descent_step(e.a, e.b, e.c, e.f, e.g, hold_u, hold_v), d.s, d.su, d.sv, moved)) break;
         if (!moved) break;
     }

@@ -1,5 +1,5 @@
-// Power basis curves C(u) = sum a_i u^i (000 §1.2, Eq. 1.5), Horner's rule (A1.1), and the exact change of
-// basis between power and Bézier form of Exercise 1.14.
+// Power basis curves C(u) = sum a_i u^i (000 §1.2, Eq. 1.5), Horner's rule (A1.1), power basis surfaces
+// by Horner2 (A1.6), and the exact change of basis between power and Bézier form of Exercise 1.14.
 
 #include "ratbez/power_basis.hpp"
 
@@ -42,6 +42,23 @@ Vec3 horner(const std::vector<Vec3>& coefficients, double u) {
     Vec3 value = coefficients.back();
     for (std::size_t i = coefficients.size() - 1; i-- > 0;) value = value * u + coefficients[i];
     return value;
+}
+
+Vec3 horner(const std::vector<std::vector<Vec3>>& coefficients, double u, double v) {
+    require(!coefficients.empty(), "coefficients", "must not be empty");
+    require_finite(u, "u");
+    require_finite(v, "v");
+    const std::size_t columns = coefficients.front().size();
+    for (std::size_t i = 0; i < coefficients.size(); ++i)
+        require(coefficients[i].size() == columns, "coefficients", [&] {
+            return "row " + std::to_string(i) + " has " + std::to_string(coefficients[i].size()) + " entries, row 0 has " +
+                   std::to_string(columns);
+        });
+    // A1.6: Horner1 on each row a[i][] at v0 gives b[i], then Horner1 on b at u0.
+    std::vector<Vec3> b;
+    b.reserve(coefficients.size());
+    for (const std::vector<Vec3>& row : coefficients) b.push_back(horner(row, v));
+    return horner(b, u);
 }
 
 std::vector<std::vector<double>> bezier_to_power_matrix(int n) {

@@ -112,7 +112,7 @@ void bind_core(py::module_& m) {
         .def("point", [](const BezierSurface& s, double u, double v) { return to_tuple(s.point(u, v)); },
              py::arg("u"), py::arg("v"))
         .def("point_basis", [](const BezierSurface& s, double u, double v) { return to_tuple(s.point_basis(u, v)); },
-             py::arg("u"), py::arg("v"), "S(u, v) by A1.6.")
+             py::arg("u"), py::arg("v"), "S(u, v) from the Bernstein values of each direction (A1.3), row by row then once across.")
         .def("point_u_first", [](const BezierSurface& s, double u, double v) { return to_tuple(s.point_u_first(u, v)); },
              py::arg("u"), py::arg("v"), "S(u, v) by A1.7, deCasteljau in u first.")
         .def("point_v_first", [](const BezierSurface& s, double u, double v) { return to_tuple(s.point_v_first(u, v)); },

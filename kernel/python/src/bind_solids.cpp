@@ -26,29 +26,6 @@ namespace {
 py::tuple origin() { return py::make_tuple(0.0, 0.0, 0.0); }
 py::tuple z_axis() { return py::make_tuple(0.0, 0.0, 1.0); }
 
-// One piece of a profile: a NurbsCurve as it is, a BezierCurve as the NURBS on {0..0, 1..1}.
-std::optional<NurbsCurve> profile_piece(py::handle value) {
-    if (py::isinstance<NurbsCurve>(value)) return value.cast<NurbsCurve>();
-    if (py::isinstance<BezierCurve>(value)) return NurbsCurve::from_bezier(value.cast<const BezierCurve&>());
-    return std::nullopt;
-}
-
-Profile to_profile(py::handle value, const std::string& argument) {
-    if (auto piece = profile_piece(value)) return Profile({std::move(*piece)});
-    if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value))
-        throw Error(argument, "expected a BezierCurve, a NurbsCurve or a list of them");
-    std::vector<NurbsCurve> pieces;
-    std::size_t index = 0;
-    for (py::handle item : value) {
-        auto piece = profile_piece(item);
-        if (!piece)
-            throw Error(argument + "[" + std::to_string(index) + "]", "expected a BezierCurve or a NurbsCurve");
-        pieces.push_back(std::move(*piece));
-        ++index;
-    }
-    return Profile(std::move(pieces));  // validates: non-empty, pieces joined end to end
-}
-
 py::array_t<double> vertex_array(const Mesh& mesh) {
     py::array_t<double> result({static_cast<py::ssize_t>(mesh.vertices.size()), py::ssize_t{3}});
     auto out = result.mutable_unchecked<2>();

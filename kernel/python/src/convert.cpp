@@ -2,7 +2,11 @@
 
 #include <Python.h>
 
+#include <optional>
+
+#include "ratbez/bezier_curve.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/nurbs_curve.hpp"
 
 namespace ratbez::python {
 
@@ -30,6 +34,13 @@ std::vector<py::object> sequence_items(py::handle value, const std::string& argu
 
 std::string element(const std::string& argument, std::size_t index) {
     return argument + "[" + std::to_string(index) + "]";
+}
+
+// A NurbsCurve as it is, a BezierCurve as the NURBS on {0..0, 1..1}; nothing for anything else.
+std::optional<NurbsCurve> curve_of(py::handle value) {
+    if (py::isinstance<NurbsCurve>(value)) return value.cast<NurbsCurve>();
+    if (py::isinstance<BezierCurve>(value)) return NurbsCurve::from_bezier(value.cast<const BezierCurve&>());
+    return std::nullopt;
 }
 
 }  // namespace
@@ -134,5 +145,35 @@ py::list to_list(const std::vector<std::vector<Vec3>>& net) {
 }
 
 py::tuple to_tuple(const Interval& interval) { return py::make_tuple(interval.min, interval.max); }
+
+NurbsCurve to_curve(py::handle value, const std::string& argument) {
+    if (auto curve = curve_of(value)) return std::move(*curve);
+    throw Error(argument + ": expected a BezierCurve or a NurbsCurve");
+}
+
+std::vector<NurbsCurve> to_curves(py::handle value, const std::string& argument) {
+    if (auto curve = curve_of(value)) return {std::move(*curve)};
+    if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value))
+        throw Error(argument + ": expected a BezierCurve, a NurbsCurve or a list of them");
+    std::vector<NurbsCurve> curves;
+    std::size_t index = 0;
+    for (py::handle item : value) {
+        auto curve = curve_of(item);
+        if (!curve) throw Error(element(argument, index) + ": expected a BezierCurve or a NurbsCurve");
+        curves.push_back(std::move(*curve));
+        ++index;
+    }
+    return curves;
+}
+
+Profile to_profile(py::handle value, const std::string& argument) {
+    std::vector<NurbsCurve> pieces = to_curves(value, argument);
+    try {
+        return Profile(std::move(pieces));  // validates: non-empty, pieces joined end to end
+    } catch (const Error& e) {
+        // Profile names its argument "profile"; name the one given here (profiles[2], path, ...).
+        throw e.renamed("profile", argument);
+    }
+}
 
 }  // namespace ratbez::python

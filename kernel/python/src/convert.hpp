@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "ratbez/bspline_basis.hpp"
+#include "ratbez/nurbs_curve.hpp"
+#include "ratbez/profile.hpp"
 #include "ratbez/vec.hpp"
 
 namespace ratbez::python {
@@ -27,6 +29,13 @@ std::vector<std::vector<double>> to_double_rows(py::handle value, const std::str
 // A filesystem path: str or os.PathLike.
 std::string to_path(py::handle value, const std::string& argument);
 
+// A curve: a NurbsCurve, or a BezierCurve as the NURBS on {0..0, 1..1}.
+NurbsCurve to_curve(py::handle value, const std::string& argument);
+// One curve, or a list / tuple of curves (pieces joined end to end): their NURBS forms, in order.
+std::vector<NurbsCurve> to_curves(py::handle value, const std::string& argument);
+// A profile: to_curves(value) joined end to end (Profile validates); errors name `argument`.
+Profile to_profile(py::handle value, const std::string& argument);
+
 py::tuple to_tuple(const Vec3& point);
 py::list to_list(const std::vector<Vec3>& points);
 py::list to_list(const std::vector<std::vector<Vec3>>& net);
@@ -36,5 +45,6 @@ py::tuple to_tuple(const Interval& interval);
 void bind_core(py::module_& module);
 void bind_solids(py::module_& module);
 void bind_io(py::module_& module);
+void bind_modelling(py::module_& module);
 
 }  // namespace ratbez::python

@@ -26,9 +26,10 @@ public:
     std::vector<std::vector<Vec3>> points() const;
     std::vector<std::vector<double>> weights() const;
 
-    // S(u, v); the default is the basis form of A1.6 on P^w.
+    // S(u, v); the default is the basis form on P^w (point_basis).
     Vec3 point(double u, double v) const;
-    Vec3 point_basis(double u, double v) const;       // A1.6
+    Vec3 point_basis(double u, double v) const;       // Bernstein values (A1.3) per direction, rows then column
+                                                      // (the tensor-product scheme A1.6 applies to power bases)
     Vec3 point_u_first(double u, double v) const;     // A1.7: deCasteljau in u on each column j (giving the
                                                       // isocurve C_{u0}(v)'s points), then once in v
     Vec3 point_v_first(double u, double v) const;     // A1.7 in the other order: v on each row, then u

@@ -14,9 +14,12 @@
 //    search and kept inside the piece (a parameter on the piece's boundary is held there while the
 //    gradient points out; a foot on a side shared with the next piece goes on there), starts from every
 //    seed of a grid over the pieces that is no farther than its neighbours; every seed is a candidate
-//    too. Boundary minima (the boundary curves, poles) are found like interior ones. That finds the true
-//    minimum on ordinary surfaces; a basin of the distance narrower than the seed spacing (near the focal
-//    points of a strongly curved piece) can still be missed.
+//    too; a start that ends on a side of the domain starts once more half a seed spacing inside (an
+//    interior minimum beside the side's). The four sides of the domain (those not collapsed to a pole)
+//    are searched as curves, above, so a foot on the boundary is found with the curves' guarantee. That
+//    finds the true minimum on ordinary surfaces; an interior basin of the distance narrower than the seed
+//    spacing (near the focal points of a strongly curved piece) can still be missed: on random rational
+//    bicubic patches 1 point in 50,000 or fewer.
 
 #include <limits>
 #include <memory>

@@ -36,6 +36,19 @@ public:
         return Error(path, reason());
     }
 
+    // The same reason about `to` where the argument is `from` or one of its parts ("from[2]", "from.x"): a
+    // callee's name for what the caller calls otherwise (join's "curves" are a loft's "profiles"). Any other
+    // argument is kept.
+    Error renamed(std::string_view from, std::string_view to) const {
+        const std::string_view name = argument();
+        if (name.substr(0, from.size()) != from) return *this;
+        const std::string_view rest = name.substr(from.size());
+        if (!rest.empty() && rest.front() != '[' && rest.front() != '.') return *this;
+        std::string path(to);
+        path += rest;
+        return Error(path, reason());
+    }
+
 private:
     static std::string join(std::string_view argument, std::string_view reason) {
         std::string message(argument);

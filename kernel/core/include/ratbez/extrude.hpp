@@ -10,7 +10,10 @@
 
 namespace ratbez {
 
+// Any curve, open or closed: u runs along the curve (its own domain), v over [0, 1].
 NurbsSurface extrude_surface(const NurbsCurve& curve, const Vec3& displacement);
+// The same with displacement = distance * direction / |direction| (distance > 0, direction non-zero).
+NurbsSurface extrude_surface(const NurbsCurve& curve, const Vec3& direction, double distance);
 
 // A closed planar profile swept by distance along direction (not parallel to the profile's plane):
 // one lateral face per piece and two planar caps. The profile must not cross or touch itself (within

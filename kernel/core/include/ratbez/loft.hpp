@@ -1,0 +1,59 @@
+#pragma once
+// Lofting (skinning) through section curves, The NURBS Book §10.3:
+//  1. the sections are made compatible (one degree p, one clamped knot vector U on [0, 1]; A5.9, A5.4 by
+//     compatible_curves.hpp), and each is scaled in homogeneous space so that its first weight is 1 (a
+//     curve's weights are only defined up to a common factor, which would otherwise change the loft);
+//  2. the parameters across, v_0 = 0 < ... < v_{K-1} = 1, by averaged chord length: for every control
+//     point index i the cumulative chord lengths |P_{i,k} - P_{i,k-1}| normalised to [0, 1], averaged over
+//     the indices i whose points move (Eq. 10.8 with Eq. 9.5 per column);
+//  3. the degree across q = min(degree, K - 1) and the knots V by averaging (Eq. 9.8);
+//  4. every column i of homogeneous points P^w_{i,0..K-1} is interpolated at the v_k (A9.1), giving the
+//     net Q^w_{i,j}.
+// Consequences of interpolating rational sections in homogeneous space:
+//  - the surface passes through every section exactly: S^w(u, v_k) = C^w_k(u), so S(u, v_k) = C_k(u)
+//    (to rounding, ~1e-15 of the size);
+//  - between sections the surface interpolates the homogeneous points, not the Euclidean ones: sections
+//    with equal weights (circles and arcs of the same layout, polynomial curves) give isocurves across that
+//    are the B-spline interpolants of the Euclidean points; unequal weights pull the surface towards the
+//    section with the larger weights;
+//  - interpolated weights can overshoot: when sections' weights differ so much that a weight of the net
+//    comes out <= 0, the loft is refused (Error naming "curves" / "profiles"); polynomial sections never
+//    have this problem, nor do sections with equal weights.
+// Polynomial sections give a polynomial surface.
+
+#include <vector>
+
+#include "ratbez/brep.hpp"
+#include "ratbez/nurbs_curve.hpp"
+#include "ratbez/nurbs_surface.hpp"
+#include "ratbez/profile.hpp"
+
+namespace ratbez {
+
+// The lofted surface and the parameters v_k at which it passes through the sections.
+struct Skin {
+    NurbsSurface surface;
+    std::vector<double> section_parameters;
+};
+
+// At least two sections, degree >= 1 (the degree across: 1 is piecewise ruled); u runs along the sections
+// over [0, 1], v across them over [0, 1]. Consecutive sections must not coincide (all their control
+// points the same). Errors name "curves" or "degree".
+Skin skin(const std::vector<NurbsCurve>& curves, int degree = 3);
+inline NurbsSurface loft_surface(const std::vector<NurbsCurve>& curves, int degree = 3) {
+    return skin(curves, degree).surface;
+}
+
+// A solid lofted through closed planar profiles, capped by the first and last profile. Each profile is
+// joined into one curve (join.hpp: its pieces end to end, the knots where they meet), turned to run
+// counterclockwise about the direction the loft travels (from its control points' centre towards the
+// next profile's), and the profiles lofted as above; ruled = true lofts with degree 1 across (straight
+// rulings between consecutive profiles). The profiles' starting points are matched to one another, so
+// they set the seam. Validated (Error naming "profiles[k]" or "degree"): at least two profiles, each
+// closed, planar and simple (as for extrude), and every profile strictly in front of the previous one's
+// plane and the previous one strictly behind its plane (all control points, so the curves by the convex
+// hull property): sections that cut through each other give no solid. The surface between sections is not
+// otherwise checked for self-intersection.
+Solid loft(const std::vector<Profile>& profiles, int degree = 3, bool ruled = false);
+
+}  // namespace ratbez

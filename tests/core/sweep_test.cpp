@@ -1,0 +1,159 @@
+// sweep.hpp and rotation_minimizing_frame.hpp: the double reflection frame against the helix's closed-form
+// RMF; exact sweeps (a circle along a circle is the torus, a disc along a line the cylinder); approximate
+// sweeps within their tolerance (a tube along a helix: every point at the tube's radius from the path, the
+// volume Pappus's section area x path length); refusals of corners and self-intersecting sweeps.
+
+#include "ratbez/sweep.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "ratbez/closest_point.hpp"
+#include "ratbez/curves.hpp"
+#include "ratbez/deviation.hpp"
+#include "ratbez/join.hpp"
+#include "ratbez/properties.hpp"
+#include "ratbez/rotation_minimizing_frame.hpp"
+#include "ratbez/tessellate.hpp"
+#include "modelling_test_support.hpp"
+#include "test_support.hpp"
+
+namespace ratbez {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// A circle of radius r around the path's start, in the plane normal to its tangent there.
+Profile section_circle(const NurbsCurve& path, double r) {
+    return Profile({circle(r, path.start_point(), path.derivative(path.domain().min))});
+}
+
+TEST(RotationMinimizingFrame, HelixAgainstItsClosedForm) {
+    // RMF along a helix: r = cos(theta) N + sin(theta) B with theta = -tau s (tau = c / (a^2 + c^2)).
+    const double a = 2.0, c = 0.5;
+    const int steps = 2000;
+    const double t_end = 2 * pi;
+    std::vector<Vec3> points, tangents;
+    for (int k = 0; k <= steps; ++k) {
+        const double t = t_end * k / steps;
+        points.push_back({a * std::cos(t), a * std::sin(t), c * t});
+        tangents.push_back(Vec3{-a * std::sin(t), a * std::cos(t), c} / std::hypot(a, c));
+    }
+    auto normal = [](double t) { return Vec3{-std::cos(t), -std::sin(t), 0}; };
+    auto binormal = [&](double t) { return cross(Vec3{-a * std::sin(t), a * std::cos(t), c} / std::hypot(a, c), normal(t)); };
+    const std::vector<Vec3> r = rotation_minimizing_frame(points, tangents, normal(0));
+    const double tau = c / (a * a + c * c), speed = std::hypot(a, c);
+    for (int k = 0; k <= steps; k += 100) {
+        const double t = t_end * k / steps, theta = -tau * speed * t;
+        EXPECT_LE(distance(r[static_cast<std::size_t>(k)], normal(t) * std::cos(theta) + binormal(t) * std::sin(theta)), 1e-10);
+        EXPECT_NEAR(dot(r[static_cast<std::size_t>(k)], tangents[static_cast<std::size_t>(k)]), 0, 1e-14);
+    }
+    EXPECT_ERROR_NAMING(rotation_minimizing_frame(points, {}, normal(0)), "tangents");
+}
+
+TEST(SweepExact, CircleAlongCircleIsTheTorus) {
+    const double R = 2, r = 0.5;
+    const NurbsCurve path = circle(R);
+    const Profile tube({circle(r, {R, 0, 0}, {0, 1, 0})});
+    const Sweep s = sweep_surfaces(tube.pieces(), path);
+    EXPECT_EQ(s.method, SweepMethod::revolution);
+    EXPECT_TRUE(s.closed);
+    const Solid torus = sweep(tube, path);
+    EXPECT_NEAR(enclosed_volume(torus), 2 * pi * pi * R * r * r, 1e-10);
+    EXPECT_EQ(torus.faces().size(), 1u);
+    // A half circle path: half the torus with two caps.
+    const Solid half = sweep(tube, arc(R, 0, 180));
+    EXPECT_EQ(half.faces().size(), 3u);
+    EXPECT_NEAR(enclosed_volume(half), pi * pi * R * r * r, 1e-10);
+}
+
+TEST(SweepExact, DiscAlongALineIsTheCylinder) {
+    const Profile disc({circle(1.0, {0, 0, 0})});
+    const Solid straight = sweep(disc, line_segment({0, 0, 0}, {0, 0, 3}));
+    EXPECT_NEAR(enclosed_volume(straight), 3 * pi, 1e-12);
+    const Solid oblique = sweep(disc, line_segment({0, 0, 0}, {1, 2, 3}));
+    EXPECT_NEAR(enclosed_volume(oblique), 3 * pi, 1e-12);  // the section stays horizontal: area x height
+    // A straight path drawn as a cubic with control points along it is still a line.
+    const NurbsCurve cubic_line = NurbsCurve::from_bezier(BezierCurve({{0, 0, 0}, {0, 0, 0.5}, {0, 0, 2}, {0, 0, 3}}));
+    EXPECT_EQ(sweep_surfaces(disc.pieces(), cubic_line).method, SweepMethod::extrusion);
+}
+
+TEST(SweepApproximate, TubeAlongAHelixIsWithinToleranceAndMatchesPappus) {
+    const double a = 2.0, c = 0.4, r = 0.3, tolerance = 1e-6;
+    const NurbsCurve path = test::helix_path(a, c, 6);
+    const Profile section = section_circle(path, r);
+    const Sweep swept = sweep_surfaces(section.pieces(), path, tolerance);
+    EXPECT_EQ(swept.method, SweepMethod::approximation);
+    EXPECT_LE(swept.max_error, tolerance);
+    EXPECT_GT(swept.max_error, 0);
+    // Every point of the true sweep is r from the path (the section centred on it, normal to it): ours
+    // within the tolerance.
+    const CurveProjector onto_path(path);
+    std::mt19937_64 rng(1807);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (int k = 0; k < 300; ++k) {
+        const NurbsSurface& s = swept.surfaces.front();
+        const double u = s.domain_u().min + unit(rng) * s.domain_u().width(), v = unit(rng);
+        EXPECT_NEAR(onto_path.closest_point(s.point(u, v)).distance, r, tolerance);
+    }
+    // Pappus: V = pi r^2 L; the surface within the tolerance moves the volume by at most tolerance x area.
+    const Solid tube = sweep(section, path, tolerance);
+    const double L = test::curve_length(path);
+    EXPECT_NEAR(enclosed_volume(tube), pi * r * r * L, tolerance * 2 * pi * r * L);
+    const Mesh mesh = tessellate(tube, 1e-3);
+    EXPECT_TRUE(mesh.is_closed());
+}
+
+TEST(SweepApproximate, ClosedSpacePathClosesTheTube) {
+    // A closed, non-planar path (a "saddle" loop), smooth where it closes: the periodic cubic B-spline of
+    // 8 points on (2 cos t, 2 sin t, 0.5 sin 2t), clamped by the constructor's caller (Path clamps).
+    std::vector<Vec3> points;
+    for (int k = 0; k < 8; ++k) {
+        const double t = 2 * pi * k / 8;
+        points.push_back({2 * std::cos(t), 2 * std::sin(t), 0.5 * std::sin(2 * t)});
+    }
+    for (int k = 0; k < 3; ++k) points.push_back(points[static_cast<std::size_t>(k)]);  // wrap for periodicity
+    std::vector<double> knots;
+    for (int k = 0; k < static_cast<int>(points.size()) + 4; ++k) knots.push_back(k);
+    const NurbsCurve path(3, knots, points);
+    const double r = 0.2;
+    const Profile section = section_circle(path, r);
+    const Sweep swept = sweep_surfaces(section.pieces(), path, 1e-6);
+    EXPECT_TRUE(swept.closed);
+    const Solid tube = sweep(section, path, 1e-6);
+    EXPECT_EQ(tube.faces().size(), 1u);
+    EXPECT_NEAR(enclosed_volume(tube), pi * r * r * test::curve_length(path), 1e-6 * 2 * pi * r * test::curve_length(path));
+}
+
+TEST(SweepErrors, CornersAndSelfIntersectionsAreRefused) {
+    const NurbsCurve corner = join({line_segment({0, 0, 0}, {1, 0, 0}), line_segment({1, 0, 0}, {1, 1, 0})});
+    EXPECT_ERROR_NAMING(sweep(Profile({circle(0.1, {0, 0, 0}, {1, 0, 0})}), corner), "path");
+    // The section reaches past the bend's centre of curvature (radius 1 around an arc of radius 0.5).
+    EXPECT_ERROR_NAMING(sweep(Profile({circle(1.0, {0.5, 0, 0}, {0, 1, 0})}), arc(0.5, 0, 90)), "profile");
+    // A helix whose turns are closer than the tube's diameter.
+    const NurbsCurve tight = test::helix_path(2.0, 0.05, 8);
+    EXPECT_ERROR_NAMING(sweep(section_circle(tight, 0.3), tight), "profile");
+    // A profile in a plane containing the path's tangent.
+    EXPECT_ERROR_NAMING(sweep(Profile({circle(1.0, {0, 0, 0}, {1, 0, 0})}), line_segment({0, 0, 0}, {0, 0, 3})), "profile");
+    EXPECT_ERROR_NAMING(sweep(Profile({circle(1.0)}), line_segment({0, 0, 0}, {0, 0, 3}), 0.0), "tolerance");
+    EXPECT_ERROR_NAMING(sweep(Profile({circle(1.0)}), line_segment({0, 0, 0}, {0, 0, 3}), 1e-20), "tolerance");
+}
+
+TEST(SweepSurface, OpenCurveAlongAGeneralPathMovesRigidly) {
+    const NurbsCurve path = test::helix_path(3.0, 0.5, 3);
+    const NurbsCurve curve = NurbsCurve::from_bezier(BezierCurve({{3, 0, -0.2}, {3.2, 0.1, 0}, {3.1, -0.1, 0.3}}, {1, 2, 1}));
+    const NurbsSurface s = sweep_surface(curve, path, 1e-7);
+    // v = 0 is the curve itself; v = 1 its rigid image: distances between its points are kept.
+    const Interval d = curve.domain();
+    for (int i = 0; i <= 10; ++i) {
+        const double u = d.min + d.width() * i / 10;
+        EXPECT_LE(distance(s.point(u, 0.0), curve.point(u)), 1e-14);
+        EXPECT_NEAR(distance(s.point(u, 1.0), s.point(d.min, 1.0)), distance(curve.point(u), curve.point(d.min)), 1e-12);
+    }
+}
+
+}  // namespace
+}  // namespace ratbez
