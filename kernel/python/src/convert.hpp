@@ -36,5 +36,6 @@ py::tuple to_tuple(const Interval& interval);
 void bind_core(py::module_& module);
 void bind_solids(py::module_& module);
 void bind_io(py::module_& module);
+void bind_evaluation(py::module_& module);
 
 }  // namespace ratbez::python
