@@ -94,22 +94,20 @@ std::optional<GridChoice> grid_choice(int du, int dv, bool normals) {
     return std::nullopt;  // third and higher partials: point by point
 }
 
-// The grid in blocks of rows: evaluate_grid writes three coordinate arrays per block (a few hundred KB,
-// so they are still in cache when read back), then the block is interleaved into `out`, scattered back
-// to the callers' order when the parameters came unsorted.
-void evaluate_grid_blocks(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
-                          const GridChoice& choice, std::span<double> out) {
+// The grid a block of rows at a time (evaluate_grid_blocks: each block's three coordinate arrays are
+// still in cache when read back), interleaved into `out`, scattered back to the caller's order when the
+// parameters came unsorted.
+void interleave_grid(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
+                     const GridChoice& choice, std::span<double> out) {
     const Ascending u_order(us), v_order(vs);
-    const std::span<const double> su = u_order.values(us), sv = v_order.values(vs);
     const std::size_t nv = vs.size();
-    constexpr std::size_t block_points = 16384;
+    constexpr std::size_t block_points = 4096;
     const std::size_t block_rows = std::max<std::size_t>(1, block_points / std::max<std::size_t>(nv, 1));
-    SurfaceGrid grid;
-    for (std::size_t first = 0; first < us.size(); first += block_rows) {
-        const std::size_t rows = std::min(block_rows, us.size() - first);
-        evaluate_grid(surface, su.subspan(first, rows), sv, choice.output, grid);
+    SurfaceGrid block;
+    evaluate_grid_blocks(surface, u_order.values(us), v_order.values(vs), choice.output, block_rows, block,
+                         [&](std::size_t first, const SurfaceGrid& grid) {
         const GridVectors& values = grid.*choice.vectors;
-        for (std::size_t r = 0; r < rows; ++r) {
+        for (std::size_t r = 0; r < grid.u_count; ++r) {
             const double* x = values.x.data() + r * nv;
             const double* y = values.y.data() + r * nv;
             const double* z = values.z.data() + r * nv;
@@ -123,7 +121,7 @@ void evaluate_grid_blocks(const NurbsSurface& surface, std::span<const double> u
                 }
             }
         }
-    }
+    });
 }
 
 void evaluate_grid_checked(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
@@ -137,7 +135,7 @@ void evaluate_grid_checked(const NurbsSurface& surface, std::span<const double> 
     require_output(out, us.size() * vs.size());
     if (us.empty() || vs.empty()) return;
     if (const auto choice = grid_choice(du, dv, normals)) {
-        evaluate_grid_blocks(surface, us, vs, *choice, out);
+        interleave_grid(surface, us, vs, *choice, out);
         return;
     }
     for (std::size_t i = 0; i < us.size(); ++i)
