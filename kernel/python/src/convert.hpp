@@ -37,5 +37,6 @@ void bind_core(py::module_& module);
 void bind_solids(py::module_& module);
 void bind_io(py::module_& module);
 void bind_evaluation(py::module_& module);
+void bind_transforms(py::module_& module);
 
 }  // namespace ratbez::python

@@ -56,4 +56,5 @@ PYBIND11_MODULE(ratbez, m) {
     ratbez::python::bind_solids(m);
     ratbez::python::bind_io(m);
     ratbez::python::bind_evaluation(m);
+    ratbez::python::bind_transforms(m);
 }
