@@ -38,5 +38,6 @@ void bind_solids(py::module_& module);
 void bind_io(py::module_& module);
 void bind_evaluation(py::module_& module);
 void bind_transforms(py::module_& module);
+void bind_values(py::module_& module);
 
 }  // namespace ratbez::python

@@ -57,4 +57,5 @@ PYBIND11_MODULE(ratbez, m) {
     ratbez::python::bind_io(m);
     ratbez::python::bind_evaluation(m);
     ratbez::python::bind_transforms(m);
+    ratbez::python::bind_values(m);
 }
