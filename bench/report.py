@@ -12,7 +12,7 @@ import json
 import os
 import sys
 
-PROGRAMS = ("evaluation", "tessellation", "profile_check", "properties", "modelling", "export")
+PROGRAMS = ("evaluation", "tessellation", "profile_check", "properties", "modelling", "export", "python")
 
 
 def load(results, program):
@@ -168,8 +168,33 @@ def export_rows(table, rows):
                   verdict=status or None)
 
 
+def python_rows(table, rows):
+    """Bulk evaluation through Python (bench/python_evaluation.py) against OCCT's GeomAdaptor_Surface and the C++
+    grid evaluator, all measured in that script's run. D0 is held to >= 100M points/s and >= 4x GeomAdaptor,
+    D1 (the point and both partials: three calls) to >= 40M points/s."""
+    for name, b in rows.items():
+        parts = name.split("/")
+        if len(parts) < 5 or parts[3] != "python":
+            continue
+        base, n = "/".join(parts[:3]), parts[4]
+        rate = b["points_per_second"]
+        adaptor, cpp = rows.get(f"{base}/GeomAdaptor_Surface/{n}"), rows.get(f"{base}/ours/{n}")
+        d0 = parts[2] == "D0"
+        ratio = rate / adaptor["points_per_second"] if adaptor else None
+        ok = rate >= (100e6 if d0 else 40e6) and (not d0 or (ratio is not None and ratio >= 4))
+        status = "PASS" if ok else "FAIL"
+        table.row(f"python {base} {n}x{n} vs GeomAdaptor", si(rate) + " pt/s",
+                  si(adaptor["points_per_second"]) + " pt/s" if adaptor else "-",
+                  f"{ratio:.1f}x" if ratio is not None else "", ">= 100M pt/s, >= 4x" if d0 else ">= 40M pt/s",
+                  status, verdict=status)
+        if cpp:
+            table.row(f"python {base} {n}x{n} vs C++ grid", si(rate) + " pt/s", "-",
+                      f"{rate / cpp['points_per_second']:.2f} of C++ {si(cpp['points_per_second'])} pt/s")
+
+
 SECTIONS = (("evaluation", evaluation_rows), ("tessellation", tessellation_rows), ("profile_check", profile_rows),
-            ("properties", properties_rows), ("modelling", modelling_rows), ("export", export_rows))
+            ("properties", properties_rows), ("modelling", modelling_rows), ("export", export_rows),
+            ("python", python_rows))
 
 
 def main(results, cores):

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the project as scripts/setup.sh does (the normal Release build in build/ includes bench/),
 # runs the benchmark programs (evaluation, tessellation, the profile check, volume/area and lofts/sweeps
-# against OpenCASCADE in the same run, export alone) and prints ONE table: every row with ours / OCCT ratios and the target it is held to.
+# against OpenCASCADE in the same run, export alone, bulk evaluation through Python) and prints ONE table:
+# every row with ours / OCCT ratios and the target it is held to.
 #
 # Times are CPU times of the (single-threaded) benchmark thread, the median of the repetitions: on a
 # shared machine wall time also counts other processes' turns. Google Benchmark's JSON is kept in
@@ -33,5 +34,13 @@ for program in evaluation tessellation profile_check properties modelling export
     --benchmark_min_time="$min_time" --benchmark_report_aggregates_only=true \
     --benchmark_out="$results/$program.json" --benchmark_out_format=json >&2
 done
+
+# Bulk evaluation through the Python module, with the C++ and GeomAdaptor rows it is compared to re-measured
+# in the same run (bench/python_evaluation.py).
+if ls "$build"/kernel/python/ratbez*.so >/dev/null 2>&1; then
+  echo "== python bulk evaluation" >&2
+  BENCH_REPETITIONS="$repetitions" BENCH_MIN_TIME="$min_time" BENCH_FILTER="$filter" \
+    /usr/bin/python3 bench/python_evaluation.py "$build" "$results/python.json"
+fi
 
 /usr/bin/python3 bench/report.py "$results" "$(nproc)"

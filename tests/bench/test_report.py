@@ -2,6 +2,7 @@
 Benchmark output from each benchmark program (medians, as bench.sh writes them)."""
 
 import importlib.util
+import json
 import os
 import shutil
 import subprocess
@@ -29,11 +30,13 @@ def test_every_section_prints_its_rows_without_a_filter(capsys):
                    "profile/circle_4_arcs", "volume/sphere vs BRepGProp time", "area/sphere vs BRepGProp_eps",
                    "loft/circles vs ThruSections time", "loft/circles_ruled vs ThruSections control points",
                    "sweep/torus vs MakePipeShell volume error", "sweep/helix_1e-4 vs MakePipeShell deviation",
-                   "sweep/helix_1e-6 vs MakePipeShell valid (BRepCheck)", "export/scad", "export/stl_binary"):
+                   "sweep/helix_1e-6 vs MakePipeShell valid (BRepCheck)", "export/scad", "export/stl_binary",
+                   "python eval/sphere/D0 1000x1000 vs GeomAdaptor", "python eval/sphere/D1 1000x1000 vs GeomAdaptor",
+                   "python eval/sphere/D0 1000x1000 vs C++ grid"):
         assert any(n.startswith(prefix) for n in names), prefix
     # The fixture's targets (evaluation >= 3x GeomAdaptor, tessellation, .scad export rate, each loft and
-    # sweep valid, the two helix sweeps within their tolerance) all get a verdict.
-    assert len(table.verdicts) == 4 + 5 + 2 and set(table.verdicts) <= {"PASS", "FAIL"}
+    # sweep valid, the two helix sweeps within their tolerance, Python D0 and D1) all get a verdict.
+    assert len(table.verdicts) == 4 + 5 + 2 + 2 and set(table.verdicts) <= {"PASS", "FAIL"}
     out = capsys.readouterr().out
     assert "targets met" in out and "ratbez benchmarks: nproc = 2" in out
     assert all(len(row) == len(table.rows[0]) for row in table.rows)
@@ -54,7 +57,7 @@ def test_a_program_that_matched_no_filter_has_no_rows(tmp_path, missing):
     table = report.main(str(tmp_path), "2")
     assert len(table.rows) > 1
     first = {"evaluation": "eval/", "tessellation": "tess/", "profile_check": "profile/",
-             "properties": "volume/", "modelling": "loft/", "export": "export/"}[missing]
+             "properties": "volume/", "modelling": "loft/", "export": "export/", "python": "python "}[missing]
     assert not any(n.startswith(first) for n in labels(table))
 
 
@@ -77,3 +80,19 @@ def test_modelling_verdicts_follow_validity_and_tolerance(tmp_path):
     assert rows["sweep/helix_1e-4 vs MakePipeShell deviation"][5] == "PASS"
     assert rows["loft/circles vs ThruSections valid (BRepCheck)"][5] == "FAIL"
     assert table.verdicts.count("FAIL") == 2
+
+
+def test_python_rows_hold_d0_and_d1_to_their_targets(tmp_path):
+    """A D0 row passes only at >= 100M points/s and >= 4x GeomAdaptor; D1 at >= 40M points/s."""
+    def python_json(d0_rate, adaptor_rate, d1_rate):
+        def row(name, rate):
+            return {"name": name + "_median", "run_name": name, "aggregate_name": "median", "cpu_time": 1e3 / rate,
+                    "time_unit": "ms", "points": 1e6, "points_per_second": rate}
+        rows = [row("eval/s/D0/python/1000", d0_rate), row("eval/s/D0/GeomAdaptor_Surface/1000", adaptor_rate),
+                row("eval/s/D0/ours/1000", 3e8), row("eval/s/D1/python/1000", d1_rate)]
+        (tmp_path / "python.json").write_text(json.dumps({"context": {}, "benchmarks": rows}))
+        return report.main(str(tmp_path), "2").verdicts
+
+    assert python_json(2e8, 2e7, 5e7) == ["PASS", "PASS"]
+    assert python_json(9e7, 1e7, 5e7) == ["FAIL", "PASS"]   # under 100M points/s
+    assert python_json(2e8, 6e7, 3e7) == ["FAIL", "FAIL"]   # under 4x GeomAdaptor; D1 under 40M

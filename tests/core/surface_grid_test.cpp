@@ -185,6 +185,50 @@ TEST_P(KernelsTest, ReusedStorageGivesTheSameGrid) {
     EXPECT_EQ(grid.points.size(), 3 * vs.size());
 }
 
+TEST_P(KernelsTest, BlocksOfRowsAreTheWholeGridInPieces) {
+    const NurbsSurface s = random_surface(3, 2, true);
+    const auto us = random_parameters(s.knots_u(), s.domain_u(), 23);
+    const auto vs = random_parameters(s.knots_v(), s.domain_v(), 17);
+    for (GridOutput output : {GridOutput::points, GridOutput::partials, GridOutput::normals, GridOutput::second_partials}) {
+        const SurfaceGrid whole = evaluate_grid(s, us, vs, output);
+        for (std::size_t rows : {std::size_t{1}, std::size_t{4}, us.size(), us.size() + 5}) {
+            SurfaceGrid block;
+            std::size_t expected_first = 0;
+            evaluate_grid_blocks(s, us, vs, output, rows, block, [&](std::size_t first, const SurfaceGrid& b) {
+                EXPECT_EQ(first, expected_first);
+                EXPECT_EQ(b.u_count, std::min(rows, us.size() - first));
+                EXPECT_EQ(b.v_count, vs.size());
+                for (std::size_t i = 0; i < b.u_count; ++i)
+                    for (std::size_t j = 0; j < vs.size(); ++j) {
+                        // Bit for bit: the same arithmetic on the same bases, only delivered in pieces.
+                        EXPECT_EQ(b.point(i, j), whole.point(first + i, j));
+                        if (output == GridOutput::partials || output == GridOutput::second_partials) {
+                            EXPECT_EQ(b.partial_u(i, j), whole.partial_u(first + i, j));
+                            EXPECT_EQ(b.partial_v(i, j), whole.partial_v(first + i, j));
+                        }
+                        if (output == GridOutput::second_partials) {
+                            EXPECT_EQ(b.partial_uv(i, j), whole.partial_uv(first + i, j));
+                        }
+                        if (output == GridOutput::normals) {
+                            EXPECT_EQ(b.normal(i, j), whole.normal(first + i, j));
+                        }
+                    }
+                expected_first += b.u_count;
+            });
+            EXPECT_EQ(expected_first, us.size());
+        }
+    }
+    int calls = 0;
+    SurfaceGrid block;
+    evaluate_grid_blocks(s, {}, vs, GridOutput::points, 4, block, [&](std::size_t, const SurfaceGrid& b) {
+        ++calls;
+        EXPECT_EQ(b.points.size(), 0u);
+    });
+    EXPECT_EQ(calls, 1);
+    EXPECT_THROW(evaluate_grid_blocks(s, us, vs, GridOutput::points, 0, block, [](std::size_t, const SurfaceGrid&) {}),
+                 Error);
+}
+
 INSTANTIATE_TEST_SUITE_P(SurfaceGrid, KernelsTest, ::testing::Values(GridKernels::portable, GridKernels::best),
                          [](const ::testing::TestParamInfo<GridKernels>& info) {
                              return info.param == GridKernels::portable ? std::string("Portable") : std::string("Best");

@@ -1,13 +1,14 @@
 #pragma once
 // Private helpers of the sources that build solids (curves, primitives, profiles, revolve, extrude,
-// B-rep): exact degree trigonometry, the circular-arc layout, knot-vector clamping, shared vertices and
-// edges. Defined in geometry_internal.cpp. Not installed, not part of the public API.
+// B-rep): the circular-arc layout, knot-vector clamping, shared vertices and edges (and, from degrees.hpp,
+// exact degree trigonometry). Defined in geometry_internal.cpp. Not installed, not part of the public API.
 
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "degrees.hpp"
 #include "ratbez/brep.hpp"
 #include "ratbez/frame.hpp"
 #include "ratbez/nurbs_curve.hpp"
@@ -16,10 +17,6 @@
 
 namespace ratbez::detail {
 
-// cos and sin of an angle in degrees, exact (0, ±1) at multiples of 90 degrees: the quadrant is
-// removed exactly before the radian conversion, so a quarter circle ends exactly on its axis.
-double cos_deg(double degrees);
-double sin_deg(double degrees);
 
 // The control structure of a circular arc of `sweep_deg` in (0, 360] starting at angle `start_deg`,
 // on the unit circle of a frame (the NURBS-book construction A7.1, generalising the rational quarter

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -149,6 +150,7 @@ struct GridJob {
     int column_min = 0, column_max = 0;  // the control net columns the v parameters touch
     std::vector<Vec4> q, dq;             // the row's isocurve coefficients and their u derivatives
     std::vector<double> scratch;         // normals: the row's partials (6 x v_count)
+    std::size_t row_begin = 0, row_end = 0;  // the rows of the current block; result holds only them
     SurfaceGrid* result = nullptr;
 };
 
@@ -322,9 +324,9 @@ template <int Degree, bool Rational>
     const double* dnvb = job.v_basis.derivatives.data();
     Vec4* q = job.q.data();
     Vec4* dq = job.output == GridOutput::points ? nullptr : job.dq.data();
-    for (std::size_t i = 0; i < job.u_basis.count; ++i) {
+    for (std::size_t i = job.row_begin; i < job.row_end; ++i) {
         contract_row(job, i, q, dq);
-        const std::size_t offset = i * nv;
+        const std::size_t offset = (i - job.row_begin) * nv;
         if (job.output == GridOutput::points) {
             for (const Run& run : job.runs)
                 points_run<Degree, Rational>(run, degree, nvb, nv, q, g.points.x.data() + offset,
@@ -510,37 +512,58 @@ std::vector<double> uniform_parameters(const Interval& domain, std::size_t count
 
 void evaluate_grid(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
                    GridOutput output, SurfaceGrid& result) {
+    evaluate_grid_blocks(surface, us, vs, output, std::max<std::size_t>(us.size(), 1), result,
+                         [](std::size_t, const SurfaceGrid&) {});
+}
+
+void evaluate_grid_blocks(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
+                          GridOutput output, std::size_t block_rows, SurfaceGrid& block,
+                          const std::function<void(std::size_t first_row, const SurfaceGrid& block)>& consume) {
     validate_parameters(us, surface.domain_u(), "us");
     validate_parameters(vs, surface.domain_v(), "vs");
     require(vs.empty() || us.size() <= std::numeric_limits<std::size_t>::max() / vs.size() / 8, "us", [&] {
         return "the grid of " + std::to_string(us.size()) + " x " + std::to_string(vs.size()) + " points is too large";
     });
+    require(block_rows > 0, "block_rows", "must be positive");
 
-    const std::size_t size = us.size() * vs.size();
-    result.u_count = us.size();
-    result.v_count = vs.size();
-    result.output = output;
-    resize(result.points, size);
+    // Sizes `block` for `rows` rows of the grid.
     const bool second = output == GridOutput::second_partials;
-    if (output == GridOutput::partials || second) resize(result.du, size), resize(result.dv, size);
-    else clear(result.du), clear(result.dv);
-    if (second) resize(result.duu, size), resize(result.duv, size), resize(result.dvv, size);
-    else clear(result.duu), clear(result.duv), clear(result.dvv);
-    if (output == GridOutput::normals) resize(result.normals, size);
-    else clear(result.normals);
-    if (size == 0) return;
+    auto size_block = [&](std::size_t rows) {
+        const std::size_t size = rows * vs.size();
+        block.u_count = rows;
+        block.v_count = vs.size();
+        block.output = output;
+        resize(block.points, size);
+        if (output == GridOutput::partials || second) resize(block.du, size), resize(block.dv, size);
+        else clear(block.du), clear(block.dv);
+        if (second) resize(block.duu, size), resize(block.duv, size), resize(block.dvv, size);
+        else clear(block.duu), clear(block.duv), clear(block.dvv);
+        if (output == GridOutput::normals) resize(block.normals, size);
+        else clear(block.normals);
+    };
+    if (us.empty() || vs.empty()) {
+        size_block(us.size());
+        consume(0, block);
+        return;
+    }
     if (second) {
-        evaluate_second_partials(surface, us, vs, result);
+        for (std::size_t first = 0; first < us.size(); first += block_rows) {
+            const std::size_t rows = std::min(block_rows, us.size() - first);
+            size_block(rows);
+            evaluate_second_partials(surface, us.subspan(first, rows), vs, block);
+            consume(first, block);
+        }
         return;
     }
 
+    // The bases of both directions and the v spans once for the whole grid; then block by block.
     GridJob job;
     job.surface = &surface;
     job.us = us;
     job.vs = vs;
     job.output = output;
     job.rational = surface.is_rational();
-    job.result = &result;
+    job.result = &block;
     const bool derivatives = output != GridOutput::points;
     compute_basis(surface.degree_u(), surface.knots_u(), surface.rows(), us, derivatives, job.u_basis);
     compute_basis(surface.degree_v(), surface.knots_v(), surface.columns(), vs, derivatives, job.v_basis);
@@ -551,23 +574,28 @@ void evaluate_grid(const NurbsSurface& surface, std::span<const double> us, std:
     if (derivatives) job.dq.resize(to_size(surface.columns()));
     if (output == GridOutput::normals) job.scratch.resize(6 * vs.size());
 
+    for (std::size_t first = 0; first < us.size(); first += block_rows) {
+        job.row_begin = first;
+        job.row_end = first + std::min(block_rows, us.size() - first);
+        size_block(job.row_end - first);
 #if RATBEZ_GRID_HAVE_AVX2
-    if (use_avx2()) evaluate_rows_avx2(job);
-    else evaluate_rows_portable(job);
+        if (use_avx2()) evaluate_rows_avx2(job);
+        else evaluate_rows_portable(job);
 #else
-    evaluate_rows_portable(job);
+        evaluate_rows_portable(job);
 #endif
-
-    if (output == GridOutput::normals) {
-        // The points the vectorised pass marked degenerate (NaN), by the point-wise limit rule.
-        GridVectors& n = result.normals;
-        for (std::size_t i = 0; i < us.size(); ++i)
-            for (std::size_t j = 0; j < vs.size(); ++j) {
-                const std::size_t k = i * vs.size() + j;
-                if (!std::isnan(n.x[k])) continue;
-                const Vec3 limit = surface.normal(us[i], vs[j]);
-                n.x[k] = limit.x, n.y[k] = limit.y, n.z[k] = limit.z;
-            }
+        if (output == GridOutput::normals) {
+            // The points the vectorised pass marked degenerate (NaN), by the point-wise limit rule.
+            GridVectors& n = block.normals;
+            for (std::size_t i = first; i < job.row_end; ++i)
+                for (std::size_t j = 0; j < vs.size(); ++j) {
+                    const std::size_t k = (i - first) * vs.size() + j;
+                    if (!std::isnan(n.x[k])) continue;
+                    const Vec3 limit = surface.normal(us[i], vs[j]);
+                    n.x[k] = limit.x, n.y[k] = limit.y, n.z[k] = limit.z;
+                }
+        }
+        consume(first, block);
     }
 }
 

@@ -46,5 +46,8 @@ void bind_core(py::module_& module);
 void bind_solids(py::module_& module);
 void bind_io(py::module_& module);
 void bind_modelling(py::module_& module);
+void bind_evaluation(py::module_& module);
+void bind_transforms(py::module_& module);
+void bind_values(py::module_& module);
 
 }  // namespace ratbez::python

@@ -56,4 +56,7 @@ PYBIND11_MODULE(ratbez, m) {
     ratbez::python::bind_solids(m);
     ratbez::python::bind_io(m);
     ratbez::python::bind_modelling(m);  // adds methods to the classes above
+    ratbez::python::bind_evaluation(m);
+    ratbez::python::bind_transforms(m);
+    ratbez::python::bind_values(m);
 }

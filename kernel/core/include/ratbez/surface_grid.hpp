@@ -17,6 +17,7 @@
 // tests can check both.
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -71,6 +72,14 @@ SurfaceGrid evaluate_grid(const NurbsSurface& surface, std::span<const double> u
 // for the output.
 void evaluate_grid(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
                    GridOutput output, SurfaceGrid& result);
+// The same grid a block of rows at a time, for a caller that wants it in another layout: `block` holds rows
+// [first_row, first_row + block.u_count) of the grid (block_rows of them, fewer in the last block) when
+// `consume` is called, and is overwritten by the next block. The bases are computed once for the whole
+// grid, so blocks small enough to stay in cache (a few thousand points) cost nothing extra. An empty grid
+// gives one empty block.
+void evaluate_grid_blocks(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
+                          GridOutput output, std::size_t block_rows, SurfaceGrid& block,
+                          const std::function<void(std::size_t first_row, const SurfaceGrid& block)>& consume);
 // A uniform u_count x v_count grid over the whole domain, ends included (uniform_parameters); counts >= 2.
 SurfaceGrid evaluate_grid(const NurbsSurface& surface, std::size_t u_count, std::size_t v_count,
                           GridOutput output = GridOutput::points);
