@@ -80,13 +80,17 @@ class Table:
         print(f"\n{self.verdicts.count('PASS')} targets met, {self.verdicts.count('FAIL')} missed")
 
 
-def evaluation_rows(table, rows):
-    """Points per second, ours against GeomAdaptor_Surface (the target) and Geom_BSplineSurface."""
+def evaluation_runs(rows, program):
+    """(base "eval/<shape>/<D>", grid size n, row) for every "eval/<shape>/<D>/<program>/<n>"."""
     for name, b in rows.items():
         parts = name.split("/")
-        if len(parts) < 5 or parts[3] != "ours":
-            continue
-        base, n = "/".join(parts[:3]), parts[4]
+        if len(parts) >= 5 and parts[3] == program:
+            yield "/".join(parts[:3]), parts[4], b
+
+
+def evaluation_rows(table, rows):
+    """Points per second, ours against GeomAdaptor_Surface (the target) and Geom_BSplineSurface."""
+    for base, n, b in evaluation_runs(rows, "ours"):
         ours = b["points_per_second"]
         for other, target in (("GeomAdaptor_Surface", 3.0), ("Geom_BSplineSurface", None)):
             o = rows.get(f"{base}/{other}/{n}")
@@ -172,14 +176,10 @@ def python_rows(table, rows):
     """Bulk evaluation through Python (bench/python_evaluation.py) against OCCT's GeomAdaptor_Surface and the C++
     grid evaluator, all measured in that script's run. D0 is held to >= 100M points/s and >= 4x GeomAdaptor,
     D1 (the point and both partials: three calls) to >= 40M points/s."""
-    for name, b in rows.items():
-        parts = name.split("/")
-        if len(parts) < 5 or parts[3] != "python":
-            continue
-        base, n = "/".join(parts[:3]), parts[4]
+    for base, n, b in evaluation_runs(rows, "python"):
         rate = b["points_per_second"]
         adaptor, cpp = rows.get(f"{base}/GeomAdaptor_Surface/{n}"), rows.get(f"{base}/ours/{n}")
-        d0 = parts[2] == "D0"
+        d0 = base.endswith("/D0")
         ratio = rate / adaptor["points_per_second"] if adaptor else None
         ok = rate >= (100e6 if d0 else 40e6) and (not d0 or (ratio is not None and ratio >= 4))
         status = "PASS" if ok else "FAIL"

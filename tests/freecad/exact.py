@@ -58,6 +58,13 @@ def solid(shape):
         return ratbez.sphere(shape["radius"], center)
     if kind == "torus":
         return ratbez.torus(shape["major_radius"], shape["minor_radius"], center, axis)
+    if kind in ("ruled", "loft"):
+        profiles = [shape["profile_a"], shape["profile_b"]] if kind == "ruled" else shape["profiles"]
+        return ratbez.loft([[_piece(p) for p in profile] for profile in profiles],
+                           1 if kind == "ruled" else shape.get("degree", 3), kind == "ruled" or shape.get("ruled", False))
+    if kind == "sweep":
+        path = [_piece(p) for p in shape["path"]]
+        return ratbez.sweep([_piece(p) for p in shape["profile"]], path, shape.get("tolerance", 1e-6))
     pieces = [_piece(p) for p in shape["profile"]]
     if kind == "revolve":
         return ratbez.revolve(pieces, shape.get("axis_point", (0, 0, 0)), shape.get("axis_dir", (0, 0, 1)),
@@ -91,8 +98,11 @@ def _unit(v):
 
 
 def centroid(shape, curves=None):
-    """The exact centre of mass of a shape spec (numpy array)."""
+    """The exact centre of mass of a shape spec (numpy array), or None for lofts and sweeps, which have no
+    closed form here (their volume and area are still the kernel's certified values)."""
     kind = shape["type"]
+    if kind in ("ruled", "loft", "sweep"):
+        return None
     center, axis = _vec(shape.get("center", (0, 0, 0))), _unit(shape.get("axis", (0, 0, 1)))
     if kind == "cylinder":
         return center + axis * shape["height"] / 2

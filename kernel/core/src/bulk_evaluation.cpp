@@ -7,28 +7,23 @@
 #include <limits>
 #include <numeric>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/surface_grid.hpp"
 
 namespace ratbez {
 namespace {
 
-std::string number(double value) {
-    std::ostringstream out;
-    out.precision(17);
-    out << value;
-    return out.str();
-}
+using detail::exact_number;
 
 void require_parameter(double t, const Interval& domain, std::string_view argument, std::size_t index) {
     if (!std::isfinite(t)) fail(argument, "element " + std::to_string(index) + " is not a finite number");
     if (t < domain.min || t > domain.max)
-        fail(argument, "element " + std::to_string(index) + " (" + number(t) + ") is outside the domain [" +
-                           number(domain.min) + ", " + number(domain.max) + "]");
+        fail(argument, "element " + std::to_string(index) + " (" + exact_number(t) + ") is outside the domain [" +
+                           exact_number(domain.min) + ", " + exact_number(domain.max) + "]");
 }
 
 void require_parameters(std::span<const double> ts, const Interval& domain, std::string_view argument) {
@@ -176,9 +171,9 @@ void evaluate_surface_at(const NurbsSurface& surface, std::span<const double> uv
             const double t = uv[2 * k + static_cast<std::size_t>(c)];
             const Interval& domain = c == 0 ? domain_u : domain_v;
             if (!std::isfinite(t) || t < domain.min || t > domain.max)
-                fail("uv", "row " + std::to_string(k) + ": " + (c == 0 ? "u" : "v") + " = " + number(t) +
-                               (std::isfinite(t) ? " is outside the domain [" + number(domain.min) + ", " +
-                                                       number(domain.max) + "]"
+                fail("uv", "row " + std::to_string(k) + ": " + (c == 0 ? "u" : "v") + " = " + exact_number(t) +
+                               (std::isfinite(t) ? " is outside the domain [" + exact_number(domain.min) + ", " +
+                                                       exact_number(domain.max) + "]"
                                                  : " is not a finite number"));
         }
     }

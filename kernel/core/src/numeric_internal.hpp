@@ -3,6 +3,7 @@
 // compensated summation, number formatting for error messages. Not installed, not part of the public API.
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <span>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace ratbez::detail {
@@ -57,6 +59,14 @@ inline std::string number(double value) {
     out.precision(12);
     out << value;
     return out.str();
+}
+
+// A double in an error message about a parameter, where the last digit matters (1.0000000000000002 is
+// outside [0, 1]): the shortest text that reads back as the same double.
+inline std::string exact_number(double value) {
+    char buffer[32];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return error == std::errc{} ? std::string(buffer, end) : number(value);
 }
 
 // Work space of `size` T on the stack when size <= N, on the heap beyond: evaluation (basis functions,

@@ -20,9 +20,9 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <sstream>
 #include <string>
 
+#include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
 
 // "This loop's iterations are independent" for GCC (ivdep). Clang does not know ivdep, and its nearest
@@ -36,12 +36,7 @@
 namespace ratbez {
 namespace {
 
-std::string number(double value) {
-    std::ostringstream out;
-    out.precision(17);
-    out << value;
-    return out.str();
-}
+using detail::exact_number;
 
 std::size_t to_size(int value) { return static_cast<std::size_t>(value); }
 
@@ -51,12 +46,12 @@ void validate_parameters(std::span<const double> ts, const Interval& domain, con
         if (!std::isfinite(t))
             throw Error(argument, "element " + std::to_string(k) + " is not a finite number");
         if (t < domain.min || t > domain.max)
-            throw Error(argument, "element " + std::to_string(k) + " (" + number(t) +
-                        ") is outside the domain [" + number(domain.min) + ", " + number(domain.max) + "]");
+            throw Error(argument, "element " + std::to_string(k) + " (" + exact_number(t) +
+                        ") is outside the domain [" + exact_number(domain.min) + ", " + exact_number(domain.max) + "]");
         if (k > 0 && t < ts[k - 1])
             throw Error(argument, "must be non-decreasing, but element " + std::to_string(k) +
-                        " (" + number(t) + ") is less than element " + std::to_string(k - 1) + " (" +
-                        number(ts[k - 1]) + ")");
+                        " (" + exact_number(t) + ") is less than element " + std::to_string(k - 1) + " (" +
+                        exact_number(ts[k - 1]) + ")");
     }
 }
 
@@ -497,7 +492,7 @@ std::vector<double> uniform_parameters(const Interval& domain, std::size_t count
     require(count <= max_count, "count",
             [&] { return "at most " + std::to_string(max_count) + " parameters, got " + std::to_string(count); });
     require(std::isfinite(domain.min) && std::isfinite(domain.max) && domain.min < domain.max, "domain", [&] {
-        return "must be a finite non-empty interval, got [" + number(domain.min) + ", " + number(domain.max) + "]";
+        return "must be a finite non-empty interval, got [" + exact_number(domain.min) + ", " + exact_number(domain.max) + "]";
     });
     std::vector<double> ts(count);
     const double width = domain.max - domain.min;

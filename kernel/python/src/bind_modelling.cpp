@@ -37,7 +37,7 @@ py::tuple z_axis() { return py::make_tuple(0.0, 0.0, 1.0); }
 NurbsSurface to_surface(py::handle value, const std::string& argument) {
     if (py::isinstance<NurbsSurface>(value)) return value.cast<NurbsSurface>();
     if (py::isinstance<BezierSurface>(value)) return NurbsSurface::from_bezier(value.cast<const BezierSurface&>());
-    throw Error(argument + ": expected a BezierSurface or a NurbsSurface");
+    throw Error(argument, "expected a BezierSurface or a NurbsSurface");
 }
 
 bool is_surface(py::handle value) { return py::isinstance<NurbsSurface>(value) || py::isinstance<BezierSurface>(value); }
@@ -118,6 +118,42 @@ constexpr const char* kCurvaturesDoc =
     "Principal curvatures at (u, v): (k1, k2, dir1, dir2) with k1 >= k2 in 1 / model units, signed against "
     "normal(u, v) (a sphere with outward normal has -1/r), dir1, dir2 unit tangent directions. At poles the "
     "limit.";
+
+// The NURBS form the queries run on: the curve or surface itself, or a Bezier piece as a NURBS.
+const NurbsCurve& as_nurbs(const NurbsCurve& c) { return c; }
+NurbsCurve as_nurbs(const BezierCurve& c) { return NurbsCurve::from_bezier(c); }
+const NurbsSurface& as_nurbs(const NurbsSurface& s) { return s; }
+NurbsSurface as_nurbs(const BezierSurface& s) { return NurbsSurface::from_bezier(s); }
+
+template <class Curve>
+void add_curve_queries(py::module_& m, const char* name) {
+    auto cls = py::reinterpret_borrow<py::class_<Curve>>(m.attr(name));
+    cls.def(
+        "closest_point",
+        [](const Curve& c, const py::object& p) { return curve_foot(closest_point(as_nurbs(c), to_vec3(p, "p"))); },
+        py::arg("p"), kClosestCurveDoc);
+    cls.def(
+        "closest_points", [](const Curve& c, const py::object& points) { return many_feet<CurveProjector>(as_nurbs(c), points); },
+        py::arg("points"), kClosestManyDoc);
+    cls.def("curvature", [](const Curve& c, double u) { return curvature(as_nurbs(c), u); }, py::arg("u"), kCurvatureDoc);
+}
+
+template <class Surface>
+void add_surface_queries(py::module_& m, const char* name) {
+    auto cls = py::reinterpret_borrow<py::class_<Surface>>(m.attr(name));
+    cls.def(
+        "closest_point",
+        [](const Surface& s, const py::object& p) { return surface_foot(closest_point(as_nurbs(s), to_vec3(p, "p"))); },
+        py::arg("p"), kClosestSurfaceDoc);
+    cls.def(
+        "closest_points",
+        [](const Surface& s, const py::object& points) { return many_feet<SurfaceProjector>(as_nurbs(s), points); },
+        py::arg("points"), kClosestManyDoc);
+    cls.def(
+        "curvatures",
+        [](const Surface& s, double u, double v) { return curvatures_tuple(principal_curvatures(as_nurbs(s), u, v)); },
+        py::arg("u"), py::arg("v"), kCurvaturesDoc);
+}
 
 }  // namespace
 
@@ -244,58 +280,11 @@ void bind_modelling(py::module_& m) {
         },
         py::arg("curve"), "(p0, t0, p1, t1) of a polynomial Bezier curve of degree <= 3 (the inverse of hermite_to_bezier).");
 
-    // ---- methods on the curve and surface classes
-    auto nurbs_curve = py::reinterpret_borrow<py::class_<NurbsCurve>>(m.attr("NurbsCurve"));
-    nurbs_curve.def(
-        "closest_point",
-        [](const NurbsCurve& c, const py::object& p) { return curve_foot(closest_point(c, to_vec3(p, "p"))); },
-        py::arg("p"), kClosestCurveDoc);
-    nurbs_curve.def("closest_points", &many_feet<CurveProjector, NurbsCurve>, py::arg("points"), kClosestManyDoc);
-    nurbs_curve.def("curvature", [](const NurbsCurve& c, double u) { return curvature(c, u); }, py::arg("u"), kCurvatureDoc);
-    auto bezier_curve = py::reinterpret_borrow<py::class_<BezierCurve>>(m.attr("BezierCurve"));
-    bezier_curve.def(
-        "closest_point",
-        [](const BezierCurve& c, const py::object& p) {
-            return curve_foot(closest_point(NurbsCurve::from_bezier(c), to_vec3(p, "p")));
-        },
-        py::arg("p"), kClosestCurveDoc);
-    bezier_curve.def(
-        "closest_points",
-        [](const BezierCurve& c, const py::object& points) {
-            return many_feet<CurveProjector>(NurbsCurve::from_bezier(c), points);
-        },
-        py::arg("points"), kClosestManyDoc);
-    bezier_curve.def(
-        "curvature", [](const BezierCurve& c, double u) { return curvature(NurbsCurve::from_bezier(c), u); }, py::arg("u"),
-        kCurvatureDoc);
-    auto nurbs_surface = py::reinterpret_borrow<py::class_<NurbsSurface>>(m.attr("NurbsSurface"));
-    nurbs_surface.def(
-        "closest_point",
-        [](const NurbsSurface& s, const py::object& p) { return surface_foot(closest_point(s, to_vec3(p, "p"))); },
-        py::arg("p"), kClosestSurfaceDoc);
-    nurbs_surface.def("closest_points", &many_feet<SurfaceProjector, NurbsSurface>, py::arg("points"), kClosestManyDoc);
-    nurbs_surface.def(
-        "curvatures", [](const NurbsSurface& s, double u, double v) { return curvatures_tuple(principal_curvatures(s, u, v)); },
-        py::arg("u"), py::arg("v"), kCurvaturesDoc);
-    auto bezier_surface = py::reinterpret_borrow<py::class_<BezierSurface>>(m.attr("BezierSurface"));
-    bezier_surface.def(
-        "closest_point",
-        [](const BezierSurface& s, const py::object& p) {
-            return surface_foot(closest_point(NurbsSurface::from_bezier(s), to_vec3(p, "p")));
-        },
-        py::arg("p"), kClosestSurfaceDoc);
-    bezier_surface.def(
-        "closest_points",
-        [](const BezierSurface& s, const py::object& points) {
-            return many_feet<SurfaceProjector>(NurbsSurface::from_bezier(s), points);
-        },
-        py::arg("points"), kClosestManyDoc);
-    bezier_surface.def(
-        "curvatures",
-        [](const BezierSurface& s, double u, double v) {
-            return curvatures_tuple(principal_curvatures(NurbsSurface::from_bezier(s), u, v));
-        },
-        py::arg("u"), py::arg("v"), kCurvaturesDoc);
+    // ---- methods on the curve and surface classes (a Bezier piece answers as its NURBS form)
+    add_curve_queries<NurbsCurve>(m, "NurbsCurve");
+    add_curve_queries<BezierCurve>(m, "BezierCurve");
+    add_surface_queries<NurbsSurface>(m, "NurbsSurface");
+    add_surface_queries<BezierSurface>(m, "BezierSurface");
 }
 
 }  // namespace ratbez::python
