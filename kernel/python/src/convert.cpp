@@ -159,7 +159,7 @@ std::vector<NurbsCurve> to_curves(py::handle value, const std::string& argument)
     std::size_t index = 0;
     for (py::handle item : value) {
         auto curve = curve_of(item);
-        if (!curve) throw Error(element(argument, index) + ": expected a BezierCurve or a NurbsCurve");
+        if (!curve) throw Error(element(argument, index), "expected a BezierCurve or a NurbsCurve");
         curves.push_back(std::move(*curve));
         ++index;
     }
