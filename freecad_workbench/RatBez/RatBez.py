@@ -26,8 +26,9 @@ from ratbez_wb import conversion, features, kernel
 from ratbez_wb import text as text_tools
 
 __all__ = ["make_bezier_curve", "make_bezier_surface", "make_cylinder", "make_cone", "make_sphere",
-           "make_torus", "make_revolve", "make_extrude", "make_ruled", "make_loft", "make_sweep", "is_solid", "solid_of", "export_openscad",
-           "check_occt", "format_check_report", "check_passed", "safe_label", "export"]
+           "make_torus", "make_revolve", "make_extrude", "make_ruled", "make_loft", "make_sweep", "is_solid",
+           "solid_of", "export_openscad", "check_occt", "format_check_report", "check_passed", "safe_label",
+           "export"]
 
 _DEFAULT_NAMES = {
     "bezier_curve": "BezierCurve", "bezier_surface": "BezierSurface", "cylinder": "Cylinder",

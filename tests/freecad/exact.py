@@ -2,9 +2,10 @@
 the ratbez module, and their centres of mass from closed forms or from line integrals over the profile.
 
 Volumes and areas are the kernel's own (certified cubature). Centres of mass: closed forms for the
-primitives (none for ruled solids, lofts and sweeps); for revolutions and extrusions, Green's theorem turns the region integrals of the profile
-into integrals along its curves, taken by Gauss–Legendre on every knot span of every piece (cut in 16, 24
-points each: rational pieces of moderate weights are then integrated to rounding).
+primitives (none for ruled solids, lofts and sweeps); for revolutions and extrusions, Green's theorem turns
+the region integrals of the profile into integrals along its curves, taken by Gauss–Legendre on every knot
+span of every piece (cut in 16, 24 points each: rational pieces of moderate weights are then integrated to
+rounding).
 """
 
 import json

@@ -128,7 +128,7 @@ class _ProfileCommand(_CreateCommand):
     """A command built on selected profiles (and a path): enabled only for a selection it can use, which it
     checks before it creates anything, saying in one line why it refuses it."""
 
-    hint = "select a sketch, a wire, edges or one face first"
+    hint = QT_TRANSLATE_NOOP("RatBez", "select a sketch, a wire, edges or one face first")
 
     def IsActive(self):
         return App.ActiveDocument is not None and self.roles() is not None
@@ -204,55 +204,54 @@ class ExtrudeCommand(_ProfileCommand):
         features.require_extrudable(profile)
 
 
-class RuledCommand(_ProfileCommand):
+class _CappedCommand(_ProfileCommand):
+    """Ruled, Loft and Sweep: solids capped by their closed planar profiles, which have no holes."""
+
+    def check(self, link, profile, prop):
+        features.require_one_loop(profile, prop)
+
+
+class RuledCommand(_CappedCommand):
     kind = "ruled"
     menu = "Ruled solid"
     tooltip = ("Join the two selected closed planar profiles (sketches, wires, edges or faces without holes) by "
                "straight rulings into an exact solid capped by them; the profiles can be changed in the task "
                "panel")
-    hint = "select two closed planar profiles first"
+    hint = QT_TRANSLATE_NOOP("RatBez", "select two closed planar profiles first")
 
     def assign(self, links):
         if len(links) != 2 or not all(_closed(link) for link in links):
             return None
         return [("Profile1", links[0]), ("Profile2", links[1])]
 
-    def check(self, link, profile, prop):
-        features.require_one_loop(profile, prop)
 
-
-class LoftCommand(_ProfileCommand):
+class LoftCommand(_CappedCommand):
     kind = "loft"
     menu = "Loft"
     tooltip = ("Loft an exact solid through the selected closed planar profiles, in the order selected, passing "
                "through each exactly and capped by the first and last; the sections, their order, the degree "
                "across them and ruled lofting are set in the task panel")
-    hint = "select at least two closed planar profiles, in order, first"
+    hint = QT_TRANSLATE_NOOP("RatBez", "select at least two closed planar profiles, in order, first")
 
     def assign(self, links):
         if len(links) < 2 or not all(_closed(link) for link in links):
             return None
         return [("Sections", link) for link in links]
 
-    def check(self, link, profile, prop):
-        features.require_one_loop(profile, prop)
 
-
-class SweepCommand(_ProfileCommand):
+class SweepCommand(_CappedCommand):
     kind = "sweep"
     menu = "Sweep"
     tooltip = ("Sweep the selected closed planar profile along a path (selected second, or picked in the task "
                "panel) into a solid: exact along straight lines and circular arcs, within a tolerance "
                "elsewhere; the profile keeps its attitude to the path (rotation-minimising frame)")
-    hint = "select a closed planar profile first (and then the path, or pick it in the task panel)"
+    hint = QT_TRANSLATE_NOOP("RatBez",
+                             "select a closed planar profile first (and then the path, or pick it in the task panel)")
 
     def assign(self, links):
         if not 1 <= len(links) <= 2 or not _closed(links[0]):
             return None
         return [("Profile", links[0])] + [("Path", link) for link in links[1:]]
-
-    def check(self, link, profile, prop):
-        features.require_one_loop(profile, prop)
 
 
 class ExportOpenSCADCommand:
