@@ -5,6 +5,8 @@ Scripting interface (works in freecadcmd, without the GUI):
     import RatBez
     cyl = RatBez.make_cylinder(Radius=2, Height=5)
     rev = RatBez.make_revolve(Profile=sketch, Angle=270)
+    loft = RatBez.make_loft(Sections=[bottom, middle, top])
+    swept = RatBez.make_sweep(Profile=circle, Path=(sketch, ["Edge1", "Edge2"]))
     RatBez.export_openscad(cyl, "/tmp/cyl.scad", tolerance=0.01)
     print(RatBez.check_occt(cyl))
 
@@ -24,30 +26,34 @@ from ratbez_wb import conversion, features, kernel
 from ratbez_wb import text as text_tools
 
 __all__ = ["make_bezier_curve", "make_bezier_surface", "make_cylinder", "make_cone", "make_sphere",
-           "make_torus", "make_revolve", "make_extrude", "is_solid", "solid_of", "export_openscad",
-           "check_occt", "format_check_report", "check_passed", "safe_label", "export"]
+           "make_torus", "make_revolve", "make_extrude", "make_ruled", "make_loft", "make_sweep", "is_solid",
+           "solid_of", "export_openscad", "check_occt", "format_check_report", "check_passed", "safe_label",
+           "export"]
 
 _DEFAULT_NAMES = {
     "bezier_curve": "BezierCurve", "bezier_surface": "BezierSurface", "cylinder": "Cylinder",
     "cone": "Cone", "sphere": "Sphere", "torus": "Torus", "revolve": "Revolve", "extrude": "Extrude",
+    "ruled": "Ruled", "loft": "Loft", "sweep": "Sweep",
 }
+# Properties that link a profile (or a path): each takes what _profile_link accepts.
+_LINK_PROPERTIES = ("Profile", "Profile1", "Profile2", "Path")
 # Properties every Part::FeaturePython has that make_* also accepts.
 _COMMON_PROPERTIES = ("Label", "Placement")
 
 
-def _profile_link(doc, value):
+def _profile_link(doc, value, prop="Profile"):
     """A PropertyLinkSub value from what a script naturally passes as a profile: a document object
     (a sketch, a wire feature), (object, "Edge1") or (object, ["Edge1", ...]), or a bare Part shape
     (an edge, wire or face, which is added to the document as a Part::Feature)."""
     if value is None:
         return None
     if isinstance(value, Part.Shape):
-        holder = doc.addObject("Part::Feature", "Profile")
+        holder = doc.addObject("Part::Feature", prop)
         holder.Shape = value
         return (holder, [])
     if isinstance(value, (tuple, list)):
         if len(value) != 2:
-            raise TypeError("Profile: expected an object or (object, sub-element names), got {!r}".format(value))
+            raise TypeError("{}: expected an object or (object, sub-element names), got {!r}".format(prop, value))
         obj, subs = value
         return (obj, [subs] if isinstance(subs, str) else list(subs))
     return (value, [])
@@ -64,8 +70,13 @@ def _make(kind, doc, properties):
     if doc is None:
         doc = App.ActiveDocument or App.newDocument()
     properties = dict(properties)
-    if "Profile" in properties:
-        properties["Profile"] = _profile_link(doc, properties["Profile"])
+    for prop in _LINK_PROPERTIES:
+        if prop in properties:
+            properties[prop] = _profile_link(doc, properties[prop], prop)
+    if "Sections" in properties:
+        # PropertyLinkSubList keeps the order only given sub-element lists: (obj, [""]) for a whole object.
+        properties["Sections"] = [(link[0], link[1] or [""]) for link in
+                                  (_profile_link(doc, value, "Sections") for value in properties["Sections"])]
     _complete(kind, properties)
     obj = doc.addObject("Part::FeaturePython", _DEFAULT_NAMES[kind])
     cls(obj)
@@ -76,11 +87,18 @@ def _make(kind, doc, properties):
     ordered = sorted(properties.items(), key=lambda item: item[0] not in ("DegreeU", "DegreeV"))
     for name, value in ordered:
         setattr(obj, name, value)
-    profile = properties.get("Profile")
-    if App.GuiUp and profile is not None and conversion.is_whole_profile_object(profile):
-        profile[0].ViewObject.Visibility = False
+    if App.GuiUp:
+        for link in _links_of(properties):
+            if conversion.is_whole_profile_object(link):
+                link[0].ViewObject.Visibility = False
     doc.recompute()
     return obj
+
+
+def _links_of(properties):
+    """The profile, section and path links among make_* properties."""
+    links = [properties[prop] for prop in _LINK_PROPERTIES if properties.get(prop) is not None]
+    return links + [(obj, [s for s in subs if s]) for obj, subs in properties.get("Sections") or []]
 
 
 def _complete(kind, properties):
@@ -145,10 +163,32 @@ def make_extrude(doc=None, **properties):
     return _make("extrude", doc, properties)
 
 
+def make_ruled(doc=None, **properties):
+    """A ruled solid: straight rulings between two closed planar profiles (without holes), capped by them.
+    Properties: Profile1, Profile2 (each as make_revolve's Profile), the second entirely in front of the
+    first one's plane."""
+    return _make("ruled", doc, properties)
+
+
+def make_loft(doc=None, **properties):
+    """A solid lofted through closed planar profiles, capped by the first and last. Properties: Sections (a
+    list, in order, of what make_revolve takes as Profile), Degree (across the sections, default 3), Ruled
+    (straight rulings between consecutive sections)."""
+    return _make("loft", doc, properties)
+
+
+def make_sweep(doc=None, **properties):
+    """A closed planar profile swept along a path with a rotation-minimising frame. Properties: Profile (as
+    make_revolve's), Path (a sketch, wire, edges, (object, subnames) or a Part shape: one tangent-continuous
+    chain), Tolerance (mm, where the sweep is not rational; default 1e-6)."""
+    return _make("sweep", doc, properties)
+
+
 # ---------------------------------------------------------------------------------------------------
 
 def is_solid(obj):
-    """True when obj is a RatBez solid feature (cylinder, cone, sphere, torus, revolve, extrude)."""
+    """True when obj is a RatBez solid feature (cylinder, cone, sphere, torus, revolve, extrude, ruled, loft,
+    sweep)."""
     return features.is_solid_feature(obj)
 
 

@@ -2,9 +2,10 @@
 the ratbez module, and their centres of mass from closed forms or from line integrals over the profile.
 
 Volumes and areas are the kernel's own (certified cubature). Centres of mass: closed forms for the
-primitives; for revolutions and extrusions, Green's theorem turns the region integrals of the profile
-into integrals along its curves, taken by Gauss–Legendre on every knot span of every piece (cut in 16, 24
-points each: rational pieces of moderate weights are then integrated to rounding).
+primitives (none for ruled solids, lofts and sweeps); for revolutions and extrusions, Green's theorem turns
+the region integrals of the profile into integrals along its curves, taken by Gauss–Legendre on every knot
+span of every piece (cut in 16, 24 points each: rational pieces of moderate weights are then integrated to
+rounding).
 """
 
 import json
@@ -58,14 +59,15 @@ def solid(shape):
         return ratbez.sphere(shape["radius"], center)
     if kind == "torus":
         return ratbez.torus(shape["major_radius"], shape["minor_radius"], center, axis)
-    if kind in ("ruled", "loft"):
-        profiles = [shape["profile_a"], shape["profile_b"]] if kind == "ruled" else shape["profiles"]
-        return ratbez.loft([[_piece(p) for p in profile] for profile in profiles],
-                           1 if kind == "ruled" else shape.get("degree", 3), kind == "ruled" or shape.get("ruled", False))
-    if kind == "sweep":
-        path = [_piece(p) for p in shape["path"]]
-        return ratbez.sweep([_piece(p) for p in shape["profile"]], path, shape.get("tolerance", 1e-6))
+    if kind == "ruled":
+        return ratbez.loft([[_piece(p) for p in shape[side]] for side in ("profile_a", "profile_b")], degree=1,
+                           ruled=True)
+    if kind == "loft":
+        return ratbez.loft([[_piece(p) for p in profile] for profile in shape["profiles"]],
+                           degree=shape.get("degree", 3), ruled=shape.get("ruled", False))
     pieces = [_piece(p) for p in shape["profile"]]
+    if kind == "sweep":
+        return ratbez.sweep(pieces, [_piece(p) for p in shape["path"]], shape.get("tolerance", 1e-6))
     if kind == "revolve":
         return ratbez.revolve(pieces, shape.get("axis_point", (0, 0, 0)), shape.get("axis_dir", (0, 0, 1)),
                               shape.get("angle", 360.0))
@@ -98,8 +100,8 @@ def _unit(v):
 
 
 def centroid(shape, curves=None):
-    """The exact centre of mass of a shape spec (numpy array), or None for lofts and sweeps, which have no
-    closed form here (their volume and area are still the kernel's certified values)."""
+    """The exact centre of mass of a shape spec (numpy array); None for ruled solids, lofts and sweeps (no
+    closed form: their volumes and areas are still the kernel's certified values)."""
     kind = shape["type"]
     if kind in ("ruled", "loft", "sweep"):
         return None

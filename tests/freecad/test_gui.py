@@ -1,13 +1,14 @@
 """GUI test of the RatBez workbench, run as `xvfb-run ... freecad test_gui.py` by run_freecad.py: one
 FreeCAD session for every command.
 
-Each creating command runs through Gui.runCommand (with the selection it needs), opens its task panel,
-the test sets values in the panel's widgets, checks the live preview changed the object, saves a
-screenshot of the main window ($RATBEZ_TEST_OUT/gui/<command>.png, the 3D view painted in: Xvfb's grab
-of the window leaves the OpenGL view blank) and presses OK or Cancel through the panel's
-accept()/reject(). Also: double-click editing with Cancel and OK as one undo step each, the commands'
-IsActive rules, a refused selection leaving nothing behind, Export/Check, the preferences page, and no
-traceback in the report view. A watchdog ends FreeCAD if anything hangs (a modal dialog, a crash).
+Each creating command (Ruled, Loft and Sweep included) runs through Gui.runCommand (with the selection it
+needs), opens its task panel, the test sets values in the panel's widgets (relinks profiles, reorders
+sections, picks a path), checks the live preview changed the object, saves a screenshot of the main
+window ($RATBEZ_TEST_OUT/gui/<command>.png, the 3D view painted in: Xvfb's grab of the window leaves the
+OpenGL view blank) and presses OK or Cancel through the panel's accept()/reject(). Also: double-click
+editing with Cancel and OK as one undo step each, the commands' IsActive rules, a refused selection
+leaving nothing behind, Export/Check, the preferences page, and no traceback in the report view. A
+watchdog ends FreeCAD if anything hangs (a modal dialog, a crash).
 """
 
 import math
@@ -29,7 +30,8 @@ SHOTS = os.path.join(OUT, "gui")
 V = App.Vector
 PI = math.pi
 
-watchdog = threading.Timer(170, lambda: (say("RATBEZ_TEST_FAILED: watchdog fired"), os._exit(3)))
+# Under the runner's 280 s timeout: the session takes about 60 s alone, 140 s on a loaded 2-core machine.
+watchdog = threading.Timer(260, lambda: (say("RATBEZ_TEST_FAILED: watchdog fired"), os._exit(3)))
 watchdog.daemon = True
 watchdog.start()
 
@@ -41,7 +43,8 @@ _output_params.SetBool("checkShowReportViewOnError", False)
 
 suite = Suite()
 PRIMITIVES = ["RatBez_Cylinder", "RatBez_Cone", "RatBez_Sphere", "RatBez_Torus"]
-CREATE = ["RatBez_BezierCurve", "RatBez_BezierSurface"] + PRIMITIVES + ["RatBez_Revolve", "RatBez_Extrude"]
+CREATE = (["RatBez_BezierCurve", "RatBez_BezierSurface"] + PRIMITIVES +
+          ["RatBez_Revolve", "RatBez_Extrude", "RatBez_Ruled", "RatBez_Loft", "RatBez_Sweep"])
 ALL = CREATE + ["RatBez_ExportOpenSCAD", "RatBez_CheckOCCT"]
 doc = None
 
@@ -68,6 +71,14 @@ def select(obj, *subs):
         for sub in subs:
             Gui.Selection.addSelection(obj, sub)
     elif obj is not None:
+        Gui.Selection.addSelection(obj)
+    process_events()
+
+
+def select_all(*objects):
+    """Select whole objects, in this order."""
+    Gui.Selection.clearSelection()
+    for obj in objects:
         Gui.Selection.addSelection(obj)
     process_events()
 
@@ -315,6 +326,138 @@ def test_extrude_panel_holes_and_box_face():
     check(box.ViewObject.Visibility, "using one face of a box hid the box")
     accept(panel, "Extrude of a box face")
     close(face.ExactVolume, 1000, 1e-9, "box face extruded 10")
+
+
+def circles(radii):
+    """Part circles of the given radii at z = 0, 1, 2, ... (closed profiles of one edge each)."""
+    made = []
+    for k, radius in enumerate(radii):
+        circle = doc.addObject("Part::Circle", "C{}".format(k))
+        circle.Radius = radius
+        circle.Placement.Base = V(0, 0, k)
+        made.append(circle)
+    doc.recompute()
+    return made
+
+
+@suite.test
+def test_ruled_panel_profiles():
+    new_document("Ruled")
+    c0, c1, c2 = circles((1.0, 2.0, 1.0))
+    select(c0)
+    check(not is_active("RatBez_Ruled"), "Ruled active with one profile")
+    select_all(c0, c1)
+    check(is_active("RatBez_Ruled") and is_active("RatBez_Loft"), "Ruled / Loft inactive with two circles")
+    steps = len(doc.UndoNames)
+    obj, panel = run_command("RatBez_Ruled")
+    check(obj.Profile1[0] == c0 and obj.Profile2[0] == c1, "profiles in selection order")
+    check(not c0.ViewObject.Visibility and not c1.ViewObject.Visibility, "whole profiles hidden")
+    close(obj.ExactVolume, PI / 3 * (1 + 2 + 4), 1e-9, "frustum")
+    check(panel.rows[1].label.text() == "C1", "second profile shown: " + panel.rows[1].label.text())
+    select(c2)
+    panel.rows[1].use_selection()
+    check(obj.Profile2[0] == c2 and panel.rows[1].label.text() == "C2", "Use selection relinked Profile2")
+    close(obj.ExactVolume, PI * 2, 1e-9, "cylinder between C0 and C2")
+    select(c1)
+    panel.rows[1].use_selection()
+    close(obj.ExactVolume, PI / 3 * (1 + 2 + 4), 1e-9, "the frustum again")
+    Gui.Selection.clearSelection()
+    screenshot("RatBez_Ruled")
+    accept(panel, "Ruled")
+    check(len(doc.UndoNames) == steps + 1 and doc.UndoNames[0].startswith("Create"), "undo: {}".format(doc.UndoNames))
+
+
+@suite.test
+def test_loft_panel_order_degree_and_ruled():
+    new_document("Loft")
+    c0, c1, c2 = circles((1.0, 2.0, 1.0))
+    select_all(c0, c1, c2)
+    steps = len(doc.UndoNames)
+    obj, panel = run_command("RatBez_Loft")
+    check(panel.list.count() == 3 and panel.list.item(0).text() == "1. C0", "the sections listed in order")
+    close(obj.ExactVolume, 86 * PI / 15, 1e-9, "loft through circles 1, 2, 1")
+    panel.ruled.setChecked(True)
+    process_events()
+    close(obj.ExactVolume, 14 * PI / 3, 1e-9, "ruled: two frustums")
+    check(not panel.degree.isEnabled(), "Degree disabled while Ruled")
+    panel.ruled.setChecked(False)
+    # Out of order: the panel says which section is wrong, OK is refused; moving it back repairs the loft.
+    panel.list.setCurrentRow(0)
+    panel.move(1)
+    process_events()
+    check([link[0] for link in obj.Proxy.section_links(obj)] == [c1, c0, c2], "moved down")
+    check(panel.status.text().startswith("Sections: section") and panel.accept() is False,
+          "status: " + panel.status.text())
+    panel.move(-1)
+    process_events()
+    check(obj.isValid() and not panel.status.isVisible(), "moved back: " + panel.status.text())
+    panel.list.setCurrentRow(1)
+    panel.remove()
+    process_events()
+    close(obj.ExactVolume, 2 * PI, 1e-9, "C1 removed: a cylinder")
+    select(c1)
+    panel.add_selected()
+    check(panel.list.count() == 3 and panel.list.currentRow() == 2, "added at the end, selected")
+    panel.move(-1)
+    process_events()
+    close(obj.ExactVolume, 86 * PI / 15, 1e-9, "C1 back in the middle")
+    panel.degree.setValue(1)
+    process_events()
+    close(obj.ExactVolume, 14 * PI / 3, 1e-9, "degree 1 across")
+    panel.degree.setValue(3)
+    process_events()
+    close(obj.ExactVolume, 86 * PI / 15, 1e-9, "degree 3 again")
+    Gui.Selection.clearSelection()
+    screenshot("RatBez_Loft")
+    accept(panel, "Loft")
+    check(len(doc.UndoNames) == steps + 1, "one undo step: {}".format(doc.UndoNames))
+
+
+@suite.test
+def test_sweep_panel_path_picking_and_tolerance():
+    new_document("Sweep")
+    profile = doc.addObject("Part::Circle", "Profile")
+    profile.Radius = 0.5
+    profile.Placement = App.Placement(V(2, 0, 0), App.Rotation(V(1, 0, 0), 90))  # in the XZ plane
+    arc = doc.addObject("Part::Feature", "Arc")
+    arc.Shape = Part.ArcOfCircle(Part.Circle(V(0, 0, 0), V(0, 0, 1), 2), 0, PI / 2).toShape()
+    doc.recompute()
+    select(profile)
+    check(is_active("RatBez_Sweep"), "Sweep inactive with a closed profile selected")
+    obj, panel = run_command("RatBez_Sweep")
+    check(not obj.Path and panel.status.text().startswith("Path:"), "no path yet: " + panel.status.text())
+    check(panel.accept() is False, "OK accepted a sweep without a path")
+    panel.path_row.button.setChecked(True)
+    check(panel.path_row.button.text() == "Done", "picking the path")
+    select(arc, "Edge1")
+    panel.path_row.button.setChecked(False)
+    process_events()
+    check(obj.Path and obj.Path[0] == arc and obj.isValid(), "the picked edge became the path: " + panel.status.text())
+    close(obj.ExactVolume, PI * 0.25 * PI, 1e-9, "a quarter torus (Pappus)")
+    panel.tolerance.setText("1e-5")
+    panel.tolerance.editingFinished.emit()
+    check(obj.Tolerance == 1e-5, "Tolerance from the panel")
+    panel.tolerance.setText("0")
+    panel.tolerance.editingFinished.emit()
+    check(panel.status.text().startswith("Tolerance:") and panel.accept() is False, "status: " + panel.status.text())
+    panel.tolerance.setText("1e-6")
+    panel.tolerance.editingFinished.emit()
+    Gui.Selection.clearSelection()
+    screenshot("RatBez_Sweep")
+    accept(panel, "Sweep")
+    close(obj.Shape.Volume, obj.ExactVolume, 1e-6, "Sweep Shape.Volume")
+    # Profile and path selected together; double-click edits it again.
+    select_all(profile, arc)
+    second, panel = run_command("RatBez_Sweep")
+    check(second.Path[0] == arc and second.isValid(), "path from the selection")
+    accept(panel, "Sweep with the path selected")
+    second.ViewObject.Proxy.doubleClicked(second.ViewObject)
+    process_events()
+    from ratbez_wb import task_panels
+    panel = task_panels.panel_of(second)
+    check(panel is not None and panel.path_row.label.text() == "Arc", "double-click opened the sweep panel")
+    panel.reject()
+    process_events()
 
 
 @suite.test

@@ -23,6 +23,7 @@ from harness import Suite, captured_output, check, close  # noqa: E402
 
 import RatBez  # noqa: E402  (the staged workbench; fails the whole script when missing)
 import exact  # noqa: E402
+import ratbez  # noqa: E402
 from ratbez_wb import conversion, preferences  # noqa: E402
 
 OUT = os.environ.get("RATBEZ_TEST_OUT", "/tmp")
@@ -46,8 +47,8 @@ def assert_measures(shape, volume, area, centre, what, bop_check=True):
     FreeCAD's BOP check (Part > Check geometry > Run BOP check)."""
     close(shape.Volume, volume, MEASURE, what + " Shape.Volume")
     close(shape.Area, area, MEASURE, what + " Shape.Area")
+    size = shape.BoundBox.DiagonalLength
     if centre is not None:
-        size = shape.BoundBox.DiagonalLength
         off = (shape.CenterOfMass - V(*centre)).Length
         check(off <= MEASURE * size, "{}: CenterOfMass {} is {:.3g} from the exact {}".format(
             what, shape.CenterOfMass, off, tuple(centre)))
@@ -403,6 +404,176 @@ def test_revolve_matches_part_revolution_and_options():
     close(datum.ExactVolume, full_volume / 4, 1e-9, "quarter revolution about the datum line")
 
 
+# ---------------------------------------------------------------------------------------------------
+# Issue 18: ruled solids, lofts and sweeps
+
+def circle_object(doc, name, radius, centre, normal=V(0, 0, 1), start=0):
+    """A Part::Feature holding one full circle (a closed profile of one edge) starting at `start` degrees."""
+    obj = doc.addObject("Part::Feature", name)
+    obj.Shape = Part.Wire(Part.makeCircle(radius, centre, normal, start, start + 360))
+    return obj
+
+
+def square_sketch(doc, name, half, z):
+    sketch = doc.addObject("Sketcher::SketchObject", name)
+    corners = [(half, half), (-half, half), (-half, -half), (half, -half)]  # starting at 45 degrees
+    for a, b in zip(corners, corners[1:] + corners[:1]):
+        sketch.addGeometry(Part.LineSegment(V(*a, 0), V(*b, 0)))
+    sketch.Placement.Base = V(0, 0, z)
+    doc.recompute()
+    return sketch
+
+
+def section_area(shape, z):
+    """Area of the solid's section by the plane at height z (FreeCAD's slice: its edges, one per face cut,
+    joined into one loop)."""
+    edges = [edge for wire in shape.slice(V(0, 0, 1), z) for edge in wire.Edges]
+    return Part.Face(Part.Wire(Part.__sortEdges__(edges))).Area
+
+
+@suite.test
+def test_loft_through_circles_matches_closed_forms():
+    # Circles of radii 1, 2, 1 at z = 0, 1, 2 share one rational layout (equal weights), so the skinned
+    # surface is S(u, v) = r(v) C(u) + z(v) e_z with r, z the interpolants of the radii and heights at the
+    # averaged chord-length parameters 0, 1/2, 1 (The NURBS Book 10.3): degree 2 across, r = 1 + 2z - z^2,
+    # V = pi int_0^2 r^2 dz = 86 pi / 15. Ruled: two frustums, pi h / 3 (r1^2 + r1 r2 + r2^2) each.
+    doc = new_document("Loft")
+    sections = [circle_object(doc, "C{}".format(k), r, V(0, 0, k)) for k, r in enumerate((1.0, 2.0, 1.0))]
+    loft = RatBez.make_loft(doc, Sections=sections)
+    check([link[0] for link in loft.Proxy.section_links(loft)] == sections, "sections kept in order")
+    assert_good_solid(loft, 86 * PI / 15, "loft through circles 1, 2, 1", centre=V(0, 0, 1))
+    for z, r in ((0.5, 1.75), (1.0, 2.0)):  # the section at height z is the circle of radius r(z)
+        close(section_area(loft.Shape, z), PI * r * r, 1e-6, "loft section at z = {}".format(z))
+    loft.Ruled = True
+    doc.recompute()
+    assert_good_solid(loft, 2 * PI / 3 * (1 + 2 + 4), "ruled loft: two frustums", centre=V(0, 0, 1))
+    loft.Ruled = False
+    loft.Degree = 1
+    doc.recompute()
+    close(loft.ExactVolume, 14 * PI / 3, 1e-9, "Degree 1 is ruled")
+    check(loft.getDocumentationOfProperty("Ruled"), "Ruled tooltip")
+    # Against the kernel given the same sections directly: the conversion is exact.
+    direct = ratbez.loft([ratbez.circle(r, (0, 0, k)) for k, r in enumerate((1.0, 2.0, 1.0))])
+    close(direct.volume(), 86 * PI / 15, 1e-9, "ratbez.loft of ratbez.circle sections")
+    assert_measures(loft.Shape, loft.ExactVolume, loft.ExactArea, (0, 0, 1), "loft, BOP check")
+
+
+@suite.test
+def test_ruled_square_to_circle():
+    # Straight rulings between parallel planes: the section at height t h is (1 - t) C1(u) + t C2(u), whose
+    # area is quadratic in t, so the prismatoid rule V = h / 6 (A0 + 4 A_mid + A1) is exact. A_mid is read
+    # from FreeCAD's own slice of the solid at mid height (OCCT's intersection curves).
+    doc = new_document("Ruled")
+    # Both start at 45 degrees (the loft rules its profiles' starting points to each other): the square's
+    # corners meet the circle's quarter points, as in examples/ruled.json.
+    square = square_sketch(doc, "Square", 1.0, 0.0)
+    circle = circle_object(doc, "Circle", 1.0, V(0, 0, 3), start=45)
+    ruled = RatBez.make_ruled(doc, Profile1=square, Profile2=circle)
+    check(ruled.isValid(), "ruled: " + ruled.getStatusString())
+    middle = section_area(ruled.Shape, 1.5)
+    check(PI < middle < 4, "the mid section lies between the circle and the square: {}".format(middle))
+    # The slice is OCCT's approximate intersection curve: agreement to about its tolerance.
+    close(ruled.ExactVolume, 3 / 6 * (4 + 4 * middle + PI), 1e-6, "ruled square to circle: prismatoid rule")
+    assert_good_solid(ruled, ruled.ExactVolume, "ruled square to circle")
+    assert_measures(ruled.Shape, ruled.ExactVolume, ruled.ExactArea, ruled.Shape.CenterOfMass, "ruled, BOP check")
+    # Every lateral face's v isocurves are straight: their midpoint lies on the chord.
+    for face in ruled.Shape.Faces:
+        if isinstance(face.Surface, Part.Plane):
+            continue
+        u0, u1, v0, v1 = face.ParameterRange
+        for u in (u0, 0.5 * (u0 + u1), u1):
+            a, b, m = (face.Surface.value(u, v) for v in (v0, v1, 0.5 * (v0 + v1)))
+            check(((m - a).cross(b - a)).Length <= 1e-9 * (b - a).Length ** 2, "a ruling is not straight")
+    # Profiles the other way round give the same solid; the same plane twice gives none.
+    swapped = RatBez.make_ruled(doc, Profile1=circle, Profile2=square)
+    close(swapped.ExactVolume, ruled.ExactVolume, 1e-9, "ruled with the profiles swapped")
+    flat = RatBez.make_ruled(doc, Profile1=square, Profile2=circle_object(doc, "Flat", 0.5, V(0, 0, 0)))
+    check(flat.getStatusString().startswith("Profile2: must lie entirely in front of the plane of Profile1"),
+          flat.getStatusString())
+
+
+@suite.test
+def test_sweeps_along_a_line_and_arcs_are_exact():
+    doc = new_document("Sweep")
+    r = 0.5
+    # Along a slanted line: the extrusion of the disc, volume pi r^2 times the rise along its normal.
+    disc = circle_object(doc, "Disc", r, V(0, 0, 0))
+    line = doc.addObject("Part::Line", "Line")
+    line.X2, line.Y2, line.Z2 = 1, 0, 3
+    doc.recompute()
+    slanted = RatBez.make_sweep(doc, Profile=disc, Path=line)
+    assert_good_solid(slanted, PI * r * r * 3, "sweep along a slanted line", centre=V(0.5, 0, 1.5))
+    # Along a quarter arc of radius 2 in the XY plane, the profile in the XZ plane at its start: a quarter
+    # torus, volume by Pappus pi r^2 * (2 pi R / 4); along the full circle, the torus 2 pi^2 R r^2.
+    R = 2.0
+    section = circle_object(doc, "Section", r, V(R, 0, 0), V(0, 1, 0))
+    arc = doc.addObject("Part::Feature", "Arc")
+    arc.Shape = Part.ArcOfCircle(Part.Circle(V(0, 0, 0), V(0, 0, 1), R), 0, PI / 2).toShape()
+    ring = circle_object(doc, "Ring", R, V(0, 0, 0))
+    doc.recompute()
+    quarter = RatBez.make_sweep(doc, Profile=section, Path=arc)
+    # The centroid of a disc revolved by a about z: (sin a, 1 - cos a) (R^2 + r^2 / 4) / (a R); a = pi / 2.
+    c = 2 / (PI * R) * (R * R + r * r / 4)
+    assert_good_solid(quarter, PI * r * r * PI * R / 2, "sweep along a quarter arc", centre=V(c, c, 0))
+    torus = RatBez.make_sweep(doc, Profile=section, Path=ring)
+    assert_good_solid(torus, 2 * PI * PI * R * r * r, "sweep along a full circle", centre=V(0, 0, 0))
+    close(torus.ExactVolume, ratbez.torus(R, r).volume(), 1e-10, "swept torus vs ratbez.torus")
+    assert_measures(quarter.Shape, quarter.ExactVolume, quarter.ExactArea, quarter.Shape.CenterOfMass,
+                    "quarter torus, BOP check")
+    # A path of several edges (line, tangent arc) works as one; a sketch too.
+    path = doc.addObject("Sketcher::SketchObject", "PathSketch")
+    path.Placement = App.Placement(V(0, 0, 0), App.Rotation(V(1, 0, 0), 90))  # sketch y -> global z
+    path.addGeometry(Part.LineSegment(V(0, 0, 0), V(0, 2, 0)))
+    path.addGeometry(Part.ArcOfCircle(Part.Circle(V(2, 2, 0), V(0, 0, 1), 2), PI / 2, PI))
+    doc.recompute()
+    bent = RatBez.make_sweep(doc, Profile=disc, Path=path)
+    # Neither a line nor an arc as a whole: approximated within Tolerance (1e-6 mm), Pappus to about that.
+    check(bent.isValid(), "bent: " + bent.getStatusString())
+    close(bent.ExactVolume, PI * r * r * (2 + PI), 1e-5, "sweep along a line and a tangent arc (Pappus)")
+    close(bent.Shape.Volume, bent.ExactVolume, MEASURE, "bent: FreeCAD's Shape.Volume")
+
+
+@suite.test
+def test_ruled_loft_and_sweep_refusals_name_their_properties():
+    doc = new_document("Refusals")
+    disc = circle_object(doc, "Disc", 0.5, V(0, 0, 0))
+    top = circle_object(doc, "Top", 1.0, V(0, 0, 2))
+    line = doc.addObject("Part::Line", "Line")
+    line.X2, line.Y2, line.Z2 = 0, 0, 3
+    doc.recompute()
+    loft = RatBez.make_loft(doc, Sections=[disc, top])
+    check(loft.isValid(), loft.getStatusString())
+    _expect_failure(doc, loft, lambda o: setattr(o, "Sections", [(disc, [""])]),
+                    "Sections: a loft needs at least 2 sections, got 1", "one section")
+    tilted = circle_object(doc, "Tilted", 1.0, V(0, 0, 0.2), V(1, 0, 1))
+    _expect_failure(doc, loft, lambda o: setattr(o, "Sections", [(disc, [""]), (tilted, [""])]),
+                    "Sections: section 2 (Tilted): must lie entirely in front of the plane of section 1 (Disc)",
+                    "crossing sections")
+    _expect_failure(doc, loft, lambda o: setattr(o, "Sections", [(disc, [""]), (line, [""])]),
+                    "Sections: section 2 (Line)", "an open section")
+    sweep = RatBez.make_sweep(doc, Profile=disc, Path=line)
+    check(sweep.isValid(), sweep.getStatusString())
+    _expect_failure(doc, sweep, lambda o: setattr(o, "Tolerance", 0), "Tolerance: must be a length > 0", "tolerance 0")
+    sweep.Tolerance = 1e-6
+    flat = doc.addObject("Part::Line", "Flat")
+    flat.X2, flat.Y2, flat.Z2 = 3, 0, 0
+    doc.recompute()
+    _expect_failure(doc, sweep, lambda o: setattr(o, "Path", flat),
+                    "Profile: lies in a plane containing the path's starting tangent", "profile along the path")
+    corner = doc.addObject("Part::Feature", "Corner")
+    corner.Shape = Part.Wire([Part.makeLine(V(0, 0, 0), V(0, 0, 2)), Part.makeLine(V(0, 0, 2), V(2, 0, 2))])
+    _expect_failure(doc, sweep, lambda o: setattr(o, "Path", corner), "Path: has a corner", "a path with a corner")
+    tight = doc.addObject("Part::Feature", "Tight")
+    tight.Shape = Part.Arc(V(0, 0, 0), V(0.3 - 0.3 / math.sqrt(2), 0, 0.3 / math.sqrt(2)), V(0.3, 0, 0.3)).toShape()
+    _expect_failure(doc, sweep, lambda o: setattr(o, "Path", (tight, [])), "Profile: reaches", "a bend too tight")
+    _expect_failure(doc, sweep, lambda o: setattr(o, "Path", None), "Path: nothing is linked", "no path")
+    holed = doc.addObject("Part::Feature", "Holed")
+    holed.Shape = Part.Face([Part.Wire(Part.makeCircle(2)), Part.Wire(Part.makeCircle(1))])
+    doc.recompute()
+    ruled = RatBez.make_ruled(doc, Profile1=holed, Profile2=top)
+    check(ruled.getStatusString().startswith("Profile1: the face has 1 hole(s)"), ruled.getStatusString())
+
+
 @suite.test
 def test_save_reopen_recompute_and_old_documents():
     doc = new_document("Persist")
@@ -416,6 +587,13 @@ def test_save_reopen_recompute_and_old_documents():
         "BezierCurve": RatBez.make_bezier_curve(doc),
         "BezierSurface": RatBez.make_bezier_surface(doc),
     }
+    sections = [circle_object(doc, "Section{}".format(k), r, V(0, 0, 10 + k)) for k, r in enumerate((1.0, 2.0, 1.0))]
+    path = doc.addObject("Part::Line", "Path")
+    path.X1, path.Y1, path.Z1, path.X2, path.Y2, path.Z2 = 0, 0, 10, 0, 0, 13
+    doc.recompute()
+    made["Ruled"] = RatBez.make_ruled(doc, Profile1=sections[0], Profile2=sections[1])
+    made["Loft"] = RatBez.make_loft(doc, Sections=sections)
+    made["Sweep"] = RatBez.make_sweep(doc, Profile=sections[0], Path=path)
     # An older version stored Angle as App::PropertyAngle (which caps at 360); it must come back a float.
     revolve = made["Revolve"]
     revolve.removeProperty("Angle")
@@ -439,6 +617,9 @@ def test_save_reopen_recompute_and_old_documents():
             close(obj.Shape.Volume, volume, 1e-9, key + " volume after reopen")
         if length:
             close(obj.Shape.Length, length, 1e-12, key + " length after reopen")
+    loft = doc.getObject(before["Loft"][0])
+    check([link[0].Label for link in loft.Proxy.section_links(loft)] == ["Section0", "Section1", "Section2"],
+          "the loft's sections in order after reopen")
     revolve = doc.getObject(before["Revolve"][0])
     check(revolve.getTypeIdOfProperty("Angle") == "App::PropertyFloat" and revolve.Angle == 180,
           "Angle migrated: {} {}".format(revolve.getTypeIdOfProperty("Angle"), revolve.Angle))

@@ -3,8 +3,8 @@
 Creating commands go through Gui.doCommand, so what they do appears in the Python console and is
 recorded by the macro recorder, as with FreeCAD's own Part primitives, and then open the new object's
 task panel (setEdit): FreeCAD keeps the command's transaction open while the edit lasts, so OK commits
-it as one undo step and Cancel removes the object. Revolve and Extrude are enabled only for a selection
-they can use, check it before they create anything, and say in one line why they refuse it.
+it as one undo step and Cancel removes the object. Revolve, Extrude, Ruled, Loft and Sweep are enabled only
+for a selection they can use, check it before they create anything, and say in one line why they refuse it.
 """
 
 import FreeCAD as App
@@ -17,29 +17,31 @@ from .i18n import QT_TRANSLATE_NOOP, translate
 from .text import one_line
 
 
-def _selected_profile():
-    """(object, sub-element names) of a selection that can be a profile, or None. Structural only (cheap
-    enough for IsActive): one object, not a RatBez feature; one face, or edges; a whole object that is
-    a profile (no solid, at most one face)."""
-    selection = Gui.Selection.getSelectionEx()
-    if len(selection) != 1:
-        return None
-    sel = selection[0]
-    obj = sel.Object
-    shape = getattr(obj, "Shape", None)
-    if shape is None or shape.isNull() or not shape.Edges:
-        return None
-    subs = [s for s in sel.SubElementNames if s]
-    if subs:
-        faces = [s for s in subs if s.startswith("Face")]
-        edges = [s for s in subs if s.startswith("Edge")]
-        if len(faces) + len(edges) != len(subs) or (faces and (edges or len(faces) > 1)):
+def _selected_links():
+    """The selection as profile links, in selection order, or None where some of it cannot be a profile or
+    path. Structural only (cheap enough for IsActive): no RatBez feature; of an object, each selected face
+    is one link and its selected edges together one (not both); a whole object only when it is a profile
+    (no solid, at most one face)."""
+    links = []
+    for sel in Gui.Selection.getSelectionEx():
+        obj = sel.Object
+        shape = getattr(obj, "Shape", None)
+        if shape is None or shape.isNull() or not shape.Edges:
             return None
-    elif features.proxy_of(obj) is not None or not conversion.is_whole_profile_object((obj, [])):
-        return None
-    elif len(shape.Faces) > 1:
-        return None
-    return obj, subs
+        subs = [s for s in sel.SubElementNames if s]
+        if subs:
+            faces = [s for s in subs if s.startswith("Face")]
+            edges = [s for s in subs if s.startswith("Edge")]
+            if len(faces) + len(edges) != len(subs) or (faces and edges):
+                return None
+            links.extend([(obj, [f]) for f in faces] if faces else [(obj, edges)])
+        elif features.proxy_of(obj) is not None or not conversion.is_whole_profile_object((obj, [])):
+            return None
+        elif len(shape.Faces) > 1:
+            return None
+        else:
+            links.append((obj, []))
+    return links
 
 
 def _closed(link):
@@ -123,38 +125,58 @@ class TorusCommand(_CreateCommand):
 
 
 class _ProfileCommand(_CreateCommand):
+    """A command built on selected profiles (and a path): enabled only for a selection it can use, which it
+    checks before it creates anything, saying in one line why it refuses it."""
+
+    hint = QT_TRANSLATE_NOOP("RatBez", "select a sketch, a wire, edges or one face first")
+
     def IsActive(self):
-        return App.ActiveDocument is not None and self.usable(_selected_profile())
+        return App.ActiveDocument is not None and self.roles() is not None
+
+    def roles(self):
+        """[(property, link), ...] the selection gives, or None when it does not fit."""
+        links = _selected_links()
+        return None if links is None else self.assign(links)
+
+    def assign(self, links):
+        return [("Profile", links[0])] if len(links) == 1 and self.usable(links[0]) else None
 
     def usable(self, link):
-        return link is not None
+        return True
 
-    def refusal(self, link):
-        """Why the kernel cannot use the profile (in property words), or None."""
+    def refusal(self, roles):
+        """Why the kernel cannot use the selection (in property words), or None."""
         try:
-            profile = conversion.resolve_profile(link)
-            self.check(link, profile)
+            for prop, link in roles:
+                if prop == "Path":
+                    conversion.resolve_path(link)
+                else:
+                    self.check(link, conversion.resolve_profile(link, prop), prop)
         except Failure as failure:
             return str(failure)
         except kernel.error_types() as error:
             return str(error)
         return None
 
-    def check(self, link, profile):
+    def check(self, link, profile, prop):
         pass
 
     def Activated(self):
-        link = _selected_profile()
-        reason = translate("select a sketch, a wire, edges or one face first") if link is None else self.refusal(link)
+        roles = self.roles()
+        reason = translate(self.hint) if roles is None else self.refusal(roles)
         if reason:
             App.Console.PrintError("RatBez: {}: {}\n".format(translate(self.menu), one_line(reason)))
             return
-        obj, subs = link
-        self.profile_argument = ", Profile=(App.ActiveDocument.getObject({!r}), {!r})".format(obj.Name, subs)
+        code = {}
+        for prop, (obj, subs) in roles:
+            code.setdefault(prop, []).append("(App.ActiveDocument.getObject({!r}), {!r})".format(obj.Name, subs))
+        self.link_arguments = "".join(
+            ", {}=[{}]".format(prop, ", ".join(values)) if prop == "Sections" else ", {}={}".format(prop, values[0])
+            for prop, values in code.items())
         super().Activated()
 
     def arguments(self):
-        return self.profile_argument
+        return self.link_arguments
 
 
 class RevolveCommand(_ProfileCommand):
@@ -164,7 +186,7 @@ class RevolveCommand(_ProfileCommand):
                "vertical axis to start with, as a sketch's V axis), the angle and a symmetric revolution are "
                "set in the task panel")
 
-    def check(self, link, profile):
+    def check(self, link, profile, prop):
         features.require_revolvable(profile)
 
 
@@ -176,10 +198,60 @@ class ExtrudeCommand(_ProfileCommand):
                "symmetric are set in the task panel")
 
     def usable(self, link):
-        return link is not None and _closed(link)
+        return _closed(link)
 
-    def check(self, link, profile):
+    def check(self, link, profile, prop):
         features.require_extrudable(profile)
+
+
+class _CappedCommand(_ProfileCommand):
+    """Ruled, Loft and Sweep: solids capped by their closed planar profiles, which have no holes."""
+
+    def check(self, link, profile, prop):
+        features.require_one_loop(profile, prop)
+
+
+class RuledCommand(_CappedCommand):
+    kind = "ruled"
+    menu = "Ruled solid"
+    tooltip = ("Join the two selected closed planar profiles (sketches, wires, edges or faces without holes) by "
+               "straight rulings into an exact solid capped by them; the profiles can be changed in the task "
+               "panel")
+    hint = QT_TRANSLATE_NOOP("RatBez", "select two closed planar profiles first")
+
+    def assign(self, links):
+        if len(links) != 2 or not all(_closed(link) for link in links):
+            return None
+        return [("Profile1", links[0]), ("Profile2", links[1])]
+
+
+class LoftCommand(_CappedCommand):
+    kind = "loft"
+    menu = "Loft"
+    tooltip = ("Loft an exact solid through the selected closed planar profiles, in the order selected, passing "
+               "through each exactly and capped by the first and last; the sections, their order, the degree "
+               "across them and ruled lofting are set in the task panel")
+    hint = QT_TRANSLATE_NOOP("RatBez", "select at least two closed planar profiles, in order, first")
+
+    def assign(self, links):
+        if len(links) < 2 or not all(_closed(link) for link in links):
+            return None
+        return [("Sections", link) for link in links]
+
+
+class SweepCommand(_CappedCommand):
+    kind = "sweep"
+    menu = "Sweep"
+    tooltip = ("Sweep the selected closed planar profile along a path (selected second, or picked in the task "
+               "panel) into a solid: exact along straight lines and circular arcs, within a tolerance "
+               "elsewhere; the profile keeps its attitude to the path (rotation-minimising frame)")
+    hint = QT_TRANSLATE_NOOP("RatBez",
+                             "select a closed planar profile first (and then the path, or pick it in the task panel)")
+
+    def assign(self, links):
+        if not 1 <= len(links) <= 2 or not _closed(links[0]):
+            return None
+        return [("Profile", links[0])] + [("Path", link) for link in links[1:]]
 
 
 class ExportOpenSCADCommand:
@@ -247,7 +319,8 @@ def _selected_solids():
 
 
 CREATE_COMMANDS = [BezierCurveCommand, BezierSurfaceCommand, CylinderCommand, ConeCommand,
-                   SphereCommand, TorusCommand, RevolveCommand, ExtrudeCommand]
+                   SphereCommand, TorusCommand, RevolveCommand, ExtrudeCommand, RuledCommand, LoftCommand,
+                   SweepCommand]
 CREATE_COMMAND_NAMES = [c.command_name() for c in CREATE_COMMANDS]
 TOOL_COMMAND_NAMES = ["RatBez_ExportOpenSCAD", "RatBez_CheckOCCT"]
 

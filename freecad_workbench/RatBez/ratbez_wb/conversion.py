@@ -23,10 +23,10 @@ V = App.Vector
 
 
 class ProfileError(Failure):
-    """The linked profile cannot be used; the message names the Profile property."""
+    """The linked profile (or path) cannot be used; the message names its property (Profile by default)."""
 
-    def __init__(self, reason):
-        super().__init__("Profile", reason)
+    def __init__(self, reason, prop="Profile"):
+        super().__init__(prop, reason)
 
 
 def _as_tuple(vector):
@@ -133,6 +133,15 @@ def _sub_names(link):
     return [s for s in (subs or []) if s]
 
 
+def link_label(link):
+    """What a link designates, for people: "Sketch", "Box: Face6", "(none)"."""
+    obj = link_object(link)
+    if obj is None:
+        return translate("(none)")
+    subs = _sub_names(link)
+    return "{}: {}".format(obj.Label, ", ".join(subs)) if subs else obj.Label
+
+
 def is_whole_profile_object(link):
     """True when the link is a whole object that is nothing but a profile (a sketch, a 2D object, a wire):
     the object a feature may hide. A face or edges of a solid are not (the solid stays visible)."""
@@ -147,7 +156,7 @@ def _profile_shape(link):
     """The shape the link designates: one face, or a compound of edges (all in global coordinates)."""
     obj = link_object(link)
     if obj is None:
-        raise ProfileError(translate("no profile is linked"))
+        raise ProfileError(translate("nothing is linked"))
     shape = getattr(obj, "Shape", None)
     if shape is None or shape.isNull():
         raise ProfileError(translate("'{}' has no shape").format(obj.Label))
@@ -218,8 +227,16 @@ def _loops_of_face(face):
     return [list(w.OrderedEdges) for w in wires]
 
 
-def resolve_profile(link):
-    """The Profile a link designates (see Profile)."""
+def resolve_profile(link, prop="Profile"):
+    """The Profile a link designates (see Profile). Failures name `prop` (the property holding the link)."""
+    try:
+        return _resolve_profile(link)
+    except ProfileError as error:
+        failure = error
+    raise ProfileError(failure.reason, prop)
+
+
+def _resolve_profile(link):
     shape = _profile_shape(link)
     edges = [e for e in shape.Edges if not e.isNull() and e.Length > 0 and not e.Degenerated]
     if not edges:
@@ -244,6 +261,27 @@ def resolve_profile(link):
             loops = _loops_of_face(made.Faces[0])
     plane = profile_plane([e for loop in loops for e in loop])
     return Profile([chain_nurbs_data(loop) for loop in loops], [_edge_names(link, loop) for loop in loops], plane)
+
+
+def resolve_path(link, prop="Path"):
+    """The NURBS pieces, end to end, of the one chain of edges a link designates (a sketch, a wire, edges):
+    the path a profile is swept along. Failures name `prop`."""
+    try:
+        shape = _profile_shape(link)
+    except ProfileError as error:
+        failure = error
+    else:
+        failure = None
+    if failure is not None:
+        raise ProfileError(failure.reason, prop)
+    if shape.ShapeType == "Face":
+        raise ProfileError(translate("is a face; a path is a sketch, a wire or edges"), prop)
+    edges = [e for e in shape.Edges if not e.isNull() and e.Length > 0 and not e.Degenerated]
+    chains = Part.sortEdges(edges) if edges else []
+    if len(chains) != 1:
+        raise ProfileError(translate("its {} edges form {} separate chains; a path is one chain").format(
+            len(edges), len(chains)), prop)
+    return [nurbs_curve(d) for d in chain_nurbs_data(chains[0])]
 
 
 def profile_plane(edges):

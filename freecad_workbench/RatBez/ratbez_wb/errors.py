@@ -27,7 +27,8 @@ _PROPERTY_OF = {
     "axis": "Axis", "major_radius": "MajorRadius", "minor_radius": "MinorRadius", "axis_point": "AxisPoint",
     "axis_dir": "AxisDirection", "angle": "Angle", "angle_deg": "Angle", "direction": "Direction",
     "distance": "Distance", "profile": "Profile", "holes": "Profile", "points": "Poles", "net": "Poles",
-    "weights": "Weights", "curve": "Poles", "surface": "Poles", "solid": "Shape",
+    "weights": "Weights", "curve": "Poles", "surface": "Poles", "solid": "Shape", "profiles": "Sections",
+    "degree": "Degree", "path": "Path", "tolerance": "Tolerance",
 }
 # Kernel names that may appear inside a reason ("must be less than major_radius"); plain words such as
 # "radius" or "axis" there are prose and stay.
@@ -50,12 +51,28 @@ class MessageContext:
     counts: property name -> number of entries ("Weights": 4), for "weight 2 of 4";
     net_columns: columns of a Bézier surface's net, to number "weight [i][j]" in the flat Weights list;
     loops: the names of the profile's edges, loops[0] the outer loop and loops[h + 1] hole h, in the
-    order the kernel numbers its pieces."""
+    order the kernel numbers its pieces;
+    sections: for the kernel's profiles[k] (a loft's), (property, words): ("Profile2", "") or ("Sections",
+    "section 2 (Circle001)"), and section_loops[k] that profile's loops (as loops)."""
 
-    def __init__(self, counts=None, net_columns=None, loops=None):
+    def __init__(self, counts=None, net_columns=None, loops=None, sections=None, section_loops=None):
         self.counts = counts or {}
         self.net_columns = net_columns
         self.loops = loops or []
+        self.sections = sections or []
+        self.section_loops = section_loops or []
+
+    def section(self, index):
+        """The words for the kernel's profiles[index]: "section 2 (Circle001)" or "Profile2"."""
+        if index < len(self.sections):
+            prop, words = self.sections[index]
+            return words or prop
+        return "section {}".format(index + 1)
+
+    def for_section(self, index):
+        """The context of one section's own message (its pieces named as its edges)."""
+        loops = self.section_loops[index] if index < len(self.section_loops) else []
+        return MessageContext(self.counts, self.net_columns, loops)
 
     def piece(self, piece, loop=0):
         names = self.loops[loop] if loop < len(self.loops) else []
@@ -104,11 +121,19 @@ def _reason_in_property_words(reason, context):
 def property_message(argument, reason, context=None):
     """The kernel's (argument, reason) in the property editor's words (see the module docstring)."""
     context = context or MessageContext()
-    reason = _reason_in_property_words(reason, context)
     match = re.fullmatch(r"([a-z_0-9]+)((?:\[\d+\])*)", argument or "")
+    name, indices = (match.group(1), [int(k) for k in re.findall(r"\d+", match.group(2))]) if match else ("", [])
+    if name == "profiles" and context.sections:
+        # A loft's section: its own pieces named as its edges, the other sections it mentions by their words.
+        reason = _reason_in_property_words(reason, context.for_section(indices[0]) if indices else context)
+        reason = re.sub(r"\bprofiles\[(\d+)\]", lambda m: context.section(int(m.group(1))), reason)
+        if not indices:
+            return "{}: {}".format(context.sections[0][0], reason)
+        prop, words = context.sections[indices[0]] if indices[0] < len(context.sections) else ("Sections", "")
+        return "{}: {}{}".format(prop, words + ": " if words else "", reason)
+    reason = _reason_in_property_words(reason, context)
     if not match:
         return "{}: {}".format(argument, reason) if argument else reason
-    name, indices = match.group(1), [int(k) for k in re.findall(r"\d+", match.group(2))]
     prop = _PROPERTY_OF.get(name, name)
     if name == "holes" and indices:
         loop = indices[0] + 1

@@ -355,6 +355,150 @@ def require_revolvable(profile):
             .format(profile.hole_count))
 
 
+def require_one_loop(profile, prop="Profile"):
+    """What Ruled, Loft and Sweep ask of a profile beyond the kernel's checks: one loop (their solids are
+    capped by the profiles themselves, which the kernel takes without holes)."""
+    if profile.hole_count:
+        raise conversion.ProfileError(translate(
+            "the face has {} hole(s); lofts, ruled solids and sweeps take profiles without holes (select the "
+            "outer edges)").format(profile.hole_count), prop)
+
+
+class SectionsFeature(ProfileFeature):
+    """A solid through several profiles (Ruled, Loft): kernel errors about profiles[k] name the section."""
+
+    def section_words(self, obj):
+        """For each section, (property, words before the reason): ("Profile2", "") or ("Sections", "section 2
+        (Circle001)")."""
+        raise NotImplementedError
+
+    def message_context(self, obj):
+        sections = getattr(self, "sections", None) or []
+        try:
+            words = self.section_words(obj)
+        except Exception:  # a link that no longer resolves: plain kernel words then
+            words = []
+        return MessageContext(sections=words, section_loops=[p.names for p in sections])
+
+    def resolve_sections(self, obj, links):
+        """The Profiles of the links, in order; a Failure names the section."""
+        self.sections = []
+        words = self.section_words(obj)
+        for (prop, where), link in zip(words, links):
+            try:
+                profile = conversion.resolve_profile(link, prop)
+                require_one_loop(profile, prop)
+            except Failure as error:
+                failure = error
+            else:
+                self.sections.append(profile)
+                continue
+            raise Failure(prop, "{}: {}".format(where, failure.reason) if where else failure.reason)
+        return self.sections
+
+
+class Ruled(SectionsFeature):
+    TYPE = "RatBez::Ruled"
+    PROPERTIES = (
+        ("App::PropertyLinkSub", "Profile1",
+         _tip("First closed planar profile: a sketch, a 2D object, a wire, edges or one face (without holes)"),
+         None),
+        ("App::PropertyLinkSub", "Profile2",
+         _tip("Second closed planar profile, entirely in front of the first one's plane; straight rulings join "
+              "the two from their starting points on"), None),
+    )
+
+    def section_words(self, obj):
+        return [("Profile1", ""), ("Profile2", "")]
+
+    def build_solid(self, obj):
+        first, second = self.resolve_sections(obj, [obj.Profile1, obj.Profile2])
+        return kernel.ratbez().loft([first.curves(), second.curves()], degree=1, ruled=True)
+
+
+LOFT_MAX_DEGREE = 25
+
+
+class Loft(SectionsFeature):
+    TYPE = "RatBez::Loft"
+    PROPERTIES = (
+        ("App::PropertyLinkSubList", "Sections",
+         _tip("Closed planar profiles to loft through, in order (at least two): sketches, 2D objects, wires, "
+              "edges or faces without holes, each entirely in front of the previous one's plane. The solid is "
+              "capped by the first and last"), lambda: []),
+        ("App::PropertyIntegerConstraint", "Degree",
+         _tip("Degree of the surface across the sections (at most the number of sections minus one is used); "
+              "the surface passes through every section exactly"), (3, 1, LOFT_MAX_DEGREE, 1)),
+        ("App::PropertyBool", "Ruled", _tip("Join consecutive sections by straight rulings (degree 1 across)"),
+         False),
+    )
+
+    def section_links(self, obj):
+        """The sections in order, one link each. FreeCAD groups neighbouring entries of one object into one
+        (box, ('Face1', 'Face6')): faces of such an entry are separate sections."""
+        links = []
+        for owner, subs in obj.Sections:
+            subs = [s for s in (subs or []) if s]
+            if len(subs) > 1 and all(s.startswith("Face") for s in subs):
+                links.extend((owner, [s]) for s in subs)
+            else:
+                links.append((owner, subs))
+        return links
+
+    def section_words(self, obj):
+        return [("Sections", translate("section {} ({})").format(k + 1, conversion.link_label(link)))
+                for k, link in enumerate(self.section_links(obj))]
+
+    def build_solid(self, obj):
+        links = self.section_links(obj)
+        if len(links) < 2:
+            raise Failure("Sections", translate("a loft needs at least 2 sections, got {}").format(len(links)))
+        sections = self.resolve_sections(obj, links)
+        return kernel.ratbez().loft([p.curves() for p in sections], degree=obj.Degree, ruled=obj.Ruled)
+
+
+class Sweep(ProfileFeature):
+    TYPE = "RatBez::Sweep"
+    PROPERTIES = (
+        ("App::PropertyLinkSub", "Profile",
+         _tip("Closed planar profile to sweep: a sketch, a 2D object, a wire, edges or one face (without holes), "
+              "crossing the path (not in a plane containing the path's starting tangent)"), None),
+        ("App::PropertyLinkSub", "Path",
+         _tip("Path to sweep along: a sketch, a wire or edges making one tangent-continuous chain. The profile "
+              "is carried with a rotation-minimising frame; a closed path closes the solid on itself"), None),
+        ("App::PropertyFloat", "Tolerance",
+         _tip("Largest distance in mm from the true sweep where it is not rational (straight and circular "
+              "paths give the exact solid); > 0"), 1e-6),
+    )
+
+    def build_solid(self, obj):
+        self.profile = None
+        profile = conversion.resolve_profile(obj.Profile)
+        self.profile = profile
+        require_one_loop(profile)
+        path = conversion.resolve_path(obj.Path)
+        tolerance = float(obj.Tolerance)
+        if not (tolerance > 0 and math.isfinite(tolerance)):
+            raise Failure("Tolerance", translate("must be a length > 0 (mm), got {:g}").format(tolerance))
+        return kernel.ratbez().sweep(profile.curves(), path, tolerance)
+
+
+def linked_objects(obj):
+    """The objects a RatBez feature is built from (its profiles, sections and path), in order, each once."""
+    found = []
+    for prop in ("Profile", "Profile1", "Profile2", "Path"):
+        link = getattr(obj, prop, None) if obj is not None else None
+        if link and link[0] is not None:
+            found.append(link[0])
+    for owner, _ in (getattr(obj, "Sections", None) or []) if obj is not None else []:
+        found.append(owner)
+    unique = []
+    for item in found:
+        if all(item is not other for other in unique):
+            unique.append(item)
+    return unique
+
+
 def require_extrudable(profile):
     """What Extrude asks first: a closed outer loop (to 1e-9 of its size, the kernel's joint tolerance).
     Checked before planarity, so a single straight edge is told it is not closed."""
@@ -513,6 +657,9 @@ FEATURES = {
     "torus": Torus,
     "revolve": Revolve,
     "extrude": Extrude,
+    "ruled": Ruled,
+    "loft": Loft,
+    "sweep": Sweep,
 }
 
 

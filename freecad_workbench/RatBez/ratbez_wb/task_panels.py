@@ -147,8 +147,7 @@ class TaskPanel:
         self.doc = obj.Document
         self.proxy = obj.Proxy
         self.loading = False
-        link = getattr(obj, "Profile", None)
-        self.profile_object = conversion.link_object(link) if link else None
+        self.linked_before = features.linked_objects(obj)
         if not App.getActiveTransaction():
             # Opened from the Python console (setEdit): no command or double-click transaction to join.
             self.doc.openTransaction(translate("Edit {}").format(obj.Label))
@@ -204,7 +203,7 @@ class TaskPanel:
         try:
             self.store()
         except Failure as failure:
-            self.status.setText(str(failure))
+            self.tell(str(failure))
             return
         self.doc.recompute()
         self.show_status()
@@ -215,6 +214,11 @@ class TaskPanel:
         if "Invalid" in self.obj.State or "Error" in self.obj.State:
             return getattr(self.proxy, "last_failure", None) or self.obj.getStatusString()
         return None
+
+    def tell(self, text):
+        """A hint or a refusal of the panel itself, in the status line."""
+        self.status.setText(text)
+        self.status.setVisible(True)
 
     def show_status(self):
         failure = self.failure()
@@ -230,7 +234,7 @@ class TaskPanel:
         try:
             self.store()
         except Failure as failure:
-            self.status.setText(str(failure))
+            self.tell(str(failure))
             return False
         self.doc.recompute()
         if self.failure():
@@ -242,9 +246,10 @@ class TaskPanel:
 
     def reject(self):
         self.doc.abortTransaction()
-        if self.doc.getObject(self.name) is None and self.profile_object is not None:
-            # Cancel of a new object: it is gone, show its profile again (hiding it was not undoable).
-            self.profile_object.ViewObject.Visibility = True
+        if self.doc.getObject(self.name) is None:
+            # Cancel of a new object: it is gone, show its profiles again (hiding them was not undoable).
+            for linked in self.linked_before:
+                linked.ViewObject.Visibility = True
         self.doc.recompute()
         self.finish()
         return True
@@ -343,14 +348,6 @@ class TorusPanel(PrimitivePanel):
 # ---------------------------------------------------------------------------------------------------
 # Profile features: the profile, and a line (axis or direction) picked from presets or the 3D view
 
-def describe_link(link):
-    obj = conversion.link_object(link)
-    if obj is None:
-        return translate("(none)")
-    subs = [s for s in (link[1] or []) if s] if len(link) > 1 else []
-    return "{}: {}".format(obj.Label, ", ".join(subs)) if subs else obj.Label
-
-
 def selected_link(accept):
     """The current selection as a PropertyLinkSub value if `accept(link)` says it fits, else None."""
     selection = Gui.Selection.getSelectionEx()
@@ -360,6 +357,51 @@ def selected_link(accept):
     return link if accept(link) else None
 
 
+class LinkRow:
+    """A linked profile or path in a panel: what it designates and a button that relinks it to the selection
+    ("Use selection"), or, with picking, a toggle as Part Sweep's "Sweep Path": pressed, the user selects
+    the edges or the sketch in the 3D view or the tree, and pressing "Done" links them."""
+
+    def __init__(self, panel, prop, label, tooltip, picking=False):
+        self.panel, self.prop, self.picking = panel, prop, picking
+        self.widget = QtGui.QWidget()
+        layout = QtGui.QHBoxLayout(self.widget)
+        layout.setContentsMargins(0, 0, 0, 0)
+        self.label = QtGui.QLabel()
+        self.label.setToolTip(panel.tooltip(prop))
+        self.button = QtGui.QPushButton(translate("Select..." if picking else "Use selection"))
+        self.button.setToolTip(tooltip)
+        self.button.setCheckable(picking)
+        if picking:
+            self.button.toggled.connect(self.pick)
+        else:
+            self.button.clicked.connect(self.use_selection)
+        layout.addWidget(self.label, 1)
+        layout.addWidget(self.button)
+        panel.layout.addRow(translate(label), self.widget)
+
+    def load(self):
+        self.label.setText(conversion.link_label(getattr(self.panel.obj, self.prop)))
+
+    def pick(self, pressed):
+        if pressed:
+            Gui.Selection.clearSelection()
+            self.button.setText(translate("Done"))
+            self.panel.tell(translate("Select the edges or the sketch in the 3D view or the tree, then press Done"))
+            return
+        self.button.setText(translate("Select..."))
+        self.use_selection()
+
+    def use_selection(self):
+        link = selected_link(lambda candidate: candidate[0] is not self.panel.obj)
+        if link is None:
+            self.panel.tell(translate("Select a sketch, a wire, edges or one face first"))
+            return
+        setattr(self.panel.obj, self.prop, link)
+        self.load()
+        self.panel.changed()
+
+
 class ProfilePanel(TaskPanel):
     """A panel with a Profile row ("Use selection" relinks it) and a line reference picked in the 3D view
     while its mode asks for one (a selection observer, as PartDesign's "Select reference...")."""
@@ -367,28 +409,10 @@ class ProfilePanel(TaskPanel):
     LINE_PROPERTY = ""     # AxisReference / DirectionReference
 
     def add_profile_row(self):
-        row = QtGui.QWidget()
-        layout = QtGui.QHBoxLayout(row)
-        layout.setContentsMargins(0, 0, 0, 0)
-        self.profile_label = QtGui.QLabel()
-        self.profile_button = QtGui.QPushButton(translate("Use selection"))
-        self.profile_button.setToolTip(translate("Make the selected sketch, wire, edges or face the profile"))
-        self.profile_button.clicked.connect(self.use_selected_profile)
-        layout.addWidget(self.profile_label, 1)
-        layout.addWidget(self.profile_button)
-        self.layout.addRow(translate("Profile"), row)
+        self.profile_row = LinkRow(self, "Profile", "Profile",
+                                   translate("Make the selected sketch, wire, edges or face the profile"))
         self.reference = None
         Gui.Selection.addObserver(self)
-
-    def use_selected_profile(self):
-        link = selected_link(lambda candidate: candidate[0] is not self.obj)
-        if link is None:
-            self.status.setText(translate("Select a sketch, a wire, edges or one face first"))
-            self.status.setVisible(True)
-            return
-        self.obj.Profile = link
-        self.profile_label.setText(describe_link(link))
-        self.changed()
 
     def add_line_modes(self, label, modes, tooltip):
         """The combo box of the ways to give the axis or direction (modes: (name, text) pairs), and below
@@ -406,7 +430,7 @@ class ProfilePanel(TaskPanel):
     def show_reference(self):
         """The picked line's name, or how to pick one, while picking_line()."""
         if self.picking_line():
-            self.reference_label.setText(describe_link(self.reference) if self.reference
+            self.reference_label.setText(conversion.link_label(self.reference) if self.reference
                                          else translate("Select a straight edge or a datum line"))
         self.reference_label.setVisible(self.picking_line())
 
@@ -468,7 +492,7 @@ class RevolvePanel(ProfilePanel):
 
     def load(self):
         obj = self.obj
-        self.profile_label.setText(describe_link(obj.Profile))
+        self.profile_row.load()
         self.reference = obj.AxisReference if obj.AxisReference else None
         self.axis_mode.setCurrentIndex([m for m, _ in _AXIS_MODES].index(self.guess_mode()))
         self.point.set_value(obj.AxisPoint)
@@ -602,7 +626,7 @@ class ExtrudePanel(ProfilePanel):
 
     def load(self):
         obj = self.obj
-        self.profile_label.setText(describe_link(obj.Profile))
+        self.profile_row.load()
         self.reference = obj.DirectionReference if obj.DirectionReference else None
         self.direction_mode.setCurrentIndex([m for m, _ in _DIRECTION_MODES].index(obj.DirectionMode))
         self.direction.set_value(obj.Direction)
@@ -633,6 +657,134 @@ class ExtrudePanel(ProfilePanel):
 
     def shown(self):
         self.update_fields()
+
+
+# ---------------------------------------------------------------------------------------------------
+# Solids through several profiles (ruled, loft) and along a path (sweep)
+
+class RuledPanel(TaskPanel):
+    TITLE, ICON = "RatBez ruled solid", "RatBez_Ruled"
+
+    def build(self):
+        self.rows = [LinkRow(self, prop, label, translate("Make the selected sketch, wire, edges or face this profile"))
+                     for prop, label in (("Profile1", "First profile"), ("Profile2", "Second profile"))]
+
+    def load(self):
+        for row in self.rows:
+            row.load()
+
+
+class LoftPanel(TaskPanel):
+    """The sections as an ordered list (as Part Loft's), with buttons to add the selected profiles, remove
+    one and move one up or down; the degree across them and the Ruled switch."""
+
+    TITLE, ICON = "RatBez loft", "RatBez_Loft"
+
+    def build(self):
+        self.layout.addRow(QtGui.QLabel("<b>{}</b>".format(translate("Sections, in order"))))
+        self.list = QtGui.QListWidget()
+        self.list.setToolTip(self.tooltip("Sections"))
+        self.list.setMinimumHeight(120)
+        self.layout.addRow(self.list)
+        buttons = QtGui.QWidget()
+        row = QtGui.QHBoxLayout(buttons)
+        row.setContentsMargins(0, 0, 0, 0)
+        for text, tip, action in (
+                ("Add selection", "Append the selected sketches, wires, edges or faces as sections", self.add_selected),
+                ("Remove", "Remove the selected section", self.remove),
+                ("Up", "Move the selected section one place earlier", lambda: self.move(-1)),
+                ("Down", "Move the selected section one place later", lambda: self.move(1))):
+            button = QtGui.QPushButton(translate(text))
+            button.setToolTip(translate(tip))
+            button.clicked.connect(action)
+            row.addWidget(button)
+        self.layout.addRow(buttons)
+        self.degree = QtGui.QSpinBox()
+        self.degree.setRange(1, features.LOFT_MAX_DEGREE)
+        self.degree.setToolTip(self.tooltip("Degree"))
+        self.degree.valueChanged.connect(self.changed)
+        self.layout.addRow(translate("Degree across"), self.degree)
+        self.ruled = self.add_check("Ruled surface", self.tooltip("Ruled"))
+        self.sections = []
+
+    def load(self):
+        self.sections = self.proxy.section_links(self.obj)
+        self.fill()
+        self.degree.setValue(self.obj.Degree)
+        self.ruled.setChecked(self.obj.Ruled)
+        self.degree.setEnabled(not self.obj.Ruled)
+
+    def fill(self, current=-1):
+        self.list.clear()
+        for index, link in enumerate(self.sections):
+            self.list.addItem("{}. {}".format(index + 1, conversion.link_label(link)))
+        self.list.setCurrentRow(current)
+
+    def add_selected(self):
+        links = [(sel.Object, [s for s in sel.SubElementNames if s]) for sel in Gui.Selection.getSelectionEx()
+                 if sel.Object is not self.obj]
+        if not links:
+            self.tell(translate("Select sketches, wires, edges or faces first"))
+            return
+        for obj, subs in links:
+            faces = [s for s in subs if s.startswith("Face")]
+            self.sections.extend([(obj, [f]) for f in faces] if faces and len(faces) == len(subs) else [(obj, subs)])
+        self.fill(len(self.sections) - 1)
+        self.changed()
+
+    def remove(self):
+        index = self.list.currentRow()
+        if 0 <= index < len(self.sections):
+            del self.sections[index]
+            self.fill(min(index, len(self.sections) - 1))
+            self.changed()
+
+    def move(self, step):
+        index = self.list.currentRow()
+        target = index + step
+        if 0 <= index < len(self.sections) and 0 <= target < len(self.sections):
+            self.sections[index], self.sections[target] = self.sections[target], self.sections[index]
+            self.fill(target)
+            self.changed()
+
+    def store(self):
+        # Sub-element lists ([""] for a whole object) keep the order in the PropertyLinkSubList.
+        self.obj.Sections = [(obj, subs or [""]) for obj, subs in self.sections]
+        self.obj.Degree = self.degree.value()
+        self.obj.Ruled = self.ruled.isChecked()
+
+    def shown(self):
+        self.degree.setEnabled(not self.ruled.isChecked())
+
+
+class SweepPanel(TaskPanel):
+    """The profile ("Use selection"), the path (picked as in Part Sweep: "Select...", the edges or sketch,
+    "Done") and the tolerance of the approximation."""
+
+    TITLE, ICON = "RatBez sweep", "RatBez_Sweep"
+
+    def build(self):
+        self.profile_row = LinkRow(self, "Profile", "Profile",
+                                   translate("Make the selected sketch, wire, edges or face the profile"))
+        self.path_row = LinkRow(self, "Path", "Path", translate(
+            "Press, select the path's edges or its sketch in the 3D view or the tree, and press Done"), picking=True)
+        self.tolerance = QtGui.QLineEdit()
+        self.tolerance.setValidator(QtGui.QDoubleValidator(0.0, 1e9, 15))
+        self.tolerance.setToolTip(self.tooltip("Tolerance"))
+        self.tolerance.editingFinished.connect(self.changed)
+        self.layout.addRow(translate("Tolerance (mm)"), self.tolerance)
+
+    def load(self):
+        self.profile_row.load()
+        self.path_row.load()
+        self.tolerance.setText("{:g}".format(self.obj.Tolerance))
+
+    def store(self):
+        text = self.tolerance.text().strip().replace(",", ".")
+        try:
+            self.obj.Tolerance = float(text)
+        except ValueError:
+            raise Failure("Tolerance", translate("is not a number: '{}'").format(text))
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -785,6 +937,9 @@ PANELS = {
     "RatBez::Torus": TorusPanel,
     "RatBez::Revolve": RevolvePanel,
     "RatBez::Extrude": ExtrudePanel,
+    "RatBez::Ruled": RuledPanel,
+    "RatBez::Loft": LoftPanel,
+    "RatBez::Sweep": SweepPanel,
     "RatBez::BezierCurve": BezierCurvePanel,
     "RatBez::BezierSurface": BezierSurfacePanel,
 }

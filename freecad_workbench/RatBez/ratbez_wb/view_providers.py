@@ -1,5 +1,5 @@
-"""View providers of the RatBez features: icons, the profile as tree child, the task panel on
-double-click (setEdit), showing the profile again on delete."""
+"""View providers of the RatBez features: icons, the profiles, sections and path as tree children, the task
+panel on double-click (setEdit), showing them again on delete."""
 
 from . import features, resources
 from .i18n import translate
@@ -13,15 +13,13 @@ _ICONS = {
     "RatBez::Torus": "RatBez_Torus",
     "RatBez::Revolve": "RatBez_Revolve",
     "RatBez::Extrude": "RatBez_Extrude",
+    "RatBez::Ruled": "RatBez_Ruled",
+    "RatBez::Loft": "RatBez_Loft",
+    "RatBez::Sweep": "RatBez_Sweep",
 }
 
 # Edit mode 0 (Gui::ViewProvider::Default) is the task panel; other modes (Transform, ...) stay FreeCAD's.
 _DEFAULT_EDIT = 0
-
-
-def _profile_object(obj):
-    link = getattr(obj, "Profile", None) if obj is not None else None
-    return link[0] if link else None
 
 
 class ViewProviderRatBez:
@@ -39,13 +37,12 @@ class ViewProviderRatBez:
         return resources.icon(name)
 
     def claimChildren(self):
-        child = _profile_object(getattr(self, "Object", None))
-        return [child] if child is not None else []
+        return features.linked_objects(getattr(self, "Object", None))
 
     def onDelete(self, vobj, subelements):
-        child = _profile_object(vobj.Object)
-        if child is not None and child.ViewObject is not None:
-            child.ViewObject.Visibility = True
+        for child in features.linked_objects(vobj.Object):
+            if child.ViewObject is not None:
+                child.ViewObject.Visibility = True
         return True
 
     # -- editing: the task panel ------------------------------------------------------------------
