@@ -25,7 +25,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -43,6 +42,7 @@
 #include "ratbez/export/export.hpp"
 #include "ratbez/occt/check.hpp"
 #include "ratbez/occt/files.hpp"
+#include "ratbez/output_file.hpp"
 #include "ratbez/tessellate.hpp"
 #include "spec.hpp"
 
@@ -414,13 +414,7 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
                                    format_number(row.tolerance, 4));
 
         const fs::path scad = out_dir / (spec.name + ".scad");
-        {
-            std::ofstream out(scad, std::ios::binary);
-            if (!out) throw ratbez::Error("path", "cannot open '" + scad.string() + "' for writing");
-            ratbez::exporter::write_openscad(mesh, out);
-            out.close();
-            if (!out) throw ratbez::Error("path", "writing '" + scad.string() + "' failed");
-        }
+        ratbez::output::write_file(scad.string(), [&](std::ostream& out) { ratbez::exporter::write_openscad(mesh, out); });
         ratbez::occt::write_step(spec.solid, (out_dir / (spec.name + ".step")).string());
 
         const auto occt_report = ratbez::occt::check(spec.solid);
@@ -433,14 +427,12 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
             const auto box = spec.solid.bounding_box();
             const double far = box.diagonal();
             const fs::path wrapper = out_dir / (spec.name + "_check.scad");
-            {
-                std::ofstream out(wrapper);
+            ratbez::output::write_file(wrapper.string(), [&](std::ostream& out) {
                 out << "// Renders " << spec.name << ".scad through CGAL (a boolean operation checks the mesh).\n"
                     << "difference() {\n  union() { include <" << spec.name << ".scad> }\n  translate(["
                     << format_number(box.max.x + far, 17) << ", " << format_number(box.max.y + far, 17) << ", "
                     << format_number(box.max.z + far, 17) << "]) cube(" << format_number(far * 1e-3, 17) << ");\n}\n";
-                if (!out) throw ratbez::Error("path", "cannot write '" + wrapper.string() + "'");
-            }
+            });
             const fs::path png = out_dir / (spec.name + ".png");
             std::error_code ignored;
             fs::remove(png, ignored);
@@ -496,9 +488,14 @@ int command_demo(const std::vector<std::string>& raw) {
     if (render && !on_path("openscad")) throw UsageError("--no-render", "openscad is not on PATH; install it or pass --no-render");
 
     std::vector<DemoRow> rows;
+    std::map<std::string, std::string> file_of_name;  // a spec's name names its files: two alike would overwrite
     for (const auto& spec : specs) {
         std::cerr << "building " << spec.filename().string() << " ...\n";
         rows.push_back(demo_one(spec, out_dir, render));
+        const auto [first, fresh] = file_of_name.emplace(rows.back().shape, spec.filename().string());
+        if (!fresh)
+            rows.back().failures.push_back("the name '" + rows.back().shape + "' is also the name of " + first->second +
+                                           ": its files were overwritten");
     }
 
     const char* header_format = "%-22s %10s %9s %11s %14s %14s %5s %5s %8s\n";
@@ -539,6 +536,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ratbez::output::remove_temporaries_on_signals();  // Ctrl-C or kill leave no half-written temporary behind
     try {
         return run(argc, argv);
     } catch (const ratbez::spec::SpecError& e) {

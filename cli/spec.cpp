@@ -434,9 +434,28 @@ std::string json_message(const json::exception& e) {
 }  // namespace
 
 ShapeSpec parse_spec(std::string_view json_text, const std::string& fallback_name) {
+    if (json_text.size() > max_spec_bytes)
+        throw SpecError("document", "has " + std::to_string(json_text.size()) + " bytes, above the limit " +
+                                        std::to_string(max_spec_bytes) + " for a spec");
     json document;
     try {
-        document = json::parse(json_text.begin(), json_text.end());
+        // Checked while parsing, before the document grows with them (issue 14): the nesting depth (30 MB of
+        // '[' took 2.3 GB) and keys repeated in one object (the last one silently won).
+        std::vector<std::set<std::string>> keys;  // of the objects open at this point
+        const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
+            if (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) {
+                if (depth >= max_json_depth)
+                    throw SpecError("document", "nests objects and arrays deeper than the limit " +
+                                                    std::to_string(max_json_depth));
+                if (event == json::parse_event_t::object_start) keys.emplace_back();
+            } else if (event == json::parse_event_t::object_end) {
+                keys.pop_back();
+            } else if (event == json::parse_event_t::key && !keys.back().insert(parsed.get<std::string>()).second) {
+                throw SpecError("document", "the key \"" + parsed.get<std::string>() + "\" appears twice in one object");
+            }
+            return true;
+        };
+        document = json::parse(json_text.begin(), json_text.end(), check);
     } catch (const json::exception& e) {
         // parse_error for malformed text, out_of_range for a number that overflows a double (1e400).
         throw SpecError("document", "not valid JSON: " + json_message(e));
@@ -473,11 +492,15 @@ ShapeSpec parse_spec(std::string_view json_text, const std::string& fallback_nam
 ShapeSpec load_spec(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SpecError(path, "cannot open the file");
-    std::ostringstream text;
-    text << in.rdbuf();
+    // At most one byte past the limit is read: /dev/zero or a huge file is refused, not read into memory.
+    std::string text(max_spec_bytes + 1, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
     if (in.bad()) throw SpecError(path, "cannot read the file");
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_spec_bytes)
+        throw SpecError(path, "has more than " + std::to_string(max_spec_bytes) + " bytes, the limit for a spec");
     try {
-        return parse_spec(text.str(), std::filesystem::path(path).stem().string());
+        return parse_spec(text, std::filesystem::path(path).stem().string());
     } catch (const SpecError& e) {
         if (e.path() == "document") throw SpecError(path, e.reason());
         throw;

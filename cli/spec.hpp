@@ -8,6 +8,7 @@
 //
 // A library of its own (no OCCT, no CGAL, no I/O beyond load_spec) so that a fuzzer can drive it.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,6 +25,11 @@ public:
     explicit SpecError(const Error& error) : Error(error) {}  // a kernel error already put under its path
     std::string_view path() const noexcept { return argument(); }  // "shape.radius", "shape.profile[2].knots", ...
 };
+
+// The limits of a spec document, checked before the work grows with it (README, Input limits): its size in
+// bytes (a file is read only up to one byte past it) and the nesting depth of its objects and arrays.
+inline constexpr std::size_t max_spec_bytes = 16u << 20;
+inline constexpr int max_json_depth = 64;
 
 struct ShapeSpec {
     std::string name;                         // `name`, else the fallback (the file's stem)

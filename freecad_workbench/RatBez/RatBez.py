@@ -221,8 +221,9 @@ def export_openscad(obj, path, tolerance=None):
     if placement.isIdentity():
         rb.export_openscad(solid, path, tolerance)
         return path
-    directory = os.path.dirname(os.path.abspath(path))
-    handle, temporary = tempfile.mkstemp(suffix=".scad", dir=directory)
+    # The polyhedron text goes through a private temporary file, the result through the kernel's writer
+    # (write_text_file: a new file renamed over the target, the rules of every ratbez export).
+    handle, temporary = tempfile.mkstemp(suffix=".scad")
     os.close(handle)
     try:
         rb.export_openscad(solid, temporary, tolerance)
@@ -232,9 +233,8 @@ def export_openscad(obj, path, tolerance=None):
         os.remove(temporary)
     rows = ",\n  ".join("[" + ", ".join(repr(float(v)) for v in row) + "]"
                         for row in _placement_matrix_rows(placement))
-    with open(path, "w") as target:
-        target.write("// RatBez '{}' with its FreeCAD Placement\nmultmatrix([\n  {}]) {{\n{}\n}}\n".format(
-            safe_label(obj.Label), rows, body))
+    rb.write_text_file(path, "// RatBez '{}' with its FreeCAD Placement\nmultmatrix([\n  {}]) {{\n{}\n}}\n".format(
+        safe_label(obj.Label), rows, body))
     return path
 
 

@@ -1,15 +1,12 @@
 #include "ratbez/export/export.hpp"
 
 #include <cctype>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <ostream>
 #include <string>
-#include <system_error>
 
 #include "ratbez/error.hpp"
+#include "ratbez/output_file.hpp"
 
 namespace ratbez::exporter {
 namespace {
@@ -39,40 +36,19 @@ void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions&
         throw Error("mesh", reason);
     }
 
-    // Write beside the target and rename at the end, so a failure never leaves a truncated file that
-    // looks like a result (and an existing file is replaced only by a complete one).
-    const std::string temporary = path + ".ratbez-partial";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error("path", "cannot open '" + path + "' for writing: " + std::strerror(errno));
-        try {
-            switch (format) {
-            case Format::openscad: write_openscad(mesh, out, options.openscad); break;
-            case Format::stl:
-                if (options.binary_stl)
-                    write_stl_binary(mesh, out);
-                else
-                    write_stl_ascii(mesh, out, options.openscad.module_name.empty() ? "ratbez" : options.openscad.module_name);
-                break;
-            case Format::off: write_off(mesh, out); break;
-            }
-            out.close();
-            if (!out) throw Error("path", "writing '" + path + "' failed");
-        } catch (const Error& e) {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            // A write failure of the stream is a failure of the path (disk full, ...); option errors pass as they are.
-            if (e.argument() == "out") throw Error("path", "writing '" + path + "' failed");
-            throw;
+    // One writer for every format (output_file.hpp): a new temporary beside the target, renamed over it.
+    output::write_file(path, [&](std::ostream& out) {
+        switch (format) {
+        case Format::openscad: write_openscad(mesh, out, options.openscad); break;
+        case Format::stl:
+            if (options.binary_stl)
+                write_stl_binary(mesh, out);
+            else
+                write_stl_ascii(mesh, out, options.openscad.module_name.empty() ? "ratbez" : options.openscad.module_name);
+            break;
+        case Format::off: write_off(mesh, out); break;
         }
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw Error("path", "cannot write '" + path + "': " + error.message());
-    }
+    });
 }
 
 }  // namespace ratbez::exporter

@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "ratbez/error.hpp"
+
 namespace ratbez::exporter {
 namespace {
 
@@ -154,6 +156,11 @@ std::string orientation_problem(const Mesh& mesh) {
 }  // namespace
 
 MeshReport check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
+    require(mesh.triangles.size() <= options.max_triangles, "mesh", [&] {
+        return "has " + std::to_string(mesh.triangles.size()) + " triangles, above the limit " +
+               std::to_string(options.max_triangles) + " of the export's mesh checks (about " +
+               std::to_string(bytes_per_checked_triangle) + " bytes each); use a coarser tolerance";
+    });
     MeshReport report;
 
     // Structural problems first: CGAL's algorithms assume valid indices, finite points and no

@@ -234,7 +234,8 @@ TEST_F(Cli, UnknownExtensionAndUnwritablePath) {
                      "usage error: -o: unknown extension '.obj' in '" + path("a.obj") +
                          "' (expected .scad, .stl, .off, .step or .brep)");
     expect_bad_input(ratbez({"export", sphere, "-o", path("no/such/dir/a.scad")}),
-                     "error: path: cannot open '" + path("no/such/dir/a.scad") + "' for writing: No such file or directory");
+                     "error: path: the folder '" + path("no/such/dir") + "' of '" + path("no/such/dir/a.scad") +
+                         "' does not exist");
     expect_bad_input_prefix(ratbez({"export", sphere, "-o", path("no/such/dir/a.step")}), "error: path: ");
     expect_bad_input_prefix(ratbez({"export", sphere, "-o", path("no/such/dir/a.brep")}), "error: path: ");
 }
@@ -355,6 +356,26 @@ TEST_F(Cli, CheckPassesOnEveryExample) {
     const CommandResult table = ratbez({"check", example("cone.json")});
     EXPECT_EQ(table.exit_code, 0) << table.err;
     EXPECT_EQ(table.out.rfind("cone (cone)\n", 0), 0u) << table.out;
+}
+
+// Issue 14, items 9 and 11: a spec's size and nesting are bounded before the work grows, repeated keys are
+// refused, and two demo specs with one name fail the demo instead of overwriting each other's files.
+TEST_F(Cli, SpecSizeDepthAndRepeatedKeysAreRefused) {
+    const CommandResult zero = ratbez({"info", "/dev/zero"});  // read until memory ran out
+    expect_bad_input(zero, "spec error: /dev/zero: has more than 16777216 bytes, the limit for a spec");
+    const std::string deep = spec_file(std::string(100000, '['));
+    expect_bad_input(ratbez({"info", deep}), "spec error: " + deep + ": nests objects and arrays deeper than the limit 64");
+    const std::string twice = spec_file(R"({"shape": {"type": "sphere", "radius": 1, "radius": 2}})");
+    expect_bad_input(ratbez({"info", twice}), "spec error: " + twice + ": the key \"radius\" appears twice in one object");
+}
+
+TEST_F(Cli, DemoFailsWhenTwoSpecsShareAName) {
+    fs::create_directories(dir_ / "specs");
+    std::ofstream(dir_ / "specs" / "a.json") << R"({"name": "same", "shape": {"type": "sphere", "radius": 1}})";
+    std::ofstream(dir_ / "specs" / "b.json") << R"({"name": "same", "shape": {"type": "sphere", "radius": 2}})";
+    const CommandResult demo = ratbez({"demo", path("out"), "--examples", (dir_ / "specs").string(), "--no-render"});
+    EXPECT_EQ(demo.exit_code, 1) << demo.out << demo.err;
+    EXPECT_NE(demo.out.find("FAIL same: the name 'same' is also the name of a.json"), std::string::npos) << demo.out;
 }
 
 }  // namespace

@@ -8,14 +8,14 @@
 
 #include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/limits.hpp"
 
 namespace ratbez {
 
 namespace {
 
-void require_degree(int n) {
-    require(n >= 0, "n", [&] { return "the degree must be >= 0, got " + std::to_string(n); });
-}
+// The degree of every basis is bounded like every curve's (limits.hpp): A1.2 is O(n^2).
+void require_degree(int n) { limits::require_degree(n, "n"); }
 
 }  // namespace
 
@@ -59,7 +59,7 @@ std::vector<double> all_bernstein(int n, double u) {
 
 std::vector<double> all_bernstein_derivatives(int n, int k, double u) {
     require_degree(n);
-    require(k >= 0, "k", [&] { return "the derivative order must be >= 0, got " + std::to_string(k); });
+    limits::require_derivative_order(k, "k");
     require_in_domain(u, 0.0, 1.0, "u");
 
     const auto size = static_cast<std::size_t>(n) + 1;

@@ -10,7 +10,9 @@
 
 #include "ratbez/bernstein.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/limits.hpp"
 #include "rational_derivatives.hpp"
+#include "weights_internal.hpp"
 
 namespace ratbez {
 
@@ -18,6 +20,7 @@ namespace {
 
 void validate_points(const std::vector<Vec3>& points) {
     require(!points.empty(), "points", "a Bézier curve needs at least one control point");
+    limits::require_bezier_count(points.size(), "points");
     for (std::size_t i = 0; i < points.size(); ++i)
         require(is_finite(points[i]), "points",
                 [&] { return "control point " + std::to_string(i) + " has a non-finite coordinate"; });
@@ -31,9 +34,10 @@ void validate_weight(double weight, std::size_t index, const std::string& argume
             [&] { return "weight " + std::to_string(index) + " is " + std::to_string(weight) + " but must be > 0"; });
 }
 
-std::vector<Vec4> homogenize_all(const std::vector<Vec3>& points, const std::vector<double>& weights) {
+// P^w_i = (2^k w_i P_i, 2^k w_i): the weights scaled first, so that w P cannot overflow (weights_internal.hpp).
+std::vector<Vec4> homogenize_all(const std::vector<Vec3>& points, const std::vector<double>& weights, int exponent) {
     std::vector<Vec4> pw(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) pw[i] = homogenize(points[i], weights[i]);
+    for (std::size_t i = 0; i < points.size(); ++i) pw[i] = homogenize(points[i], std::ldexp(weights[i], exponent));
     return pw;
 }
 
@@ -46,12 +50,12 @@ Vec4 de_casteljau(std::vector<Vec4> q, double u) {
 
 }  // namespace
 
-BezierCurve::BezierCurve(std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/)
-    : pw_(std::move(homogeneous_points)), rational_(rational) {}
+BezierCurve::BezierCurve(std::vector<Vec4> homogeneous_points, bool rational, int weight_exponent)
+    : pw_(std::move(homogeneous_points)), rational_(rational), weight_exponent_(weight_exponent) {}
 
 BezierCurve::BezierCurve(std::vector<Vec3> points) {
     validate_points(points);
-    pw_ = homogenize_all(points, std::vector<double>(points.size(), 1.0));
+    pw_ = homogenize_all(points, std::vector<double>(points.size(), 1.0), 0);
     rational_ = false;
 }
 
@@ -62,19 +66,25 @@ BezierCurve::BezierCurve(std::vector<Vec3> points, std::vector<double> weights) 
                " control points; there must be exactly one weight per control point";
     });
     for (std::size_t i = 0; i < weights.size(); ++i) validate_weight(weights[i], i, "weights");
-    pw_ = homogenize_all(points, weights);
+    weight_exponent_ = detail::weight_scale_exponent_of(weights, detail::products_finite(points, weights));
+    pw_ = homogenize_all(points, weights, weight_exponent_);
     rational_ = true;
 }
 
 BezierCurve BezierCurve::from_homogeneous(std::vector<Vec4> homogeneous_points, bool rational) {
     require(!homogeneous_points.empty(), "homogeneous_points", "a Bézier curve needs at least one control point");
+    limits::require_bezier_count(homogeneous_points.size(), "homogeneous_points");
     for (std::size_t i = 0; i < homogeneous_points.size(); ++i) {
         const Vec4& p = homogeneous_points[i];
         require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), "homogeneous_points",
                 [&] { return "control point " + std::to_string(i) + " has a non-finite coordinate"; });
         validate_weight(p.w, i, "homogeneous_points");
     }
-    return BezierCurve(std::move(homogeneous_points), rational, 0);
+    std::vector<double> weights(homogeneous_points.size());
+    for (std::size_t i = 0; i < weights.size(); ++i) weights[i] = homogeneous_points[i].w;
+    const int exponent = detail::weight_scale_exponent_of(weights);
+    detail::scale_homogeneous(homogeneous_points, exponent);
+    return BezierCurve(std::move(homogeneous_points), rational, exponent);
 }
 
 std::vector<Vec3> BezierCurve::points() const {
@@ -85,7 +95,7 @@ std::vector<Vec3> BezierCurve::points() const {
 
 std::vector<double> BezierCurve::weights() const {
     std::vector<double> result(pw_.size());
-    std::transform(pw_.begin(), pw_.end(), result.begin(), [](const Vec4& p) { return p.w; });
+    std::transform(pw_.begin(), pw_.end(), result.begin(), [&](const Vec4& p) { return std::ldexp(p.w, -weight_exponent_); });
     return result;
 }
 
@@ -97,11 +107,11 @@ Vec4 BezierCurve::homogeneous_point(double u) const {
     return sum;
 }
 
-Vec3 BezierCurve::point(double u) const { return project(homogeneous_point(u)); }
+Vec3 BezierCurve::point(double u) const { return detail::require_finite_point(project(homogeneous_point(u)), u); }
 
 Vec3 BezierCurve::point_de_casteljau(double u) const {
     require_in_domain(u, 0.0, 1.0, "u");
-    return project(de_casteljau(pw_, u));  // Eq. 1.19, then H
+    return detail::require_finite_point(project(de_casteljau(pw_, u)), u);  // Eq. 1.19, then H
 }
 
 std::vector<std::vector<Vec4>> BezierCurve::de_casteljau_table(double u) const {
@@ -121,7 +131,7 @@ std::vector<std::vector<Vec4>> BezierCurve::de_casteljau_table(double u) const {
 
 std::vector<Vec3> BezierCurve::derivatives(double u, int order) const {
     require_in_domain(u, 0.0, 1.0, "u");
-    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
+    limits::require_derivative_order(order, "order");
     const auto count = static_cast<std::size_t>(order) + 1;
 
     // Derivatives of the homogeneous curve C^w = (A, w): Eq. 1.9 says the derivative of a degree-n Bézier
@@ -141,6 +151,7 @@ std::vector<Vec3> BezierCurve::derivatives(double u, int order) const {
     // w > 0 on [0,1] because all w_i > 0.
     std::vector<Vec3> result(count);
     detail::rational_curve_derivatives(homogeneous, result);
+    detail::require_finite_derivatives(result, u);
     return result;
 }
 
@@ -158,10 +169,15 @@ std::pair<BezierCurve, BezierCurve> BezierCurve::split(double u) const {
         left[k] = table[k][0];
         right[k] = table[n - k][k];
     }
-    return {BezierCurve(std::move(left), rational_, 0), BezierCurve(std::move(right), rational_, 0)};
+    return {BezierCurve(std::move(left), rational_, weight_exponent_),
+            BezierCurve(std::move(right), rational_, weight_exponent_)};
 }
 
 BezierCurve BezierCurve::elevate() const {
+    require(degree() < limits::max_degree, "curve", [&] {
+        return "elevating degree " + std::to_string(degree()) + " would give " + std::to_string(degree() + 1) +
+               ", above the degree limit " + std::to_string(limits::max_degree);
+    });
     // Degree elevation on P^w: Q_i = (i/(n+1)) P_{i-1} + (1 - i/(n+1)) P_i, i = 0..n+1 (both end points kept).
     const std::size_t n = pw_.size() - 1;
     std::vector<Vec4> elevated(n + 2);
@@ -171,14 +187,14 @@ BezierCurve BezierCurve::elevate() const {
         const double alpha = static_cast<double>(i) / static_cast<double>(n + 1);
         elevated[i] = lerp(pw_[i], pw_[i - 1], alpha);
     }
-    return BezierCurve(std::move(elevated), rational_, 0);
+    return BezierCurve(std::move(elevated), rational_, weight_exponent_);
 }
 
 BezierCurve BezierCurve::reversed() const {
     // Exercise 1.11: B_{i,n}(1-u) = B_{n-i,n}(u) (symmetry P1.5), so reversing the control points (and their
     // weights with them) gives C_2(u) = C_1(1-u).
     std::vector<Vec4> backwards(pw_.rbegin(), pw_.rend());
-    return BezierCurve(std::move(backwards), rational_, 0);
+    return BezierCurve(std::move(backwards), rational_, weight_exponent_);
 }
 
 BezierCurve BezierCurve::normal_form() const {

@@ -14,7 +14,9 @@
 #include "numeric_internal.hpp"
 #include "ratbez/bernstein.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/limits.hpp"
 #include "rational_derivatives.hpp"
+#include "weights_internal.hpp"
 
 namespace ratbez {
 
@@ -57,8 +59,10 @@ std::string index_pair(std::size_t i, std::size_t j) {
 // Checks that `net` is a non-empty rectangle of finite points; returns its columns.
 std::size_t validate_net(const std::vector<std::vector<Vec3>>& net) {
     require(!net.empty(), "net", "a Bézier surface needs at least one row of control points");
+    limits::require_bezier_count(net.size(), "net", "rows");
     const std::size_t columns = net.front().size();
     require(columns > 0, "net", "row 0 is empty; every row needs at least one control point");
+    limits::require_bezier_count(columns, "net", "columns");
     for (std::size_t i = 0; i < net.size(); ++i) {
         require(net[i].size() == columns, "net", [&] {
             return "row " + std::to_string(i) + " has " + std::to_string(net[i].size()) + " points but row 0 has " +
@@ -72,8 +76,10 @@ std::size_t validate_net(const std::vector<std::vector<Vec3>>& net) {
 
 }  // namespace
 
-BezierSurface::BezierSurface(int rows, int columns, std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/)
-    : rows_(rows), columns_(columns), pw_(std::move(homogeneous_points)), rational_(rational) {}
+BezierSurface::BezierSurface(int rows, int columns, std::vector<Vec4> homogeneous_points, bool rational,
+                             int weight_exponent)
+    : rows_(rows), columns_(columns), pw_(std::move(homogeneous_points)), rational_(rational),
+      weight_exponent_(weight_exponent) {}
 
 BezierSurface::BezierSurface(std::vector<std::vector<Vec3>> net) {
     const std::size_t columns = validate_net(net);
@@ -98,11 +104,17 @@ BezierSurface::BezierSurface(std::vector<std::vector<Vec3>> net, std::vector<std
         });
         for (std::size_t j = 0; j < columns; ++j) validate_weight(weights[i][j], "weights", [&] { return index_pair(i, j); });
     }
+    std::vector<double> all_weights;
+    std::vector<Vec3> all_points;
+    for (const auto& row : weights) all_weights.insert(all_weights.end(), row.begin(), row.end());
+    for (const auto& row : net) all_points.insert(all_points.end(), row.begin(), row.end());
+    weight_exponent_ = detail::weight_scale_exponent_of(all_weights, detail::products_finite(all_points, all_weights));
     rows_ = static_cast<int>(net.size());
     columns_ = static_cast<int>(columns);
     pw_.resize(net.size() * columns);
     for (std::size_t i = 0; i < net.size(); ++i)
-        for (std::size_t j = 0; j < columns; ++j) pw_[i * columns + j] = homogenize(net[i][j], weights[i][j]);
+        for (std::size_t j = 0; j < columns; ++j)
+            pw_[i * columns + j] = homogenize(net[i][j], std::ldexp(weights[i][j], weight_exponent_));
     rational_ = true;
 }
 
@@ -110,6 +122,8 @@ BezierSurface BezierSurface::from_homogeneous(int rows, int columns, std::vector
                                               bool rational) {
     require(rows >= 1, "rows", [&] { return "must be >= 1, got " + std::to_string(rows); });
     require(columns >= 1, "columns", [&] { return "must be >= 1, got " + std::to_string(columns); });
+    limits::require_bezier_count(to_size(rows), "rows", "rows");
+    limits::require_bezier_count(to_size(columns), "columns", "columns");
     require(homogeneous_points.size() == to_size(rows) * to_size(columns), "homogeneous_points", [&] {
         return "has " + std::to_string(homogeneous_points.size()) +
                " points but rows x columns = " + std::to_string(to_size(rows) * to_size(columns));
@@ -121,7 +135,11 @@ BezierSurface BezierSurface::from_homogeneous(int rows, int columns, std::vector
                     [&] { return "control point " + index_pair(i, j) + " has a non-finite coordinate"; });
             validate_weight(p.w, "homogeneous_points", [&] { return index_pair(i, j); });
         }
-    return BezierSurface(rows, columns, std::move(homogeneous_points), rational, 0);
+    std::vector<double> weights(homogeneous_points.size());
+    for (std::size_t k = 0; k < weights.size(); ++k) weights[k] = homogeneous_points[k].w;
+    const int exponent = detail::weight_scale_exponent_of(weights);
+    detail::scale_homogeneous(homogeneous_points, exponent);
+    return BezierSurface(rows, columns, std::move(homogeneous_points), rational, exponent);
 }
 
 std::vector<std::vector<Vec3>> BezierSurface::points() const {
@@ -134,7 +152,7 @@ std::vector<std::vector<Vec3>> BezierSurface::points() const {
 std::vector<std::vector<double>> BezierSurface::weights() const {
     std::vector<std::vector<double>> result(to_size(rows_), std::vector<double>(to_size(columns_)));
     for (int i = 0; i < rows_; ++i)
-        for (int j = 0; j < columns_; ++j) result[to_size(i)][to_size(j)] = homogeneous_point(i, j).w;
+        for (int j = 0; j < columns_; ++j) result[to_size(i)][to_size(j)] = std::ldexp(homogeneous_point(i, j).w, -weight_exponent_);
     return result;
 }
 
@@ -153,21 +171,21 @@ Vec3 BezierSurface::point_basis(double u, double v) const {
         for (std::size_t j = 0; j < to_size(columns_); ++j) row_sum += basis_v[j] * pw_[i * to_size(columns_) + j];
         sum += basis_u[i] * row_sum;
     }
-    return project(sum);
+    return detail::require_finite_point(project(sum), u, v);
 }
 
 Vec3 BezierSurface::point_u_first(double u, double v) const {
     // A1.7, first branch: Q_j(u) = deCasteljau in u on column j are the control points of C_u(v) (Eq. 1.24).
     require_in_domain(u, 0.0, 1.0, "u");
     require_in_domain(v, 0.0, 1.0, "v");  // here, not inside the isocurve, which would call it "u"
-    return isocurve_u(u).point_de_casteljau(v);
+    return detail::require_finite_point(isocurve_u(u).point_de_casteljau(v), u, v);
 }
 
 Vec3 BezierSurface::point_v_first(double u, double v) const {
     // A1.7, second branch: Q_i(v) = deCasteljau in v on row i are the control points of C_v(u).
     require_in_domain(u, 0.0, 1.0, "u");
     require_in_domain(v, 0.0, 1.0, "v");
-    return isocurve_v(v).point_de_casteljau(u);
+    return detail::require_finite_point(isocurve_v(v).point_de_casteljau(u), u, v);
 }
 
 Vec3 BezierSurface::point_one_step(double u, double v) const {
@@ -188,8 +206,8 @@ Vec3 BezierSurface::point_one_step(double u, double v) const {
         --rows;
         --columns;
     }
-    if (rows > 1) return project(de_casteljau_strided(q.data(), rows, stride, u));
-    return project(de_casteljau_strided(q.data(), columns, 1, v));
+    const Vec4 last = rows > 1 ? de_casteljau_strided(q.data(), rows, stride, u) : de_casteljau_strided(q.data(), columns, 1, v);
+    return detail::require_finite_point(project(last), u, v);
 }
 
 BezierCurve BezierSurface::isocurve_u(double u0) const {
@@ -211,7 +229,7 @@ BezierCurve BezierSurface::isocurve_v(double v0) const {
 std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, int order) const {
     require_in_domain(u, 0.0, 1.0, "u");
     require_in_domain(v, 0.0, 1.0, "v");
-    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
+    limits::require_derivative_order(order, "order");
     const std::size_t d = to_size(order);
 
     // Homogeneous partials Aw[k][l] = d^{k+l} S^w / du^k dv^l. S^w is a polynomial tensor product, so the
@@ -246,6 +264,7 @@ std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, in
     // The quotient rule on A = w S, solved for S (A4.4, rational_derivatives.hpp).
     std::vector<Vec3> flat(stride * stride);
     detail::rational_surface_derivatives(aw, flat, stride);
+    detail::require_finite_partials(flat, stride, u, v);
     std::vector<std::vector<Vec3>> skl(d + 1);
     for (std::size_t k = 0; k <= d; ++k) skl[k].assign(flat.begin() + static_cast<std::ptrdiff_t>(k * stride),
                                                        flat.begin() + static_cast<std::ptrdiff_t>(k * stride + d - k + 1));
@@ -253,8 +272,9 @@ std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, in
 }
 
 Vec3 BezierSurface::derivative(double u, double v, int du, int dv) const {
-    require(du >= 0, "du", [&] { return "the derivative order must be >= 0, got " + std::to_string(du); });
-    require(dv >= 0, "dv", [&] { return "the derivative order must be >= 0, got " + std::to_string(dv); });
+    limits::require_derivative_order(du, "du");
+    limits::require_derivative_order(dv, "dv");
+    limits::require_derivative_order(du + dv, "du + dv");
     return derivatives(u, v, du + dv)[to_size(du)][to_size(dv)];
 }
 

@@ -200,6 +200,10 @@ Solid::Solid(std::vector<Face> faces, Construction construction) : construction_
                     std::to_string(forward) + " time(s) forward and " + std::to_string(backward) +
                     " time(s) reversed; a closed shell uses every edge once in each direction");
     }
+    // A solid too large or too small to measure (limits.hpp) would fail the check below for the wrong reason.
+    Box box;
+    for (const Face& face : faces) box.add(face.surface().control_box());
+    detail::require_solid_scale(box.diagonal(), detail::reach_of(box), "faces", "faces");
     // Coherent edge directions make the shell consistently oriented; the sign of the enclosed volume
     // tells outward from inward.
     require(detail::faces_volume(faces, "faces", /*quick=*/true) > 0, "faces",

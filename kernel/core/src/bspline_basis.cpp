@@ -5,15 +5,22 @@
 // u_{span+r+1} - u_{span+1-j+r} over an interval that contains the non-empty span [u_span, u_{span+1}),
 // which the functions require. A2.4 divides only by the length of the support of a basis function that
 // is non-zero at u, which is therefore positive; that is the 0/0 := 0 rule of 001 made operational.
+//
+// Where N / (u_{k+1} - u_k) overflows (a domain as short as [0, 5e-324]: inf * 0 gave NaN where every basis
+// value is an ordinary number in [0, 1]) the values are formed from RATIOS of knot differences instead
+// (ratio_step). Knot vectors whose spread u_m - u_0 overflows are refused, so no difference the algorithms
+// take can overflow either.
 
 #include "ratbez/bspline_basis.hpp"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/limits.hpp"
 
 namespace ratbez {
 namespace {
@@ -24,8 +31,23 @@ using detail::to_size;
 // Work space on the stack for every practical degree: (p+1)^2 + 2(p+1) <= 384 for p <= 17.
 using Scratch = detail::Scratch<double, 384>;
 
-void require_degree(int degree) {
-    require(degree >= 0, "degree", [&] { return "must be >= 0, got " + std::to_string(degree); });
+void require_degree(int degree) { limits::require_degree(degree, "degree"); }
+
+// value * part / length, one step of the triangular schemes (A2.2, A2.3, A2.4): the textbook's order
+// (value / length) * part, whose rounding the grid evaluator (surface_grid.cpp) shares, unless value / length
+// overflows (a span as short as 5e-324: inf * 0 gave NaN); then value * (part / length), where the ratio of
+// knot differences lies in [0, 1].
+inline double ratio_step(double value, double part, double length) {
+    const double temp = value / length;
+    return std::isfinite(temp) ? part * temp : value * (part / length);
+}
+
+// Every knot difference of a vector whose spread u_m - u_0 is finite is finite too (see the top).
+void require_finite_spread(std::span<const double> knots, const std::string& argument) {
+    require(std::isfinite(knots.back() - knots.front()), argument, [&] {
+        return "the knots spread from " + number(knots.front()) + " to " + number(knots.back()) +
+               ", a length beyond double range";
+    });
 }
 
 // The checks shared by A2.2 and A2.3: a span index inside the domain whose span is not empty, so that
@@ -76,6 +98,7 @@ void validate_knot_vector(int degree, std::span<const double> knots, int control
             return "must be non-decreasing, but knot " + std::to_string(i) + " (" + number(knots[i]) +
                    ") is less than knot " + std::to_string(i - 1) + " (" + number(knots[i - 1]) + ")";
         });
+    require_finite_spread(knots, argument);
 
     const std::size_t p = to_size(degree);
     const std::size_t m = knots.size() - 1;
@@ -122,9 +145,9 @@ std::vector<double> breakpoints(int degree, std::span<const double> knots) {
 }
 
 double bspline_basis(int i, int p, std::span<const double> knots, double u) {
-    require(p >= 0, "p", [&] { return "the degree must be >= 0, got " + std::to_string(p); });
+    limits::require_degree(p, "p");  // first: the messages below compute with p
     require(knots.size() >= to_size(p) + 2, "knots", [&] {
-        return "a degree-" + std::to_string(p) + " basis function needs at least " + std::to_string(p + 2) +
+        return "a degree-" + std::to_string(p) + " basis function needs at least " + std::to_string(to_size(p) + 2) +
                " knots, got " + std::to_string(knots.size());
     });
     const int last_index = static_cast<int>(knots.size()) - p - 2;
@@ -136,6 +159,7 @@ double bspline_basis(int i, int p, std::span<const double> knots, double u) {
             return "must be non-decreasing, but knot " + std::to_string(k) + " (" + number(knots[k]) +
                    ") is less than knot " + std::to_string(k - 1) + " (" + number(knots[k - 1]) + ")";
         });
+    require_finite_spread(knots, "knots");
     require_finite(u, "u");
 
     // A2.4 (OneBasisFun): the triangle of 001 restricted to the p + 1 step functions N_{i..i+p,0}.
@@ -154,8 +178,14 @@ double bspline_basis(int i, int p, std::span<const double> knots, double u) {
     for (std::size_t j = 0; j < order; ++j) n[j] = step(first + j);
 
     for (std::size_t k = 1; k < order; ++k) {
-        // A zero N_{j,k-1} contributes nothing (0/0 := 0); a non-zero one has a support of positive length.
-        double saved = n[0] == 0.0 ? 0.0 : (u - knots[first]) * n[0] / (knots[first + k] - knots[first]);
+        // A zero N_{j,k-1} contributes nothing (0/0 := 0); a non-zero one has a support of positive length
+        // that contains u, so the ratios below lie in [0, 1].
+        double saved = 0.0;
+        if (n[0] != 0.0) {
+            const double length = knots[first + k] - knots[first];
+            const double product = (u - knots[first]) * n[0] / length;
+            saved = std::isfinite(product) ? product : n[0] * ((u - knots[first]) / length);
+        }
         for (std::size_t j = 0; j < order - k; ++j) {
             const double knot_left = knots[first + j + 1];
             const double knot_right = knots[first + j + k + 1];
@@ -163,9 +193,9 @@ double bspline_basis(int i, int p, std::span<const double> knots, double u) {
                 n[j] = saved;
                 saved = 0.0;
             } else {
-                const double temp = n[j + 1] / (knot_right - knot_left);
-                n[j] = saved + (knot_right - u) * temp;
-                saved = (u - knot_left) * temp;
+                const double support = knot_right - knot_left;
+                n[j] = saved + ratio_step(n[j + 1], knot_right - u, support);
+                saved = ratio_step(n[j + 1], u - knot_left, support);
             }
         }
     }
@@ -198,9 +228,10 @@ void basis_functions(int span, double u, int degree, std::span<const double> kno
         for (std::size_t r = 0; r < j; ++r) {
             const double right = knots[s + r + 1] - u;
             const double left = u - knots[s + 1 + r - j];
-            const double temp = out[r] / (right + left);
-            out[r] = saved + right * temp;
-            saved = left * temp;
+            const double length = right + left;  // a knot difference > 0
+            const double value = out[r];
+            out[r] = saved + ratio_step(value, right, length);
+            saved = ratio_step(value, left, length);
         }
         out[j] = saved;
     }
@@ -230,9 +261,9 @@ void basis_function_derivatives(int span, double u, int degree, std::span<const 
             const double right = knots[s + r + 1] - u;
             const double left = u - knots[s + 1 + r - j];
             ndu(j, r) = right + left;  // u_{s+r+1} - u_{s+1+r-j} > 0
-            const double temp = ndu(r, j - 1) / ndu(j, r);
-            ndu(r, j) = saved + right * temp;
-            saved = left * temp;
+            const double value = ndu(r, j - 1);  // as in A2.2
+            ndu(r, j) = saved + ratio_step(value, right, ndu(j, r));
+            saved = ratio_step(value, left, ndu(j, r));
         }
         ndu(j, j) = saved;
     }
@@ -275,7 +306,7 @@ void basis_function_derivatives(int span, double u, int degree, std::span<const 
 
 std::vector<std::vector<double>> basis_function_derivatives(int span, double u, int degree,
                                                             std::span<const double> knots, int order) {
-    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
+    limits::require_derivative_order(order, "order");
     require_degree(degree);
     const std::size_t width = to_size(degree) + 1;
     std::vector<double> flat((to_size(order) + 1) * width);

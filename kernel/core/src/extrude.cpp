@@ -3,10 +3,12 @@
 // which is exact for every rational C (P1.14: translations act on the control points).
 #include "ratbez/extrude.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "geometry_internal.hpp"
 #include "planar_profile.hpp"
 #include "profile_crossings.hpp"
 #include "ratbez/error.hpp"
@@ -14,6 +16,20 @@
 #include "tube_shell.hpp"
 
 namespace ratbez {
+
+namespace {
+
+// The scale rule (limits.hpp): the profile's size and the distance both set the solid's size.
+void require_scale(const Profile& profile, double distance) {
+    Box box;
+    for (const NurbsCurve& piece : profile.pieces()) box.add(piece.control_box());
+    const double reach = detail::reach_of(box) + distance;
+    const bool distance_sets_size = distance > profile.size();
+    detail::require_solid_scale(std::max(profile.size(), distance), reach, distance_sets_size ? "distance" : "profile",
+                                "profile");
+}
+
+}  // namespace
 
 NurbsSurface extrude_surface(const NurbsCurve& curve, const Vec3& displacement) {
     require(is_finite(displacement), "displacement", "must have finite coordinates");
@@ -41,6 +57,7 @@ Solid extrude(const Profile& profile, const Vec3& direction, double distance, co
     require_finite(distance, "distance");
     require(distance > 0, "distance", "must be greater than 0");
     require(profile.is_closed(), "profile", "must be closed to bound the caps of an extrusion");
+    require_scale(profile, distance);
     const detail::PlanarProfile outer = detail::analyse_planar_profile(profile);
     const Vec3 reference = outer.reference;
     Vec3 normal = outer.normal;

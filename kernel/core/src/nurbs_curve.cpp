@@ -11,7 +11,9 @@
 
 #include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/limits.hpp"
 #include "rational_derivatives.hpp"
+#include "weights_internal.hpp"
 
 namespace ratbez {
 namespace {
@@ -77,16 +79,23 @@ void insert_knot_in_place(int degree, std::vector<double>& knots, std::vector<Ve
 }  // namespace
 
 NurbsCurve::NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec4> homogeneous_points, bool rational,
-                       int /*tag*/)
-    : degree_(degree), knots_(std::move(knots)), pw_(std::move(homogeneous_points)), rational_(rational) {}
+                       int weight_exponent)
+    : degree_(degree),
+      knots_(std::move(knots)),
+      pw_(std::move(homogeneous_points)),
+      rational_(rational),
+      weight_exponent_(weight_exponent) {}
 
 namespace {
 
-// The checks shared by the two public constructors; `weights` is null for a polynomial curve.
+// The checks shared by the two public constructors; `weights` is null for a polynomial curve. The sizes
+// first (cheap, and before any work grows with them), then the values.
 std::vector<Vec4> validated_homogeneous_points(int degree, const std::vector<double>& knots,
-                                               const std::vector<Vec3>& points, const std::vector<double>* weights) {
-    require(degree >= 0, "degree", [&] { return "must be >= 0, got " + std::to_string(degree); });
+                                               const std::vector<Vec3>& points, const std::vector<double>* weights,
+                                               int& weight_exponent) {
+    limits::require_degree(degree, "degree");
     require(!points.empty(), "points", "a NURBS curve needs at least one control point");
+    limits::require_curve_points(points.size(), "points");
     for (std::size_t i = 0; i < points.size(); ++i)
         require(is_finite(points[i]), "points",
                 [&] { return "control point " + std::to_string(i) + " has a non-finite coordinate"; });
@@ -102,27 +111,31 @@ std::vector<Vec4> validated_homogeneous_points(int degree, const std::vector<dou
                " control points, got " + std::to_string(points.size());
     });
     validate_knot_vector(degree, knots, static_cast<int>(points.size()), "knots");
+    weight_exponent = weights ? detail::weight_scale_exponent_of(*weights, detail::products_finite(points, *weights)) : 0;
     std::vector<Vec4> pw(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) pw[i] = homogenize(points[i], weights ? (*weights)[i] : 1.0);
+    for (std::size_t i = 0; i < points.size(); ++i)
+        pw[i] = homogenize(points[i], weights ? std::ldexp((*weights)[i], weight_exponent) : 1.0);
     return pw;
 }
 
 }  // namespace
 
-NurbsCurve::NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec3> points)
-    : degree_(degree), pw_(validated_homogeneous_points(degree, knots, points, nullptr)), rational_(false) {
+NurbsCurve::NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec3> points) : degree_(degree), rational_(false) {
+    pw_ = validated_homogeneous_points(degree, knots, points, nullptr, weight_exponent_);
     knots_ = std::move(knots);
 }
 
 NurbsCurve::NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec3> points, std::vector<double> weights)
-    : degree_(degree), pw_(validated_homogeneous_points(degree, knots, points, &weights)), rational_(true) {
+    : degree_(degree), rational_(true) {
+    pw_ = validated_homogeneous_points(degree, knots, points, &weights, weight_exponent_);
     knots_ = std::move(knots);
 }
 
 NurbsCurve NurbsCurve::from_homogeneous(int degree, std::vector<double> knots, std::vector<Vec4> homogeneous_points,
                                         bool rational) {
-    require(degree >= 0, "degree", [&] { return "must be >= 0, got " + std::to_string(degree); });
+    limits::require_degree(degree, "degree");
     require(!homogeneous_points.empty(), "homogeneous_points", "a NURBS curve needs at least one control point");
+    limits::require_curve_points(homogeneous_points.size(), "homogeneous_points");
     for (std::size_t i = 0; i < homogeneous_points.size(); ++i) {
         Vec4& p = homogeneous_points[i];
         require(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z), "homogeneous_points",
@@ -142,7 +155,11 @@ NurbsCurve NurbsCurve::from_homogeneous(int degree, std::vector<double> knots, s
                " control points, got " + std::to_string(homogeneous_points.size());
     });
     validate_knot_vector(degree, knots, static_cast<int>(homogeneous_points.size()), "knots");
-    return NurbsCurve(degree, std::move(knots), std::move(homogeneous_points), rational, 0);
+    std::vector<double> weights(homogeneous_points.size());
+    for (std::size_t i = 0; i < weights.size(); ++i) weights[i] = homogeneous_points[i].w;
+    const int exponent = detail::weight_scale_exponent_of(weights);
+    detail::scale_homogeneous(homogeneous_points, exponent);
+    return NurbsCurve(degree, std::move(knots), std::move(homogeneous_points), rational, exponent);
 }
 
 NurbsCurve NurbsCurve::from_bezier(const BezierCurve& curve) {
@@ -150,7 +167,7 @@ NurbsCurve NurbsCurve::from_bezier(const BezierCurve& curve) {
     const int n = curve.degree();
     std::vector<double> knots(2 * to_size(n + 1), 0.0);
     std::fill(knots.begin() + n + 1, knots.end(), 1.0);
-    return NurbsCurve(n, std::move(knots), curve.homogeneous_points(), curve.is_rational(), 0);
+    return NurbsCurve(n, std::move(knots), curve.homogeneous_points(), curve.is_rational(), curve.weight_exponent_);
 }
 
 std::vector<Vec3> NurbsCurve::points() const {
@@ -161,7 +178,7 @@ std::vector<Vec3> NurbsCurve::points() const {
 
 std::vector<double> NurbsCurve::weights() const {
     std::vector<double> result(pw_.size());
-    std::transform(pw_.begin(), pw_.end(), result.begin(), [](const Vec4& p) { return p.w; });
+    std::transform(pw_.begin(), pw_.end(), result.begin(), [&](const Vec4& p) { return std::ldexp(p.w, -weight_exponent_); });
     return result;
 }
 
@@ -189,11 +206,11 @@ Vec3 NurbsCurve::point(double u) const {
     // A4.1: A3.1 in homogeneous space, then the projection H. A polynomial curve skips H: its w is a sum of
     // basis functions, 1 only up to rounding, and dividing by it would perturb every coordinate.
     const Vec4 cw = homogeneous_point(u);
-    return rational_ ? project(cw) : weighted_part(cw);
+    return detail::require_finite_point(rational_ ? project(cw) : weighted_part(cw), u);
 }
 
 std::vector<Vec3> NurbsCurve::derivatives(double u, int order) const {
-    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
+    limits::require_derivative_order(order, "order");
     const int span = find_span(degree_, knots_, u);  // validates u against the domain
     const int highest = std::min(order, degree_);    // derivatives of C^w above p vanish
     const std::size_t width = to_size(degree_) + 1;
@@ -215,10 +232,7 @@ std::vector<Vec3> NurbsCurve::derivatives(double u, int order) const {
     }
     // Finite control points and knots can still give derivatives past the double range (the k-th one
     // scales like 1 / (knot span)^k: a span of 1e-300 overflows the second): an Error, not inf or NaN.
-    for (std::size_t k = 0; k < result.size(); ++k)
-        if (!is_finite(result[k]))
-            throw Error("u", "the derivative of order " + std::to_string(k) + " at u = " + number(u) +
-                        " is not a finite number (a knot span or weight ratio too extreme for double precision)");
+    detail::require_finite_derivatives(result, u);
     return result;
 }
 
@@ -242,12 +256,15 @@ NurbsCurve NurbsCurve::insert_knot(double u, int times) const {
     std::vector<Vec4> pw = pw_;
     insert_knot_in_place(degree_, knots, pw, u, times);
     if (!rational_) reset_polynomial_weights(pw);
-    return NurbsCurve(degree_, std::move(knots), std::move(pw), rational_, 0);
+    return NurbsCurve(degree_, std::move(knots), std::move(pw), rational_, weight_exponent_);
 }
 
 std::vector<BezierCurve> NurbsCurve::bezier_segments() const {
     const int p = degree_;
-    if (p == 0) return {BezierCurve::from_homogeneous({pw_.front()}, rational_)};  // one constant span
+    // The segments keep the curve's weight scale (the private constructor, no re-scaling): callers join the
+    // homogeneous points of neighbouring segments (NurbsSurface::bezier_patches builds patches from the
+    // segments of every column), which from_homogeneous's own scaling of each would make inconsistent.
+    if (p == 0) return {BezierCurve({pw_.front()}, rational_, weight_exponent_)};  // one constant span
 
     // 1. Clamp: raise the domain ends to multiplicity p by A5.1 (a no-op for a clamped vector), drop the
     //    knots and control points outside the domain, and set the outermost knots to the ends. The first
@@ -311,7 +328,7 @@ std::vector<BezierCurve> NurbsCurve::bezier_segments() const {
     result.reserve(segments.size());
     for (std::vector<Vec4>& points : segments) {
         if (!rational_) reset_polynomial_weights(points);
-        result.push_back(BezierCurve::from_homogeneous(std::move(points), rational_));
+        result.push_back(BezierCurve(std::move(points), rational_, weight_exponent_));
     }
     return result;
 }
@@ -327,7 +344,7 @@ NurbsCurve NurbsCurve::reversed() const {
         knots[i] = t == d.max ? d.min : t == d.min ? d.max : (d.min + d.max) - t;
     }
     std::vector<Vec4> pw(pw_.rbegin(), pw_.rend());
-    return NurbsCurve(degree_, std::move(knots), std::move(pw), rational_, 0);
+    return NurbsCurve(degree_, std::move(knots), std::move(pw), rational_, weight_exponent_);
 }
 
 NurbsCurve NurbsCurve::reparameterized(double a, double b) const {
@@ -346,7 +363,7 @@ NurbsCurve NurbsCurve::reparameterized(double a, double b) const {
     }
     // A very short or very long target domain can merge or overflow knots: refuse rather than change the curve.
     validate_knot_vector(degree_, knots, static_cast<int>(pw_.size()), "b");
-    return NurbsCurve(degree_, std::move(knots), pw_, rational_, 0);
+    return NurbsCurve(degree_, std::move(knots), pw_, rational_, weight_exponent_);
 }
 
 NurbsCurve NurbsCurve::normal_form() const {

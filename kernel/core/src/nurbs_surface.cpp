@@ -14,7 +14,9 @@
 #include "limit_normal.hpp"
 #include "numeric_internal.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/limits.hpp"
 #include "rational_derivatives.hpp"
+#include "weights_internal.hpp"
 
 namespace ratbez {
 namespace {
@@ -64,7 +66,7 @@ void reset_polynomial_weights(std::vector<Vec4>& pw) {
 // ---- construction --------------------------------------------------------------------------------------
 
 NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
-                           std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/)
+                           std::vector<Vec4> homogeneous_points, bool rational, int weight_exponent)
     : degree_u_(degree_u),
       degree_v_(degree_v),
       knots_u_(std::move(knots_u)),
@@ -72,19 +74,21 @@ NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots
       rows_(static_cast<int>(knots_u_.size()) - degree_u - 1),
       columns_(static_cast<int>(knots_v_.size()) - degree_v - 1),
       pw_(std::move(homogeneous_points)),
-      rational_(rational) {}
+      rational_(rational),
+      weight_exponent_(weight_exponent) {}
 
 namespace {
 
-// The checks shared by the two public constructors; `weights` is null for a polynomial surface.
-// Returns the row-major homogeneous net.
+// The checks shared by the two public constructors; `weights` is null for a polynomial surface. Sizes
+// first, values after. Returns the row-major homogeneous net, weights scaled by 2^weight_exponent.
 std::vector<Vec4> validated_net(int degree_u, int degree_v, const std::vector<double>& knots_u,
                                 const std::vector<double>& knots_v, const std::vector<std::vector<Vec3>>& net,
-                                const std::vector<std::vector<double>>* weights) {
-    require(degree_u >= 0, "degree_u", [&] { return "must be >= 0, got " + std::to_string(degree_u); });
-    require(degree_v >= 0, "degree_v", [&] { return "must be >= 0, got " + std::to_string(degree_v); });
+                                const std::vector<std::vector<double>>* weights, int& weight_exponent) {
+    limits::require_degree(degree_u, "degree_u");
+    limits::require_degree(degree_v, "degree_v");
     require(!net.empty() && !net.front().empty(), "net", "a NURBS surface needs at least one control point");
     const std::size_t rows = net.size(), columns = net.front().size();
+    limits::require_surface_points(rows, columns, "net");
     for (std::size_t i = 0; i < rows; ++i) {
         require(net[i].size() == columns, "net", [&] {
             return "row " + std::to_string(i) + " has " + std::to_string(net[i].size()) + " points but row 0 has " +
@@ -117,30 +121,42 @@ std::vector<Vec4> validated_net(int degree_u, int degree_v, const std::vector<do
     validate_knot_vector(degree_u, knots_u, static_cast<int>(rows), "knots_u");
     validate_knot_vector(degree_v, knots_v, static_cast<int>(columns), "knots_v");
 
+    weight_exponent = 0;
+    if (weights != nullptr) {
+        std::vector<double> all;
+        std::vector<Vec3> all_points;
+        for (const auto& row : *weights) all.insert(all.end(), row.begin(), row.end());
+        for (const auto& row : net) all_points.insert(all_points.end(), row.begin(), row.end());
+        weight_exponent = detail::weight_scale_exponent_of(all, detail::products_finite(all_points, all));
+    }
     std::vector<Vec4> pw(rows * columns);
     for (std::size_t i = 0; i < rows; ++i)
         for (std::size_t j = 0; j < columns; ++j)
-            pw[i * columns + j] = homogenize(net[i][j], weights ? (*weights)[i][j] : 1.0);
+            pw[i * columns + j] = homogenize(net[i][j], weights ? std::ldexp((*weights)[i][j], weight_exponent) : 1.0);
     return pw;
 }
 
 }  // namespace
 
 NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
-                           std::vector<std::vector<Vec3>> net)
-    : NurbsSurface(degree_u, degree_v, knots_u, knots_v,
-                   validated_net(degree_u, degree_v, knots_u, knots_v, net, nullptr), false, 0) {}
+                           std::vector<std::vector<Vec3>> net) {
+    int exponent = 0;
+    std::vector<Vec4> pw = validated_net(degree_u, degree_v, knots_u, knots_v, net, nullptr, exponent);
+    *this = NurbsSurface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), std::move(pw), false, exponent);
+}
 
 NurbsSurface::NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
-                           std::vector<std::vector<Vec3>> net, std::vector<std::vector<double>> weights)
-    : NurbsSurface(degree_u, degree_v, knots_u, knots_v,
-                   validated_net(degree_u, degree_v, knots_u, knots_v, net, &weights), true, 0) {}
+                           std::vector<std::vector<Vec3>> net, std::vector<std::vector<double>> weights) {
+    int exponent = 0;
+    std::vector<Vec4> pw = validated_net(degree_u, degree_v, knots_u, knots_v, net, &weights, exponent);
+    *this = NurbsSurface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), std::move(pw), true, exponent);
+}
 
 NurbsSurface NurbsSurface::from_homogeneous(int degree_u, int degree_v, std::vector<double> knots_u,
                                             std::vector<double> knots_v, std::vector<Vec4> homogeneous_points,
                                             bool rational) {
-    require(degree_u >= 0, "degree_u", [&] { return "must be >= 0, got " + std::to_string(degree_u); });
-    require(degree_v >= 0, "degree_v", [&] { return "must be >= 0, got " + std::to_string(degree_v); });
+    limits::require_degree(degree_u, "degree_u");
+    limits::require_degree(degree_v, "degree_v");
     require(knots_u.size() >= 2 * to_size(degree_u) + 2, "knots_u", [&] {
         return "degree " + std::to_string(degree_u) + " needs at least " + std::to_string(2 * to_size(degree_u) + 2) +
                " knots, got " + std::to_string(knots_u.size());
@@ -151,6 +167,7 @@ NurbsSurface NurbsSurface::from_homogeneous(int degree_u, int degree_v, std::vec
     });
     const std::size_t rows = knots_u.size() - to_size(degree_u) - 1;
     const std::size_t columns = knots_v.size() - to_size(degree_v) - 1;
+    limits::require_surface_points(rows, columns, "homogeneous_points");
     require(homogeneous_points.size() == rows * columns, "homogeneous_points", [&] {
         return "has " + std::to_string(homogeneous_points.size()) + " points, the knots need " + std::to_string(rows) +
                " x " + std::to_string(columns);
@@ -170,8 +187,12 @@ NurbsSurface NurbsSurface::from_homogeneous(int degree_u, int degree_v, std::vec
     }
     validate_knot_vector(degree_u, knots_u, static_cast<int>(rows), "knots_u");
     validate_knot_vector(degree_v, knots_v, static_cast<int>(columns), "knots_v");
+    std::vector<double> weights(homogeneous_points.size());
+    for (std::size_t k = 0; k < weights.size(); ++k) weights[k] = homogeneous_points[k].w;
+    const int exponent = detail::weight_scale_exponent_of(weights);
+    detail::scale_homogeneous(homogeneous_points, exponent);
     return NurbsSurface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), std::move(homogeneous_points),
-                        rational, 0);
+                        rational, exponent);
 }
 
 NurbsSurface NurbsSurface::from_bezier(const BezierSurface& surface) {
@@ -182,7 +203,8 @@ NurbsSurface NurbsSurface::from_bezier(const BezierSurface& surface) {
         return knots;
     };
     return NurbsSurface(surface.degree_u(), surface.degree_v(), bezier_knots(surface.degree_u()),
-                        bezier_knots(surface.degree_v()), surface.homogeneous_points(), surface.is_rational(), 0);
+                        bezier_knots(surface.degree_v()), surface.homogeneous_points(), surface.is_rational(),
+                        surface.weight_exponent_);
 }
 
 std::vector<std::vector<Vec3>> NurbsSurface::points() const {
@@ -195,7 +217,7 @@ std::vector<std::vector<Vec3>> NurbsSurface::points() const {
 std::vector<std::vector<double>> NurbsSurface::weights() const {
     std::vector<std::vector<double>> w(to_size(rows_), std::vector<double>(to_size(columns_)));
     for (int i = 0; i < rows_; ++i)
-        for (int j = 0; j < columns_; ++j) w[to_size(i)][to_size(j)] = homogeneous_point(i, j).w;
+        for (int j = 0; j < columns_; ++j) w[to_size(i)][to_size(j)] = std::ldexp(homogeneous_point(i, j).w, -weight_exponent_);
     return w;
 }
 
@@ -232,7 +254,7 @@ Vec4 NurbsSurface::homogeneous_point(double u, double v) const {
 Vec3 NurbsSurface::point(double u, double v) const {
     // A4.3: A3.5 in homogeneous space, then H (skipped for a polynomial surface, whose w is 1 up to rounding).
     const Vec4 sw = homogeneous_point(u, v);
-    return rational_ ? project(sw) : weighted_part(sw);
+    return detail::require_finite_point(rational_ ? project(sw) : weighted_part(sw), u, v);
 }
 
 namespace {
@@ -281,13 +303,14 @@ void surface_partials(const NurbsSurface& s, double u, double v, int span_u, int
 }  // namespace
 
 std::vector<std::vector<Vec3>> NurbsSurface::derivatives(double u, double v, int order) const {
-    require(order >= 0, "order", [&] { return "the derivative order must be >= 0, got " + std::to_string(order); });
+    limits::require_derivative_order(order, "order");
     const int span_u = span_of(degree_u_, knots_u_, u, "u");
     const int span_v = span_of(degree_v_, knots_v_, v, "v");
     const std::size_t stride = to_size(order) + 1;
     Scratch<Vec4, 16> aw(stride * stride);
     Scratch<Vec3, 16> skl(stride * stride);
     surface_partials(*this, u, v, span_u, span_v, order, aw.values(), skl.values());
+    detail::require_finite_partials(skl.values(), stride, u, v);
     std::vector<std::vector<Vec3>> result(stride);
     for (std::size_t k = 0; k < stride; ++k) {
         result[k].resize(stride - k);  // SKL[k][l] for k + l <= order
@@ -297,8 +320,9 @@ std::vector<std::vector<Vec3>> NurbsSurface::derivatives(double u, double v, int
 }
 
 Vec3 NurbsSurface::derivative(double u, double v, int du, int dv) const {
-    require(du >= 0, "du", [&] { return "the derivative order must be >= 0, got " + std::to_string(du); });
-    require(dv >= 0, "dv", [&] { return "the derivative order must be >= 0, got " + std::to_string(dv); });
+    limits::require_derivative_order(du, "du");
+    limits::require_derivative_order(dv, "dv");
+    limits::require_derivative_order(du + dv, "du + dv");
     return derivatives(u, v, du + dv)[to_size(du)][to_size(dv)];
 }
 
@@ -424,7 +448,7 @@ NurbsSurface NurbsSurface::insert_knot_u(double u, int times) const {
     std::vector<Vec4> pw(new_rows * to_size(columns_));
     for (std::size_t j = 0; j < columns.size(); ++j)
         for (std::size_t i = 0; i < new_rows; ++i) pw[i * columns.size() + j] = columns[j].homogeneous_points()[i];
-    return NurbsSurface(degree_u_, degree_v_, columns.front().knots(), knots_v_, std::move(pw), rational_, 0);
+    return NurbsSurface(degree_u_, degree_v_, columns.front().knots(), knots_v_, std::move(pw), rational_, weight_exponent_);
 }
 
 NurbsSurface NurbsSurface::insert_knot_v(double v, int times) const {
@@ -440,7 +464,7 @@ NurbsSurface NurbsSurface::insert_knot_v(double v, int times) const {
         pw.insert(pw.end(), refined.homogeneous_points().begin(), refined.homogeneous_points().end());
         if (i == 0) knots_v = refined.knots();
     }
-    return NurbsSurface(degree_u_, degree_v_, knots_u_, std::move(knots_v), std::move(pw), rational_, 0);
+    return NurbsSurface(degree_u_, degree_v_, knots_u_, std::move(knots_v), std::move(pw), rational_, weight_exponent_);
 }
 
 std::vector<std::vector<BezierSurface>> NurbsSurface::bezier_patches() const {
@@ -472,9 +496,9 @@ std::vector<std::vector<BezierSurface>> NurbsSurface::bezier_patches() const {
             for (std::size_t i = 0; i < patch_rows; ++i)
                 for (std::size_t j = 0; j < patch_columns; ++j)
                     net[i * patch_columns + j] = strip_rows[i][b].homogeneous_points()[j];
-            patches[a].push_back(BezierSurface::from_homogeneous(static_cast<int>(patch_rows),
-                                                                 static_cast<int>(patch_columns), std::move(net),
-                                                                 rational_));
+            // The surface's weight scale, as NurbsCurve::bezier_segments keeps the curve's.
+            patches[a].push_back(BezierSurface(static_cast<int>(patch_rows), static_cast<int>(patch_columns),
+                                               std::move(net), rational_, weight_exponent_));
         }
     }
     return patches;

@@ -3,7 +3,10 @@
 // Ex1.15's cylindrical surface, four of them around).
 #include "ratbez/primitives.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <string_view>
 
 #include "geometry_internal.hpp"
 #include "ratbez/curves.hpp"
@@ -23,6 +26,13 @@ void require_positive(double value, const std::string& argument) {
 Frame placed_frame(const Vec3& center, const Vec3& axis) {
     require(is_finite(center), "center", "must have finite coordinates");
     return frame_from_axis(center, axis, "axis");
+}
+
+// The scale rule (limits.hpp) for a primitive of size `size` (set by `size_argument`) about `center`.
+void require_scale(double size, const Vec3& center, std::string_view size_argument) {
+    require(is_finite(center), "center", "must have finite coordinates");
+    const double reach = std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + size;
+    detail::require_solid_scale(size, reach, size_argument, "center");
 }
 
 // The meridian frame of a primitive: x radial (the seam direction), y along the axis. A profile drawn
@@ -53,6 +63,7 @@ Solid conical_solid(const Frame& frame, double radius1, double radius2, double h
 Solid cylinder(double radius, double height, const Vec3& center, const Vec3& axis) {
     require_positive(radius, "radius");
     require_positive(height, "height");
+    require_scale(std::max(radius, height), center, radius >= height ? "radius" : "height");
     const Frame frame = placed_frame(center, axis);
     return conical_solid(frame, radius, radius, height, Construction::Cylinder{center, frame.z_axis, radius, height});
 }
@@ -64,6 +75,8 @@ Solid cone(double radius1, double radius2, double height, const Vec3& center, co
     require(radius2 >= 0, "radius2", "must be at least 0 (0 puts the apex at the top)");
     require(radius1 > 0 || radius2 > 0, "radius1", "radius1 and radius2 cannot both be 0");
     require_positive(height, "height");
+    const double radius = std::max(radius1, radius2);
+    require_scale(std::max(radius, height), center, radius < height ? "height" : radius1 >= radius2 ? "radius1" : "radius2");
     const Frame frame = placed_frame(center, axis);
     return conical_solid(frame, radius1, radius2, height,
                          Construction::Cone{center, frame.z_axis, radius1, radius2, height});
@@ -71,6 +84,7 @@ Solid cone(double radius1, double radius2, double height, const Vec3& center, co
 
 Solid sphere(double radius, const Vec3& center) {
     require_positive(radius, "radius");
+    require_scale(radius, center, "radius");
     const Frame frame = placed_frame(center, {0, 0, 1});
     // The meridian semicircle from the south pole through the seam (+x) to the north pole: two rational
     // quarter circles; its ends lie exactly on the axis (cos_deg(±90) == 0), so the poles are exact.
@@ -83,6 +97,8 @@ Solid torus(double major_radius, double minor_radius, const Vec3& center, const 
     require_positive(major_radius, "major_radius");
     require_positive(minor_radius, "minor_radius");
     require(minor_radius < major_radius, "minor_radius", "must be less than major_radius (else the tube meets the axis)");
+    require_scale(major_radius, center, "major_radius");
+    require_scale(minor_radius, center, "minor_radius");
     const Frame frame = placed_frame(center, axis);
     // The tube's circle in the meridian plane, starting at its outer equator; revolved it gives one face
     // whose two seams are that circle (u = 0 and u = 1) and the outer equator (v = 0 and v = 1).

@@ -4,6 +4,7 @@
 
 #include "geometry_internal.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/limits.hpp"
 
 namespace ratbez {
 
@@ -31,6 +32,9 @@ bool has_uneven_span(const NurbsCurve& piece) {
 
 Profile::Profile(std::vector<NurbsCurve> pieces) {
     require(!pieces.empty(), "profile", "must have at least one piece");
+    std::size_t total = 0;
+    for (const NurbsCurve& piece : pieces) total += piece.homogeneous_points().size();
+    limits::require_curve_points(total, "profile");  // before the per-piece work below grows with it
     Box box;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
         require(pieces[k].degree() >= 1, "profile",

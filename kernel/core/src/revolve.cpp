@@ -9,10 +9,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "cubature.hpp"
 #include "geometry_internal.hpp"
+#include "numeric_internal.hpp"
 #include "profile_crossings.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
@@ -75,6 +77,31 @@ void check_segment_off_axis(const BezierCurve& segment, const Vec3& axis_point, 
         if (s < -tol) fail("profile", where + " crosses the axis (it reaches the other side of it)");
     }
     fail("profile", where + " touches the axis (comes within the tolerance of it) away from the profile's ends");
+}
+
+// The largest coordinate magnitude of the solid: the profile's control box, widened by the circle of the
+// farthest point about the axis (a box of the axis point +- radius bounds every circle).
+double reach_of_revolution(const Profile& profile, const Vec3& axis_point, double radius) {
+    Box box;
+    for (const NurbsCurve& piece : profile.pieces()) box.add(piece.control_box());
+    const Vec3 r{radius, radius, radius};
+    box.add(axis_point - r);
+    box.add(axis_point + r);
+    return detail::reach_of(box);
+}
+
+// A partial turn must move the profile's farthest point (at `radius` from the axis) by a visible amount:
+// at least kMinRelativeThickness of the profile's size. Below it the two end faces lie on each other (an
+// angle of 1e-12 degrees gave a valid-looking solid of zero thickness and a STEP file of it).
+constexpr double kMinRelativeThickness = 1e-6;
+
+void require_thickness(double angle_deg, double radius, double size) {
+    const double thickness = angle_deg * std::numbers::pi / 180.0 * radius;
+    require(thickness >= kMinRelativeThickness * size, "angle_deg", [&] {
+        return "a turn of " + detail::number(angle_deg) + " degrees moves the profile by at most " +
+               detail::number(thickness) + ", less than " + detail::number(kMinRelativeThickness) +
+               " of its size: the solid would have no thickness";
+    });
 }
 
 }  // namespace
@@ -190,6 +217,9 @@ Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_d
             if (norm(radial) > norm(farthest)) farthest = radial;
         }
     require(norm(farthest) > tol, "profile", "lies on the axis");
+    detail::require_solid_scale(profile.size(), reach_of_revolution(profile, axis_point, norm(farthest)), "profile",
+                                "profile");
+    require_thickness(angle_deg, norm(farthest), profile.size());
     const Vec3 e = farthest / norm(farthest);
     const Vec3 plane_normal = cross(d, e);
     for (const NurbsCurve& piece : profile.pieces())

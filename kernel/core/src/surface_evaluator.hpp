@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "ratbez/limits.hpp"
 #include "ratbez/nurbs_surface.hpp"
 #include "ratbez/vec.hpp"
 
@@ -33,8 +34,8 @@ inline SurfaceFirstDerivatives project_first_derivatives(const Vec4& h, const Ve
     return d;
 }
 
-// OpenCASCADE's Geom_BSplineSurface::MaxDegree(): nothing we hand over can be higher anyway.
-inline constexpr int kMaxEvaluatorDegree = 25;
+// The library's degree limit (limits.hpp, OpenCASCADE's Geom_BSplineSurface::MaxDegree()): no surface has more.
+inline constexpr int kMaxEvaluatorDegree = limits::max_degree;
 
 // S, S_s, S_t of ONE rational Bézier patch at local (s, t) in [0, 1]^2: `net` holds its
 // (degree_u + 1) x (degree_v + 1) homogeneous points row-major (i along s). The partials are in the

@@ -12,13 +12,12 @@
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 
-#include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <sstream>
 
 #include "ratbez/error.hpp"
 #include "ratbez/occt/topology.hpp"
+#include "ratbez/output_file.hpp"
 
 namespace ratbez::occt {
 namespace {
@@ -50,38 +49,30 @@ private:
     Message_SequenceOfPrinters removed_;
 };
 
-// OCCT's writers report an unwritable file only as a status; check the path first to say why.
-void require_writable(const std::string& path) {
-    require(!path.empty(), "path", "must not be empty");
-    const std::filesystem::path p(path);
-    std::error_code ec;
-    require(!std::filesystem::is_directory(p, ec), "path", "'" + path + "' is a directory");
-    const std::filesystem::path parent = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
-    require(std::filesystem::is_directory(parent, ec), "path",
-            "the directory of '" + path + "' does not exist");
-}
-
 }  // namespace
 
+// Both writers go through output_file.hpp: the path is checked and a temporary file made first (cheap
+// checks before the conversion), OpenCASCADE writes that file by name, and it is renamed over the target.
 void write_step(const Solid& solid, const std::string& path, const ConvertOptions& options) {
-    require_writable(path);
-    const TopoDS_Solid shape = to_occt(solid, options);
-    QuietMessenger quiet;
-    try {
-        STEPControl_Writer writer;  // its constructor initialises the STEP statics (STEPControl_Controller::Init)
-        Interface_Static::SetCVal("write.step.schema", "AP214IS");
-        require(writer.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone, "solid",
-                "OpenCASCADE could not translate it to STEP");
-        require(writer.Write(path.c_str()) == IFSelect_RetDone, "path", "cannot write '" + path + "'");
-    } catch (const Standard_Failure& failure) {
-        throw Error("path", "writing STEP to '" + path + "' failed: " + failure.GetMessageString());
-    }
+    output::write_file_by_name(path, [&](const std::string& name) {
+        const TopoDS_Solid shape = to_occt(solid, options);
+        QuietMessenger quiet;
+        try {
+            STEPControl_Writer writer;  // its constructor initialises the STEP statics (STEPControl_Controller::Init)
+            Interface_Static::SetCVal("write.step.schema", "AP214IS");
+            require(writer.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone, "solid",
+                    "OpenCASCADE could not translate it to STEP");
+            require(writer.Write(name.c_str()) == IFSelect_RetDone, "path", "cannot write '" + path + "'");
+        } catch (const Standard_Failure& failure) {
+            throw Error("path", "writing STEP to '" + path + "' failed: " + failure.GetMessageString());
+        }
+    });
 }
 
 void write_brep(const Solid& solid, const std::string& path, const ConvertOptions& options) {
-    require_writable(path);
-    const TopoDS_Solid shape = to_occt(solid, options);
-    require(BRepTools::Write(shape, path.c_str()), "path", "cannot write '" + path + "'");
+    output::write_file_by_name(path, [&](const std::string& name) {
+        require(BRepTools::Write(to_occt(solid, options), name.c_str()), "path", "cannot write '" + path + "'");
+    });
 }
 
 std::string brep_string(const Solid& solid, const ConvertOptions& options) {

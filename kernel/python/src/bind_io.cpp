@@ -11,6 +11,7 @@
 #include "ratbez/brep.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/mesh.hpp"
+#include "ratbez/output_file.hpp"
 #include "ratbez/tessellate.hpp"
 
 #if RATBEZ_PYTHON_WITH_EXPORT
@@ -56,6 +57,16 @@ namespace {
 }  // namespace
 
 void bind_io(py::module_& m) {
+    m.def(
+        "write_text_file",
+        [](const py::object& path, const std::string& text) {
+            const std::string file = to_path(path, "path");
+            py::gil_scoped_release release;
+            output::write_file(file, [&](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+        },
+        py::arg("path"), py::arg("text"),
+        "Write `text` (UTF-8) to `path` the way every ratbez writer does: a new temporary file beside it,\n"
+        "renamed over it (atomic); a read-only file, a symbolic link or a folder at `path` is refused.");
 #if RATBEZ_PYTHON_WITH_EXPORT
     m.attr("has_cgal") = true;
     m.def(

@@ -127,6 +127,8 @@ std::string to_path(py::handle value, const std::string& argument) {
     if (!py::isinstance<py::str>(path)) throw Error(argument, "expected a str path, not bytes");
     auto text = path.cast<std::string>();
     if (text.empty()) throw Error(argument, "must not be empty");
+    // A NUL ends the name for the system: "a.stl\0.txt" would pass a check of its extension and write "a.stl".
+    if (text.find('\0') != std::string::npos) throw Error(argument, "contains a NUL character");
     return text;
 }
 

@@ -13,6 +13,8 @@
 #include "ratbez/profile.hpp"
 #include "ratbez/vec.hpp"
 
+#include "initialised.hpp"
+
 namespace ratbez::python {
 
 namespace py = pybind11;

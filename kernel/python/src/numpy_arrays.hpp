@@ -9,6 +9,8 @@
 #include <span>
 #include <string>
 
+#include "initialised.hpp"
+
 namespace ratbez::python {
 
 namespace py = pybind11;

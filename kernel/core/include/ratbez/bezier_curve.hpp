@@ -2,7 +2,9 @@
 // Bézier curves, polynomial and rational in one class (000 §1.3–1.4). Control points are stored
 // homogeneously as P^w_i = (w_i P_i, w_i) so that the rational curve C(u) = H{C^w(u)} (Eq. 1.16–1.19)
 // is evaluated by the polynomial algorithms in 4D. A polynomial curve simply has every w_i = 1.
-// The parameter domain is [0, 1]; parameters outside it throw ratbez::Error.
+// The parameter domain is [0, 1]; parameters outside it throw ratbez::Error. The degree is at most
+// limits::max_degree (26 control points). A rational curve keeps its weights scaled by a power of two into
+// (1/2, 1] (weights() gives the user's back exactly), so that no homogeneous point or sum overflows.
 
 #include <utility>
 #include <vector>
@@ -25,7 +27,7 @@ public:
     bool is_rational() const { return rational_; }
     const std::vector<Vec4>& homogeneous_points() const { return pw_; }
     std::vector<Vec3> points() const;    // the Euclidean control points P_i
-    std::vector<double> weights() const; // the w_i (all 1 for a polynomial curve)
+    std::vector<double> weights() const; // the w_i as given (all 1 for a polynomial curve)
 
     // C(u) by A1.4 (Bernstein basis times homogeneous points, then H).
     Vec3 point(double u) const;
@@ -43,7 +45,7 @@ public:
 
     // The two halves [0, u] and [u, 1], each reparameterised to [0, 1] (deCasteljau subdivision); 0 < u < 1.
     std::pair<BezierCurve, BezierCurve> split(double u) const;
-    // The same curve with degree + 1 (degree elevation on P^w).
+    // The same curve with degree + 1 (degree elevation on P^w); Error naming "curve" at limits::max_degree.
     BezierCurve elevate() const;
     // The same curve traversed backwards: C_2(u) = C_1(1 - u) (Exercise 1.11).
     BezierCurve reversed() const;
@@ -55,9 +57,12 @@ public:
     BezierCurve normal_form() const;
 
 private:
-    BezierCurve(std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);
+    friend class NurbsCurve;  // from_bezier keeps the weight scale
+    // Unvalidated; the weights of pw are 2^weight_exponent times the ones weights() reports.
+    BezierCurve(std::vector<Vec4> homogeneous_points, bool rational, int weight_exponent);
     std::vector<Vec4> pw_;
     bool rational_ = false;
+    int weight_exponent_ = 0;
 };
 
 }  // namespace ratbez

@@ -2,6 +2,7 @@
 // Tensor-product Bézier surfaces, polynomial and rational (000 §1.5, Eq. 1.27–1.28; 002).
 // net[i][j]: i runs along u (degree n = rows - 1), j along v (degree m = columns - 1). Control points are
 // stored homogeneously, row-major. The domain is [0,1] x [0,1]; parameters outside it throw ratbez::Error.
+// Both degrees are at most limits::max_degree; rational weights are scaled as in BezierCurve.
 
 #include <vector>
 
@@ -48,10 +49,13 @@ public:
     BezierCurve isocurve_v(double v0) const; // C_{v0}(u): the curve in u at fixed v = v0
 
 private:
-    BezierSurface(int rows, int columns, std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);
+    friend class NurbsSurface;  // from_bezier keeps the weight scale
+    // Unvalidated; the weights of pw are 2^weight_exponent times the ones weights() reports.
+    BezierSurface(int rows, int columns, std::vector<Vec4> homogeneous_points, bool rational, int weight_exponent);
     int rows_ = 0, columns_ = 0;
     std::vector<Vec4> pw_;
     bool rational_ = false;
+    int weight_exponent_ = 0;
 };
 
 }  // namespace ratbez

@@ -10,18 +10,19 @@
 #include <string>
 #include <string_view>
 
+#include "ratbez/text.hpp"
+
 namespace ratbez {
 
 // what() is "<argument>: <reason>"; argument() and reason() are its two parts, kept apart so that a
 // caller reporting the error elsewhere (the CLI's JSON paths, Python's ratbez.Error attributes) reads
 // them instead of taking the text apart. The argument is a path: "radius", "profile[1]", "options.grid".
-// The text is the only storage (two offsets mark the parts), so copying an Error cannot throw.
+// The text is the only storage (two offsets mark the parts), so copying an Error cannot throw. Both parts
+// are kept printable (text.hpp): a message quoting user text (a spec field, a file name) carries no
+// newline, terminal escape or NUL into a terminal, a log or Python's str(e).
 class Error : public std::invalid_argument {
 public:
-    Error(std::string_view argument, std::string_view reason)
-        : std::invalid_argument(join(argument, reason)),
-          argument_size_(argument.size()),
-          reason_start_(argument.size() + 2) {}
+    Error(std::string_view argument, std::string_view reason) : Error(printable(argument), printable(reason), 0) {}
 
     std::string_view argument() const noexcept { return std::string_view(what(), argument_size_); }
     std::string_view reason() const noexcept { return std::string_view(what()).substr(reason_start_); }
@@ -50,6 +51,11 @@ public:
     }
 
 private:
+    Error(const std::string& argument, const std::string& reason, int /*printable*/)
+        : std::invalid_argument(join(argument, reason)),
+          argument_size_(argument.size()),
+          reason_start_(argument.size() + 2) {}
+
     static std::string join(std::string_view argument, std::string_view reason) {
         std::string message(argument);
         message += ": ";

@@ -1,6 +1,8 @@
 #pragma once
 // NURBS curves C(u) = H{ sum N_{i,p}(u) P^w_i } with homogeneous control points (the B-spline
-// generalisation of 000 §1.4; 001). Polynomial B-splines have all weights 1.
+// generalisation of 000 §1.4; 001). Polynomial B-splines have all weights 1. At most limits::max_degree and
+// limits::max_curve_points; rational weights are kept scaled by a power of two into (1/2, 1] (see
+// BezierCurve), weights() gives them back as given.
 
 #include <vector>
 
@@ -57,11 +59,14 @@ public:
 
 private:
     friend class NurbsSurface;  // builds its isocurves, columns and rows without re-validating them
-    NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);
+    // Unvalidated; the weights of pw are 2^weight_exponent times the ones weights() reports.
+    NurbsCurve(int degree, std::vector<double> knots, std::vector<Vec4> homogeneous_points, bool rational,
+               int weight_exponent);
     int degree_ = 0;
     std::vector<double> knots_;
     std::vector<Vec4> pw_;
     bool rational_ = false;
+    int weight_exponent_ = 0;
 };
 
 }  // namespace ratbez

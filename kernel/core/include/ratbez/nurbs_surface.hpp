@@ -1,6 +1,7 @@
 #pragma once
 // Tensor-product NURBS surfaces S(u,v) = H{ sum_i sum_j N_{i,p}(u) N_{j,q}(v) P^w_ij }.
-// net[i][j]: i along u, j along v, as in BezierSurface; stored homogeneously, row-major.
+// net[i][j]: i along u, j along v, as in BezierSurface; stored homogeneously, row-major. At most
+// limits::max_degree in each direction and limits::max_surface_points; weights scaled as in BezierCurve.
 
 #include <vector>
 
@@ -57,14 +58,16 @@ public:
     std::vector<std::vector<BezierSurface>> bezier_patches() const;
 
 private:
+    // Unvalidated; the weights of pw are 2^weight_exponent times the ones weights() reports.
     NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
-                 std::vector<Vec4> homogeneous_points, bool rational, int /*tag*/);
+                 std::vector<Vec4> homogeneous_points, bool rational, int weight_exponent);
     NurbsCurve isocurve(bool fixed_u, double t0) const;  // isocurve_u (fixed_u) and isocurve_v
     int degree_u_ = 0, degree_v_ = 0;
     std::vector<double> knots_u_, knots_v_;
     int rows_ = 0, columns_ = 0;
     std::vector<Vec4> pw_;
     bool rational_ = false;
+    int weight_exponent_ = 0;
 };
 
 }  // namespace ratbez

@@ -2,6 +2,7 @@
 // CGAL checks that every mesh we hand out is a valid solid boundary: closed, 2-manifold, consistently
 // outward oriented, free of self-intersections, and with a volume close to the exact one.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,7 +15,12 @@ struct MeshCheckOptions {
     bool check_self_intersections = true;  // the expensive test; a flag skips it for very large meshes
     std::optional<double> exact_volume;    // when given, the mesh volume must lie within volume_tolerance
     double volume_tolerance = 0;           // absolute
+    // The checks hold about bytes_per_checked_triangle for each triangle (CGAL's surface mesh, the AABB tree
+    // of the self-intersection test); a larger mesh is refused up front with an Error naming "mesh" rather
+    // than running out of memory after a minute (8.1M triangles died at a 4 GB cap).
+    std::size_t max_triangles = 4'000'000;
 };
+inline constexpr std::size_t bytes_per_checked_triangle = 450;
 
 struct MeshReport {
     bool closed = false;
