@@ -155,16 +155,6 @@ const std::string& single_spec(const Arguments& args, const std::string& command
 
 // ---- shared steps ----------------------------------------------------------------------------------
 
-// The mesh of a tolerance-t tessellation lies within t of the surface everywhere, so its volume differs
-// from the exact one by at most t times the area swept (either surface's area bounds it).
-ratbez::exporter::MeshCheckOptions mesh_checks_for(const ratbez::Solid& solid, const ratbez::Mesh& mesh, double tolerance) {
-    ratbez::exporter::MeshCheckOptions options;
-    const double volume = solid.volume();
-    options.exact_volume = volume;
-    options.volume_tolerance = tolerance * std::max(solid.area(), mesh.area()) * 1.001 + 1e-12 * std::abs(volume);
-    return options;
-}
-
 ratbez::Mesh tessellate_for(const ShapeSpec& spec, double tolerance, std::optional<double> angle) {
     try {
         return ratbez::tessellate(spec.solid, ratbez::TessellationOptions{tolerance, angle});
@@ -200,12 +190,10 @@ int command_export(const std::vector<std::string>& raw) {
         angle = parse_positive("--angle", *a);
         if (*angle >= 180) throw UsageError("--angle", "must be less than 180 degrees");
     }
-    std::string module_name;
-    if (auto m = args.value("--module")) {
-        module_name = *m;
-        if (!ratbez::spec::is_valid_name(module_name))
-            throw UsageError("--module", "'" + module_name + "' is not an OpenSCAD identifier (letters, digits, _)");
-    }
+    std::optional<std::string> module_name = args.value("--module");
+    if (module_name && !ratbez::exporter::is_openscad_identifier(*module_name))
+        throw UsageError("--module", "'" + ratbez::exporter::comment_text(*module_name) +
+                                         "' is not an OpenSCAD identifier (letters, digits, _; not a keyword)");
 
     const ShapeSpec spec = ratbez::spec::load_spec(spec_path);
 
@@ -222,14 +210,18 @@ int command_export(const std::vector<std::string>& raw) {
     if (!angle) angle = spec.tessellation_angle;
     const ratbez::Mesh mesh = tessellate_for(spec, used_tolerance, angle);
     ratbez::exporter::ExportOptions options;
-    options.openscad.module_name = module_name;
+    // The module is named by --module, else by the spec's `name`, else after the file written.
+    options.openscad.module_name = module_name  ? *module_name
+                                   : spec.named ? ratbez::exporter::openscad_identifier(spec.name)
+                                                : ratbez::exporter::openscad_identifier(fs::path(*output).stem().string());
     options.binary_stl = !args.flag("--ascii");
-    options.checks = mesh_checks_for(spec.solid, mesh, used_tolerance);
+    options.source = "spec " + spec_path;
+    options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, used_tolerance);
     // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but
     // heavy CGAL self-intersection test is skipped, at the user's explicit request.
     options.checks.check_self_intersections = !args.flag("--skip-self-intersection-check");
     try {
-        ratbez::exporter::export_mesh(mesh, *output, options);
+        ratbez::exporter::export_tessellation(spec.solid, mesh, used_tolerance, *output, options);
     } catch (const ratbez::Error& e) {
         // A mesh refused by the CGAL checks is our failure, not the user's input.
         if (e.argument() == "mesh") {
@@ -404,7 +396,7 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
         row.volume_exact = spec.solid.volume();
         row.volume_mesh = mesh.volume();
 
-        const auto mesh_report = ratbez::exporter::check_mesh(mesh, mesh_checks_for(spec.solid, mesh, row.tolerance));
+        const auto mesh_report = ratbez::exporter::check_mesh(mesh, ratbez::exporter::tessellation_checks(spec.solid, mesh, row.tolerance));
         row.cgal = mesh_report.ok() ? "ok" : "FAIL";
         for (const auto& p : mesh_report.problems) row.failures.push_back("CGAL: " + p);
 
@@ -414,13 +406,11 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
                                    format_number(row.tolerance, 4));
 
         const fs::path scad = out_dir / (spec.name + ".scad");
-        {
-            std::ofstream out(scad, std::ios::binary);
-            if (!out) throw ratbez::Error("path", "cannot open '" + scad.string() + "' for writing");
-            ratbez::exporter::write_openscad(mesh, out);
-            out.close();
-            if (!out) throw ratbez::Error("path", "writing '" + scad.string() + "' failed");
-        }
+        ratbez::exporter::ExportOptions scad_options;
+        scad_options.openscad.module_name = ratbez::exporter::openscad_identifier(spec.name);
+        scad_options.source = "spec " + spec_path.string();
+        scad_options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, row.tolerance);
+        ratbez::exporter::export_tessellation(spec.solid, mesh, row.tolerance, scad.string(), scad_options);
         ratbez::occt::write_step(spec.solid, (out_dir / (spec.name + ".step")).string());
 
         const auto occt_report = ratbez::occt::check(spec.solid);
@@ -436,7 +426,8 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
             {
                 std::ofstream out(wrapper);
                 out << "// Renders " << spec.name << ".scad through CGAL (a boolean operation checks the mesh).\n"
-                    << "difference() {\n  union() { include <" << spec.name << ".scad> }\n  translate(["
+                    << "use <" << spec.name << ".scad>\ndifference() {\n  " << scad_options.openscad.module_name
+                    << "();\n  translate(["
                     << format_number(box.max.x + far, 17) << ", " << format_number(box.max.y + far, 17) << ", "
                     << format_number(box.max.z + far, 17) << "]) cube(" << format_number(far * 1e-3, 17) << ");\n}\n";
                 if (!out) throw ratbez::Error("path", "cannot write '" + wrapper.string() + "'");

@@ -171,30 +171,31 @@ def safe_label(text):
     return text_tools.one_line(text)
 
 
-def export_openscad(obj, path, tolerance=None):
-    """Write the solid of a RatBez feature to `path` as an OpenSCAD polyhedron (ratbez.export_openscad,
-    a watertight mesh within `tolerance` of the exact surfaces; None: the kernel's default). A
-    non-identity Placement is kept as a multmatrix() around the polyhedron."""
+def export_openscad(obj, path, tolerance=None, module=None):
+    """Write the solid of a RatBez feature to `path` as an OpenSCAD library file (ratbez.export_openscad:
+    `module NAME() { polyhedron(...); }` then `NAME();`, a watertight mesh within `tolerance` of the exact
+    surfaces; None: the kernel's default). NAME is `module`, else the file's stem made an identifier. A
+    non-identity Placement is applied to the solid (on its control points) before tessellating,
+    so `use <file>` imports the solid where FreeCAD shows it."""
     solid = solid_of(obj)
     rb = kernel.ratbez()
     placement = obj.Placement
-    if placement.isIdentity():
-        rb.export_openscad(solid, path, tolerance)
-        return path
+    if not placement.isIdentity():
+        solid = solid.transformed(_placement_matrix_rows(placement))
+    rb.export_openscad(solid, path, tolerance, module=module)
+    with open(path) as source:
+        body = source.read()
+    # The Label goes in a comment line of its own, escaped; the file is replaced only when complete.
     directory = os.path.dirname(os.path.abspath(path))
     handle, temporary = tempfile.mkstemp(suffix=".scad", dir=directory)
-    os.close(handle)
     try:
-        rb.export_openscad(solid, temporary, tolerance)
-        with open(temporary) as source:
-            body = source.read()
-    finally:
-        os.remove(temporary)
-    rows = ",\n  ".join("[" + ", ".join(repr(float(v)) for v in row) + "]"
-                        for row in _placement_matrix_rows(placement))
-    with open(path, "w") as target:
-        target.write("// RatBez '{}' with its FreeCAD Placement\nmultmatrix([\n  {}]) {{\n{}\n}}\n".format(
-            safe_label(obj.Label), rows, body))
+        with os.fdopen(handle, "w") as target:
+            target.write("// RatBez '{}' from FreeCAD, its Placement applied\n{}".format(safe_label(obj.Label), body))
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+        raise
     return path
 
 
