@@ -1,7 +1,7 @@
 // The `ratbez` command: JSON shape spec in, files and reports out.
 //
 //   ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
-//                 [--skip-self-intersection-check]
+//                 [--max-triangles N] [--skip-self-intersection-check]
 //   ratbez check SPEC.json [--json]
 //   ratbez info SPEC.json [--json]
 //   ratbez demo [DIR] [--examples DIR] [--no-render]
@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -56,7 +57,7 @@ using ratbez::spec::ShapeSpec;
 constexpr const char* usage_text =
     "usage: ratbez <command> ...\n"
     "  ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
-    "                [--skip-self-intersection-check]   (for very large meshes: CGAL's test is the slow one)\n"
+    "                [--max-triangles N] [--skip-self-intersection-check]   (for very large meshes: CGAL's test is the slow one)\n"
     "  ratbez check SPEC.json [--json]      check against OpenCASCADE; exit 1 when a check fails\n"
     "  ratbez info SPEC.json [--json]       faces, edges, vertices, Euler characteristic, area, volume, box\n"
     "  ratbez demo [DIR] [--examples DIR] [--no-render]\n"
@@ -155,9 +156,28 @@ const std::string& single_spec(const Arguments& args, const std::string& command
 
 // ---- shared steps ----------------------------------------------------------------------------------
 
-ratbez::Mesh tessellate_for(const ShapeSpec& spec, double tolerance, std::optional<double> angle) {
+// The tolerance and budget as the user gave them, so that a failure blames the option actually passed.
+struct MeshRequest {
+    double tolerance = 0;
+    std::optional<double> angle;
+    std::optional<std::size_t> max_triangles;
+    bool tolerance_from_option = false;  // --tolerance, else the spec's `tolerance` or the default
+};
+
+ratbez::Mesh tessellate_for(const ShapeSpec& spec, const MeshRequest& request) {
+    ratbez::TessellationOptions options{request.tolerance, request.angle};
+    if (request.max_triangles) options.max_triangles = *request.max_triangles;
     try {
-        return ratbez::tessellate(spec.solid, ratbez::TessellationOptions{tolerance, angle});
+        return ratbez::tessellate(spec.solid, options);
+    } catch (const ratbez::TooFine& e) {
+        const std::string budget =
+            request.max_triangles ? "--max-triangles " + std::to_string(e.max_triangles())
+                                  : "the default limit of " + std::to_string(e.max_triangles()) + " (--max-triangles)";
+        std::string reason(e.reason());
+        reason = reason.substr(0, reason.find(", more than")) + ", more than " + budget + " allows";
+        if (request.tolerance_from_option) throw UsageError("--tolerance", reason);
+        if (spec.tolerance) throw ratbez::spec::SpecError("tolerance", reason + " (or pass a coarser --tolerance)");
+        throw UsageError("--max-triangles", reason);
     } catch (const ratbez::Error& e) {
         if (e.argument() == "tolerance") throw UsageError("--tolerance", std::string(e.reason()));
         if (e.argument() == "angle_deg") throw UsageError("--angle", std::string(e.reason()));
@@ -165,10 +185,53 @@ ratbez::Mesh tessellate_for(const ShapeSpec& spec, double tolerance, std::option
     }
 }
 
+std::size_t parse_count(const std::string& option, const std::string& text) {
+    unsigned long long value = 0;
+    const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || result.ec != std::errc() || result.ptr != text.data() + text.size() || value == 0)
+        throw UsageError(option, "must be a positive whole number, not '" + text + "'");
+    return static_cast<std::size_t>(value);
+}
+
 // ---- export ----------------------------------------------------------------------------------------
 
+// One line on stderr, rewritten in place ("\r"), once an export has run for more than a second
+// (RATBEZ_PROGRESS_AFTER seconds when set: tests use 0): percent done and the time left at the rate so
+// far. finish() ends the line if one was printed.
+class ProgressLine {
+public:
+    explicit ProgressLine(std::string what) : what_(std::move(what)), start_(std::chrono::steady_clock::now()) {
+        if (const char* after = std::getenv("RATBEZ_PROGRESS_AFTER")) {
+            char* end = nullptr;
+            const double seconds = std::strtod(after, &end);
+            if (end != after && std::isfinite(seconds)) after_ = seconds;
+        }
+    }
+    void operator()(double fraction) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        if (elapsed < after_ || fraction <= 0) return;
+        const double left = elapsed * (1 - fraction) / fraction;
+        std::fprintf(stderr, "\r%s: %3.0f%% (about %.0f s left)   ", what_.c_str(), 100 * fraction, std::ceil(left));
+        std::fflush(stderr);
+        shown_ = true;
+    }
+    void finish() {
+        if (shown_) std::fputc('\n', stderr);
+        shown_ = false;
+    }
+
+private:
+    std::string what_;
+    std::chrono::steady_clock::time_point start_;
+    double after_ = 1;
+    bool shown_ = false;
+};
+
+// The tessellation reports no progress of its own: it counts as the first 30% of an export.
+constexpr double kTessellationShare = 0.3;
+
 int command_export(const std::vector<std::string>& raw) {
-    const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module"},
+    const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module", "--max-triangles"},
                                             {"--ascii", "--skip-self-intersection-check"});
     const std::string& spec_path = single_spec(args, "export");
     const auto output = args.value("--output");
@@ -184,6 +247,10 @@ int command_export(const std::vector<std::string>& raw) {
     if (args.flag("--ascii") && extension != ".stl") throw UsageError("--ascii", "applies only to .stl output");
     if (brep_format && args.value("--tolerance")) throw UsageError("--tolerance", "does not apply to exact " + extension + " output");
     if (brep_format && args.value("--angle")) throw UsageError("--angle", "does not apply to exact " + extension + " output");
+    if (brep_format && args.value("--max-triangles"))
+        throw UsageError("--max-triangles", "does not apply to exact " + extension + " output");
+    std::optional<std::size_t> max_triangles;
+    if (auto m = args.value("--max-triangles")) max_triangles = parse_count("--max-triangles", *m);
     std::optional<double> tolerance, angle;
     if (auto t = args.value("--tolerance")) tolerance = parse_positive("--tolerance", *t);
     if (auto a = args.value("--angle")) {
@@ -208,7 +275,9 @@ int command_export(const std::vector<std::string>& raw) {
 
     const double used_tolerance = tolerance ? *tolerance : spec.tolerance ? *spec.tolerance : ratbez::default_tolerance(spec.solid);
     if (!angle) angle = spec.tessellation_angle;
-    const ratbez::Mesh mesh = tessellate_for(spec, used_tolerance, angle);
+    ProgressLine progress("exporting " + *output);
+    const ratbez::Mesh mesh = tessellate_for(spec, MeshRequest{used_tolerance, angle, max_triangles, tolerance.has_value()});
+    progress(kTessellationShare);
     ratbez::exporter::ExportOptions options;
     // The module is named by --module, else by the spec's `name`, else after the file written.
     options.openscad.module_name = module_name  ? *module_name
@@ -220,9 +289,12 @@ int command_export(const std::vector<std::string>& raw) {
     // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but
     // heavy CGAL self-intersection test is skipped, at the user's explicit request.
     options.checks.check_self_intersections = !args.flag("--skip-self-intersection-check");
+    options.progress = [&](double fraction) { progress(kTessellationShare + (1 - kTessellationShare) * fraction); };
     try {
         ratbez::exporter::export_tessellation(spec.solid, mesh, used_tolerance, *output, options);
+        progress.finish();
     } catch (const ratbez::Error& e) {
+        progress.finish();
         // A mesh refused by the CGAL checks is our failure, not the user's input.
         if (e.argument() == "mesh") {
             std::cerr << "error: " << one_line(e.what()) << '\n';

@@ -195,13 +195,23 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
     const bool text = format != Format::stl || !options.binary_stl;
     WrittenMesh result{mesh, 0, std::nullopt};
     bool chosen = false;
+    // Steps: the deviation, one per decimal candidate at most, the final checks and the writing.
+    const auto report = [&](double done, double steps) {
+        if (options.progress) options.progress(std::min(done / steps, 1.0));
+    };
     if (text) {
         result.max_deviation = max_deviation(solid, mesh);
-        for (int decimals : decimal_candidates(mesh, tolerance, result.max_deviation)) {
-            Mesh candidate = rounded_mesh(mesh, decimals);
+        const std::vector<int> candidates = decimal_candidates(mesh, tolerance, result.max_deviation);
+        const double steps = static_cast<double>(candidates.size()) + 3;
+        report(1, steps);
+        for (std::size_t k = 0; k < candidates.size(); ++k) {
+            Mesh candidate = rounded_mesh(mesh, candidates[k]);
             const double deviation = max_deviation(solid, candidate);
-            if (!(deviation <= tolerance) || !check_mesh(candidate, options.checks).ok()) continue;
-            result = WrittenMesh{std::move(candidate), deviation, decimals};
+            const bool passed = deviation <= tolerance && check_mesh(candidate, options.checks).ok();
+            // A pass ends the search: what is left is the writing.
+            report(passed ? steps - 1 : static_cast<double>(k) + 2, steps);
+            if (!passed) continue;
+            result = WrittenMesh{std::move(candidate), deviation, candidates[k]};
             chosen = true;
             break;
         }
@@ -217,6 +227,7 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
     written.openscad.header = header_lines(
         result.mesh, options.source, Measured{tolerance, result.max_deviation, solid.volume(), result.decimals});
     write_file(result.mesh, path, format, written);
+    report(1, 1);
     return result;
 }
 

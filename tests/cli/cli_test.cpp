@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -40,6 +41,8 @@ std::string quoted(const std::string& s) {
 class Cli : public ::testing::Test {
 protected:
     void SetUp() override {
+        // No progress line unless a test asks for one (a slow machine must not change stderr).
+        setenv("RATBEZ_PROGRESS_AFTER", "1e9", 1);
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         std::string name = std::string(info->test_suite_name()) + "_" + info->name();
         for (char& c : name)
@@ -310,6 +313,40 @@ TEST_F(Cli, ExportsEveryExampleAsScad) {
         EXPECT_NE(scad.find("\nmodule " + name + "() {\npolyhedron("), std::string::npos) << entry.path();
         EXPECT_EQ(scad.substr(scad.size() - name.size() - 6), "}\n" + name + "();\n") << entry.path();
     }
+}
+
+TEST_F(Cli, TooFineNamesTheOptionPassedAndEstimatesTheCount) {
+    const std::string sphere = example("sphere.json");  // tolerance 0.01 in the spec: 7,990 triangles
+    CommandResult run = ratbez({"export", sphere, "-o", path("a.scad"), "--max-triangles", "1000"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err.rfind("spec error: tolerance: too fine: the mesh would need about ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find(" triangles, more than --max-triangles 1000 allows (or pass a coarser --tolerance)\n"),
+              std::string::npos) << run.err;
+    const std::size_t at = run.err.find("about ") + 6;
+    const double estimate = std::stod(run.err.substr(at, run.err.find(' ', at) - at));
+    EXPECT_GT(estimate, 4000);
+    EXPECT_LT(estimate, 16000);
+    run = ratbez({"export", sphere, "-o", path("a.scad"), "--tolerance", "0.001", "--max-triangles", "5000"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err.rfind("usage error: --tolerance: too fine: the mesh would need about ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find("more than --max-triangles 5000 allows\n"), std::string::npos) << run.err;
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--max-triangles", "0"}),
+                     "usage error: --max-triangles: must be a positive whole number, not '0'");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.step"), "--max-triangles", "10"}),
+                     "usage error: --max-triangles: does not apply to exact .step output");
+    EXPECT_FALSE(fs::exists(path("a.scad")));
+}
+
+TEST_F(Cli, ProgressLineOnStderrForALongExport) {
+    // RATBEZ_PROGRESS_AFTER=0 stands for "over a second" without a slow test.
+    setenv("RATBEZ_PROGRESS_AFTER", "0", 1);
+    const CommandResult run = ratbez({"export", example("sphere.json"), "-o", path("s.off"), "--tolerance", "0.1"});
+    setenv("RATBEZ_PROGRESS_AFTER", "1e9", 1);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err.rfind("\rexporting " + path("s.off") + ": ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find("100% (about 0 s left)"), std::string::npos) << run.err;
+    EXPECT_EQ(run.err.back(), '\n');
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;  // one line, rewritten in place
 }
 
 TEST_F(Cli, ModuleNameFromSpecNameElseOutputStem) {

@@ -95,6 +95,28 @@ def test_write_off_and_ascii_stl(tmp_path):
     raises_naming("path", ratbez.write_off, solid, tmp_path / "c.stl")
 
 
+def test_max_triangles_gives_an_estimate():
+    sphere = ratbez.sphere(1.0)
+    needed = len(sphere.tessellate(1e-3).triangles)
+    with pytest.raises(ratbez.Error) as info:
+        sphere.tessellate(1e-3, max_triangles=1000)
+    message = str(info.value)
+    assert message.startswith("tolerance: too fine: the mesh would need about ")
+    assert message.endswith(" triangles, more than max_triangles = 1000 allows")
+    estimate = int(message.split("about ")[1].split(" ")[0])
+    assert needed / 2 < estimate < 2 * needed
+    raises_naming("max_triangles", sphere.tessellate, 1e-3, max_triangles=0)
+
+
+@needs_cgal
+def test_export_max_triangles(tmp_path):
+    with pytest.raises(ratbez.Error, match="more than max_triangles = 500 allows"):
+        ratbez.export_openscad(ratbez.sphere(1.0), tmp_path / "s.scad", tolerance=1e-3, max_triangles=500)
+    assert not (tmp_path / "s.scad").exists()
+    raises_naming("max_triangles", ratbez.write_off, ratbez.sphere(1.0), tmp_path / "s.off", max_triangles=-1)
+    ratbez.write_off(ratbez.sphere(1.0), tmp_path / "s.off", tolerance=1e-2, max_triangles=5000)
+
+
 @needs_cgal
 def test_check_mesh():
     report = ratbez.check_mesh(ratbez.sphere(1).tessellate(0.01))

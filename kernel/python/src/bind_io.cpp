@@ -41,15 +41,22 @@ namespace {
 // export_tessellation (rounded coordinates checked as written, the .scad header with the measured
 // deviation), or a Mesh as it is; `options` carry the format's own settings.
 [[maybe_unused]] void export_shape(const py::object& shape, const std::string& file, const py::object& tolerance,
-                                   exporter::ExportOptions options) {
+                                   const py::object& max_triangles, exporter::ExportOptions options) {
     options.source = "Python";
     if (py::isinstance<Solid>(shape)) {
         const auto& solid = shape.cast<const Solid&>();
         const std::optional<double> requested =
             tolerance.is_none() ? std::nullopt : std::optional<double>(to_double(tolerance, "tolerance"));
+        TessellationOptions tessellation;
+        if (!max_triangles.is_none()) {
+            const int budget = to_int(max_triangles, "max_triangles");
+            if (budget <= 0) throw Error("max_triangles", "must be a positive whole number");
+            tessellation.max_triangles = static_cast<std::size_t>(budget);
+        }
         py::gil_scoped_release release;
-        const double used = requested ? *requested : default_tolerance(solid);
-        const Mesh mesh = tessellate(solid, used);
+        tessellation.tolerance = requested ? *requested : default_tolerance(solid);
+        const double used = tessellation.tolerance;
+        const Mesh mesh = tessellate(solid, tessellation);
         options.checks = exporter::tessellation_checks(solid, mesh, used);
         exporter::export_tessellation(solid, mesh, used, file, options);
         return;
@@ -88,39 +95,43 @@ void bind_io(py::module_& m) {
     m.def(
         "export_openscad",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance,
-           const py::object& module) {
+           const py::object& module, const py::object& max_triangles) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".scad")) throw Error("path", "an OpenSCAD file name must end in .scad");
             exporter::ExportOptions options;
             options.openscad.module_name = module_for(module, file);
-            export_shape(solid_or_mesh, file, tolerance, options);
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, options);
         },
         py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("module") = py::none(),
+        py::arg("max_triangles") = py::none(),
         "Write an OpenSCAD library file, `module NAME() { polyhedron(...); }` then `NAME();` (NAME: module, else\n"
         "the file's stem made an identifier), after the CGAL mesh checks. A Solid is tessellated at tolerance\n"
         "first and written with the fewest decimals that keep the written mesh within tolerance; the header\n"
         "states the tolerance, the measured deviation, counts, bounding box and volumes.");
     m.def(
         "write_stl",
-        [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance, bool binary) {
+        [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance, bool binary,
+           const py::object& max_triangles) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".stl")) throw Error("path", "an STL file name must end in .stl");
             exporter::ExportOptions options;
             options.binary_stl = binary;
             options.openscad.module_name = exporter::openscad_identifier(std::filesystem::path(file).stem().string());
-            export_shape(solid_or_mesh, file, tolerance, options);
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, options);
         },
         py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("binary") = true,
+        py::arg("max_triangles") = py::none(),
         "Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),\n"
         "or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance.");
     m.def(
         "write_off",
-        [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance) {
+        [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance,
+           const py::object& max_triangles) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".off")) throw Error("path", "an OFF file name must end in .off");
-            export_shape(solid_or_mesh, file, tolerance, exporter::ExportOptions{});
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, exporter::ExportOptions{});
         },
-        py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(),
+        py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("max_triangles") = py::none(),
         "Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with\n"
         "the fewest decimals that keep the written mesh within tolerance).");
     m.def(

@@ -10,6 +10,7 @@
 #include "ratbez/export/mesh_checks.hpp"
 #include "ratbez/export/writers.hpp"
 #include "ratbez/mesh.hpp"
+#include "ratbez/progress.hpp"
 
 namespace ratbez::exporter {
 
@@ -18,6 +19,7 @@ struct ExportOptions {
     MeshCheckOptions checks{};
     bool binary_stl = true;
     std::string source = "a mesh";  // the .scad header's "source:" line ("spec vase.json", "Python")
+    Progress progress;              // export_tessellation: called with the fraction done after each step
 };
 
 // Writes `mesh` as it is (a .scad header states its counts, bounding box and volume).
