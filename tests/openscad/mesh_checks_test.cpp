@@ -219,7 +219,9 @@ TEST_F(ExportMesh, WritesEveryFormatByExtension) {
     const Mesh m = octahedron();
     export_mesh(m, path("a.scad"));
     export_mesh(m, path("a.STL"));
-    export_mesh(m, path("b.stl"), ExportOptions{.binary_stl = false});
+    ExportOptions ascii;
+    ascii.binary_stl = false;
+    export_mesh(m, path("b.stl"), ascii);
     export_mesh(m, path("a.off"));
     const std::string scad = read(path("a.scad"));
     EXPECT_EQ(scad.rfind("// ratbez ", 0), 0u) << scad;
@@ -256,7 +258,11 @@ TEST_F(ExportMesh, PathErrorsNameThePath) {
     EXPECT_EQ(error_of([&] { export_mesh(octahedron(), path("noextension")); }).rfind("path: unknown extension ''", 0), 0u);
     EXPECT_EQ(error_of([&] { export_mesh(octahedron(), ""); }), "path: is empty");
     EXPECT_EQ(error_of([&] { export_mesh(octahedron(), path("missing/dir/a.scad")); }).rfind("path: cannot open", 0), 0u);
-    EXPECT_EQ(error_of([&] { export_mesh(octahedron(), path("m.scad"), ExportOptions{.openscad = {"bad name", 10, {}}}); })
+    EXPECT_EQ(error_of([&] { export_mesh(octahedron(), path("m.scad"), [] {
+        ExportOptions options;
+        options.openscad.module_name = "bad name";
+        return options;
+    }()); })
                   .rfind("module_name:", 0),
               0u);
     EXPECT_FALSE(std::filesystem::exists(path("m.scad")));
