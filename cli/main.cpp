@@ -1,7 +1,7 @@
 // The `ratbez` command: JSON shape spec in, files and reports out.
 //
 //   ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
-//                 [--skip-self-intersection-check]
+//                 [--max-triangles N] [--skip-self-intersection-check]
 //   ratbez check SPEC.json [--json]
 //   ratbez info SPEC.json [--json]
 //   ratbez demo [DIR] [--examples DIR] [--no-render]
@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -56,7 +57,7 @@ using ratbez::spec::ShapeSpec;
 constexpr const char* usage_text =
     "usage: ratbez <command> ...\n"
     "  ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
-    "                [--skip-self-intersection-check]   (for very large meshes: CGAL's test is the slow one)\n"
+    "                [--max-triangles N] [--skip-self-intersection-check]   (for very large meshes: CGAL's test is the slow one)\n"
     "  ratbez check SPEC.json [--json]      check against OpenCASCADE; exit 1 when a check fails\n"
     "  ratbez info SPEC.json [--json]       faces, edges, vertices, Euler characteristic, area, volume, box\n"
     "  ratbez demo [DIR] [--examples DIR] [--no-render]\n"
@@ -155,19 +156,28 @@ const std::string& single_spec(const Arguments& args, const std::string& command
 
 // ---- shared steps ----------------------------------------------------------------------------------
 
-// The mesh of a tolerance-t tessellation lies within t of the surface everywhere, so its volume differs
-// from the exact one by at most t times the area swept (either surface's area bounds it).
-ratbez::exporter::MeshCheckOptions mesh_checks_for(const ratbez::Solid& solid, const ratbez::Mesh& mesh, double tolerance) {
-    ratbez::exporter::MeshCheckOptions options;
-    const double volume = solid.volume();
-    options.exact_volume = volume;
-    options.volume_tolerance = tolerance * std::max(solid.area(), mesh.area()) * 1.001 + 1e-12 * std::abs(volume);
-    return options;
-}
+// The tolerance and budget as the user gave them, so that a failure blames the option actually passed.
+struct MeshRequest {
+    double tolerance = 0;
+    std::optional<double> angle;
+    std::optional<std::size_t> max_triangles;
+    bool tolerance_from_option = false;  // --tolerance, else the spec's `tolerance` or the default
+};
 
-ratbez::Mesh tessellate_for(const ShapeSpec& spec, double tolerance, std::optional<double> angle) {
+ratbez::Mesh tessellate_for(const ShapeSpec& spec, const MeshRequest& request) {
+    ratbez::TessellationOptions options{request.tolerance, request.angle};
+    if (request.max_triangles) options.max_triangles = *request.max_triangles;
     try {
-        return ratbez::tessellate(spec.solid, ratbez::TessellationOptions{tolerance, angle});
+        return ratbez::tessellate(spec.solid, options);
+    } catch (const ratbez::TooFine& e) {
+        const std::string budget =
+            request.max_triangles ? "--max-triangles " + std::to_string(e.max_triangles())
+                                  : "the default limit of " + std::to_string(e.max_triangles()) + " (--max-triangles)";
+        std::string reason(e.reason());
+        reason = reason.substr(0, reason.find(", more than")) + ", more than " + budget + " allows";
+        if (request.tolerance_from_option) throw UsageError("--tolerance", reason);
+        if (spec.tolerance) throw ratbez::spec::SpecError("tolerance", reason + " (or pass a coarser --tolerance)");
+        throw UsageError("--max-triangles", reason);
     } catch (const ratbez::Error& e) {
         if (e.argument() == "tolerance") throw UsageError("--tolerance", std::string(e.reason()));
         if (e.argument() == "angle_deg") throw UsageError("--angle", std::string(e.reason()));
@@ -175,10 +185,53 @@ ratbez::Mesh tessellate_for(const ShapeSpec& spec, double tolerance, std::option
     }
 }
 
+std::size_t parse_count(const std::string& option, const std::string& text) {
+    unsigned long long value = 0;
+    const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || result.ec != std::errc() || result.ptr != text.data() + text.size() || value == 0)
+        throw UsageError(option, "must be a positive whole number, not '" + text + "'");
+    return static_cast<std::size_t>(value);
+}
+
 // ---- export ----------------------------------------------------------------------------------------
 
+// One line on stderr, rewritten in place ("\r"), once an export has run for more than a second
+// (RATBEZ_PROGRESS_AFTER seconds when set: tests use 0): percent done and the time left at the rate so
+// far. finish() ends the line if one was printed.
+class ProgressLine {
+public:
+    explicit ProgressLine(std::string what) : what_(std::move(what)), start_(std::chrono::steady_clock::now()) {
+        if (const char* after = std::getenv("RATBEZ_PROGRESS_AFTER")) {
+            char* end = nullptr;
+            const double seconds = std::strtod(after, &end);
+            if (end != after && std::isfinite(seconds)) after_ = seconds;
+        }
+    }
+    void operator()(double fraction) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        if (elapsed < after_ || fraction <= 0) return;
+        const double left = elapsed * (1 - fraction) / fraction;
+        std::fprintf(stderr, "\r%s: %3.0f%% (about %.0f s left)   ", what_.c_str(), 100 * fraction, std::ceil(left));
+        std::fflush(stderr);
+        shown_ = true;
+    }
+    void finish() {
+        if (shown_) std::fputc('\n', stderr);
+        shown_ = false;
+    }
+
+private:
+    std::string what_;
+    std::chrono::steady_clock::time_point start_;
+    double after_ = 1;
+    bool shown_ = false;
+};
+
+// The tessellation reports no progress of its own: it counts as the first 30% of an export.
+constexpr double kTessellationShare = 0.3;
+
 int command_export(const std::vector<std::string>& raw) {
-    const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module"},
+    const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module", "--max-triangles"},
                                             {"--ascii", "--skip-self-intersection-check"});
     const std::string& spec_path = single_spec(args, "export");
     const auto output = args.value("--output");
@@ -194,18 +247,20 @@ int command_export(const std::vector<std::string>& raw) {
     if (args.flag("--ascii") && extension != ".stl") throw UsageError("--ascii", "applies only to .stl output");
     if (brep_format && args.value("--tolerance")) throw UsageError("--tolerance", "does not apply to exact " + extension + " output");
     if (brep_format && args.value("--angle")) throw UsageError("--angle", "does not apply to exact " + extension + " output");
+    if (brep_format && args.value("--max-triangles"))
+        throw UsageError("--max-triangles", "does not apply to exact " + extension + " output");
+    std::optional<std::size_t> max_triangles;
+    if (auto m = args.value("--max-triangles")) max_triangles = parse_count("--max-triangles", *m);
     std::optional<double> tolerance, angle;
     if (auto t = args.value("--tolerance")) tolerance = parse_positive("--tolerance", *t);
     if (auto a = args.value("--angle")) {
         angle = parse_positive("--angle", *a);
         if (*angle >= 180) throw UsageError("--angle", "must be less than 180 degrees");
     }
-    std::string module_name;
-    if (auto m = args.value("--module")) {
-        module_name = *m;
-        if (!ratbez::spec::is_valid_name(module_name))
-            throw UsageError("--module", "'" + module_name + "' is not an OpenSCAD identifier (letters, digits, _)");
-    }
+    std::optional<std::string> module_name = args.value("--module");
+    if (module_name && !ratbez::exporter::is_openscad_identifier(*module_name))
+        throw UsageError("--module", "'" + ratbez::exporter::comment_text(*module_name) +
+                                         "' is not an OpenSCAD identifier (letters, digits, _; not a keyword)");
 
     const ShapeSpec spec = ratbez::spec::load_spec(spec_path);
 
@@ -220,17 +275,26 @@ int command_export(const std::vector<std::string>& raw) {
 
     const double used_tolerance = tolerance ? *tolerance : spec.tolerance ? *spec.tolerance : ratbez::default_tolerance(spec.solid);
     if (!angle) angle = spec.tessellation_angle;
-    const ratbez::Mesh mesh = tessellate_for(spec, used_tolerance, angle);
+    ProgressLine progress("exporting " + *output);
+    const ratbez::Mesh mesh = tessellate_for(spec, MeshRequest{used_tolerance, angle, max_triangles, tolerance.has_value()});
+    progress(kTessellationShare);
     ratbez::exporter::ExportOptions options;
-    options.openscad.module_name = module_name;
+    // The module is named by --module, else by the spec's `name`, else after the file written.
+    options.openscad.module_name = module_name  ? *module_name
+                                   : spec.named ? ratbez::exporter::openscad_identifier(spec.name)
+                                                : ratbez::exporter::openscad_identifier(fs::path(*output).stem().string());
     options.binary_stl = !args.flag("--ascii");
-    options.checks = mesh_checks_for(spec.solid, mesh, used_tolerance);
+    options.source = "spec " + spec_path;
+    options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, used_tolerance);
     // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but
     // heavy CGAL self-intersection test is skipped, at the user's explicit request.
     options.checks.check_self_intersections = !args.flag("--skip-self-intersection-check");
+    options.progress = [&](double fraction) { progress(kTessellationShare + (1 - kTessellationShare) * fraction); };
     try {
-        ratbez::exporter::export_mesh(mesh, *output, options);
+        ratbez::exporter::export_tessellation(spec.solid, mesh, used_tolerance, *output, options);
+        progress.finish();
     } catch (const ratbez::Error& e) {
+        progress.finish();
         // A mesh refused by the CGAL checks is our failure, not the user's input.
         if (e.argument() == "mesh") {
             std::cerr << "error: " << one_line(e.what()) << '\n';
@@ -404,7 +468,7 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
         row.volume_exact = spec.solid.volume();
         row.volume_mesh = mesh.volume();
 
-        const auto mesh_report = ratbez::exporter::check_mesh(mesh, mesh_checks_for(spec.solid, mesh, row.tolerance));
+        const auto mesh_report = ratbez::exporter::check_mesh(mesh, ratbez::exporter::tessellation_checks(spec.solid, mesh, row.tolerance));
         row.cgal = mesh_report.ok() ? "ok" : "FAIL";
         for (const auto& p : mesh_report.problems) row.failures.push_back("CGAL: " + p);
 
@@ -414,7 +478,11 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
                                    format_number(row.tolerance, 4));
 
         const fs::path scad = out_dir / (spec.name + ".scad");
-        ratbez::output::write_file(scad.string(), [&](std::ostream& out) { ratbez::exporter::write_openscad(mesh, out); });
+        ratbez::exporter::ExportOptions scad_options;
+        scad_options.openscad.module_name = ratbez::exporter::openscad_identifier(spec.name);
+        scad_options.source = "spec " + spec_path.string();
+        scad_options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, row.tolerance);
+        ratbez::exporter::export_tessellation(spec.solid, mesh, row.tolerance, scad.string(), scad_options);
         ratbez::occt::write_step(spec.solid, (out_dir / (spec.name + ".step")).string());
 
         const auto occt_report = ratbez::occt::check(spec.solid);
@@ -429,7 +497,8 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
             const fs::path wrapper = out_dir / (spec.name + "_check.scad");
             ratbez::output::write_file(wrapper.string(), [&](std::ostream& out) {
                 out << "// Renders " << spec.name << ".scad through CGAL (a boolean operation checks the mesh).\n"
-                    << "difference() {\n  union() { include <" << spec.name << ".scad> }\n  translate(["
+                    << "use <" << spec.name << ".scad>\ndifference() {\n  " << scad_options.openscad.module_name
+                    << "();\n  translate(["
                     << format_number(box.max.x + far, 17) << ", " << format_number(box.max.y + far, 17) << ", "
                     << format_number(box.max.z + far, 17) << "]) cube(" << format_number(far * 1e-3, 17) << ");\n}\n";
             });

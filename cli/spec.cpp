@@ -482,7 +482,7 @@ ShapeSpec parse_spec(std::string_view json_text, const std::string& fallback_nam
         if (!shape) throw SpecError("shape", "is required");
         BuiltShape built = parse_shape(*shape, "shape");
         return ShapeSpec{std::move(name), std::move(description), std::move(built.type), tolerance, angle,
-                         std::move(built.solid)};
+                         std::move(built.solid), top.optional("name") != nullptr};
     } catch (const json::exception& e) {
         // Unreachable for a well-typed reader; kept so that no JSON library error escapes as another type.
         throw SpecError("document", json_message(e));

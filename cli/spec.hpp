@@ -38,6 +38,7 @@ struct ShapeSpec {
     std::optional<double> tolerance;          // absolute chordal tolerance for tessellation
     std::optional<double> tessellation_angle; // degrees
     Solid solid;                              // solid.construction(): what it was built as
+    bool named = false;                       // the document gave `name` (else it is the fallback)
 };
 
 // Parses and builds. `fallback_name` is used when the document has no `name`; it must itself be a

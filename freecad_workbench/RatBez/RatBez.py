@@ -16,8 +16,6 @@ Bad property values do not raise here: the object is marked invalid and the kern
 the report view, exactly as when the value is typed into the property editor.
 """
 
-import os
-import tempfile
 
 import FreeCAD as App
 import Part
@@ -211,30 +209,24 @@ def safe_label(text):
     return text_tools.one_line(text)
 
 
-def export_openscad(obj, path, tolerance=None):
-    """Write the solid of a RatBez feature to `path` as an OpenSCAD polyhedron (ratbez.export_openscad,
-    a watertight mesh within `tolerance` of the exact surfaces; None: the kernel's default). A
-    non-identity Placement is kept as a multmatrix() around the polyhedron."""
+def export_openscad(obj, path, tolerance=None, module=None):
+    """Write the solid of a RatBez feature to `path` as an OpenSCAD library file (ratbez.export_openscad:
+    `module NAME() { polyhedron(...); }` then `NAME();`, a watertight mesh within `tolerance` of the exact
+    surfaces; None: the kernel's default). NAME is `module`, else the file's stem made an identifier. A
+    non-identity Placement is applied to the solid (on its control points) before tessellating,
+    so `use <file>` imports the solid where FreeCAD shows it."""
     solid = solid_of(obj)
     rb = kernel.ratbez()
     placement = obj.Placement
-    if placement.isIdentity():
-        rb.export_openscad(solid, path, tolerance)
-        return path
-    # The polyhedron text goes through a private temporary file, the result through the kernel's writer
-    # (write_text_file: a new file renamed over the target, the rules of every ratbez export).
-    handle, temporary = tempfile.mkstemp(suffix=".scad")
-    os.close(handle)
-    try:
-        rb.export_openscad(solid, temporary, tolerance)
-        with open(temporary) as source:
-            body = source.read()
-    finally:
-        os.remove(temporary)
-    rows = ",\n  ".join("[" + ", ".join(repr(float(v)) for v in row) + "]"
-                        for row in _placement_matrix_rows(placement))
-    rb.write_text_file(path, "// RatBez '{}' with its FreeCAD Placement\nmultmatrix([\n  {}]) {{\n{}\n}}\n".format(
-        safe_label(obj.Label), rows, body))
+    if not placement.isIdentity():
+        solid = solid.transformed(_placement_matrix_rows(placement))
+    # The kernel's writer (a new file renamed over the target, the rules of every ratbez export) writes the
+    # library file, named after the target's stem; write_text_file then adds the Label in a comment line of
+    # its own, escaped, by the same rules.
+    rb.export_openscad(solid, path, tolerance, module=module)
+    with open(path) as source:
+        body = source.read()
+    rb.write_text_file(path, "// RatBez '{}' from FreeCAD, its Placement applied\n{}".format(safe_label(obj.Label), body))
     return path
 
 

@@ -1,10 +1,16 @@
 #include "ratbez/export/export.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <vector>
 
+#include "ratbez/deviation.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/output_file.hpp"
 
@@ -23,20 +29,18 @@ Format format_from_path(const std::string& path) {
     throw Error("path", "unknown extension '" + extension + "' in '" + path + "' (expected .scad, .stl or .off)");
 }
 
-}  // namespace
-
-void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions& options) {
+// The format, with the options it needs checked before any heavy work.
+Format checked_format(const std::string& path, const ExportOptions& options) {
     const Format format = format_from_path(path);
+    if (format == Format::openscad)
+        require(is_openscad_identifier(options.openscad.module_name), "module_name",
+                [&] { return std::string(1, '\'') + comment_text(options.openscad.module_name) + "' is not an OpenSCAD identifier"; });
+    return format;
+}
 
-    const MeshReport report = check_mesh(mesh, options.checks);
-    if (!report.ok()) {
-        std::string reason = "refusing to export an invalid mesh: ";
-        for (std::size_t i = 0; i < report.problems.size(); ++i)
-            reason += (i ? "; " : "") + report.problems[i];
-        throw Error("mesh", reason);
-    }
 
-    // One writer for every format (output_file.hpp): a new temporary beside the target, renamed over it.
+// One writer for every format (output_file.hpp): a new temporary beside the target, renamed over it.
+void write_file(const Mesh& mesh, const std::string& path, Format format, const ExportOptions& options) {
     output::write_file(path, [&](std::ostream& out) {
         switch (format) {
         case Format::openscad: write_openscad(mesh, out, options.openscad); break;
@@ -44,11 +48,164 @@ void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions&
             if (options.binary_stl)
                 write_stl_binary(mesh, out);
             else
-                write_stl_ascii(mesh, out, options.openscad.module_name.empty() ? "ratbez" : options.openscad.module_name);
+                write_stl_ascii(mesh, out, options.openscad.module_name);
             break;
         case Format::off: write_off(mesh, out); break;
         }
     });
+}
+
+
+std::string number_text(double value, int digits) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*g", digits, value + 0.0);
+    return text;
+}
+
+// Shortest round trip, as the coordinates are written.
+std::string point_text(const Vec3& p) {
+    std::string text = "[";
+    for (int i = 0; i < 3; ++i) {
+        char digits[32];
+        const double value = (i == 0 ? p.x : i == 1 ? p.y : p.z) + 0.0;
+        text.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+        text += i < 2 ? ", " : "]";
+    }
+    return text;
+}
+
+// What the tessellation promised and what was measured; unset for a mesh written as it was given.
+struct Measured {
+    double tolerance = 0;
+    double max_deviation = 0;
+    double exact_volume = 0;
+    std::optional<int> decimals;
+};
+
+std::vector<std::string> header_lines(const Mesh& written, const std::string& source, const std::optional<Measured>& measured) {
+    std::vector<std::string> lines;
+    lines.push_back("ratbez " RATBEZ_VERSION ", an OpenSCAD library file");
+    lines.push_back("source: " + source);
+    if (measured) {
+        lines.push_back("tolerance: " + number_text(measured->tolerance, 6) + "; measured maximum deviation: " +
+                        number_text(measured->max_deviation, 4) + " (of the mesh as written)");
+    } else {
+        lines.push_back("tolerance: none given (a mesh written as it is)");
+    }
+    lines.push_back(std::to_string(written.triangles.size()) + " triangles, " + std::to_string(written.vertices.size()) +
+                    " vertices; coordinates " +
+                    (measured && measured->decimals ? "rounded to " + std::to_string(*measured->decimals) + " decimals"
+                                                    : std::string("exact (shortest round trip)")));
+    Vec3 low = written.vertices.empty() ? Vec3{} : written.vertices.front(), high = low;
+    for (const Vec3& p : written.vertices) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+    }
+    lines.push_back("bounding box: " + point_text(low) + " .. " + point_text(high));
+    const std::string mesh_volume = number_text(written.volume(), 10);
+    lines.push_back(measured ? "volume: exact " + number_text(measured->exact_volume, 10) + ", mesh " + mesh_volume
+                             : "volume: mesh " + mesh_volume);
+    return lines;
+}
+
+void refuse(const MeshReport& report) {
+    std::string reason = "refusing to export an invalid mesh: ";
+    for (std::size_t i = 0; i < report.problems.size(); ++i) reason += (i ? "; " : "") + report.problems[i];
+    throw Error("mesh", reason);
+}
+
+double rounded(double value, int decimals) {
+    char text[512];  // fixed notation of the largest double with 40 decimals fits
+    const auto end = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, decimals);
+    if (end.ec != std::errc()) return value;
+    double result = value;
+    std::from_chars(text, end.ptr, result);
+    return result + 0.0;
+}
+
+// Decimal places to try, fewest first: from one below those whose rounding (at most half a unit of the
+// last place per coordinate, sqrt(3)/2 of it per vertex, and a triangle moves no more than its corners)
+// provably keeps deviation + shift within tolerance, to three above it; none where the margin is gone or
+// the places fall below a double's precision at the mesh's scale.
+std::vector<int> decimal_candidates(const Mesh& mesh, double tolerance, double deviation) {
+    const double margin = tolerance - deviation;
+    double scale = 0;
+    for (const Vec3& p : mesh.vertices) scale = std::max({scale, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    if (!(margin > 0) || !(scale > 0)) return {};
+    const int provable = std::max(0, static_cast<int>(std::ceil(-std::log10(margin / (0.5 * std::sqrt(3.0))))));
+    const int finest = 16 - static_cast<int>(std::floor(std::log10(scale)));
+    std::vector<int> candidates;
+    for (int d = std::max(0, provable - 1); d <= provable + 3 && d < finest; ++d) candidates.push_back(d);
+    return candidates;
+}
+
+}  // namespace
+
+Mesh rounded_mesh(const Mesh& mesh, int decimals) {
+    require(decimals >= 0 && decimals <= 40, "decimals", "must be from 0 to 40");
+    Mesh result = mesh;
+    for (Vec3& p : result.vertices) p = {rounded(p.x, decimals), rounded(p.y, decimals), rounded(p.z, decimals)};
+    return result;
+}
+
+MeshCheckOptions tessellation_checks(const Solid& solid, const Mesh& mesh, double tolerance) {
+    MeshCheckOptions options;
+    const double volume = solid.volume();
+    options.exact_volume = volume;
+    options.volume_tolerance = tolerance * std::max(solid.area(), mesh.area()) * 1.001 + 1e-12 * std::abs(volume);
+    return options;
+}
+
+void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions& options) {
+    const Format format = checked_format(path, options);
+    const MeshReport report = check_mesh(mesh, options.checks);
+    if (!report.ok()) refuse(report);
+    ExportOptions written = options;
+    written.openscad.header = header_lines(mesh, options.source, std::nullopt);
+    write_file(mesh, path, format, written);
+}
+
+WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tolerance, const std::string& path,
+                                const ExportOptions& options) {
+    const Format format = checked_format(path, options);
+    require(std::isfinite(tolerance) && tolerance > 0, "tolerance", "must be a positive number");
+    const bool text = format != Format::stl || !options.binary_stl;
+    WrittenMesh result{mesh, 0, std::nullopt};
+    bool chosen = false;
+    // Steps: the deviation, one per decimal candidate at most, the final checks and the writing.
+    const auto report = [&](double done, double steps) {
+        if (options.progress) options.progress(std::min(done / steps, 1.0));
+    };
+    if (text) {
+        result.max_deviation = max_deviation(solid, mesh);
+        const std::vector<int> candidates = decimal_candidates(mesh, tolerance, result.max_deviation);
+        const double steps = static_cast<double>(candidates.size()) + 3;
+        report(1, steps);
+        for (std::size_t k = 0; k < candidates.size(); ++k) {
+            Mesh candidate = rounded_mesh(mesh, candidates[k]);
+            const double deviation = max_deviation(solid, candidate);
+            const bool passed = deviation <= tolerance && check_mesh(candidate, options.checks).ok();
+            // A pass ends the search: what is left is the writing.
+            report(passed ? steps - 1 : static_cast<double>(k) + 2, steps);
+            if (!passed) continue;
+            result = WrittenMesh{std::move(candidate), deviation, candidates[k]};
+            chosen = true;
+            break;
+        }
+    }
+    if (!chosen) {
+        const MeshReport report = check_mesh(mesh, options.checks);
+        if (!report.ok()) refuse(report);
+        if (text && !(result.max_deviation <= tolerance))
+            throw Error("mesh", "refusing to export a mesh " + number_text(result.max_deviation, 4) +
+                                    " from the surface, beyond the tolerance " + number_text(tolerance, 4));
+    }
+    ExportOptions written = options;
+    written.openscad.header = header_lines(
+        result.mesh, options.source, Measured{tolerance, result.max_deviation, solid.volume(), result.decimals});
+    write_file(result.mesh, path, format, written);
+    report(1, 1);
+    return result;
 }
 
 }  // namespace ratbez::exporter

@@ -5,6 +5,7 @@
 #include <array>
 #include <iostream>
 #include <limits>
+#include <numbers>
 
 #include "ratbez/curves.hpp"
 #include "ratbez/frame.hpp"
@@ -229,6 +230,12 @@ TEST(Revolve, RejectsBadInputNamingTheArgument) {
     const std::string crosses = test::error_message([&] { revolve(crossing); });
     EXPECT_EQ(crosses.rfind("profile:", 0), 0u) << crosses;
     EXPECT_NE(crosses.find("crosses the axis"), std::string::npos) << crosses;
+    // The piece that crosses is named, not the one beyond the axis on the far side (piece 0 lies wholly
+    // at x < 0; piece 1 crosses; e points to x < 0, the side of the farthest control point).
+    const Profile far_side({line_segment({-3, 0, 0}, {-3, 0, 2}), line_segment({-3, 0, 2}, {1, 0, 1}),
+                            line_segment({1, 0, 1}, {-3, 0, 0})});
+    const std::string far = test::error_message([&] { revolve(far_side); });
+    EXPECT_EQ(far, "profile: piece 1 crosses the axis (it reaches the other side of it)");
     // Touching the axis at a corner of a closed profile.
     const Profile corner({line_segment({0, 0, 0}, {2, 0, 0}), line_segment({2, 0, 0}, {1, 0, 2}),
                           line_segment({1, 0, 2}, {0, 0, 0})});
@@ -251,8 +258,29 @@ TEST(Revolve, RejectsBadInputNamingTheArgument) {
     const Profile skew({line_segment({1, 0, 0}, {2, 0.5, 0}), line_segment({2, 0.5, 0}, {1, 0, 1}),
                         line_segment({1, 0, 1}, {1, 0, 0})});
     EXPECT_ERROR_NAMING(revolve(skew), "profile");
+    // A closed triangle with two sides on the axis is still refused (the rest is no single open profile).
+    EXPECT_ERROR_NAMING(revolve(Profile({line_segment({0, 0, 0}, {0, 0, 1}), line_segment({0, 0, 1}, {0, 0, 2}),
+                                         line_segment({0, 0, 2}, {1, 0, 1}), line_segment({1, 0, 1}, {0, 0, 0})})),
+                        "profile");
     // A profile lying on the axis.
     EXPECT_ERROR_NAMING(revolve(Profile({line_segment({0, 0, 0}, {0, 0, 1})})), "profile");
+}
+
+// OpenSCAD's rotate_extrude habit: a closed polygon with one side on the axis. It is revolved as the open
+// profile of its other sides: the same solid (a cone here) as the open profile gives, in either order.
+TEST(Revolve, ClosedProfileWithOneSideOnTheAxisIsTheOpenProfile) {
+    const Profile closed({line_segment({0, 0, 0}, {3, 0, 0}), line_segment({3, 0, 0}, {0, 0, 4}),
+                          line_segment({0, 0, 4}, {0, 0, 0})});
+    const Profile rotated({line_segment({0, 0, 4}, {0, 0, 0}), line_segment({0, 0, 0}, {3, 0, 0}),
+                           line_segment({3, 0, 0}, {0, 0, 4})});
+    const Profile open({line_segment({0, 0, 0}, {3, 0, 0}), line_segment({3, 0, 0}, {0, 0, 4})});
+    const double cone = std::numbers::pi * 9 * 4 / 3;
+    for (const Profile* p : {&closed, &rotated}) {
+        const Solid solid = revolve(*p);
+        EXPECT_NEAR(solid.volume(), cone, 1e-9 * cone);
+        EXPECT_EQ(solid.faces().size(), revolve(open).faces().size());
+        EXPECT_NEAR(revolve(*p, {}, {0, 0, 1}, 90).volume(), cone / 4, 1e-9 * cone);
+    }
 }
 
 }  // namespace

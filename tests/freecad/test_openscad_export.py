@@ -28,13 +28,15 @@ suite = Suite()
 
 
 def render_in_boolean(scad_path, name):
-    """Render `scad_path` inside difference(){union(){...} far tiny cube} to STL; return the STL path
+    """Render the module of `scad_path` inside difference(){module(); far tiny cube} to STL; return the STL path
     after checking openscad's output."""
     wrapper = os.path.join(OUT, name + "_check.scad")
     stl = os.path.join(OUT, name + ".stl")
+    # The file is a library: `use` imports its module, named after the file's stem.
+    module = os.path.splitext(os.path.basename(scad_path))[0]
     with open(wrapper, "w") as f:
-        f.write("difference() {{\n  union() {{ include <{}> }}\n  translate([1e4, 1e4, 1e4]) cube(0.01);\n}}\n"
-                .format(scad_path))
+        f.write("use <{}>\ndifference() {{\n  {}();\n  translate([1e4, 1e4, 1e4]) cube(0.01);\n}}\n"
+                .format(scad_path, module))
     if os.path.exists(stl):
         os.remove(stl)
     result = subprocess.run(["openscad", "-o", stl, wrapper], stdout=subprocess.PIPE,

@@ -658,7 +658,8 @@ def test_export_sanitises_labels_and_check_report_reads_once():
     path = os.path.join(OUT, "ratbez_cylinder_placed.scad")
     RatBez.export_openscad(cylinder, path, 0.05)
     text = open(path).read()
-    check("multmatrix" in text and "polyhedron" in text, "placement kept as multmatrix")
+    check("module ratbez_cylinder_placed() {\npolyhedron(" in text and text.endswith("}\nratbez_cylinder_placed();\n"),
+          "a library file named after its stem")
     for line in text.splitlines():
         check(not line.lstrip().startswith(("cube", "sphere")), "a Label became OpenSCAD code: " + line)
     check("evil\\u000acube(50);\\u2028sphere(9);" in text, "the Label is escaped in its comment")

@@ -1,5 +1,5 @@
-// The real OpenSCAD 2021.01 binary renders our polyhedron files. A bare top-level polyhedron is exported
-// unchecked, so each file is included inside a boolean operation, which makes OpenSCAD convert it to a
+// The real OpenSCAD 2021.01 binary renders our library files, opened alone and through `use`. A bare
+// top-level polyhedron is exported unchecked, so each file's module is called inside a boolean operation, which makes OpenSCAD convert it to a
 // CGAL Nef polyhedron and complain about any open, inverted or non-manifold mesh. OpenSCAD exits 0 even
 // then ("ERROR: The given mesh is not closed!"), so the test reads its output, and then reads the STL it
 // wrote back to compare the volume.
@@ -89,19 +89,34 @@ TEST_P(OpenScadRender, RendersWithoutWarningsAndKeepsTheVolume) {
     fs::remove_all(dir);
     fs::create_directories(dir);
     ratbez::exporter::ExportOptions options;
-    options.checks.exact_volume = spec.solid.volume();
-    options.checks.volume_tolerance = tolerance * std::max(spec.solid.area(), mesh.area()) * 1.001;
-    ratbez::exporter::export_mesh(mesh, (dir / "shape.scad").string(), options);
+    options.openscad.module_name = spec.name;
+    options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, tolerance);
+    const auto written = ratbez::exporter::export_tessellation(spec.solid, mesh, tolerance, (dir / "shape.scad").string(), options);
+    EXPECT_LE(written.max_deviation, tolerance);
 
-    // The far cube is subtracted from nothing: it only forces the boolean operation.
-    std::ofstream(dir / "wrapper.scad") << "difference() {\n  union() { include <shape.scad> }\n  translate(["
+    // The file is a library: `use` imports its module (and ignores its top-level call). The far cube is
+    // subtracted from nothing: it only forces the boolean operation, which makes CGAL check the mesh.
+    std::ofstream(dir / "wrapper.scad") << "use <shape.scad>\ndifference() {\n  " << spec.name << "();\n  translate(["
                                         << box.max.x + size << ", " << box.max.y + size << ", " << box.max.z + size
                                         << "]) cube(" << size * 1e-3 << ");\n}\n";
-    const std::string command = "cd '" + dir.string() + "' && '" RATBEZ_OPENSCAD_EXECUTABLE
-                                "' -o out.stl wrapper.scad > openscad.log 2>&1";
-    const int status = std::system(command.c_str());
-    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(dir / "openscad.log");
-    const std::string log = read_file(dir / "openscad.log");
+    const auto run_openscad = [&](const std::string& input, const std::string& output) {
+        const std::string command = "cd '" + dir.string() + "' && '" RATBEZ_OPENSCAD_EXECUTABLE "' -o " + output +
+                                    " " + input + " > openscad.log 2>&1";
+        const int status = std::system(command.c_str());
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(dir / "openscad.log");
+        return read_file(dir / "openscad.log");
+    };
+    if (c.relative_tolerance == 1e-2) {
+        // Opened on its own, the file's call renders the solid.
+        const std::string alone = run_openscad("shape.scad", "alone.stl");
+        EXPECT_EQ(alone.find("WARNING"), std::string::npos) << alone;
+        EXPECT_EQ(alone.find("ERROR"), std::string::npos) << alone;
+        std::size_t facets = 0;
+        EXPECT_NEAR(ascii_stl_volume(read_file(dir / "alone.stl"), facets), written.mesh.volume(),
+                    2e-5 * std::abs(written.mesh.volume()));
+        EXPECT_EQ(facets, mesh.triangles.size());
+    }
+    const std::string log = run_openscad("wrapper.scad", "out.stl");
     EXPECT_EQ(log.find("WARNING"), std::string::npos) << log;
     EXPECT_EQ(log.find("ERROR"), std::string::npos) << log;
     EXPECT_NE(log.find("Simple:        yes"), std::string::npos) << log;
@@ -111,7 +126,7 @@ TEST_P(OpenScadRender, RendersWithoutWarningsAndKeepsTheVolume) {
     ASSERT_GT(facets, 0u) << "OpenSCAD dropped the polyhedron:\n" << log;
     // OpenSCAD prints STL coordinates in float precision (about 7 significant digits, 6 in practice);
     // the volume then agrees to a few parts per million of the shape's size cubed.
-    const double mesh_volume = mesh.volume();
+    const double mesh_volume = written.mesh.volume();
     EXPECT_NEAR(stl_volume, mesh_volume, 2e-5 * std::abs(mesh_volume))
         << c.example << ": " << facets << " facets read back, " << mesh.triangles.size() << " written";
     fs::remove_all(dir);

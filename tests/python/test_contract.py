@@ -49,11 +49,13 @@ def test_keyword_names():
         (ratbez.BezierSurface.isocurve_v, ["v0"]),
         (ratbez.NurbsCurve.derivative, ["u", "order"]),
         (ratbez.NurbsSurface.derivative, ["u", "v", "du", "dv"]),
-        (ratbez.Solid.tessellate, ["tolerance", "angle_deg"]),
+        (ratbez.Solid.tessellate, ["tolerance", "angle_deg", "max_triangles"]),
     ]
     if ratbez.has_cgal:
-        expected.append((ratbez.export_openscad, ["solid_or_mesh", "path", "tolerance"]))
-        expected.append((ratbez.write_stl, ["solid_or_mesh", "path", "tolerance"]))
+        # module, binary, max_triangles and write_off: the contract additions (DESIGN.md)
+        expected.append((ratbez.export_openscad, ["solid_or_mesh", "path", "tolerance", "module", "max_triangles"]))
+        expected.append((ratbez.write_stl, ["solid_or_mesh", "path", "tolerance", "binary", "max_triangles"]))
+        expected.append((ratbez.write_off, ["solid_or_mesh", "path", "tolerance", "max_triangles"]))
     if ratbez.has_occt:
         # bezier_faces: an addition, optional (one face per Bézier patch, for FreeCAD's measurements)
         expected.append((ratbez.write_step, ["solid", "path", "bezier_faces"]))

@@ -51,6 +51,73 @@ def test_export_refuses_bad_input(tmp_path):
 
 
 @needs_cgal
+def test_export_openscad_writes_a_library_named_by_module_or_stem(tmp_path):
+    sphere = ratbez.sphere(2.0)
+    ratbez.export_openscad(sphere, tmp_path / "my ball-1.scad", tolerance=0.01)
+    text = (tmp_path / "my ball-1.scad").read_text()
+    assert "\nmodule my_ball_1() {\npolyhedron(" in text and text.endswith("}\nmy_ball_1();\n")
+    header = text[:text.index("module ")]
+    assert all(line.startswith("// ") for line in header.splitlines())
+    assert "// source: Python\n" in header and "// tolerance: 0.01; measured maximum deviation: " in header
+    deviation = float(header.split("measured maximum deviation: ")[1].split(" ")[0])
+    assert 0 < deviation <= 0.01
+    ratbez.export_openscad(sphere, tmp_path / "b.scad", tolerance=0.01, module="ball")
+    assert (tmp_path / "b.scad").read_text().endswith("}\nball();\n")
+    raises_naming("module", ratbez.export_openscad, sphere, tmp_path / "c.scad", module="for")
+    raises_naming("module", ratbez.export_openscad, sphere, tmp_path / "c.scad", module="a\ncube(1);")
+    assert not (tmp_path / "c.scad").exists()
+
+
+def read_off(path):
+    words = path.read_text().split()
+    assert words[0] == "OFF"
+    nv, nf = int(words[1]), int(words[2])
+    values = words[4:]
+    vertices = [tuple(float(v) for v in values[3 * i:3 * i + 3]) for i in range(nv)]
+    faces = [tuple(int(v) for v in values[3 * nv + 4 * i + 1:3 * nv + 4 * i + 4]) for i in range(nf)]
+    return vertices, faces
+
+
+@needs_cgal
+def test_write_off_and_ascii_stl(tmp_path):
+    solid = ratbez.cylinder(1, 2)
+    ratbez.write_off(solid, tmp_path / "c.off", tolerance=0.01)
+    vertices, faces = read_off(tmp_path / "c.off")
+    mesh = ratbez.Mesh(vertices, faces)
+    assert mesh.is_closed() and ratbez.check_mesh(mesh)["ok"]
+    assert abs(mesh.volume() - 2 * math.pi) <= 0.01 * solid.area()
+    ratbez.write_off(solid.tessellate(0.05), tmp_path / "m.off")
+    assert read_off(tmp_path / "m.off")[1] == [tuple(t) for t in solid.tessellate(0.05).triangles.tolist()]
+    ratbez.write_stl(solid, tmp_path / "c.stl", tolerance=0.01, binary=False)
+    text = (tmp_path / "c.stl").read_text()
+    assert text.startswith("solid c\nfacet normal ") and text.endswith("endsolid c\n")
+    assert text.count("facet normal") == len(faces)
+    raises_naming("path", ratbez.write_off, solid, tmp_path / "c.stl")
+
+
+def test_max_triangles_gives_an_estimate():
+    sphere = ratbez.sphere(1.0)
+    needed = len(sphere.tessellate(1e-3).triangles)
+    with pytest.raises(ratbez.Error) as info:
+        sphere.tessellate(1e-3, max_triangles=1000)
+    message = str(info.value)
+    assert message.startswith("tolerance: too fine: the mesh would need about ")
+    assert message.endswith(" triangles, more than max_triangles = 1000 allows")
+    estimate = int(message.split("about ")[1].split(" ")[0])
+    assert needed / 2 < estimate < 2 * needed
+    raises_naming("max_triangles", sphere.tessellate, 1e-3, max_triangles=0)
+
+
+@needs_cgal
+def test_export_max_triangles(tmp_path):
+    with pytest.raises(ratbez.Error, match="more than max_triangles = 500 allows"):
+        ratbez.export_openscad(ratbez.sphere(1.0), tmp_path / "s.scad", tolerance=1e-3, max_triangles=500)
+    assert not (tmp_path / "s.scad").exists()
+    raises_naming("max_triangles", ratbez.write_off, ratbez.sphere(1.0), tmp_path / "s.off", max_triangles=-1)
+    ratbez.write_off(ratbez.sphere(1.0), tmp_path / "s.off", tolerance=1e-2, max_triangles=5000)
+
+
+@needs_cgal
 def test_check_mesh():
     report = ratbez.check_mesh(ratbez.sphere(1).tessellate(0.01))
     assert report["ok"] and report["closed"] and report["manifold"] and report["outward"]

@@ -482,6 +482,17 @@ TEST(HostileTessellation, TooFineToleranceIsRejectedByTheBudget) {
     }
     TessellationOptions tight{1e-2, std::nullopt, 50};
     expect_rejected([&] { (void)tessellate(ball, tight); }, "tolerance", "50-triangle budget");
+    // The message gives an estimate of what the tolerance needs, not the budget plus one.
+    const std::size_t needed = tessellate(ball, 1e-3).triangles.size();
+    try {
+        (void)tessellate(ball, TessellationOptions{1e-3, std::nullopt, 1000});
+        ADD_FAILURE() << "a 1000-triangle budget was enough";
+    } catch (const TooFine& e) {
+        EXPECT_EQ(e.max_triangles(), 1000u);
+        EXPECT_GT(e.estimated_triangles(), 0.5 * static_cast<double>(needed)) << needed;
+        EXPECT_LT(e.estimated_triangles(), 2.0 * static_cast<double>(needed)) << needed;
+        EXPECT_NE(std::string(e.what()).find("more than max_triangles = 1000 allows"), std::string::npos) << e.what();
+    }
     TessellationOptions angle{1.0, 1e-9, 1'000'000};
     expect_rejected([&] { (void)tessellate(ball, angle); }, "tolerance", "1e-9 degree angle");
     for (double bad : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()})

@@ -1,9 +1,10 @@
 #pragma once
 // A small, strict reader of the OpenSCAD text ratbez::exporter::write_openscad produces:
 //   // comment lines
-//   [module NAME() {]
+//   module NAME() {
 //   polyhedron(points=[[x,y,z],...], faces=[[a,b,c],...], convexity=N);
-//   [}]
+//   }
+//   NAME();
 // Whitespace is free; numbers are read with std::from_chars, so shortest-round-trip text gives back the
 // very doubles that were written. Faces are CLOCKWISE seen from outside in the file (OpenSCAD's rule),
 // so a file face [a, c, b] is the mesh triangle (a, b, c). Anything else throws std::runtime_error with
@@ -26,7 +27,7 @@ namespace ratbez::reliability {
 
 struct ParsedPolyhedron {
     Mesh mesh;
-    std::string module_name;  // empty for a bare polyhedron
+    std::string module_name;
     long long convexity = 0;
 };
 
@@ -37,13 +38,11 @@ public:
     ParsedPolyhedron parse() {
         ParsedPolyhedron result;
         skip();
-        if (peek_word() == "module") {
-            word("module");
-            result.module_name = identifier();
-            expect('(');
-            expect(')');
-            expect('{');
-        }
+        word("module");
+        result.module_name = identifier();
+        expect('(');
+        expect(')');
+        expect('{');
         word("polyhedron");
         expect('(');
         word("points");
@@ -82,8 +81,13 @@ public:
         result.convexity = static_cast<long long>(index());
         expect(')');
         expect(';');
-        if (!result.module_name.empty()) expect('}');
-        if (position_ != text_.size()) fail("text after the polyhedron");
+        expect('}');
+        // The one call that renders the file when it is opened (use <file> ignores it).
+        word(result.module_name);
+        expect('(');
+        expect(')');
+        expect(';');
+        if (position_ != text_.size()) fail("text after the module's call");
         return result;
     }
 

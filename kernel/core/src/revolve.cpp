@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "cubature.hpp"
 #include "geometry_internal.hpp"
@@ -102,6 +104,48 @@ void require_thickness(double angle_deg, double radius, double size) {
                detail::number(thickness) + ", less than " + detail::number(kMinRelativeThickness) +
                " of its size: the solid would have no thickness";
     });
+}
+
+// The radial direction e is that of the farthest control point, so when the profile crosses the axis
+// the piece found on the far side of e may be an innocent one lying wholly on the other side. The piece
+// to blame is the one with points on both sides: sampled, it reaches beyond tol either way.
+void blame_the_crossing_piece(const Profile& profile, const Vec3& axis_point, const Vec3& radial, double tol) {
+    constexpr int samples = 64;
+    for (std::size_t k = 0; k < profile.pieces().size(); ++k) {
+        double low = 0, high = 0;
+        for (const BezierCurve& segment : profile.pieces()[k].bezier_segments())
+            for (int i = 0; i <= samples; ++i) {
+                const double s = dot(segment.point(static_cast<double>(i) / samples) - axis_point, radial);
+                low = std::min(low, s);
+                high = std::max(high, s);
+            }
+        if (low < -tol && high > tol)
+            fail("profile", "piece " + std::to_string(k) + " crosses the axis (it reaches the other side of it)");
+    }
+}
+
+// A closed profile with exactly one piece lying on the axis (OpenSCAD's rotate_extrude habit: a polygon
+// with a side on the axis) stands for the open profile of its other pieces, which starts and ends there.
+std::optional<Profile> without_side_on_axis(const Profile& profile, const Vec3& axis_point, const Vec3& d) {
+    const std::vector<NurbsCurve>& pieces = profile.pieces();
+    const double tol = profile.tolerance();
+    const auto on_axis = [&](const NurbsCurve& piece) {
+        for (const Vec4& pw : piece.homogeneous_points()) {
+            const Vec3 r = project(pw) - axis_point;
+            if (norm(r - d * dot(r, d)) > tol) return false;
+        }
+        return true;  // the convex hull lies within tol of the axis line: the piece is on it, straight
+    };
+    std::optional<std::size_t> side;
+    for (std::size_t k = 0; k < pieces.size(); ++k)
+        if (on_axis(pieces[k])) {
+            if (side) return std::nullopt;  // two: the other pieces would not be one profile
+            side = k;
+        }
+    if (!side || pieces.size() < 2) return std::nullopt;
+    std::vector<NurbsCurve> open;
+    for (std::size_t i = 1; i < pieces.size(); ++i) open.push_back(pieces[(*side + i) % pieces.size()]);
+    return Profile(std::move(open));
 }
 
 }  // namespace
@@ -202,6 +246,8 @@ Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_d
     require(is_finite(axis_point), "axis_point", "must have finite coordinates");
     const Vec3 d = frame_from_axis(axis_point, axis_dir, "axis_dir").z_axis;
     validate_angle(angle_deg);
+    if (profile.is_closed())
+        if (const auto open = without_side_on_axis(profile, axis_point, d)) return revolve(*open, axis_point, axis_dir, angle_deg);
     const double tol = profile.tolerance();
     const bool closed = profile.is_closed();
     const std::size_t m = profile.pieces().size();
@@ -241,7 +287,12 @@ Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_d
         for (std::size_t b = 0; b < segments.size(); ++b) {
             const bool allow_start = !closed && k == 0 && b == 0;
             const bool allow_end = !closed && k + 1 == m && b + 1 == segments.size();
-            check_segment_off_axis(segments[b], axis_point, e, allow_start, allow_end, tol, static_cast<int>(k));
+            try {
+                check_segment_off_axis(segments[b], axis_point, e, allow_start, allow_end, tol, static_cast<int>(k));
+            } catch (const Error&) {
+                blame_the_crossing_piece(profile, axis_point, e, tol);
+                throw;
+            }
         }
     }
     detail::require_no_crossings(profile, axis_point, e, d);

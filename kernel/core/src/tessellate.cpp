@@ -298,6 +298,47 @@ private:
 
 }  // namespace
 
+namespace {
+
+// Round to two significant digits: an estimate, not a count.
+std::string about(double count) {
+    const double rounded = count < 100 ? std::ceil(count)
+                                       : [&] {
+                                             const double unit = std::pow(10.0, std::floor(std::log10(count)) - 1);
+                                             return std::ceil(count / unit) * unit;
+                                         }();
+    return std::to_string(static_cast<long long>(std::min(rounded, 9e18)));
+}
+
+}  // namespace
+
+TooFine::TooFine(double estimated_triangles, std::size_t max_triangles)
+    : Error("tolerance", "too fine: the mesh would need about " + about(estimated_triangles) +
+                             " triangles, more than max_triangles = " + std::to_string(max_triangles) + " allows"),
+      estimated_(estimated_triangles),
+      max_triangles_(max_triangles) {}
+
+namespace {
+
+// The planner stops at the budget, so its own count is a lower bound. A coarser tessellation that fits
+// (tolerance x4 each step, at most 20,000 triangles: about a second) scaled by the tolerance ratio gives
+// the estimate: a curved face's triangles grow as 1 / tolerance, flat ones not at all (so it errs high).
+double estimate_triangles(const Solid& solid, detail::TessellationSettings settings, double lower_bound) {
+    const double requested = settings.tolerance;
+    settings.max_triangles = std::min<std::size_t>(settings.max_triangles, 20'000);
+    for (int step = 0; step < 24; ++step) {
+        settings.tolerance *= 4;
+        try {
+            const Mesh coarse = Tessellator(solid, settings).run();
+            return std::max(lower_bound, static_cast<double>(coarse.triangles.size()) * settings.tolerance / requested);
+        } catch (const TooFine&) {
+        }
+    }
+    return lower_bound;
+}
+
+}  // namespace
+
 double default_tolerance(const Solid& solid) { return 1e-3 * solid.bounding_box().diagonal(); }
 
 Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
@@ -312,7 +353,14 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
     }
     require(options.max_triangles > 0, "max_triangles", "must be positive");
     settings.max_triangles = options.max_triangles;
-    Mesh mesh = Tessellator(solid, settings).run();
+    Mesh mesh = [&] {
+        try {
+            return Tessellator(solid, settings).run();
+        } catch (const TooFine&) {
+            throw TooFine(estimate_triangles(solid, settings, static_cast<double>(options.max_triangles) + 1),
+                          options.max_triangles);
+        }
+    }();
     // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
     // solid whose faces fold onto each other — a profile that runs back over itself, found by
     // fuzz_geometry — from handing out an open mesh.

@@ -13,6 +13,7 @@
 
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/tessellate.hpp"
 #include "ratbez/surface_grid.hpp"
 
 namespace ratbez::detail {
@@ -179,11 +180,7 @@ bool is_crease(const Edge& edge, const EdgeUse& a, const EdgeUse& b) {
 
 }  // namespace
 
-[[noreturn]] void throw_over_budget(double estimate, std::size_t budget) {
-    fail("tolerance", "too fine for max_triangles: the mesh would need about " +
-                          std::to_string(static_cast<long long>(std::min(estimate, 9e18))) + " triangles, more than " +
-                          std::to_string(budget));
-}
+[[noreturn]] void throw_over_budget(double estimate, std::size_t budget) { throw TooFine(estimate, budget); }
 
 double curvature_sample_count(const NurbsSurface& s, std::size_t per_span) {
     return static_cast<double>(sample_params(breakpoints(s.degree_u(), s.knots_u()), per_span).size()) *

@@ -5,6 +5,8 @@
 
 #include <pybind11/stl.h>
 
+#include <filesystem>
+#include <optional>
 #include <string>
 
 #include "convert.hpp"
@@ -36,17 +38,49 @@ namespace {
     return true;
 }
 
-// A Solid is tessellated at `tolerance` (default: default_tolerance(solid)); a Mesh is taken as it is.
-[[maybe_unused]] Mesh mesh_of(const py::object& shape, const py::object& tolerance) {
+// Writes a Solid tessellated at `tolerance` (default: default_tolerance(solid)) through
+// export_tessellation (rounded coordinates checked as written, the .scad header with the measured
+// deviation), or a Mesh as it is; `options` carry the format's own settings.
+[[maybe_unused]] void export_shape(const py::object& shape, const std::string& file, const py::object& tolerance,
+                                   const py::object& max_triangles, exporter::ExportOptions options) {
+    options.source = "Python";
     if (py::isinstance<Solid>(shape)) {
         const auto& solid = shape.cast<const Solid&>();
         const std::optional<double> requested =
             tolerance.is_none() ? std::nullopt : std::optional<double>(to_double(tolerance, "tolerance"));
+        TessellationOptions tessellation;
+        if (!max_triangles.is_none()) {
+            const int budget = to_int(max_triangles, "max_triangles");
+            if (budget <= 0) throw Error("max_triangles", "must be a positive whole number");
+            tessellation.max_triangles = static_cast<std::size_t>(budget);
+        }
         py::gil_scoped_release release;
-        return tessellate(solid, requested ? *requested : default_tolerance(solid));
+        tessellation.tolerance = requested ? *requested : default_tolerance(solid);
+        const double used = tessellation.tolerance;
+        const Mesh mesh = tessellate(solid, tessellation);
+        options.checks = exporter::tessellation_checks(solid, mesh, used);
+        exporter::export_tessellation(solid, mesh, used, file, options);
+        return;
     }
-    if (py::isinstance<Mesh>(shape)) return shape.cast<Mesh>();
+    if (py::isinstance<Mesh>(shape)) {
+        const Mesh mesh = shape.cast<Mesh>();
+        py::gil_scoped_release release;
+        exporter::export_mesh(mesh, file, options);
+        return;
+    }
     throw Error("solid_or_mesh", "expected a ratbez.Solid or a ratbez.Mesh");
+}
+
+// The module name: `module` when given (it must be an OpenSCAD identifier), else the file's stem made one.
+[[maybe_unused]] std::string module_for(const py::object& module, const std::string& file) {
+    if (module.is_none()) return exporter::openscad_identifier(std::filesystem::path(file).stem().string());
+    if (!py::isinstance<py::str>(module)) throw Error("module", "must be a str or None");
+    const std::string name = module.cast<std::string>();
+    if (!exporter::is_openscad_identifier(name))
+        throw Error("module", "'" + exporter::comment_text(name) +
+                                  "' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit; "
+                                  "not a keyword)");
+    return name;
 }
 
 [[maybe_unused]] const Solid& solid_of(const py::object& shape) {
@@ -71,26 +105,46 @@ void bind_io(py::module_& m) {
     m.attr("has_cgal") = true;
     m.def(
         "export_openscad",
-        [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance) {
+        [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance,
+           const py::object& module, const py::object& max_triangles) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".scad")) throw Error("path", "an OpenSCAD file name must end in .scad");
-            const Mesh mesh = mesh_of(solid_or_mesh, tolerance);
-            py::gil_scoped_release release;
-            exporter::export_mesh(mesh, file);
+            exporter::ExportOptions options;
+            options.openscad.module_name = module_for(module, file);
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, options);
         },
-        py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(),
-        "Write polyhedron(...) text after the CGAL mesh checks (a Solid is tessellated at tolerance first).");
+        py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("module") = py::none(),
+        py::arg("max_triangles") = py::none(),
+        "Write an OpenSCAD library file, `module NAME() { polyhedron(...); }` then `NAME();` (NAME: module, else\n"
+        "the file's stem made an identifier), after the CGAL mesh checks. A Solid is tessellated at tolerance\n"
+        "first and written with the fewest decimals that keep the written mesh within tolerance; the header\n"
+        "states the tolerance, the measured deviation, counts, bounding box and volumes.");
     m.def(
         "write_stl",
-        [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance) {
+        [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance, bool binary,
+           const py::object& max_triangles) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".stl")) throw Error("path", "an STL file name must end in .stl");
-            const Mesh mesh = mesh_of(solid_or_mesh, tolerance);
-            py::gil_scoped_release release;
-            exporter::export_mesh(mesh, file);
+            exporter::ExportOptions options;
+            options.binary_stl = binary;
+            options.openscad.module_name = exporter::openscad_identifier(std::filesystem::path(file).stem().string());
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, options);
         },
-        py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(),
-        "Write a binary STL after the CGAL mesh checks (a Solid is tessellated at tolerance first).");
+        py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("binary") = true,
+        py::arg("max_triangles") = py::none(),
+        "Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),\n"
+        "or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance.");
+    m.def(
+        "write_off",
+        [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance,
+           const py::object& max_triangles) {
+            const std::string file = to_path(path, "path");
+            if (!has_extension(file, ".off")) throw Error("path", "an OFF file name must end in .off");
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, exporter::ExportOptions{});
+        },
+        py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("max_triangles") = py::none(),
+        "Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with\n"
+        "the fewest decimals that keep the written mesh within tolerance).");
     m.def(
         "check_mesh",
         [](const Mesh& mesh, bool check_self_intersections) {

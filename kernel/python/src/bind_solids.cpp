@@ -205,12 +205,15 @@ void bind_solids(py::module_& m) {
         })
         .def(
             "tessellate",
-            [](const Solid& s, double tolerance, std::optional<double> angle_deg) {
+            [](const Solid& s, double tolerance, std::optional<double> angle_deg, long long max_triangles) {
+                if (max_triangles <= 0) throw Error("max_triangles", "must be a positive whole number");
                 py::gil_scoped_release release;
-                return tessellate(s, tolerance, angle_deg);
+                return tessellate(s, TessellationOptions{tolerance, angle_deg, static_cast<std::size_t>(max_triangles)});
             },
             py::arg("tolerance"), py::arg("angle_deg") = py::none(),
-            "A watertight mesh within `tolerance` of the exact surfaces (optionally also `angle_deg`).")
+            py::arg("max_triangles") = static_cast<long long>(TessellationOptions{}.max_triangles),
+            "A watertight mesh within `tolerance` of the exact surfaces (optionally also `angle_deg`). A tolerance\n"
+            "needing more than max_triangles raises ratbez.Error naming tolerance, with the estimated count.")
         .def("__repr__", [](const Solid& s) { return "<ratbez.Solid faces=" + std::to_string(s.faces().size()) + ">"; });
 
     m.def("default_tolerance", &default_tolerance, py::arg("solid"),

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "ratbez/brep.hpp"
+#include "ratbez/error.hpp"
 #include "ratbez/mesh.hpp"
 
 namespace ratbez {
@@ -16,7 +17,21 @@ struct TessellationOptions {
     double tolerance = 0;                 // largest distance from any point of a triangle to the surface, > 0
     std::optional<double> angle_deg;      // optional, in (0, 180): the exact surface normals at the two ends
                                           // of any mesh edge inside a curved face differ by at most this
-    std::size_t max_triangles = 20'000'000;  // budget: a finer request throws Error naming "tolerance"
+    std::size_t max_triangles = 20'000'000;  // budget: a finer request throws TooFine
+};
+
+// A tolerance that needs more than max_triangles: an Error naming "tolerance", with the estimated count
+// (from a coarser tessellation that fits, scaled by the tolerance ratio: curved faces need triangles in
+// proportion to 1 / tolerance) so that callers can word the message after their own options.
+class TooFine : public Error {
+public:
+    TooFine(double estimated_triangles, std::size_t max_triangles);
+    double estimated_triangles() const noexcept { return estimated_; }
+    std::size_t max_triangles() const noexcept { return max_triangles_; }
+
+private:
+    double estimated_;
+    std::size_t max_triangles_;
 };
 
 Mesh tessellate(const Solid& solid, const TessellationOptions& options);

@@ -1,22 +1,49 @@
 #pragma once
-// Exporting to files: check the mesh with CGAL first and refuse (ratbez::Error) rather than write a bad
-// one; the format follows the extension (.scad, .stl, .off). Unwritable paths and unknown extensions
-// throw ratbez::Error naming "path".
+// Exporting to files: check the mesh with CGAL first and refuse (ratbez::Error naming "mesh") rather than
+// write a bad one; the format follows the extension (.scad, .stl, .off). Unwritable paths and unknown
+// extensions throw ratbez::Error naming "path".
 
+#include <optional>
 #include <string>
 
+#include "ratbez/brep.hpp"
 #include "ratbez/export/mesh_checks.hpp"
 #include "ratbez/export/writers.hpp"
 #include "ratbez/mesh.hpp"
+#include "ratbez/progress.hpp"
 
 namespace ratbez::exporter {
 
 struct ExportOptions {
-    OpenScadOptions openscad{};
+    OpenScadOptions openscad{};  // its header is filled in by the exporter
     MeshCheckOptions checks{};
     bool binary_stl = true;
+    std::string source = "a mesh";  // the .scad header's "source:" line ("spec vase.json", "Python")
+    Progress progress;              // export_tessellation: called with the fraction done after each step
 };
 
+// Writes `mesh` as it is (a .scad header states its counts, bounding box and volume).
 void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions& options = {});
+
+// What export_tessellation wrote.
+struct WrittenMesh {
+    Mesh mesh;                    // the coordinates as a reader of the file gets them
+    double max_deviation = 0;     // max_deviation(solid, mesh) of that mesh
+    std::optional<int> decimals;  // coordinates rounded to this many decimals; unset: every double exact
+};
+
+// `mesh`, a tessellation of `solid` at `tolerance`, written to path. Text formats (.scad, .off, ASCII
+// .stl) get the fewest decimals that keep the mesh AS WRITTEN within tolerance (max_deviation) and
+// CGAL-clean; when no rounding passes, the exact doubles are written (the same checks must then pass,
+// or Error "mesh"). The .scad header also states the tolerance, that deviation and the exact volume.
+WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tolerance, const std::string& path,
+                                const ExportOptions& options = {});
+
+// The mesh checks for a tessellation of `solid` at `tolerance`: the volume lies within tolerance times
+// the area of the exact one (the mesh stays within tolerance of the surface everywhere).
+MeshCheckOptions tessellation_checks(const Solid& solid, const Mesh& mesh, double tolerance);
+
+// Every coordinate written with `decimals` digits after the point (std::to_chars fixed) and read back.
+Mesh rounded_mesh(const Mesh& mesh, int decimals);
 
 }  // namespace ratbez::exporter

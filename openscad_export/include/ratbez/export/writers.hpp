@@ -1,18 +1,32 @@
 #pragma once
-// Mesh writers: OpenSCAD polyhedron text, STL (binary and ASCII) and OFF. Numbers are written
+// Mesh writers: OpenSCAD library text (a module around polyhedron(...)), STL (binary and ASCII) and OFF. Numbers are written
 // shortest-round-trip with std::to_chars. These write what they are given; export.hpp checks first.
 
 #include <ostream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "ratbez/mesh.hpp"
 
 namespace ratbez::exporter {
 
+// Every .scad file is a library: `module NAME() { polyhedron(...); }` then one call `NAME();`, so that
+// `use <file.scad>` imports the module (use ignores top-level calls) and opening the file renders it.
 struct OpenScadOptions {
-    std::string module_name;  // non-empty: wrap as `module NAME() { polyhedron(...); }` for use <file.scad>
+    std::string module_name = "shape";  // an OpenSCAD identifier (openscad_identifier makes one)
     int convexity = 10;
+    std::vector<std::string> header;    // comment lines above the module, escaped by comment_text
 };
+
+// `text` made an OpenSCAD identifier: characters other than letters, digits and _ become _, a leading
+// digit gets a _ in front, a keyword (module, for, true, ...) a _ behind; empty text gives "shape".
+std::string openscad_identifier(std::string_view text);
+// True when `name` is already an identifier openscad_identifier leaves as it is.
+bool is_openscad_identifier(std::string_view name);
+// `text` fit for one comment line: backslash and control characters (a newline would end the comment
+// and let the rest run as code) are written as C escapes (\\, \n, \r, \t, \xNN).
+std::string comment_text(std::string_view text);
 
 void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& options = {});
 void write_stl_binary(const Mesh& mesh, std::ostream& out);

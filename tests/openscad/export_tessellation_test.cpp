@@ -1,0 +1,131 @@
+// export_tessellation: the mesh as written (rounded to the fewest decimals that pass) is within the
+// tolerance and CGAL-clean, read back from the file; the .scad header states what was measured.
+#include "ratbez/export/export.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+
+#include "ratbez/deviation.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/primitives.hpp"
+#include "ratbez/tessellate.hpp"
+
+namespace ratbez::exporter {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ExportTessellation : public ::testing::Test {
+protected:
+    void SetUp() override {
+        directory_ = fs::temp_directory_path() /
+                     ("ratbez_export_tessellation_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(directory_);
+        fs::create_directories(directory_);
+    }
+    void TearDown() override { fs::remove_all(directory_); }
+    std::string path(const std::string& name) const { return (directory_ / name).string(); }
+    static std::string read(const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        return {std::istreambuf_iterator<char>(in), {}};
+    }
+    fs::path directory_;
+};
+
+// An OFF file as a reader gets it.
+Mesh read_off(const std::string& text) {
+    std::istringstream in(text);
+    std::string magic;
+    std::size_t vertices = 0, faces = 0, edges = 0;
+    in >> magic >> vertices >> faces >> edges;
+    Mesh mesh;
+    for (std::size_t i = 0; i < vertices; ++i) {
+        Vec3 p;
+        in >> p.x >> p.y >> p.z;
+        mesh.vertices.push_back(p);
+    }
+    for (std::size_t i = 0; i < faces; ++i) {
+        int n = 0;
+        std::array<std::uint32_t, 3> t{};
+        in >> n >> t[0] >> t[1] >> t[2];
+        mesh.triangles.push_back(t);
+    }
+    return mesh;
+}
+
+TEST_F(ExportTessellation, WrittenCoordinatesAreRoundedYetWithinToleranceAndClean) {
+    const Solid ball = sphere(10, {1, 2, 3});
+    const double tolerance = 0.01;
+    const Mesh mesh = tessellate(ball, tolerance);
+    ExportOptions options;
+    options.checks = tessellation_checks(ball, mesh, tolerance);
+    const WrittenMesh written = export_tessellation(ball, mesh, tolerance, path("ball.off"), options);
+    ASSERT_TRUE(written.decimals.has_value());
+    EXPECT_LE(*written.decimals, 6);  // far fewer than the 17 significant digits of an exact double
+    const Mesh read_back = read_off(read(path("ball.off")));
+    ASSERT_EQ(read_back.vertices.size(), written.mesh.vertices.size());
+    for (std::size_t i = 0; i < read_back.vertices.size(); ++i) {
+        EXPECT_EQ(read_back.vertices[i].x, written.mesh.vertices[i].x);
+        EXPECT_EQ(read_back.vertices[i].y, written.mesh.vertices[i].y);
+        EXPECT_EQ(read_back.vertices[i].z, written.mesh.vertices[i].z);
+    }
+    EXPECT_EQ(read_back.triangles, mesh.triangles);
+    EXPECT_LE(max_deviation(ball, read_back), tolerance);
+    EXPECT_TRUE(check_mesh(read_back, options.checks).ok());
+    // One decimal fewer than written must fail a check, or the exporter would have taken it.
+    if (*written.decimals > 0) {
+        const Mesh coarser = rounded_mesh(mesh, *written.decimals - 1);
+        EXPECT_FALSE(max_deviation(ball, coarser) <= tolerance && check_mesh(coarser, options.checks).ok());
+    }
+}
+
+TEST_F(ExportTessellation, ScadHeaderStatesSourceToleranceDeviationCountsBoxAndVolumes) {
+    const Solid ball = sphere(2);
+    const Mesh mesh = tessellate(ball, 0.001);
+    ExportOptions options;
+    options.openscad.module_name = "ball";
+    options.source = "test\nball(); // injected";
+    options.checks = tessellation_checks(ball, mesh, 0.001);
+    const WrittenMesh written = export_tessellation(ball, mesh, 0.001, path("ball.scad"), options);
+    const std::string text = read(path("ball.scad"));
+    const std::string head = text.substr(0, text.find("module ball() {"));
+    std::istringstream lines(head);
+    for (std::string line; std::getline(lines, line);) EXPECT_EQ(line.rfind("// ", 0), 0u) << line;
+    EXPECT_EQ(head.rfind("// ratbez ", 0), 0u) << head;
+    EXPECT_NE(head.find("// source: test\\nball(); // injected\n"), std::string::npos) << head;
+    EXPECT_NE(head.find("// tolerance: 0.001; measured maximum deviation: "), std::string::npos) << head;
+    EXPECT_NE(head.find("// " + std::to_string(mesh.triangles.size()) + " triangles, " +
+                        std::to_string(mesh.vertices.size()) + " vertices; coordinates rounded to " +
+                        std::to_string(*written.decimals) + " decimals\n"),
+              std::string::npos)
+        << head;
+    // The poles are vertices; the equator's are not all on the x and y axes.
+    EXPECT_NE(head.find("// bounding box: [-1.99"), std::string::npos) << head;
+    EXPECT_NE(head.find(", -2] .. [1.99"), std::string::npos) << head;
+    EXPECT_NE(head.find(", 2]\n"), std::string::npos) << head;
+    EXPECT_NE(head.find("// volume: exact 33.51032164, mesh "), std::string::npos) << head;  // 4/3 pi 2^3
+    EXPECT_EQ(text.substr(text.size() - 10), "}\nball();\n");
+}
+
+TEST_F(ExportTessellation, BadModuleNameIsRefusedBeforeAnyWork) {
+    const Solid ball = sphere(1);
+    const Mesh mesh = tessellate(ball, 0.01);
+    ExportOptions options;
+    options.openscad.module_name = "x\ncube(1);";
+    try {
+        export_tessellation(ball, mesh, 0.01, path("x.scad"), options);
+        FAIL() << "expected ratbez::Error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "module_name: 'x\\ncube(1);' is not an OpenSCAD identifier");
+    }
+    EXPECT_FALSE(fs::exists(path("x.scad")));
+}
+
+}  // namespace
+}  // namespace ratbez::exporter
