@@ -160,7 +160,7 @@ Solid loft(const std::vector<Profile>& profiles, int degree, bool ruled) {
             throw e.renamed("curves", "profiles");
         }
     }();
-    return detail::tube_solid({lateral}, detail::CapNormals{-normals.front(), normals.back()});
+    return detail::tube_solid({{lateral}}, detail::CapNormals{-normals.front(), normals.back()});
 }
 
 }  // namespace ratbez
