@@ -37,7 +37,7 @@ py::tuple z_axis() { return py::make_tuple(0.0, 0.0, 1.0); }
 NurbsSurface to_surface(py::handle value, const std::string& argument) {
     if (py::isinstance<NurbsSurface>(value)) return value.cast<NurbsSurface>();
     if (py::isinstance<BezierSurface>(value)) return NurbsSurface::from_bezier(value.cast<const BezierSurface&>());
-    throw Error(argument + ": expected a BezierSurface or a NurbsSurface");
+    throw Error(argument, "expected a BezierSurface or a NurbsSurface");
 }
 
 bool is_surface(py::handle value) { return py::isinstance<NurbsSurface>(value) || py::isinstance<BezierSurface>(value); }

@@ -148,18 +148,18 @@ py::tuple to_tuple(const Interval& interval) { return py::make_tuple(interval.mi
 
 NurbsCurve to_curve(py::handle value, const std::string& argument) {
     if (auto curve = curve_of(value)) return std::move(*curve);
-    throw Error(argument + ": expected a BezierCurve or a NurbsCurve");
+    throw Error(argument, "expected a BezierCurve or a NurbsCurve");
 }
 
 std::vector<NurbsCurve> to_curves(py::handle value, const std::string& argument) {
     if (auto curve = curve_of(value)) return {std::move(*curve)};
     if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value))
-        throw Error(argument + ": expected a BezierCurve, a NurbsCurve or a list of them");
+        throw Error(argument, "expected a BezierCurve, a NurbsCurve or a list of them");
     std::vector<NurbsCurve> curves;
     std::size_t index = 0;
     for (py::handle item : value) {
         auto curve = curve_of(item);
-        if (!curve) throw Error(element(argument, index) + ": expected a BezierCurve or a NurbsCurve");
+        if (!curve) throw Error(element(argument, index), "expected a BezierCurve or a NurbsCurve");
         curves.push_back(std::move(*curve));
         ++index;
     }
