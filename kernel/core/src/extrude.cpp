@@ -29,6 +29,13 @@ NurbsSurface extrude_surface(const NurbsCurve& curve, const Vec3& displacement) 
                                           curve.is_rational());
 }
 
+NurbsSurface extrude_surface(const NurbsCurve& curve, const Vec3& direction, double distance) {
+    const Vec3 unit = frame_from_axis({}, direction, "direction").z_axis;
+    require_finite(distance, "distance");
+    require(distance > 0, "distance", "must be greater than 0");
+    return extrude_surface(curve, unit * distance);
+}
+
 Solid extrude(const Profile& profile, const Vec3& direction, double distance, const std::vector<Profile>& holes) {
     const Vec3 unit = frame_from_axis({}, direction, "direction").z_axis;
     require_finite(distance, "distance");
