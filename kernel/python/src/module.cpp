@@ -54,6 +54,7 @@ PYBIND11_MODULE(ratbez, m) {
     py::register_exception_translator(&translate_error);
     ratbez::python::bind_core(m);
     ratbez::python::bind_solids(m);
+    ratbez::python::bind_tessellation(m);
     ratbez::python::bind_io(m);
     ratbez::python::bind_modelling(m);  // adds methods to the classes above
     ratbez::python::bind_evaluation(m);
