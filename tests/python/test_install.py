@@ -25,3 +25,6 @@ def test_install_into_a_venv(tmp_path):
     installed, closed = result.stdout.split()
     assert installed.startswith(str(venv)), installed
     assert closed == "True"
+    # The stub-only package beside it, for type checkers.
+    stubs = list(venv.glob("lib/python*/site-packages/ratbez-stubs/__init__.pyi"))
+    assert len(stubs) == 1 and "class Solid" in stubs[0].read_text()

@@ -155,17 +155,19 @@ void bind_solids(py::module_& m) {
         .def_property_readonly("triangles", &triangle_view,
                                "M x 3 uint32 array of vertex indices, outward by the right-hand rule: a read-only\n"
                                "view of the mesh's own table.")
-        .def("is_closed", &Mesh::is_closed)
-        .def("volume", &Mesh::volume)
-        .def("area", &Mesh::area)
+        .def("is_closed", &Mesh::is_closed, "True when every edge is used by exactly two triangles, in opposite directions.")
+        .def("volume", &Mesh::volume, "The enclosed volume by the divergence theorem (positive for an outward closed mesh).")
+        .def("area", &Mesh::area, "The total triangle area (model units squared).")
         .def("__repr__", [](const Mesh& mesh) {
             return "<ratbez.Mesh vertices=" + std::to_string(mesh.vertices.size()) +
                    " triangles=" + std::to_string(mesh.triangles.size()) + ">";
         });
 
     py::class_<Face>(m, "Face", "A face of a Solid: an untrimmed NURBS surface, or a plane patch trimmed by loops.")
-        .def_property_readonly("kind", [](const Face& f) { return f.kind() == Face::Kind::planar ? "planar" : "surface"; })
-        .def_property_readonly("surface", &Face::surface)
+        .def_property_readonly(
+            "kind", [](const Face& f) { return f.kind() == Face::Kind::planar ? "planar" : "surface"; },
+            "'surface' (an untrimmed NURBS surface) or 'planar' (a plane patch trimmed by loops).")
+        .def_property_readonly("surface", &Face::surface, "The face's NurbsSurface; for a planar face the plane patch its loops trim.")
         .def_property_readonly(
             "loops",
             [](const Face& f) {
@@ -178,7 +180,8 @@ void bind_solids(py::module_& m) {
                 return loops;
             },
             "Boundary loops of a planar face, each a list of NurbsCurve in loop order; [] for a surface face.")
-        .def("point", [](const Face& f, double u, double v) { return to_tuple(f.point(u, v)); }, py::arg("u"), py::arg("v"))
+        .def("point", [](const Face& f, double u, double v) { return to_tuple(f.point(u, v)); }, py::arg("u"), py::arg("v"),
+             "The surface point S(u, v) as (x, y, z).")
         .def("normal", [](const Face& f, double u, double v) { return to_tuple(f.normal(u, v)); }, py::arg("u"),
              py::arg("v"), "The outward unit normal.")
         .def("__repr__", [](const Face& f) {
@@ -186,7 +189,7 @@ void bind_solids(py::module_& m) {
         });
 
     py::class_<Solid>(m, "Solid", "A closed shell of exact NURBS faces.")
-        .def_property_readonly("faces", &Solid::faces)
+        .def_property_readonly("faces", &Solid::faces, "The faces of the closed shell (list of Face).")
         .def_property_readonly(
             "kind", [](const Solid& s) { return std::string(s.construction().kind()); },
             "What the solid was built as: 'cylinder', 'cone', 'sphere', 'torus', 'revolution', 'extrusion', "
@@ -202,9 +205,11 @@ void bind_solids(py::module_& m) {
         .def_property_readonly(
             "exact_area", [](const Solid& s) { return s.construction().exact_area(); },
             "The closed-form surface area of a cylinder, cone, sphere or torus; None for other kinds.")
-        .def("volume", &Solid::volume, py::call_guard<py::gil_scoped_release>())
-        .def("area", &Solid::area, py::call_guard<py::gil_scoped_release>())
-        .def("euler_characteristic", &Solid::euler_characteristic)
+        .def("volume", &Solid::volume, py::call_guard<py::gil_scoped_release>(),
+             "The enclosed volume (model units cubed), by cubature of the exact faces; GIL released.")
+        .def("area", &Solid::area, py::call_guard<py::gil_scoped_release>(),
+             "The surface area (model units squared), by cubature of the exact faces; GIL released.")
+        .def("euler_characteristic", &Solid::euler_characteristic, "V - E + F of the B-rep (2 for a sphere-like shell).")
         .def(
             "bounding_box",
             [](const Solid& s) {
@@ -237,13 +242,15 @@ void bind_solids(py::module_& m) {
         py::arg("axis") = z_axis(), "A cone or frustum; center is the base center, radius2 may be 0 (apex).");
     m.def(
         "sphere", [](double radius, const py::object& center) { return sphere(radius, to_vec3(center, "center")); },
-        py::arg("radius"), py::arg("center") = origin());
+        py::arg("radius"), py::arg("center") = origin(), "A sphere of radius > 0 about center, exact rational faces.");
     m.def(
         "torus",
         [](double major_radius, double minor_radius, const py::object& center, const py::object& axis) {
             return torus(major_radius, minor_radius, to_vec3(center, "center"), to_vec3(axis, "axis"));
         },
-        py::arg("major_radius"), py::arg("minor_radius"), py::arg("center") = origin(), py::arg("axis") = z_axis());
+        py::arg("major_radius"), py::arg("minor_radius"), py::arg("center") = origin(), py::arg("axis") = z_axis(),
+        "A torus about axis through center: the tube of minor_radius around the circle of major_radius\n"
+        "(major_radius > minor_radius > 0).");
     m.def(
         "revolve",
         [](const py::object& profile, const py::object& axis_point, const py::object& axis_dir, double angle) {
