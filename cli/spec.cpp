@@ -315,8 +315,7 @@ NurbsCurve parse_path(const json& value, const std::string& path) {
 }
 
 // The loft's kernel errors name "profiles[k]": they belong under shape.profiles[k].
-std::map<std::string, std::string> indexed_fields(const std::string& name, std::size_t count,
-                                                  std::map<std::string, std::string> fields) {
+FieldNames indexed_fields(const std::string& name, std::size_t count, FieldNames fields) {
     for (std::size_t k = 0; k < count; ++k) fields.emplace(index_path(name, k), index_path(name, k));
     return fields;
 }
