@@ -49,7 +49,10 @@ def test_keyword_names():
         (ratbez.BezierSurface.isocurve_v, ["v0"]),
         (ratbez.NurbsCurve.derivative, ["u", "order"]),
         (ratbez.NurbsSurface.derivative, ["u", "v", "du", "dv"]),
-        (ratbez.Solid.tessellate, ["tolerance", "angle_deg", "max_triangles"]),
+        (ratbez.Solid.tessellate, ["tolerance", "angle_deg", "max_triangles", "progress"]),
+        (ratbez.Face.tessellate, ["tolerance", "angle_deg", "max_triangles", "progress"]),
+        (ratbez.NurbsSurface.tessellate, ["tolerance", "angle_deg", "max_triangles", "progress"]),
+        (ratbez.BezierSurface.tessellate, ["tolerance", "angle_deg", "max_triangles", "progress"]),
     ]
     if ratbez.has_cgal:
         # module, binary, max_triangles and write_off: the contract additions (DESIGN.md)

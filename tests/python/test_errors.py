@@ -188,3 +188,43 @@ def test_error_raised_from_python_has_no_fields():
     assert isinstance(error, ValueError) and str(error) == "made by hand"
     assert error.argument is None and error.reason is None
     assert "argument" in ratbez.Error.__doc__
+
+
+# --- wrong-typed arguments: ratbez.Error naming the argument, for every bound function ----------------
+
+SQUARE_PATCH = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 0)]]
+
+
+@pytest.mark.parametrize("call, argument", [
+    (lambda: ratbez.sphere("2"), "radius"),
+    (lambda: ratbez.cylinder(1.0, height=None), "height"),
+    (lambda: ratbez.torus(3.0, [1.0]), "minor_radius"),
+    (lambda: ratbez.sphere(1.0).tessellate("fine"), "tolerance"),
+    (lambda: ratbez.sphere(1.0).tessellate(1e-3, angle_deg="x"), "angle_deg"),
+    (lambda: ratbez.revolve(ratbez.line_segment((1, 0, 0), (1, 0, 1)), angle="x"), "angle"),
+    (lambda: ratbez.BezierSurface(SQUARE_PATCH).point("a", 0.0), "u"),
+    (lambda: ratbez.BezierSurface(SQUARE_PATCH).derivative(0.5, 0.5, du=1.5), "du"),
+    (lambda: ratbez.Solid.volume(3), "self"),
+    (lambda: ratbez.default_tolerance(ratbez.circle(1.0)), "solid"),
+])
+def test_wrong_type_names_the_argument(call, argument):
+    with pytest.raises(ratbez.Error) as info:
+        call()
+    assert info.value.argument == argument
+    assert info.value.reason.startswith("expected ")
+
+
+def test_wrong_call_shape_stays_a_type_error():
+    # A missing or unknown argument is a wrong call, not a wrong value: Python's TypeError, as usual.
+    with pytest.raises(TypeError):
+        ratbez.sphere()
+    with pytest.raises(TypeError):
+        ratbez.sphere(1.0, bogus=2)
+
+
+def test_type_error_raised_inside_a_call_is_kept():
+    def progress(fraction):
+        raise TypeError("from the callback")
+
+    with pytest.raises(TypeError, match="from the callback"):
+        ratbez.sphere(1.0).tessellate(1e-3, progress=progress)

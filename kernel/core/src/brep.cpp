@@ -94,6 +94,69 @@ Face Face::from_surface(NurbsSurface surface, std::array<Coedge, 4> sides) {
     return face;
 }
 
+Face Face::from_surface(NurbsSurface surface) {
+    const double size = surface.control_box().diagonal();
+    require(size > 0 && std::isfinite(size), "surface", "must not collapse to a single point");
+    const double tolerance = kRelativeTolerance * size;
+    const Interval du = surface.domain_u(), dv = surface.domain_v();
+    // The points of side s (Side order) at the validation's sample parameters, in increasing parameter.
+    auto side_points = [&](int s) {
+        const bool along_u = (s == 0 || s == 2);
+        const Interval domain = along_u ? du : dv;
+        const double fixed = s == 0 ? dv.min : s == 1 ? du.max : s == 2 ? dv.max : du.min;
+        std::array<Vec3, kSideSamples> points;
+        for (int k = 0; k < kSideSamples; ++k) {
+            const double t = k == kSideSamples - 1 ? domain.max : domain.min + (domain.max - domain.min) * k / (kSideSamples - 1);
+            points[static_cast<std::size_t>(k)] = along_u ? surface.point(t, fixed) : surface.point(fixed, t);
+        }
+        return points;
+    };
+    std::array<std::array<Vec3, kSideSamples>, 4> samples{side_points(0), side_points(1), side_points(2), side_points(3)};
+    std::array<bool, 4> collapsed{};
+    for (std::size_t s = 0; s < 4; ++s) {
+        double length = 0;
+        for (std::size_t k = 1; k < kSideSamples; ++k) length += distance(samples[s][k - 1], samples[s][k]);
+        collapsed[s] = length <= tolerance;  // as from_surface(surface, sides) decides it
+    }
+    auto coincide = [&](std::size_t a, std::size_t b) {
+        if (collapsed[a] || collapsed[b]) return false;
+        for (std::size_t k = 0; k < kSideSamples; ++k)
+            if (distance(samples[a][k], samples[b][k]) > tolerance) return false;
+        return true;
+    };
+    const bool closed_u = coincide(1, 3), closed_v = coincide(0, 2);
+
+    // Corners counterclockwise, side s running from corner s to corner s + 1; corners joined by a
+    // collapsed side or by a shared (closing) side pair are one vertex.
+    std::array<std::size_t, 4> root{0, 1, 2, 3};
+    auto find = [&](std::size_t c) {
+        while (root[c] != c) c = root[c];
+        return c;
+    };
+    auto join = [&](std::size_t a, std::size_t b) { root[find(a)] = find(b); };
+    for (std::size_t s = 0; s < 4; ++s)
+        if (collapsed[s]) join(s, (s + 1) % 4);
+    if (closed_u) join(0, 1), join(3, 2);
+    if (closed_v) join(0, 3), join(1, 2);
+    const std::array<Vec3, 4> corners{samples[0].front(), samples[0].back(), samples[2].back(), samples[2].front()};
+    std::array<VertexPtr, 4> vertices;
+    for (std::size_t c = 0; c < 4; ++c)
+        if (!vertices[find(c)]) vertices[find(c)] = std::make_shared<const Vertex>(Vertex{corners[find(c)]});
+    auto vertex = [&](std::size_t c) { return vertices[find(c)]; };
+
+    // Each side's edge runs with the surface parameter from its lower-parameter corner: v_min from corner
+    // 0 to 1, u_max from 1 to 2, v_max from 3 to 2 and u_min from 0 to 3 (the last two traversed reversed).
+    auto edge = [&](NurbsCurve curve, std::size_t start, std::size_t end, bool degenerate) {
+        return std::make_shared<const Edge>(Edge{std::move(curve), vertex(start), vertex(end), degenerate});
+    };
+    const EdgePtr v_min = edge(surface.isocurve_v(dv.min), 0, 1, collapsed[0]);
+    const EdgePtr u_min = edge(surface.isocurve_u(du.min), 0, 3, collapsed[3]);
+    const EdgePtr u_max = closed_u ? u_min : edge(surface.isocurve_u(du.max), 1, 2, collapsed[1]);
+    const EdgePtr v_max = closed_v ? v_min : edge(surface.isocurve_v(dv.max), 3, 2, collapsed[2]);
+    return from_surface(std::move(surface), {Coedge{v_min, false}, Coedge{u_max, false}, Coedge{v_max, true},
+                                             Coedge{u_min, true}});
+}
+
 Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
     require(is_finite(plane.origin) && is_finite(plane.x_axis) && is_finite(plane.y_axis) && is_finite(plane.normal),
             "plane", "must have finite coordinates");
@@ -168,7 +231,7 @@ Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
 namespace {
 
 template <class Visitor>
-void for_each_coedge(const std::vector<Face>& faces, Visitor visit) {
+void for_each_coedge(std::span<const Face> faces, Visitor visit) {
     for (const Face& face : faces) {
         if (face.kind() == Face::Kind::surface) {
             for (const Coedge& c : face.sides()) visit(c);
@@ -211,14 +274,16 @@ Solid::Solid(std::vector<Face> faces, Construction construction) : construction_
     faces_ = std::move(faces);
 }
 
-std::vector<EdgePtr> Solid::edges() const {
+std::vector<EdgePtr> distinct_edges(std::span<const Face> faces) {
     std::vector<EdgePtr> result;
     std::set<const Edge*> seen;
-    for_each_coedge(faces_, [&](const Coedge& c) {
+    for_each_coedge(faces, [&](const Coedge& c) {
         if (seen.insert(c.edge.get()).second) result.push_back(c.edge);
     });
     return result;
 }
+
+std::vector<EdgePtr> Solid::edges() const { return distinct_edges(faces_); }
 
 std::vector<VertexPtr> Solid::vertices() const {
     std::vector<VertexPtr> result;

@@ -8,10 +8,14 @@
 #include "ratbez/revolve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cubature.hpp"
@@ -242,6 +246,39 @@ detail::RevolutionShell detail::build_revolution(const std::vector<NurbsCurve>& 
     return shell;
 }
 
+namespace {
+
+// The usual mistake behind a profile off the axis's plane: a 2D profile (drawn in z = 0) revolved about
+// the default z axis, so the profile lies across the axis instead of along it. Empty unless the whole
+// profile lies in one plane perpendicular to the unit axis d.
+std::string perpendicular_hint(const Profile& profile, const Vec3& axis_point, const Vec3& d) {
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const NurbsCurve& piece : profile.pieces())
+        for (const Vec4& pw : piece.homogeneous_points()) {
+            const double height = dot(project(pw) - axis_point, d);
+            low = std::min(low, height);
+            high = std::max(high, height);
+        }
+    if (high - low > profile.tolerance()) return "";
+    // Along a coordinate axis, name the plane and an axis lying in it.
+    const std::array<std::pair<Vec3, const char*>, 3> axes{
+        {{{1, 0, 0}, "x"}, {{0, 1, 0}, "y"}, {{0, 0, 1}, "z"}}};
+    for (std::size_t k = 0; k < 3; ++k)
+        if (std::abs(std::abs(dot(d, axes[k].first)) - 1) <= 1e-12) {
+            const Vec3 in_plane = axes[(k + 2) % 3].first;  // z -> y: a 2D sketch's x is the radius, y the height
+            const Vec3 point = project(profile.pieces().front().homogeneous_points().front());
+            const double level = k == 0 ? point.x : k == 1 ? point.y : point.z;
+            std::ostringstream text;
+            text << "; it lies in the " << axes[k].second << " = " << level
+                 << " plane, perpendicular to the axis: revolve about an axis in its plane, such as axis_dir=("
+                 << in_plane.x << ", " << in_plane.y << ", " << in_plane.z << ")";
+            return text.str();
+        }
+    return "; it lies in a plane perpendicular to the axis: revolve about an axis in its plane";
+}
+
+}  // namespace
+
 Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_dir, double angle_deg) {
     require(is_finite(axis_point), "axis_point", "must have finite coordinates");
     const Vec3 d = frame_from_axis(axis_point, axis_dir, "axis_dir").z_axis;
@@ -272,7 +309,8 @@ Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_d
         for (const Vec4& pw : piece.homogeneous_points())
             require(std::abs(dot(project(pw) - axis_point, plane_normal)) <= tol, "profile", [&] {
                 return "must lie in a plane containing the axis (a control point is " +
-                       std::to_string(std::abs(dot(project(pw) - axis_point, plane_normal))) + " off it)";
+                       std::to_string(std::abs(dot(project(pw) - axis_point, plane_normal))) + " off it)" +
+                       perpendicular_hint(profile, axis_point, d);
             });
 
     if (!closed) {

@@ -18,6 +18,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -113,14 +114,28 @@ std::vector<double> sample_curve(const NurbsCurve& curve, double tolerance) {
 
 class Tessellator {
 public:
-    Tessellator(const Solid& solid, const detail::TessellationSettings& settings) : solid_(solid), settings_(settings) {}
+    Tessellator(std::span<const Face> faces, const detail::TessellationSettings& settings)
+        : faces_(faces), settings_(settings) {}
 
+    // Progress: planning reports up to kPlannedFraction, then each face meshed takes an equal share of
+    // the rest (rows of a surface face poll in between).
     Mesh run() {
-        plans_ = detail::plan_surfaces(solid_, settings_);
+        plans_ = detail::plan_surfaces(faces_, settings_);
         sample_edges();
-        for (const SurfacePlan& plan : plans_) mesh_surface(plan);
-        for (const Face& face : solid_.faces())
-            if (face.kind() == Face::Kind::planar) mesh_planar(face);
+        const double step = (1 - detail::kPlannedFraction) / static_cast<double>(faces_.size());
+        double done = detail::kPlannedFraction;
+        for (const SurfacePlan& plan : plans_) {
+            settings_.report(done);
+            mesh_surface(plan);
+            done += step;
+        }
+        for (const Face& face : faces_)
+            if (face.kind() == Face::Kind::planar) {
+                settings_.report(done);
+                mesh_planar(face);
+                done += step;
+            }
+        settings_.report(1.0);
         return assembler_.take();
     }
 
@@ -134,7 +149,7 @@ private:
                 auto& params = from_surfaces[m.edge];
                 for (double p : runs_along_u(side) ? plan.grid.u : plan.grid.v) params.push_back(m.to_edge(p));
             }
-        for (const EdgePtr& edge : solid_.edges()) {
+        for (const EdgePtr& edge : distinct_edges(faces_)) {
             EdgeSamples samples;
             if (edge->degenerate) {
                 samples.ids = {assembler_.vertex_id(edge->start)};
@@ -157,7 +172,7 @@ private:
 
     const EdgeSamples& samples_of(const Edge* edge) const {
         const auto it = edge_samples_.find(edge);
-        require(it != edge_samples_.end(), "solid", "a face uses an edge the solid does not list");
+        require(it != edge_samples_.end(), "solid", "a face uses an edge the faces do not list");
         return it->second;
     }
 
@@ -230,7 +245,8 @@ private:
         std::vector<CellVertex> bottom, right, top, left, lower, upper;
         CellVertex center;
         std::vector<CellTriangle> triangles;
-        for (std::size_t i = 0; i + 1 < nu; ++i)
+        for (std::size_t i = 0; i + 1 < nu; ++i) {
+            if (i % 64 == 63) settings_.poll();
             for (std::size_t j = 0; j + 1 < nv; ++j) {
                 const CellVertex c00 = vertex(i, j), c10 = vertex(i + 1, j), c11 = vertex(i + 1, j + 1), c01 = vertex(i, j + 1);
                 bottom = {c00};
@@ -253,6 +269,7 @@ private:
                 }
                 for (const auto& t : triangles) assembler_.add_triangle(t[0]->id, t[1]->id, t[2]->id);
             }
+        }
     }
 
     void mesh_planar(const Face& face) {
@@ -288,7 +305,7 @@ private:
         }
     }
 
-    const Solid& solid_;
+    std::span<const Face> faces_;
     detail::TessellationSettings settings_;
     std::vector<SurfacePlan> plans_;
     std::map<const Edge*, EdgeSamples> edge_samples_;
@@ -320,16 +337,17 @@ TooFine::TooFine(double estimated_triangles, std::size_t max_triangles)
 
 namespace {
 
-// The planner stops at the budget, so its own count is a lower bound. A coarser tessellation that fits
-// (tolerance x4 each step, at most 20,000 triangles: about a second) scaled by the tolerance ratio gives
-// the estimate: a curved face's triangles grow as 1 / tolerance, flat ones not at all (so it errs high).
-double estimate_triangles(const Solid& solid, detail::TessellationSettings settings, double lower_bound) {
+// The planner's estimate covers the face it stopped at, so it is a lower bound for the whole. A coarser
+// tessellation of all faces that fits (tolerance x4 each step, at most 20,000 triangles: about a second)
+// scaled by the tolerance ratio gives the estimate: a curved face's triangles grow as 1 / tolerance, flat
+// ones not at all (so it errs high).
+double estimate_triangles(std::span<const Face> faces, detail::TessellationSettings settings, double lower_bound) {
     const double requested = settings.tolerance;
     settings.max_triangles = std::min<std::size_t>(settings.max_triangles, 20'000);
     for (int step = 0; step < 24; ++step) {
         settings.tolerance *= 4;
         try {
-            const Mesh coarse = Tessellator(solid, settings).run();
+            const Mesh coarse = Tessellator(faces, settings).run();
             return std::max(lower_bound, static_cast<double>(coarse.triangles.size()) * settings.tolerance / requested);
         } catch (const TooFine&) {
         }
@@ -341,7 +359,9 @@ double estimate_triangles(const Solid& solid, detail::TessellationSettings setti
 
 double default_tolerance(const Solid& solid) { return 1e-3 * solid.bounding_box().diagonal(); }
 
-Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
+namespace {
+
+detail::TessellationSettings settings_of(const TessellationOptions& options) {
     require(std::isfinite(options.tolerance) && options.tolerance > 0, "tolerance",
             "must be a finite number > 0 (got " + std::to_string(options.tolerance) + ")");
     detail::TessellationSettings settings;
@@ -353,20 +373,39 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
     }
     require(options.max_triangles > 0, "max_triangles", "must be positive");
     settings.max_triangles = options.max_triangles;
-    Mesh mesh = [&] {
-        try {
-            return Tessellator(solid, settings).run();
-        } catch (const TooFine&) {
-            throw TooFine(estimate_triangles(solid, settings, static_cast<double>(options.max_triangles) + 1),
-                          options.max_triangles);
-        }
-    }();
+    settings.progress = &options.progress;
+    return settings;
+}
+
+// Tessellates the faces; a request over the budget is reported with the estimate for all of them.
+Mesh run_within_budget(std::span<const Face> faces, const detail::TessellationSettings& settings) {
+    try {
+        return Tessellator(faces, settings).run();
+    } catch (const TooFine& e) {
+        throw TooFine(estimate_triangles(faces, settings, e.estimated_triangles()), settings.max_triangles);
+    }
+}
+
+}  // namespace
+
+Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
+    Mesh mesh = run_within_budget(solid.faces(), settings_of(options));
     // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
     // solid whose faces fold onto each other — a profile that runs back over itself, found by
     // fuzz_geometry — from handing out an open mesh.
     require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
                                        "back on each other, e.g. a profile that runs back over itself)");
     return mesh;
+}
+
+Mesh tessellate(const Face& face, const TessellationOptions& options) {
+    return run_within_budget(std::span<const Face>(&face, 1), settings_of(options));
+}
+
+Mesh tessellate(const NurbsSurface& surface, const TessellationOptions& options) {
+    const detail::TessellationSettings settings = settings_of(options);  // the options first, then the surface
+    const Face face = Face::from_surface(surface);
+    return run_within_budget(std::span<const Face>(&face, 1), settings);
 }
 
 }  // namespace ratbez

@@ -274,7 +274,8 @@ bool triangulate_cell(const SurfaceEvaluator& s, const std::vector<CellVertex>& 
 // sides (pole fans, whose samples leave the lattice) evaluate point by point.
 GridCheck check_grid(const SurfaceEvaluator& s, const NurbsSurface& surface, const ParameterGrid& g,
                      const std::array<bool, 4>& collapsed_sides, double tolerance, double angle_rad,
-                     const std::vector<char>& new_u, const std::vector<char>& new_v) {
+                     const std::vector<char>& new_u, const std::vector<char>& new_v,
+                     const std::function<void()>& poll) {
     const std::size_t nu = g.u.size(), nv = g.v.size();
     const ParameterBox domain{s.domain_u(), s.domain_v()};
     std::vector<Vec3> normals;
@@ -352,6 +353,8 @@ GridCheck check_grid(const SurfaceEvaluator& s, const NurbsSurface& surface, con
         // About 4096 lattice points per call: their coordinates (100 kB) stay in the cache for the checks.
         const std::size_t per_chunk = std::max<std::size_t>(1, 4096 / (49 * columns.size()));
         for (std::size_t r0 = 0; r0 < rows.size(); r0 += per_chunk) {
+            // A chance to cancel every 16 chunks (a few ms): a fine grid's check runs for seconds.
+            if (poll && (r0 / per_chunk) % 16 == 15) poll();
             chunk.assign(rows.begin() + static_cast<std::ptrdiff_t>(r0),
                          rows.begin() + static_cast<std::ptrdiff_t>(std::min(rows.size(), r0 + per_chunk)));
             const std::vector<double> us = lattice(g.u, chunk);

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "ratbez/nurbs_surface.hpp"
@@ -60,6 +61,7 @@ struct GridCheck {
 // failing cell is always bisected in some direction).
 GridCheck check_grid(const SurfaceEvaluator& s, const NurbsSurface& surface, const ParameterGrid& grid,
                      const std::array<bool, 4>& collapsed_sides, double tolerance, double angle_rad,
-                     const std::vector<char>& new_u, const std::vector<char>& new_v);
+                     const std::vector<char>& new_u, const std::vector<char>& new_v,
+                     const std::function<void()>& poll = {});
 
 }  // namespace ratbez::detail

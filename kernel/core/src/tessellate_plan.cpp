@@ -336,6 +336,25 @@ std::array<int, 2> minimum_segments(const std::array<SideMap, 4>& sides) {
     return {minimum(Side::u_min, Side::u_max), minimum(Side::v_min, Side::v_max)};
 }
 
+namespace {
+
+// The triangles a face's grid would need when choose_grid found none within the budget, for the error
+// message: the grid for a tolerance f times coarser (and an angle sqrt(f) times wider) that fits, scaled
+// back by f, since the line spacing in each direction goes as sqrt(tolerance / curvature) (the chord
+// sagitta) and as the angle, so the cells go as 1 / f. At least the budget + 1.
+double over_budget_triangles(const SurfacePlan& plan, const CurvatureSamples& curvature,
+                             const TessellationSettings& settings) {
+    const double at_least = 2 * max_cells(settings) + 1;
+    for (double f = 4; f <= 1e6; f *= 4) {
+        const ParameterGrid coarse = choose_grid(curvature, settings.tolerance * f, settings.angle_rad * std::sqrt(f),
+                                        plan.min_segments, plan.creases, max_cells(settings));
+        if (!coarse.u.empty()) return std::max(at_least, 2 * coarse.cells() * f);
+    }
+    return at_least;
+}
+
+}  // namespace
+
 SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, CurvatureSamples& curvature) {
     // The curvature samples cost memory and time like triangles do (about 200 bytes each): a face
     // with more knot spans than the budget can sample (10^5 spans revolved into 4 x 10^5 patches) is
@@ -372,7 +391,7 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
         plan.grid = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments, plan.creases,
                                 max_cells(settings));
     }
-    if (plan.grid.u.empty()) throw_over_budget(max_cells(settings) * 2 + 1, settings.max_triangles);
+    if (plan.grid.u.empty()) throw_over_budget(over_budget_triangles(plan, curvature, settings), settings.max_triangles);
     return plan;
 }
 
@@ -388,10 +407,12 @@ void refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
         lines = bisect_marked(lines, marked);
     };
     for (int iteration = 0; iteration < 40; ++iteration) {
+        settings.poll();
         if (plan.grid.cells() * 2 > static_cast<double>(settings.max_triangles))
             throw_over_budget(plan.grid.cells() * 2, settings.max_triangles);
         const GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed,
-                                           settings.tolerance, settings.angle_rad, new_u, new_v);
+                                           settings.tolerance, settings.angle_rad, new_u, new_v,
+                                           [&] { settings.poll(); });
         if (check.worst_ratio <= 1) return;
         const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
                                      std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;
@@ -475,10 +496,10 @@ void match_lines_at_creases(std::vector<SurfacePlan>& plans, const TessellationS
     }
 }
 
-std::vector<SurfacePlan> plan_surfaces(const Solid& solid, const TessellationSettings& settings) {
+std::vector<SurfacePlan> plan_surfaces(std::span<const Face> faces, const TessellationSettings& settings) {
     std::vector<SurfacePlan> plans;
     std::vector<CurvatureSamples> curvatures;
-    for (const Face& face : solid.faces()) {
+    for (const Face& face : faces) {
         if (face.kind() != Face::Kind::surface) continue;
         curvatures.emplace_back();
         plans.push_back(plan_face(face, settings, curvatures.back()));
@@ -489,7 +510,10 @@ std::vector<SurfacePlan> plan_surfaces(const Solid& solid, const TessellationSet
     for (const SurfacePlan& plan : plans)
         estimate += 2 * plan.grid.cells() + 2.0 * static_cast<double>(plan.grid.u.size() + plan.grid.v.size());
     if (estimate > static_cast<double>(settings.max_triangles)) throw_over_budget(estimate, settings.max_triangles);
-    for (std::size_t k = 0; k < plans.size(); ++k) refine_grid(plans[k], curvatures[k], settings);
+    for (std::size_t k = 0; k < plans.size(); ++k) {
+        settings.report(kPlannedFraction * static_cast<double>(k) / static_cast<double>(plans.size()));
+        refine_grid(plans[k], curvatures[k], settings);
+    }
     match_lines_at_creases(plans, settings);
     return plans;
 }

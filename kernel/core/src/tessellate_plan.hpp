@@ -16,9 +16,11 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "ratbez/brep.hpp"
+#include "ratbez/progress.hpp"
 #include "surface_evaluator.hpp"
 #include "tessellate_cells.hpp"
 #include "tessellate_sides.hpp"
@@ -30,6 +32,16 @@ struct TessellationSettings {
     double tolerance = 0;
     double angle_rad = 0;  // 0: no angle limit
     std::size_t max_triangles = 0;
+    const Progress* progress = nullptr;  // TessellationOptions::progress, or none
+
+    // Reports `fraction` of the whole tessellation done (the caller's callback may throw to cancel).
+    void report(double fraction) const {
+        reported = fraction;
+        if (progress != nullptr && *progress) (*progress)(fraction);
+    }
+    // Reports the last fraction again: a chance to cancel inside a long stage.
+    void poll() const { report(reported); }
+    mutable double reported = 0;
 };
 
 // Throws Error naming "tolerance": the mesh would need about `estimate` triangles, more than `budget`.
@@ -91,8 +103,10 @@ void refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
 // lines across the edge (see tessellate_plan.cpp).
 void match_lines_at_creases(std::vector<SurfacePlan>& plans, const TessellationSettings& settings);
 
-// The whole planning stage for a solid: plan_face for every surface face, the triangle estimate of the
-// whole solid against the budget, refine_grid for each, then match_lines_at_creases.
-std::vector<SurfacePlan> plan_surfaces(const Solid& solid, const TessellationSettings& settings);
+// The whole planning stage for the faces of a solid (or a single face): plan_face for every surface face,
+// the triangle estimate of them all against the budget, refine_grid for each, then match_lines_at_creases.
+// Reports progress from 0 to kPlannedFraction, face by face.
+inline constexpr double kPlannedFraction = 0.5;
+std::vector<SurfacePlan> plan_surfaces(std::span<const Face> faces, const TessellationSettings& settings);
 
 }  // namespace ratbez::detail

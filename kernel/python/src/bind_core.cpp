@@ -64,11 +64,13 @@ void bind_core(py::module_& m) {
                  return BezierCurve(std::move(p), to_doubles(weights, "weights"));
              }),
              py::arg("points"), py::arg("weights") = py::none())
-        .def_property_readonly("degree", &BezierCurve::degree)
-        .def_property_readonly("is_rational", &BezierCurve::is_rational)
-        .def_property_readonly("points", [](const BezierCurve& c) { return to_list(c.points()); })
+        .def_property_readonly("degree", &BezierCurve::degree, "The degree n (len(points) - 1).")
+        .def_property_readonly("is_rational", &BezierCurve::is_rational, "True when the weights are not all equal.")
+        .def_property_readonly(
+            "points", [](const BezierCurve& c) { return to_list(c.points()); }, "The control points P_i as (x, y, z) tuples.")
         .def_property_readonly("weights", &BezierCurve::weights, "The weights (all 1.0 for a polynomial curve).")
-        .def("point", [](const BezierCurve& c, double u) { return to_tuple(c.point(u)); }, py::arg("u"))
+        .def("point", [](const BezierCurve& c, double u) { return to_tuple(c.point(u)); }, py::arg("u"),
+             "C(u) as (x, y, z), u in [0, 1].")
         .def("point_de_casteljau", [](const BezierCurve& c, double u) { return to_tuple(c.point_de_casteljau(u)); },
              py::arg("u"), "C(u) by deCasteljau in homogeneous space (A1.5, Eq. 1.19).")
         .def("homogeneous_point", [](const BezierCurve& c, double u) { return homogeneous_tuple(c.homogeneous_point(u)); },
@@ -86,12 +88,12 @@ void bind_core(py::module_& m) {
             },
             py::arg("u"), "rows[k][i] = P^w_{k,i}(u), the triangle of Table 1.4.")
         .def("derivative", [](const BezierCurve& c, double u, int order) { return to_tuple(c.derivative(u, order)); },
-             py::arg("u"), py::arg("order") = 1)
+             py::arg("u"), py::arg("order") = 1, "The order-th derivative C^(order)(u) as a vector (order >= 0).")
         .def("derivatives", &derivative_list<BezierCurve>, py::arg("u"), py::arg("order"),
              "[C(u), C'(u), ..., C^(order)(u)].")
-        .def("split", &BezierCurve::split, py::arg("u"))
-        .def("elevate", &BezierCurve::elevate)
-        .def("reversed", &BezierCurve::reversed)
+        .def("split", &BezierCurve::split, py::arg("u"), "(left, right): the curve cut at u in (0, 1), each on [0, 1].")
+        .def("elevate", &BezierCurve::elevate, "The same curve with degree n + 1 (degree elevation: the shape does not change).")
+        .def("reversed", &BezierCurve::reversed, "The same curve traversed from its end: C(1 - u).")
         .def("__repr__", [](const BezierCurve& c) {
             return describe("BezierCurve", c.degree(), c.homogeneous_points().size(), c.is_rational());
         });
@@ -104,13 +106,14 @@ void bind_core(py::module_& m) {
                  return BezierSurface(std::move(n), to_double_rows(weights, "weights"));
              }),
              py::arg("net"), py::arg("weights") = py::none())
-        .def_property_readonly("degree_u", &BezierSurface::degree_u)
-        .def_property_readonly("degree_v", &BezierSurface::degree_v)
-        .def_property_readonly("is_rational", &BezierSurface::is_rational)
-        .def_property_readonly("points", [](const BezierSurface& s) { return to_list(s.points()); })
-        .def_property_readonly("weights", &BezierSurface::weights)
+        .def_property_readonly("degree_u", &BezierSurface::degree_u, "The degree in u (rows - 1).")
+        .def_property_readonly("degree_v", &BezierSurface::degree_v, "The degree in v (columns - 1).")
+        .def_property_readonly("is_rational", &BezierSurface::is_rational, "True when the weights are not all equal.")
+        .def_property_readonly(
+            "points", [](const BezierSurface& s) { return to_list(s.points()); }, "The control net: rows along u of (x, y, z) tuples.")
+        .def_property_readonly("weights", &BezierSurface::weights, "The weights, rows along u (all 1.0 when polynomial).")
         .def("point", [](const BezierSurface& s, double u, double v) { return to_tuple(s.point(u, v)); },
-             py::arg("u"), py::arg("v"))
+             py::arg("u"), py::arg("v"), "S(u, v) as (x, y, z), u and v in [0, 1].")
         .def("point_basis", [](const BezierSurface& s, double u, double v) { return to_tuple(s.point_basis(u, v)); },
              py::arg("u"), py::arg("v"), "S(u, v) from the Bernstein values of each direction (A1.3), row by row then once across.")
         .def("point_u_first", [](const BezierSurface& s, double u, double v) { return to_tuple(s.point_u_first(u, v)); },
@@ -122,11 +125,12 @@ void bind_core(py::module_& m) {
              py::arg("u"), py::arg("v"), "S(u, v) by the one-step (bilinear) deCasteljau.")
         .def("derivative",
              [](const BezierSurface& s, double u, double v, int du, int dv) { return to_tuple(s.derivative(u, v, du, dv)); },
-             py::arg("u"), py::arg("v"), py::arg("du") = 1, py::arg("dv") = 0)
+             py::arg("u"), py::arg("v"), py::arg("du") = 1, py::arg("dv") = 0,
+             "The partial derivative d^(du+dv) S / du^du dv^dv at (u, v) as a vector (du, dv >= 0).")
         .def("derivatives", &surface_derivative_list<BezierSurface>, py::arg("u"), py::arg("v"), py::arg("order"),
              "SKL[k][l] = d^(k+l) S / du^k dv^l for k + l <= order.")
         .def("normal", [](const BezierSurface& s, double u, double v) { return to_tuple(s.normal(u, v)); },
-             py::arg("u"), py::arg("v"))
+             py::arg("u"), py::arg("v"), "The unit normal along S_u x S_v (its limit where that vanishes).")
         .def("isocurve_u", &BezierSurface::isocurve_u, py::arg("u0"), "The curve in v at u = u0.")
         .def("isocurve_v", &BezierSurface::isocurve_v, py::arg("v0"), "The curve in u at v = v0.")
         .def("__repr__", [](const BezierSurface& s) {
@@ -146,23 +150,32 @@ void bind_core(py::module_& m) {
                  return NurbsCurve(d, std::move(k), std::move(p), to_doubles(weights, "weights"));
              }),
              py::arg("degree"), py::arg("knots"), py::arg("points"), py::arg("weights") = py::none())
-        .def_static("from_bezier", &NurbsCurve::from_bezier, py::arg("curve"))
-        .def_property_readonly("degree", &NurbsCurve::degree)
-        .def_property_readonly("knots", &NurbsCurve::knots)
-        .def_property_readonly("points", [](const NurbsCurve& c) { return to_list(c.points()); })
+        .def_static("from_bezier", &NurbsCurve::from_bezier, py::arg("curve"),
+                    "The same curve as a NurbsCurve on the knots {0..0, 1..1} (degree + 1 each).")
+        .def_property_readonly("degree", &NurbsCurve::degree, "The degree p.")
+        .def_property_readonly("knots", &NurbsCurve::knots, "The knot vector (nondecreasing, len(points) + degree + 1 values).")
+        .def_property_readonly(
+            "points", [](const NurbsCurve& c) { return to_list(c.points()); }, "The control points as (x, y, z) tuples.")
         .def_property_readonly("weights", &NurbsCurve::weights, "The weights (all 1.0 for a polynomial curve).")
-        .def_property_readonly("is_rational", &NurbsCurve::is_rational)
-        .def_property_readonly("domain", [](const NurbsCurve& c) { return to_tuple(c.domain()); })
-        .def_property_readonly("start_point", [](const NurbsCurve& c) { return to_tuple(c.start_point()); })
-        .def_property_readonly("end_point", [](const NurbsCurve& c) { return to_tuple(c.end_point()); })
-        .def("point", [](const NurbsCurve& c, double u) { return to_tuple(c.point(u)); }, py::arg("u"))
+        .def_property_readonly("is_rational", &NurbsCurve::is_rational, "True when the weights are not all equal.")
+        .def_property_readonly(
+            "domain", [](const NurbsCurve& c) { return to_tuple(c.domain()); }, "(u_min, u_max): the parameter range.")
+        .def_property_readonly(
+            "start_point", [](const NurbsCurve& c) { return to_tuple(c.start_point()); }, "C(u_min) as (x, y, z).")
+        .def_property_readonly(
+            "end_point", [](const NurbsCurve& c) { return to_tuple(c.end_point()); }, "C(u_max) as (x, y, z).")
+        .def("point", [](const NurbsCurve& c, double u) { return to_tuple(c.point(u)); }, py::arg("u"),
+             "C(u) as (x, y, z), u in the domain.")
         .def("derivative", [](const NurbsCurve& c, double u, int order) { return to_tuple(c.derivative(u, order)); },
-             py::arg("u"), py::arg("order") = 1)
-        .def("derivatives", &derivative_list<NurbsCurve>, py::arg("u"), py::arg("order"))
-        .def("insert_knot", &NurbsCurve::insert_knot, py::arg("u"), py::arg("times") = 1)
-        .def("bezier_segments", &NurbsCurve::bezier_segments)
-        .def("reversed", &NurbsCurve::reversed)
-        .def("reparameterized", &NurbsCurve::reparameterized, py::arg("a"), py::arg("b"))
+             py::arg("u"), py::arg("order") = 1, "The order-th derivative C^(order)(u) as a vector (order >= 0).")
+        .def("derivatives", &derivative_list<NurbsCurve>, py::arg("u"), py::arg("order"),
+             "[C(u), C'(u), ..., C^(order)(u)].")
+        .def("insert_knot", &NurbsCurve::insert_knot, py::arg("u"), py::arg("times") = 1,
+             "The same curve with u inserted `times` more times (A5.1); the shape does not change.")
+        .def("bezier_segments", &NurbsCurve::bezier_segments, "The curve as Bezier pieces, one per nonzero knot span (by knot insertion).")
+        .def("reversed", &NurbsCurve::reversed, "The same curve traversed from its end, on the same domain.")
+        .def("reparameterized", &NurbsCurve::reparameterized, py::arg("a"), py::arg("b"),
+             "The same curve on the domain [a, b] (a < b), by a linear map of the knots.")
         .def("__repr__", [](const NurbsCurve& c) {
             return describe("NurbsCurve", c.degree(), c.homogeneous_points().size(), c.is_rational());
         });
@@ -181,30 +194,37 @@ void bind_core(py::module_& m) {
              }),
              py::arg("degree_u"), py::arg("degree_v"), py::arg("knots_u"), py::arg("knots_v"), py::arg("net"),
              py::arg("weights") = py::none())
-        .def_static("from_bezier", &NurbsSurface::from_bezier, py::arg("surface"))
-        .def_property_readonly("degree_u", &NurbsSurface::degree_u)
-        .def_property_readonly("degree_v", &NurbsSurface::degree_v)
-        .def_property_readonly("knots_u", &NurbsSurface::knots_u)
-        .def_property_readonly("knots_v", &NurbsSurface::knots_v)
-        .def_property_readonly("points", [](const NurbsSurface& s) { return to_list(s.points()); })
-        .def_property_readonly("weights", &NurbsSurface::weights)
-        .def_property_readonly("is_rational", &NurbsSurface::is_rational)
-        .def_property_readonly("domain", [](const NurbsSurface& s) {
-            return py::make_tuple(to_tuple(s.domain_u()), to_tuple(s.domain_v()));
-        })
+        .def_static("from_bezier", &NurbsSurface::from_bezier, py::arg("surface"),
+                    "The same surface as a NurbsSurface on the knots {0..0, 1..1} in u and in v.")
+        .def_property_readonly("degree_u", &NurbsSurface::degree_u, "The degree in u.")
+        .def_property_readonly("degree_v", &NurbsSurface::degree_v, "The degree in v.")
+        .def_property_readonly("knots_u", &NurbsSurface::knots_u, "The knot vector in u.")
+        .def_property_readonly("knots_v", &NurbsSurface::knots_v, "The knot vector in v.")
+        .def_property_readonly(
+            "points", [](const NurbsSurface& s) { return to_list(s.points()); }, "The control net: rows along u of (x, y, z) tuples.")
+        .def_property_readonly("weights", &NurbsSurface::weights, "The weights, rows along u (all 1.0 when polynomial).")
+        .def_property_readonly("is_rational", &NurbsSurface::is_rational, "True when the weights are not all equal.")
+        .def_property_readonly(
+            "domain",
+            [](const NurbsSurface& s) { return py::make_tuple(to_tuple(s.domain_u()), to_tuple(s.domain_v())); },
+            "((u_min, u_max), (v_min, v_max)): the parameter ranges.")
         .def("point", [](const NurbsSurface& s, double u, double v) { return to_tuple(s.point(u, v)); },
-             py::arg("u"), py::arg("v"))
+             py::arg("u"), py::arg("v"), "S(u, v) as (x, y, z), (u, v) in the domain.")
         .def("derivative",
              [](const NurbsSurface& s, double u, double v, int du, int dv) { return to_tuple(s.derivative(u, v, du, dv)); },
-             py::arg("u"), py::arg("v"), py::arg("du") = 1, py::arg("dv") = 0)
-        .def("derivatives", &surface_derivative_list<NurbsSurface>, py::arg("u"), py::arg("v"), py::arg("order"))
+             py::arg("u"), py::arg("v"), py::arg("du") = 1, py::arg("dv") = 0,
+             "The partial derivative d^(du+dv) S / du^du dv^dv at (u, v) as a vector (du, dv >= 0).")
+        .def("derivatives", &surface_derivative_list<NurbsSurface>, py::arg("u"), py::arg("v"), py::arg("order"),
+             "SKL[k][l] = d^(k+l) S / du^k dv^l for k + l <= order.")
         .def("normal", [](const NurbsSurface& s, double u, double v) { return to_tuple(s.normal(u, v)); },
-             py::arg("u"), py::arg("v"))
+             py::arg("u"), py::arg("v"), "The unit normal along S_u x S_v (its limit where that vanishes).")
         .def("isocurve_u", &NurbsSurface::isocurve_u, py::arg("u0"), "The curve in v at u = u0.")
         .def("isocurve_v", &NurbsSurface::isocurve_v, py::arg("v0"), "The curve in u at v = v0.")
-        .def("insert_knot_u", &NurbsSurface::insert_knot_u, py::arg("u"), py::arg("times") = 1)
-        .def("insert_knot_v", &NurbsSurface::insert_knot_v, py::arg("v"), py::arg("times") = 1)
-        .def("bezier_patches", &NurbsSurface::bezier_patches)
+        .def("insert_knot_u", &NurbsSurface::insert_knot_u, py::arg("u"), py::arg("times") = 1,
+             "The same surface with u inserted `times` more times in the u knots (A5.3).")
+        .def("insert_knot_v", &NurbsSurface::insert_knot_v, py::arg("v"), py::arg("times") = 1,
+             "The same surface with v inserted `times` more times in the v knots (A5.3).")
+        .def("bezier_patches", &NurbsSurface::bezier_patches, "The surface as Bezier patches, [i][j] per nonzero knot span in u and v.")
         .def("__repr__", [](const NurbsSurface& s) {
             std::ostringstream out;
             out << "<ratbez.NurbsSurface degree=(" << s.degree_u() << ", " << s.degree_v() << ") points=(" << s.rows()

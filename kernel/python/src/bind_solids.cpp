@@ -26,25 +26,27 @@ namespace {
 py::tuple origin() { return py::make_tuple(0.0, 0.0, 0.0); }
 py::tuple z_axis() { return py::make_tuple(0.0, 0.0, 1.0); }
 
-py::array_t<double> vertex_array(const Mesh& mesh) {
-    py::array_t<double> result({static_cast<py::ssize_t>(mesh.vertices.size()), py::ssize_t{3}});
-    auto out = result.mutable_unchecked<2>();
-    for (py::ssize_t i = 0; i < out.shape(0); ++i) {
-        const Vec3& p = mesh.vertices[static_cast<std::size_t>(i)];
-        out(i, 0) = p.x;
-        out(i, 1) = p.y;
-        out(i, 2) = p.z;
-    }
-    return result;
+// The mesh's own tables as read-only numpy views: no copy on access, the Mesh object as the views' base
+// (kept alive by them), and an edit raises instead of being silently lost on a copy.
+py::array vertex_view(const py::object& self) {
+    const Mesh& mesh = self.cast<const Mesh&>();
+    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 is three packed doubles");
+    py::array_t<double> view({static_cast<py::ssize_t>(mesh.vertices.size()), py::ssize_t{3}},
+                             {static_cast<py::ssize_t>(sizeof(Vec3)), static_cast<py::ssize_t>(sizeof(double))},
+                             mesh.vertices.empty() ? nullptr : &mesh.vertices.front().x, self);
+    py::detail::array_proxy(view.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return view;
 }
 
-py::array_t<std::int64_t> triangle_array(const Mesh& mesh) {
-    py::array_t<std::int64_t> result({static_cast<py::ssize_t>(mesh.triangles.size()), py::ssize_t{3}});
-    auto out = result.mutable_unchecked<2>();
-    for (py::ssize_t i = 0; i < out.shape(0); ++i)
-        for (py::ssize_t k = 0; k < 3; ++k)
-            out(i, k) = mesh.triangles[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)];
-    return result;
+py::array triangle_view(const py::object& self) {
+    const Mesh& mesh = self.cast<const Mesh&>();
+    static_assert(sizeof(mesh.triangles.front()) == 3 * sizeof(std::uint32_t), "triangles are packed index triples");
+    py::array_t<std::uint32_t> view(
+        {static_cast<py::ssize_t>(mesh.triangles.size()), py::ssize_t{3}},
+        {static_cast<py::ssize_t>(3 * sizeof(std::uint32_t)), static_cast<py::ssize_t>(sizeof(std::uint32_t))},
+        mesh.triangles.empty() ? nullptr : mesh.triangles.front().data(), self);
+    py::detail::array_proxy(view.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return view;
 }
 
 // A mesh from Python tables; every index is checked, since Mesh itself trusts its triangles.
@@ -147,19 +149,25 @@ void bind_solids(py::module_& m) {
 
     py::class_<Mesh>(m, "Mesh", "A triangle mesh: vertex table and outward triangles (right-hand rule).")
         .def(py::init(&make_mesh), py::arg("vertices"), py::arg("triangles"))
-        .def_property_readonly("vertices", &vertex_array, "N x 3 float64 array.")
-        .def_property_readonly("triangles", &triangle_array, "M x 3 int64 array of vertex indices.")
-        .def("is_closed", &Mesh::is_closed)
-        .def("volume", &Mesh::volume)
-        .def("area", &Mesh::area)
+        .def_property_readonly("vertices", &vertex_view,
+                               "N x 3 float64 array of the vertex coordinates: a read-only view of the mesh's own\n"
+                               "table (no copy; np.array(mesh.vertices) for an editable one).")
+        .def_property_readonly("triangles", &triangle_view,
+                               "M x 3 uint32 array of vertex indices, outward by the right-hand rule: a read-only\n"
+                               "view of the mesh's own table.")
+        .def("is_closed", &Mesh::is_closed, "True when every edge is used by exactly two triangles, in opposite directions.")
+        .def("volume", &Mesh::volume, "The enclosed volume by the divergence theorem (positive for an outward closed mesh).")
+        .def("area", &Mesh::area, "The total triangle area (model units squared).")
         .def("__repr__", [](const Mesh& mesh) {
             return "<ratbez.Mesh vertices=" + std::to_string(mesh.vertices.size()) +
                    " triangles=" + std::to_string(mesh.triangles.size()) + ">";
         });
 
     py::class_<Face>(m, "Face", "A face of a Solid: an untrimmed NURBS surface, or a plane patch trimmed by loops.")
-        .def_property_readonly("kind", [](const Face& f) { return f.kind() == Face::Kind::planar ? "planar" : "surface"; })
-        .def_property_readonly("surface", &Face::surface)
+        .def_property_readonly(
+            "kind", [](const Face& f) { return f.kind() == Face::Kind::planar ? "planar" : "surface"; },
+            "'surface' (an untrimmed NURBS surface) or 'planar' (a plane patch trimmed by loops).")
+        .def_property_readonly("surface", &Face::surface, "The face's NurbsSurface; for a planar face the plane patch its loops trim.")
         .def_property_readonly(
             "loops",
             [](const Face& f) {
@@ -172,7 +180,8 @@ void bind_solids(py::module_& m) {
                 return loops;
             },
             "Boundary loops of a planar face, each a list of NurbsCurve in loop order; [] for a surface face.")
-        .def("point", [](const Face& f, double u, double v) { return to_tuple(f.point(u, v)); }, py::arg("u"), py::arg("v"))
+        .def("point", [](const Face& f, double u, double v) { return to_tuple(f.point(u, v)); }, py::arg("u"), py::arg("v"),
+             "The surface point S(u, v) as (x, y, z).")
         .def("normal", [](const Face& f, double u, double v) { return to_tuple(f.normal(u, v)); }, py::arg("u"),
              py::arg("v"), "The outward unit normal.")
         .def("__repr__", [](const Face& f) {
@@ -180,7 +189,7 @@ void bind_solids(py::module_& m) {
         });
 
     py::class_<Solid>(m, "Solid", "A closed shell of exact NURBS faces.")
-        .def_property_readonly("faces", &Solid::faces)
+        .def_property_readonly("faces", &Solid::faces, "The faces of the closed shell (list of Face).")
         .def_property_readonly(
             "kind", [](const Solid& s) { return std::string(s.construction().kind()); },
             "What the solid was built as: 'cylinder', 'cone', 'sphere', 'torus', 'revolution', 'extrusion', "
@@ -196,24 +205,22 @@ void bind_solids(py::module_& m) {
         .def_property_readonly(
             "exact_area", [](const Solid& s) { return s.construction().exact_area(); },
             "The closed-form surface area of a cylinder, cone, sphere or torus; None for other kinds.")
-        .def("volume", &Solid::volume, py::call_guard<py::gil_scoped_release>())
-        .def("area", &Solid::area, py::call_guard<py::gil_scoped_release>())
-        .def("euler_characteristic", &Solid::euler_characteristic)
-        .def("bounding_box", [](const Solid& s) {
-            const auto box = s.bounding_box();
-            return py::make_tuple(to_tuple(box.min), to_tuple(box.max));
-        })
+        .def("volume", &Solid::volume, py::call_guard<py::gil_scoped_release>(),
+             "The enclosed volume (model units cubed), by cubature of the exact faces; GIL released.")
+        .def("area", &Solid::area, py::call_guard<py::gil_scoped_release>(),
+             "The surface area (model units squared), by cubature of the exact faces; GIL released.")
+        .def("euler_characteristic", &Solid::euler_characteristic, "V - E + F of the B-rep (2 for a sphere-like shell).")
         .def(
-            "tessellate",
-            [](const Solid& s, double tolerance, std::optional<double> angle_deg, long long max_triangles) {
-                if (max_triangles <= 0) throw Error("max_triangles", "must be a positive whole number");
-                py::gil_scoped_release release;
-                return tessellate(s, TessellationOptions{tolerance, angle_deg, static_cast<std::size_t>(max_triangles)});
+            "bounding_box",
+            [](const Solid& s) {
+                const auto box = s.bounding_box();
+                return py::make_tuple(to_tuple(box.min), to_tuple(box.max));
             },
-            py::arg("tolerance"), py::arg("angle_deg") = py::none(),
-            py::arg("max_triangles") = static_cast<long long>(TessellationOptions{}.max_triangles),
-            "A watertight mesh within `tolerance` of the exact surfaces (optionally also `angle_deg`). A tolerance\n"
-            "needing more than max_triangles raises ratbez.Error naming tolerance, with the estimated count.")
+            "((xmin, ymin, zmin), (xmax, ymax, zmax)): the box of the faces' control points (a rational\n"
+            "curve or surface lies in the convex hull of its control points), so it contains the solid, but\n"
+            "it is larger than the tight box where control points lie off the surface (the corner points of a\n"
+            "circle's quarter arcs); cheap, no evaluation. For a tight box, tessellate and take the mesh's\n"
+            "vertices' extremes (within the tolerance).")
         .def("__repr__", [](const Solid& s) { return "<ratbez.Solid faces=" + std::to_string(s.faces().size()) + ">"; });
 
     m.def("default_tolerance", &default_tolerance, py::arg("solid"),
@@ -235,18 +242,24 @@ void bind_solids(py::module_& m) {
         py::arg("axis") = z_axis(), "A cone or frustum; center is the base center, radius2 may be 0 (apex).");
     m.def(
         "sphere", [](double radius, const py::object& center) { return sphere(radius, to_vec3(center, "center")); },
-        py::arg("radius"), py::arg("center") = origin());
+        py::arg("radius"), py::arg("center") = origin(), "A sphere of radius > 0 about center, exact rational faces.");
     m.def(
         "torus",
         [](double major_radius, double minor_radius, const py::object& center, const py::object& axis) {
             return torus(major_radius, minor_radius, to_vec3(center, "center"), to_vec3(axis, "axis"));
         },
-        py::arg("major_radius"), py::arg("minor_radius"), py::arg("center") = origin(), py::arg("axis") = z_axis());
+        py::arg("major_radius"), py::arg("minor_radius"), py::arg("center") = origin(), py::arg("axis") = z_axis(),
+        "A torus about axis through center: the tube of minor_radius around the circle of major_radius\n"
+        "(major_radius > minor_radius > 0).");
     m.def(
         "revolve",
         [](const py::object& profile, const py::object& axis_point, const py::object& axis_dir, double angle) {
-            return revolve(to_profile(profile, "profile"), to_vec3(axis_point, "axis_point"),
-                           to_vec3(axis_dir, "axis_dir"), angle);
+            try {
+                return revolve(to_profile(profile, "profile"), to_vec3(axis_point, "axis_point"),
+                               to_vec3(axis_dir, "axis_dir"), angle);
+            } catch (const Error& e) {
+                throw e.renamed("angle_deg", "angle");  // the kernel's name for what Python calls angle
+            }
         },
         py::arg("profile"), py::arg("axis_point") = origin(), py::arg("axis_dir") = z_axis(), py::arg("angle") = 360.0,
         "Revolve a profile (BezierCurve, NurbsCurve or a list of them joined end to end) by angle degrees.");

@@ -46,6 +46,7 @@ py::tuple to_tuple(const Interval& interval);
 // One registration function per binding source; module.cpp calls them in dependency order.
 void bind_core(py::module_& module);
 void bind_solids(py::module_& module);
+void bind_tessellation(py::module_& module);
 void bind_io(py::module_& module);
 void bind_modelling(py::module_& module);
 void bind_evaluation(py::module_& module);

@@ -3,6 +3,7 @@
 #include <exception>
 #include <string_view>
 
+#include "argument_types.hpp"
 #include "convert.hpp"
 #include "ratbez/error.hpp"
 
@@ -21,19 +22,25 @@ py::str python_text(std::string_view text) {
         PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "replace"));
 }
 
-// ratbez::Error -> a ratbez.Error instance with str() = what() and the attributes argument and reason.
+// Sets a ratbez.Error instance with str() = "argument: reason" and the attributes argument and reason.
+void raise_error(std::string_view argument, std::string_view reason) {
+    const ratbez::Error e(argument, reason);
+    try {
+        const py::object instance = py::handle(error_type)(python_text(e.what()));
+        instance.attr("argument") = python_text(e.argument());
+        instance.attr("reason") = python_text(e.reason());
+        PyErr_SetObject(error_type, instance.ptr());
+    } catch (py::error_already_set& failure) {
+        failure.restore();  // building the instance failed (out of memory): raise that instead
+    }
+}
+
+// ratbez::Error -> ratbez.Error.
 void translate_error(std::exception_ptr error) {
     try {
         if (error) std::rethrow_exception(error);
     } catch (const ratbez::Error& e) {
-        try {
-            const py::object instance = py::handle(error_type)(python_text(e.what()));
-            instance.attr("argument") = python_text(e.argument());
-            instance.attr("reason") = python_text(e.reason());
-            PyErr_SetObject(error_type, instance.ptr());
-        } catch (py::error_already_set& failure) {
-            failure.restore();  // building the instance failed (out of memory): raise that instead
-        }
+        raise_error(e.argument(), e.reason());
     }
 }
 
@@ -54,9 +61,11 @@ PYBIND11_MODULE(ratbez, m) {
     py::register_exception_translator(&translate_error);
     ratbez::python::bind_core(m);
     ratbez::python::bind_solids(m);
+    ratbez::python::bind_tessellation(m);
     ratbez::python::bind_io(m);
     ratbez::python::bind_modelling(m);  // adds methods to the classes above
     ratbez::python::bind_evaluation(m);
     ratbez::python::bind_transforms(m);
     ratbez::python::bind_values(m);
+    ratbez::python::name_argument_type_errors(m, &raise_error);  // last: every function is bound
 }

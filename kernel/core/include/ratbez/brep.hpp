@@ -14,6 +14,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "ratbez/box.hpp"
@@ -66,6 +67,11 @@ public:
     // a side collapsed to a point carries a degenerate edge and only there, and consecutive sides meet
     // in the same Vertex object, which lies at the surface's corner.
     static Face from_surface(NurbsSurface surface, std::array<Coedge, 4> sides);
+    // A surface face bounded by its own four sides, for a surface on its own (face.tessellate of a bare
+    // surface): each edge is the surface's isocurve there; a side that collapses to a point gets a
+    // degenerate edge, and opposite sides that coincide (a closed direction, as a full revolution's seam)
+    // share one edge, so the face is closed across them. Corners that such sides join are one vertex.
+    static Face from_surface(NurbsSurface surface);
     // A planar face bounded by loops (loops[0] outer, counterclockwise seen from plane.normal, which
     // points out of the solid; further loops are holes). Its surface() is the bilinear plane patch
     // spanning the loops' bounding rectangle in the plane frame, with S_u x S_v along plane.normal.
@@ -94,6 +100,9 @@ private:
     std::vector<std::vector<Coedge>> loops_;
     Plane plane_{};
 };
+
+// Each distinct edge of the faces once, in order of first use (degenerate ones included).
+std::vector<EdgePtr> distinct_edges(std::span<const Face> faces);
 
 class Solid {
 public:

@@ -10,6 +10,7 @@
 #include "ratbez/brep.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/mesh.hpp"
+#include "ratbez/progress.hpp"
 
 namespace ratbez {
 
@@ -18,6 +19,8 @@ struct TessellationOptions {
     std::optional<double> angle_deg;      // optional, in (0, 180): the exact surface normals at the two ends
                                           // of any mesh edge inside a curved face differ by at most this
     std::size_t max_triangles = 20'000'000;  // budget: a finer request throws TooFine
+    Progress progress;                    // optional: called with the fraction done as faces are planned and
+                                          // meshed; may throw to cancel (progress.hpp)
 };
 
 // A tolerance that needs more than max_triangles: an Error naming "tolerance", with the estimated count
@@ -35,10 +38,19 @@ private:
 };
 
 Mesh tessellate(const Solid& solid, const TessellationOptions& options);
+// An open mesh of one face on its own, with the same tolerance and angle semantics: the face's boundary
+// edges are sampled as in a solid (a face of a solid meets its neighbours' meshes along them), sides
+// that the face itself shares (a seam) are closed. Triangles follow the face's outward normal.
+Mesh tessellate(const Face& face, const TessellationOptions& options);
+// A bare surface as the face Face::from_surface(surface) makes of it.
+Mesh tessellate(const NurbsSurface& surface, const TessellationOptions& options);
 // The tolerance used when the caller gives none: 1e-3 of the solid's bounding-box diagonal.
 double default_tolerance(const Solid& solid);
 inline Mesh tessellate(const Solid& solid, double tolerance, std::optional<double> angle_deg = std::nullopt) {
-    return tessellate(solid, TessellationOptions{tolerance, angle_deg});
+    TessellationOptions options;
+    options.tolerance = tolerance;
+    options.angle_deg = angle_deg;
+    return tessellate(solid, options);
 }
 
 }  // namespace ratbez
