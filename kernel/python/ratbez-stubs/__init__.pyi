@@ -555,8 +555,11 @@ def default_tolerance(solid: Solid) -> float:
 def ellipse_arc(a: float, b: float, start_deg: float, end_deg: float, center: Point = ..., normal: Point = ...) -> NurbsCurve:
     """An elliptical arc with semi-axes a and b as an exact NurbsCurve."""
 
-def export_openscad(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ...) -> None:
-    """Write polyhedron(...) text after the CGAL mesh checks (a Solid is tessellated at tolerance first)."""
+def export_openscad(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., module: Any = ..., max_triangles: Optional[int] = ...) -> None:
+    """Write an OpenSCAD library file, `module NAME() { polyhedron(...); }` then `NAME();` (NAME: module, else
+    the file's stem made an identifier), after the CGAL mesh checks. A Solid is tessellated at tolerance
+    first and written with the fewest decimals that keep the written mesh within tolerance; the header
+    states the tolerance, the measured deviation, counts, bounding box and volumes."""
 
 def extrude(profile: Union[Curve, Sequence[Curve]], direction: Point, distance: float, holes: Optional[Sequence[Union[Curve, Sequence[Curve]]]] = ...) -> Solid:
     """Sweep a closed planar profile by distance along direction; holes: closed profiles inside it (a list,
@@ -621,8 +624,17 @@ def torus(major_radius: float, minor_radius: float, center: Point = ..., axis: P
 def write_brep(solid: Solid, path: Path, bezier_faces: bool = ...) -> None:
     """Write OpenCASCADE's native .brep text (bezier_faces: as brep_string)."""
 
+def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., max_triangles: Optional[int] = ...) -> None:
+    """Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with
+    the fewest decimals that keep the written mesh within tolerance)."""
+
 def write_step(solid: Solid, path: Path, bezier_faces: bool = ...) -> None:
     """Write the exact B-spline B-rep as an AP214 STEP file (bezier_faces: as brep_string)."""
 
-def write_stl(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ...) -> None:
-    """Write a binary STL after the CGAL mesh checks (a Solid is tessellated at tolerance first)."""
+def write_stl(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., binary: bool = ..., max_triangles: Optional[int] = ...) -> None:
+    """Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),
+    or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance."""
+
+def write_text_file(path: Path, text: str) -> None:
+    """Write `text` (UTF-8) to `path` the way every ratbez writer does: a new temporary file beside it,
+    renamed over it (atomic); a read-only file, a symbolic link or a folder at `path` is refused."""
