@@ -165,7 +165,9 @@ struct MeshRequest {
 };
 
 ratbez::Mesh tessellate_for(const ShapeSpec& spec, const MeshRequest& request) {
-    ratbez::TessellationOptions options{request.tolerance, request.angle};
+    ratbez::TessellationOptions options;
+    options.tolerance = request.tolerance;
+    options.angle_deg = request.angle;
     if (request.max_triangles) options.max_triangles = *request.max_triangles;
     try {
         return ratbez::tessellate(spec.solid, options);
@@ -463,7 +465,10 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
         const ShapeSpec spec = ratbez::spec::load_spec(spec_path.string());
         row.shape = spec.name;
         row.tolerance = spec.tolerance ? *spec.tolerance : ratbez::default_tolerance(spec.solid);
-        const ratbez::Mesh mesh = ratbez::tessellate(spec.solid, ratbez::TessellationOptions{row.tolerance, spec.tessellation_angle});
+        ratbez::TessellationOptions options;
+        options.tolerance = row.tolerance;
+        options.angle_deg = spec.tessellation_angle;
+        const ratbez::Mesh mesh = ratbez::tessellate(spec.solid, options);
         row.triangles = mesh.triangles.size();
         row.volume_exact = spec.solid.volume();
         row.volume_mesh = mesh.volume();

@@ -2,10 +2,10 @@
 # Every test, in four stages, each timed (the wall times are printed at the end):
 #  1. build:     scripts/setup.sh (installs what is missing, builds build/ in Release with tests and bench);
 #  2. release:   ctest on build/: every suite (C++ core/occt/openscad/cli/reliability, Python, FreeCAD headless
-#                and GUI, the OpenSCAD binary, the bench table), with the 10,000 randomized round trips;
+#                and GUI, the OpenSCAD binary, the bench table), with 5,000 randomized round trips (10 shards of 500);
 #  3. sanitizers: the C++ suites again in build-asan/ under AddressSanitizer + UndefinedBehaviorSanitizer
 #                (-O1, as ASan recommends; Python and FreeCAD stay out: ASan cannot be preloaded into them),
-#                with 1,000 round trips (100 of each 1,000-case shard) plus every seed that ever failed;
+#                with 500 round trips (50 of each shard) plus every seed that ever failed;
 #  4. fuzzing:   every libFuzzer target for a bounded time (scripts/fuzz.sh).
 # Budget: at most 15 minutes on 2 cores with a warm ccache. Runs unattended (CI=true, no stdin); exits
 # non-zero when anything fails. Run as root on Debian 12: bash scripts/test.sh

@@ -15,24 +15,17 @@
 #include <thread>
 #include <vector>
 
+#include "../core/temp_directory_test_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using ratbez::test::read_file;
 
-class OutputFile : public ::testing::Test {
+class OutputFile : public ratbez::test::TempDirectoryTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("ratbez_output_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    OutputFile() : TempDirectoryTest("output_test") {}
 
     // The command started in the background, its output discarded; returns its pid.
     static pid_t start(const std::vector<std::string>& args) {
@@ -57,7 +50,7 @@ protected:
     }
     std::vector<std::string> temporaries() const {
         std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_))
+        for (const auto& entry : fs::directory_iterator(directory_))
             if (entry.path().filename().string().starts_with(".ratbez-")) names.push_back(entry.path().filename());
         return names;
     }
@@ -89,11 +82,10 @@ protected:
         return 0;
     }
 
-    fs::path dir_;
 };
 
 TEST_F(OutputFile, SigkillDuringAStepWriteLeavesTheOldFile) {
-    const fs::path target = dir_ / "vase.step";
+    const fs::path target = directory_ / "vase.step";
     std::ofstream(target) << "old";
     const int status = interrupt_step_export(target, SIGKILL);
     ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
@@ -102,7 +94,7 @@ TEST_F(OutputFile, SigkillDuringAStepWriteLeavesTheOldFile) {
 
 TEST_F(OutputFile, SigtermAndSigintRemoveTheTemporaryFile) {
     for (const int signal_number : {SIGTERM, SIGINT}) {
-        const fs::path target = dir_ / "vase.step";
+        const fs::path target = directory_ / "vase.step";
         std::ofstream(target) << "old";
         const int status = interrupt_step_export(target, signal_number);
         // The handler removes the temporary, then the signal ends the command as it would have.
@@ -114,10 +106,10 @@ TEST_F(OutputFile, SigtermAndSigintRemoveTheTemporaryFile) {
 }
 
 TEST_F(OutputFile, SymbolicLinkAtTheTargetIsRefusedForEveryFormat) {
-    const fs::path victim = dir_ / "victim.txt";
+    const fs::path victim = directory_ / "victim.txt";
     std::ofstream(victim) << "precious";
     for (const std::string extension : {".scad", ".stl", ".off", ".step", ".brep"}) {
-        const fs::path link = dir_ / ("out" + extension);
+        const fs::path link = directory_ / ("out" + extension);
         fs::create_symlink(victim, link);
         const pid_t pid = start({"export", std::string(RATBEZ_EXAMPLES_DIR) + "/cylinder.json", "-o", link.string()});
         const int status = wait_status(pid);
@@ -130,7 +122,7 @@ TEST_F(OutputFile, SymbolicLinkAtTheTargetIsRefusedForEveryFormat) {
 
 TEST_F(OutputFile, LongFileNamesWork) {
     for (const std::string extension : {".scad", ".step"}) {
-        const fs::path target = dir_ / (std::string(255 - extension.size(), 'n') + extension);
+        const fs::path target = directory_ / (std::string(255 - extension.size(), 'n') + extension);
         const pid_t pid = start({"export", std::string(RATBEZ_EXAMPLES_DIR) + "/cylinder.json", "-o", target.string()});
         const int status = wait_status(pid);
         EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << extension;

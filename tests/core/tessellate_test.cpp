@@ -187,14 +187,14 @@ TEST(Tessellate, TriangleBudgetIsCheckedBeforeMeshing) {
     for (const std::size_t budget : {std::size_t{20'000'000}, std::size_t{1000}}) {
         const double tolerance = budget == 1000 ? 1e-3 : 4e-12;
         try {
-            tessellate(solid, TessellationOptions{tolerance, std::nullopt, budget});
+            tessellate(solid, TessellationOptions{tolerance, std::nullopt, budget, {}});
             ADD_FAILURE() << "no budget error";
         } catch (const Error& e) {
             EXPECT_NE(std::string(e.what()).find("tolerance"), std::string::npos) << e.what();
         }
     }
     // Within the budget the same request succeeds.
-    EXPECT_NO_THROW(tessellate(solid, TessellationOptions{1e-2, std::nullopt, 100'000}));
+    EXPECT_NO_THROW(tessellate(solid, TessellationOptions{1e-2, std::nullopt, 100'000, {}}));
 }
 
 TEST(Tessellate, DefaultToleranceIsAThousandthOfTheDiagonal) {

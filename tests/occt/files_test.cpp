@@ -22,6 +22,7 @@
 
 #include "occt_test_support.hpp"
 #include "ratbez/error.hpp"
+#include "../core/temp_directory_test_support.hpp"
 #include "ratbez/occt/files.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
@@ -32,17 +33,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Files : public ::testing::Test {
+class Files : public test::TempDirectoryTest {
 protected:
-    void SetUp() override {
-        directory_ = fs::temp_directory_path() /
-                     ("ratbez_occt_files_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::create_directories(directory_);
-    }
-    void TearDown() override { fs::remove_all(directory_); }
-    std::string path(const std::string& name) const { return (directory_ / name).string(); }
-
-    fs::path directory_;
+    Files() : TempDirectoryTest("occt_files") {}
 };
 
 double occt_volume(const TopoDS_Shape& shape) {

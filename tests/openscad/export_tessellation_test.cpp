@@ -12,6 +12,7 @@
 #include <string>
 
 #include "ratbez/deviation.hpp"
+#include "../core/temp_directory_test_support.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/tessellate.hpp"
@@ -21,21 +22,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class ExportTessellation : public ::testing::Test {
+class ExportTessellation : public test::TempDirectoryTest {
 protected:
-    void SetUp() override {
-        directory_ = fs::temp_directory_path() /
-                     ("ratbez_export_tessellation_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(directory_);
-        fs::create_directories(directory_);
-    }
-    void TearDown() override { fs::remove_all(directory_); }
-    std::string path(const std::string& name) const { return (directory_ / name).string(); }
-    static std::string read(const std::string& path) {
-        std::ifstream in(path, std::ios::binary);
-        return {std::istreambuf_iterator<char>(in), {}};
-    }
-    fs::path directory_;
+    ExportTessellation() : TempDirectoryTest("export_tessellation") {}
+    static std::string read(const std::string& path) { return test::read_file(path); }
 };
 
 // An OFF file as a reader gets it.

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "../core/temp_directory_test_support.hpp"
 #include "ratbez/error.hpp"
 
 namespace {
@@ -22,22 +23,12 @@ namespace fs = std::filesystem;
 using ratbez::output::write_file;
 using ratbez::output::write_file_by_name;
 
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
+using ratbez::test::read_file;
 
-class OutputFile : public ::testing::Test {
+class OutputFile : public ratbez::test::TempDirectoryTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("ratbez_output_file_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::size_t entries() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), {})); }
-    fs::path dir_;
+    OutputFile() : TempDirectoryTest("output_file") {}
+    std::size_t entries() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(directory_), {})); }
 };
 
 // The reason of the Error `call` throws; the argument must be "path".
@@ -58,7 +49,7 @@ void write_text(const fs::path& path, const std::string& text) {
 }
 
 TEST_F(OutputFile, WritesAndReplacesKeepingTheMode) {
-    const fs::path target = dir_ / "a.txt";
+    const fs::path target = directory_ / "a.txt";
     write_text(target, "first");
     EXPECT_EQ(read_file(target), "first");
     fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
@@ -69,7 +60,7 @@ TEST_F(OutputFile, WritesAndReplacesKeepingTheMode) {
 }
 
 TEST_F(OutputFile, AFailingWriterLeavesTheTargetAndNoTemporary) {
-    const fs::path target = dir_ / "a.txt";
+    const fs::path target = directory_ / "a.txt";
     write_text(target, "old");
     EXPECT_THROW(write_file(target.string(),
                             [](std::ostream& out) {
@@ -82,7 +73,7 @@ TEST_F(OutputFile, AFailingWriterLeavesTheTargetAndNoTemporary) {
 }
 
 TEST_F(OutputFile, SymbolicLinkAtTheTargetIsRefusedAndItsFileUntouched) {
-    const fs::path victim = dir_ / "victim.txt", link = dir_ / "out.scad";
+    const fs::path victim = directory_ / "victim.txt", link = directory_ / "out.scad";
     write_text(victim, "precious");
     fs::create_symlink(victim, link);
     EXPECT_NE(path_error([&] { write_text(link, "attack"); }).find("symbolic link"), std::string::npos);
@@ -91,14 +82,14 @@ TEST_F(OutputFile, SymbolicLinkAtTheTargetIsRefusedAndItsFileUntouched) {
     EXPECT_EQ(read_file(victim), "precious");
     EXPECT_TRUE(fs::is_symlink(link));
     // The old fixed temporary name, planted as a link, is never used.
-    fs::create_symlink(victim, dir_ / "out.stl.ratbez-partial");
-    write_text(dir_ / "out.stl", "mesh");
+    fs::create_symlink(victim, directory_ / "out.stl.ratbez-partial");
+    write_text(directory_ / "out.stl", "mesh");
     EXPECT_EQ(read_file(victim), "precious");
-    EXPECT_EQ(read_file(dir_ / "out.stl"), "mesh");
+    EXPECT_EQ(read_file(directory_ / "out.stl"), "mesh");
 }
 
 TEST_F(OutputFile, ConcurrentWritersEachLeaveAWholeFile) {
-    const fs::path target = dir_ / "shared.txt";
+    const fs::path target = directory_ / "shared.txt";
     std::vector<std::string> texts;
     for (int k = 0; k < 16; ++k) texts.push_back(std::string(100000 + 7919 * k, static_cast<char>('a' + k)));
     std::vector<std::thread> writers;
@@ -111,24 +102,24 @@ TEST_F(OutputFile, ConcurrentWritersEachLeaveAWholeFile) {
 
 TEST_F(OutputFile, BadPathsAreRefusedNamingTheCause) {
     EXPECT_NE(path_error([&] { write_text("", "x"); }).find("empty"), std::string::npos);
-    EXPECT_NE(path_error([&] { write_text(dir_.string() + "/a.stl" + std::string(1, '\0') + ".txt", "x"); }).find("NUL"),
+    EXPECT_NE(path_error([&] { write_text(directory_.string() + "/a.stl" + std::string(1, '\0') + ".txt", "x"); }).find("NUL"),
               std::string::npos);
-    EXPECT_NE(path_error([&] { write_text(dir_, "x"); }).find("folder"), std::string::npos);
-    const std::string missing = path_error([&] { write_text(dir_ / "missing" / "a.txt", "x"); });
-    EXPECT_NE(missing.find((dir_ / "missing").string() + "' of"), std::string::npos) << missing;
+    EXPECT_NE(path_error([&] { write_text(directory_, "x"); }).find("folder"), std::string::npos);
+    const std::string missing = path_error([&] { write_text(directory_ / "missing" / "a.txt", "x"); });
+    EXPECT_NE(missing.find((directory_ / "missing").string() + "' of"), std::string::npos) << missing;
     EXPECT_NE(missing.find("does not exist"), std::string::npos) << missing;
-    EXPECT_NE(path_error([&] { write_text(dir_ / std::string(256, 'n'), "x"); }).find("limit 255"), std::string::npos);
+    EXPECT_NE(path_error([&] { write_text(directory_ / std::string(256, 'n'), "x"); }).find("limit 255"), std::string::npos);
     EXPECT_EQ(entries(), 0u);
 }
 
 TEST_F(OutputFile, NamesOfNameMaxBytesWork) {
-    const fs::path target = dir_ / (std::string(251, 'n') + ".stl");  // 255 bytes: no room for any suffix
+    const fs::path target = directory_ / (std::string(251, 'n') + ".stl");  // 255 bytes: no room for any suffix
     write_text(target, "long");
     EXPECT_EQ(read_file(target), "long");
 }
 
 TEST_F(OutputFile, ByNameWriterGetsTheTemporaryFile) {
-    const fs::path target = dir_ / "a.step";
+    const fs::path target = directory_ / "a.step";
     write_text(target, "old");
     write_file_by_name(target.string(), [](const std::string& name) { std::ofstream(name) << "by name"; });
     EXPECT_EQ(read_file(target), "by name");

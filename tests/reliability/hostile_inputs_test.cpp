@@ -489,12 +489,12 @@ TEST(HostileTessellation, TooFineToleranceIsRejectedByTheBudget) {
         expect_clear_message(e, "tolerance");
         EXPECT_NE(std::string(e.what()).find("max_triangles"), std::string::npos) << e.what();
     }
-    TessellationOptions tight{1e-2, std::nullopt, 50};
+    TessellationOptions tight{1e-2, std::nullopt, 50, {}};
     expect_rejected([&] { (void)tessellate(ball, tight); }, "tolerance", "50-triangle budget");
     // The message gives an estimate of what the tolerance needs, not the budget plus one.
     const std::size_t needed = tessellate(ball, 1e-3).triangles.size();
     try {
-        (void)tessellate(ball, TessellationOptions{1e-3, std::nullopt, 1000});
+        (void)tessellate(ball, TessellationOptions{1e-3, std::nullopt, 1000, {}});
         ADD_FAILURE() << "a 1000-triangle budget was enough";
     } catch (const TooFine& e) {
         EXPECT_EQ(e.max_triangles(), 1000u);
@@ -502,11 +502,11 @@ TEST(HostileTessellation, TooFineToleranceIsRejectedByTheBudget) {
         EXPECT_LT(e.estimated_triangles(), 2.0 * static_cast<double>(needed)) << needed;
         EXPECT_NE(std::string(e.what()).find("more than max_triangles = 1000 allows"), std::string::npos) << e.what();
     }
-    TessellationOptions angle{1.0, 1e-9, 1'000'000};
+    TessellationOptions angle{1.0, 1e-9, 1'000'000, {}};
     expect_rejected([&] { (void)tessellate(ball, angle); }, "tolerance", "1e-9 degree angle");
     for (double bad : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()})
         expect_rejected([&] { (void)tessellate(ball, bad); }, "tolerance", "tolerance " + std::to_string(bad));
-    TessellationOptions no_budget{1e-2, std::nullopt, 0};
+    TessellationOptions no_budget{1e-2, std::nullopt, 0, {}};
     expect_rejected([&] { (void)tessellate(ball, no_budget); }, "max_triangles", "zero budget");
     // A huge tolerance still gives a valid closed mesh.
     const Mesh coarse = tessellate(ball, 1e6);

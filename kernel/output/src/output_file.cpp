@@ -24,7 +24,15 @@
 namespace ratbez::output {
 namespace {
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+// Built by appending: GCC 12's -Wrestrict misreads the inlined "'" + std::string(text) (a false positive).
+std::string quoted(std::string_view text) {
+    std::string result;
+    result.reserve(text.size() + 2);
+    result += '\'';
+    result += text;
+    result += '\'';
+    return result;
+}
 
 // ---- The temporary files in flight, for the signal handler --------------------------------------------------
 // A fixed table (no allocation, no lock: a signal may arrive anywhere); a slot is claimed with `used`, filled,
