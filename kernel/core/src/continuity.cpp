@@ -10,6 +10,7 @@
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/closest_point.hpp"
 #include "ratbez/curvature.hpp"
+#include "vector_angle.hpp"
 
 namespace ratbez {
 
@@ -19,7 +20,7 @@ constexpr double kRelative = 1e-9;      // positions, derivatives, curvatures: r
 constexpr double kAngle = 1e-9;         // radians
 constexpr double kFloor = 1e-12;        // the absolute floor of derivative and curvature comparisons
 
-double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
+using detail::angle_between;
 
 // The tolerance of a k-th derivative comparison: relative to the larger value, with a floor from the
 // shape's size over the parameter width to the k-th power (two zero derivatives agree).

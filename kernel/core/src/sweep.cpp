@@ -22,6 +22,7 @@
 #include "ratbez/revolve.hpp"
 #include "ratbez/rotation_minimizing_frame.hpp"
 #include "tube_shell.hpp"
+#include "vector_angle.hpp"
 
 namespace ratbez {
 
@@ -43,7 +44,7 @@ constexpr int kVerificationSamples = 24;  // per interval for the reported error
 
 Vec3 unit(const Vec3& a) { return a / norm(a); }
 
-double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
+using detail::angle_between;
 
 // a rotated about the unit axis by the angle (cos c, sin s), Rodrigues' formula.
 Vec3 rotated(const Vec3& a, const Vec3& axis, double c, double s) {

@@ -11,6 +11,7 @@
 #include "point_inversion.hpp"
 #include "ratbez/surface_grid.hpp"
 #include "strip_zipper.hpp"
+#include "vector_angle.hpp"
 
 namespace ratbez::detail {
 namespace {
@@ -101,9 +102,7 @@ double triangle_error(const SurfaceEvaluator& s, const ParameterBox& domain, con
     return worst;
 }
 
-double angle_between(const Vec3& a, const Vec3& b) {
-    return std::atan2(norm(cross(a, b)), dot(a, b));
-}
+using detail::angle_between;
 
 // How far the unit normals turn across cell (i, j), from the grid's normals (`nv` per row of the grid;
 // empty: no angle limit): the largest turn along u, along v, and whether any of those or a diagonal's
