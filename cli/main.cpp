@@ -162,6 +162,7 @@ struct MeshRequest {
     std::optional<double> angle;
     std::optional<std::size_t> max_triangles;
     bool tolerance_from_option = false;  // --tolerance, else the spec's `tolerance` or the default
+    ratbez::Progress progress;           // optional
 };
 
 ratbez::Mesh tessellate_for(const ShapeSpec& spec, const MeshRequest& request) {
@@ -169,6 +170,7 @@ ratbez::Mesh tessellate_for(const ShapeSpec& spec, const MeshRequest& request) {
     options.tolerance = request.tolerance;
     options.angle_deg = request.angle;
     if (request.max_triangles) options.max_triangles = *request.max_triangles;
+    options.progress = request.progress;
     try {
         return ratbez::tessellate(spec.solid, options);
     } catch (const ratbez::TooFine& e) {
@@ -199,7 +201,7 @@ std::size_t parse_count(const std::string& option, const std::string& text) {
 
 // One line on stderr, rewritten in place ("\r"), once an export has run for more than a second
 // (RATBEZ_PROGRESS_AFTER seconds when set: tests use 0): percent done and the time left at the rate so
-// far. finish() ends the line if one was printed.
+// far. finish() (or the destructor) ends the line if one was printed.
 class ProgressLine {
 public:
     explicit ProgressLine(std::string what) : what_(std::move(what)), start_(std::chrono::steady_clock::now()) {
@@ -221,6 +223,10 @@ public:
         if (shown_) std::fputc('\n', stderr);
         shown_ = false;
     }
+    // An error unwinding past the line ends it, so the message starts on a line of its own.
+    ~ProgressLine() { finish(); }
+    ProgressLine(const ProgressLine&) = delete;
+    ProgressLine& operator=(const ProgressLine&) = delete;
 
 private:
     std::string what_;
@@ -229,7 +235,7 @@ private:
     bool shown_ = false;
 };
 
-// The tessellation reports no progress of its own: it counts as the first 30% of an export.
+// The tessellation's share of an export's progress line (it is usually less than the checks').
 constexpr double kTessellationShare = 0.3;
 
 int command_export(const std::vector<std::string>& raw) {
@@ -278,8 +284,10 @@ int command_export(const std::vector<std::string>& raw) {
     const double used_tolerance = tolerance ? *tolerance : spec.tolerance ? *spec.tolerance : ratbez::default_tolerance(spec.solid);
     if (!angle) angle = spec.tessellation_angle;
     ProgressLine progress("exporting " + *output);
-    const ratbez::Mesh mesh = tessellate_for(spec, MeshRequest{used_tolerance, angle, max_triangles, tolerance.has_value()});
-    progress(kTessellationShare);
+    const ratbez::Progress line = [&progress](double fraction) { progress(fraction); };
+    const ratbez::Mesh mesh =
+        tessellate_for(spec, MeshRequest{used_tolerance, angle, max_triangles, tolerance.has_value(),
+                                         ratbez::progress_part(line, 0, kTessellationShare)});
     ratbez::exporter::ExportOptions options;
     // The module is named by --module, else by the spec's `name`, else after the file written.
     options.openscad.module_name = module_name  ? *module_name
@@ -291,7 +299,7 @@ int command_export(const std::vector<std::string>& raw) {
     // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but
     // heavy CGAL self-intersection test is skipped, at the user's explicit request.
     options.checks.check_self_intersections = !args.flag("--skip-self-intersection-check");
-    options.progress = [&](double fraction) { progress(kTessellationShare + (1 - kTessellationShare) * fraction); };
+    options.progress = ratbez::progress_part(line, kTessellationShare, 1);
     try {
         ratbez::exporter::export_tessellation(spec.solid, mesh, used_tolerance, *output, options);
         progress.finish();

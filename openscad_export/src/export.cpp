@@ -158,11 +158,14 @@ MeshCheckOptions tessellation_checks(const Solid& solid, const Mesh& mesh, doubl
 
 void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions& options) {
     const Format format = checked_format(path, options);
-    const MeshReport report = check_mesh(mesh, options.checks);
+    MeshCheckOptions checks = options.checks;
+    if (options.progress) checks.progress = progress_part(options.progress, 0, 0.95);
+    const MeshReport report = check_mesh(mesh, checks);
     if (!report.ok()) refuse(report);
     ExportOptions written = options;
     written.openscad.header = header_lines(mesh, options.source, std::nullopt);
     write_file(mesh, path, format, written);
+    if (options.progress) options.progress(1.0);
 }
 
 WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tolerance, const std::string& path,
@@ -172,21 +175,29 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
     const bool text = format != Format::stl || !options.binary_stl;
     WrittenMesh result{mesh, 0, std::nullopt};
     bool chosen = false;
-    // Steps: the deviation, one per decimal candidate at most, the final checks and the writing.
-    const auto report = [&](double done, double steps) {
-        if (options.progress) options.progress(std::min(done / steps, 1.0));
+    // The work, in shares of the progress reported: the deviation of the mesh as given, then for each
+    // decimal candidate (fewest first) its deviation and checks, which end at the first that passes; then the
+    // checks of the mesh as given when none did, and the writing.
+    constexpr double kFirstDeviation = 0.15, kCandidatesEnd = 0.9;
+    const auto measured = [&](const Mesh& m, double from, double to) {
+        DeviationOptions deviation;
+        deviation.progress = progress_part(options.progress, from, to);
+        return max_deviation(solid, m, deviation);
+    };
+    const auto checked = [&](const Mesh& m, double from, double to) {
+        MeshCheckOptions checks = options.checks;
+        if (options.progress) checks.progress = progress_part(options.progress, from, to);
+        return check_mesh(m, checks);
     };
     if (text) {
-        result.max_deviation = max_deviation(solid, mesh);
+        result.max_deviation = measured(mesh, 0, kFirstDeviation);
         const std::vector<int> candidates = decimal_candidates(mesh, tolerance, result.max_deviation);
-        const double steps = static_cast<double>(candidates.size()) + 3;
-        report(1, steps);
+        const double share = (kCandidatesEnd - kFirstDeviation) / static_cast<double>(std::max<std::size_t>(candidates.size(), 1));
         for (std::size_t k = 0; k < candidates.size(); ++k) {
+            const double from = kFirstDeviation + share * static_cast<double>(k);
             Mesh candidate = rounded_mesh(mesh, candidates[k]);
-            const double deviation = max_deviation(solid, candidate);
-            const bool passed = deviation <= tolerance && check_mesh(candidate, options.checks).ok();
-            // A pass ends the search: what is left is the writing.
-            report(passed ? steps - 1 : static_cast<double>(k) + 2, steps);
+            const double deviation = measured(candidate, from, from + share / 3);
+            const bool passed = deviation <= tolerance && checked(candidate, from + share / 3, from + share).ok();
             if (!passed) continue;
             result = WrittenMesh{std::move(candidate), deviation, candidates[k]};
             chosen = true;
@@ -194,17 +205,18 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
         }
     }
     if (!chosen) {
-        const MeshReport report = check_mesh(mesh, options.checks);
+        const MeshReport report = checked(mesh, text ? kCandidatesEnd : 0, 0.95);
         if (!report.ok()) refuse(report);
         if (text && !(result.max_deviation <= tolerance))
             throw Error("mesh", "refusing to export a mesh " + number_text(result.max_deviation, 4) +
                                     " from the surface, beyond the tolerance " + number_text(tolerance, 4));
     }
+    if (options.progress) options.progress(0.95);
     ExportOptions written = options;
     written.openscad.header = header_lines(
         result.mesh, options.source, Measured{tolerance, result.max_deviation, solid.volume(), result.decimals});
     write_file(result.mesh, path, format, written);
-    report(1, 1);
+    if (options.progress) options.progress(1.0);
     return result;
 }
 

@@ -38,12 +38,18 @@ TEST(MaxDeviation, ScaledOctahedronAroundSphere) {
     EXPECT_NEAR(max_deviation(sphere(r), octahedron(1.5 * r)), 0.5 * r, 1e-9);
 }
 
+DeviationOptions samples_per_edge(int n) {
+    DeviationOptions options;
+    options.samples_per_edge = n;
+    return options;
+}
+
 TEST(MaxDeviation, SphereOffCenterAndSampleCount) {
     Mesh m = octahedron(1.0);
     for (Vec3& v : m.vertices) v += Vec3{1, 2, 3};
     // With one sample per edge only the vertices are sampled: they lie on the sphere.
-    EXPECT_NEAR(max_deviation(sphere(1.0, {1, 2, 3}), m, {1}), 0.0, 1e-9);
-    EXPECT_NEAR(max_deviation(sphere(1.0, {1, 2, 3}), m, {3}), 1 - 1 / std::sqrt(3.0), 1e-9);
+    EXPECT_NEAR(max_deviation(sphere(1.0, {1, 2, 3}), m, samples_per_edge(1)), 0.0, 1e-9);
+    EXPECT_NEAR(max_deviation(sphere(1.0, {1, 2, 3}), m, samples_per_edge(3)), 1 - 1 / std::sqrt(3.0), 1e-9);
 }
 
 // A prism over a regular n-gon, between z = 0 and z = h, with its vertices at radius `rho`.
@@ -106,7 +112,7 @@ TEST(MaxDeviation, EmptyMeshIsZeroAndBadInputIsRejected) {
     Mesh bad = octahedron(1.0);
     bad.triangles.push_back({0, 1, 17});
     EXPECT_THROW(max_deviation(sphere(1.0), bad), Error);
-    EXPECT_THROW(max_deviation(sphere(1.0), octahedron(1.0), {0}), Error);
+    EXPECT_THROW(max_deviation(sphere(1.0), octahedron(1.0), samples_per_edge(0)), Error);
     Mesh nan_mesh = octahedron(1.0);
     nan_mesh.vertices[0].x = std::nan("");
     EXPECT_THROW(max_deviation(sphere(1.0), nan_mesh), Error);

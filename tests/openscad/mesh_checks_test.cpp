@@ -154,7 +154,9 @@ TEST(CheckMesh, RefusesSelfIntersectingMesh) {
     EXPECT_FALSE(*r.self_intersection_free);
     EXPECT_TRUE(mentions(r, "intersects itself"));
 
-    const MeshReport skipped = check_mesh(m, MeshCheckOptions{.check_self_intersections = false, .exact_volume = {}, .volume_tolerance = 0});
+    MeshCheckOptions without_self_intersections;
+    without_self_intersections.check_self_intersections = false;
+    const MeshReport skipped = check_mesh(m, without_self_intersections);
     EXPECT_FALSE(skipped.self_intersection_free.has_value());
     EXPECT_TRUE(skipped.ok());
 }

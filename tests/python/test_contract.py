@@ -53,17 +53,23 @@ def test_keyword_names():
         (ratbez.Face.tessellate, ["tolerance", "angle_deg", "max_triangles", "progress"]),
         (ratbez.NurbsSurface.tessellate, ["tolerance", "angle_deg", "max_triangles", "progress"]),
         (ratbez.BezierSurface.tessellate, ["tolerance", "angle_deg", "max_triangles", "progress"]),
+        (ratbez.Solid.volume, ["progress"]),
+        (ratbez.Solid.area, ["progress"]),
     ]
     if ratbez.has_cgal:
-        # module, binary, max_triangles and write_off: the contract additions (DESIGN.md)
-        expected.append((ratbez.export_openscad, ["solid_or_mesh", "path", "tolerance", "module", "max_triangles"]))
-        expected.append((ratbez.write_stl, ["solid_or_mesh", "path", "tolerance", "binary", "max_triangles"]))
-        expected.append((ratbez.write_off, ["solid_or_mesh", "path", "tolerance", "max_triangles"]))
+        # module, binary, max_triangles, progress and write_off: the contract additions (DESIGN.md; long calls
+        # take progress=callable)
+        expected.append((ratbez.export_openscad,
+                         ["solid_or_mesh", "path", "tolerance", "module", "max_triangles", "progress"]))
+        expected.append((ratbez.write_stl, ["solid_or_mesh", "path", "tolerance", "binary", "max_triangles", "progress"]))
+        expected.append((ratbez.write_off, ["solid_or_mesh", "path", "tolerance", "max_triangles", "progress"]))
+        expected.append((ratbez.check_mesh, ["mesh", "check_self_intersections", "progress"]))
     if ratbez.has_occt:
         # bezier_faces: an addition, optional (one face per Bézier patch, for FreeCAD's measurements)
         expected.append((ratbez.write_step, ["solid", "path", "bezier_faces"]))
         expected.append((ratbez.write_brep, ["solid", "path", "bezier_faces"]))
-        expected.append((ratbez.occt_check, ["solid", "grid", "deviation_limit", "volume_limit", "bezier_faces"]))
+        expected.append((ratbez.occt_check,
+                         ["solid", "grid", "deviation_limit", "volume_limit", "bezier_faces", "progress"]))
     for function, names in expected:
         assert keywords(function) == names, function.__name__
     # Constructors: __init__(self, ...).

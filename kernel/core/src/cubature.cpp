@@ -155,13 +155,18 @@ struct Problem {
 
 // Cells created so far against kMaxCells. `quick` (the orientation check of a new Solid) stops refining
 // when the budget is spent; the measuring functions say that they cannot reach the accuracy.
+// Every kCellsPerPoll new cells the caller's progress callback is polled (progress.hpp), which is how
+// Ctrl-C reaches a measurement of a face that extreme weights cut into very many cells.
 struct Budget {
+    static constexpr std::size_t kCellsPerPoll = 4096;
     std::string_view argument;
     bool quick = false;
+    const Progress* progress = nullptr;
     std::size_t cells = 0;
 
     // Counts n new cells; false (quick) or Error (measuring) once the budget is spent.
     bool spend(std::size_t n) {
+        if (progress != nullptr && *progress && cells / kCellsPerPoll != (cells + n) / kCellsPerPoll) (*progress)(0.0);
         cells += n;
         if (cells <= kMaxCells) return true;
         if (quick) return false;
@@ -488,12 +493,12 @@ double area_of_faces(const std::vector<Face>& faces, Budget budget) {
 
 }  // namespace
 
-double faces_volume(const std::vector<Face>& faces, std::string_view argument, bool quick) {
-    return volume_of_faces(faces, Budget{argument, quick});
+double faces_volume(const std::vector<Face>& faces, std::string_view argument, bool quick, const Progress& progress) {
+    return volume_of_faces(faces, Budget{argument, quick, &progress});
 }
 
-double faces_area(const std::vector<Face>& faces, std::string_view argument) {
-    return area_of_faces(faces, Budget{argument});
+double faces_area(const std::vector<Face>& faces, std::string_view argument, const Progress& progress) {
+    return area_of_faces(faces, Budget{argument, false, &progress});
 }
 
 double surface_area(const NurbsSurface& surface, std::string_view argument) {

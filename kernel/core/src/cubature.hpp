@@ -17,6 +17,7 @@
 #include "ratbez/brep.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/nurbs_surface.hpp"
+#include "ratbez/progress.hpp"
 #include "ratbez/vec.hpp"
 
 namespace ratbez::detail {
@@ -87,10 +88,12 @@ std::vector<double> weight_cuts(const std::vector<std::vector<double>>& lines, i
 
 // Signed volume enclosed by closed faces (divergence theorem), to about 1e-14 of their size cubed;
 // `quick` takes a fixed low-order rule instead, enough for the sign (Solid's orientation check).
-// Throws Error naming `argument` when the accuracy cannot be reached within the cell budget.
-double faces_volume(const std::vector<Face>& faces, std::string_view argument, bool quick = false);
-// The area of faces, to about 1e-14 of their size squared; errors as above.
-double faces_area(const std::vector<Face>& faces, std::string_view argument);
+// Throws Error naming `argument` when the accuracy cannot be reached within the cell budget. `progress`
+// is polled (with 0) every few thousand cells, so that it can cancel (progress.hpp).
+double faces_volume(const std::vector<Face>& faces, std::string_view argument, bool quick = false,
+                    const Progress& progress = {});
+// The area of faces, to about 1e-14 of their size squared; errors and progress as above.
+double faces_area(const std::vector<Face>& faces, std::string_view argument, const Progress& progress = {});
 // The area of an untrimmed surface, to about 1e-14 of its control box's diagonal squared; errors as above.
 double surface_area(const NurbsSurface& surface, std::string_view argument);
 

@@ -525,7 +525,11 @@ double max_deviation(const Solid& solid, const Mesh& mesh, const DeviationOption
     std::uint32_t face = 0;
     Foot warm;
     bool have_warm = false;
-    for (const auto& t : mesh.triangles) {
+    constexpr std::size_t kTrianglesPerReport = 1024;
+    for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+        if (options.progress && k % kTrianglesPerReport == 0)
+            options.progress(static_cast<double>(k) / static_cast<double>(mesh.triangles.size()));
+        const auto& t = mesh.triangles[k];
         const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
         for (int i = 0; i <= n; ++i)
             for (int j = 0; i + j <= n; ++j) {
@@ -536,6 +540,7 @@ double max_deviation(const Solid& solid, const Mesh& mesh, const DeviationOption
                 have_warm = true;
             }
     }
+    if (options.progress) options.progress(1.0);
     return worst;
 }
 

@@ -13,16 +13,22 @@ double surface_area(const Face& face) { return detail::faces_area({face}, "face"
 
 double surface_area(const NurbsSurface& surface) { return detail::surface_area(surface, "surface"); }
 
-double surface_area(const Solid& solid) {
-    const double area = detail::faces_area(solid.faces(), "solid");
+double surface_area(const Solid& solid) { return surface_area(solid, Progress{}); }
+
+double enclosed_volume(const Solid& solid) { return enclosed_volume(solid, Progress{}); }
+
+double surface_area(const Solid& solid, const Progress& progress) {
+    const double area = detail::faces_area(solid.faces(), "solid", progress);
     require(std::isfinite(area), "solid", "its area is not a finite double (the solid is too large to measure)");
+    if (progress) progress(1.0);
     return area;
 }
 
-double enclosed_volume(const Solid& solid) {
-    const double volume = detail::faces_volume(solid.faces(), "solid");
+double enclosed_volume(const Solid& solid, const Progress& progress) {
+    const double volume = detail::faces_volume(solid.faces(), "solid", false, progress);
     // A solid of size 1e150 has a volume past the double range: say so rather than return inf.
     require(std::isfinite(volume), "solid", "its volume is not a finite double (the solid is too large to measure)");
+    if (progress) progress(1.0);
     return volume;
 }
 

@@ -66,7 +66,8 @@ bool is_closed(const ConvertedSolid& converted) {
 double sample(double a, double b, int i, int n) { return i == n - 1 ? b : a + (b - a) * i / (n - 1); }
 
 // Largest |ours - OCCT D0| over the grid of every face and the samples of every edge.
-double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted, int grid) {
+// `progress` (optional) gets the share of the faces done before each grid row.
+double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted, int grid, const Progress& progress) {
     double worst = 0;
     for (std::size_t f = 0; f < solid.faces().size(); ++f) {
         const Face& face = solid.faces()[f];
@@ -79,7 +80,8 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
             const auto& [u0, u1, v0, v1] = converted.face_domains[k];
             double occt_u0 = u0, occt_u1 = u1, occt_v0 = v0, occt_v1 = v1;
             if (plane.IsNull()) occt_surface->Bounds(occt_u0, occt_u1, occt_v0, occt_v1);
-            for (int i = 0; i < grid; ++i)
+            for (int i = 0; i < grid; ++i) {
+                if (progress) progress((static_cast<double>(f) + static_cast<double>(i) / grid) / static_cast<double>(solid.faces().size()));
                 for (int j = 0; j < grid; ++j) {
                     const Vec3 ours = surface.point(sample(u0, u1, i, grid), sample(v0, v1, j, grid));
                     if (!plane.IsNull()) {
@@ -91,6 +93,7 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
                         worst = std::max(worst, distance(ours, from_occt(theirs)));
                     }
                 }
+            }
         }
     }
     for (const auto& [edge, pieces] : converted.edges)
@@ -214,28 +217,40 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
     validate(options);
     CheckReport report;
     report.size = solid.bounding_box().diagonal();
+    // The progress reported: the steps below in these shares of the work (the grids take most of it).
+    const auto report_progress = [&](double fraction) {
+        if (options.progress) options.progress(fraction);
+    };
     const ConvertedSolid converted = convert(solid, options.convert);
+    report_progress(0.1);
 
     try {
         report.valid = BRepCheck_Analyzer(converted.solid).IsValid();
         report.closed = is_closed(converted);
-        report.max_deviation = evaluation_deviation(solid, converted, options.grid);
+        report.max_deviation = evaluation_deviation(solid, converted, options.grid, progress_part(options.progress, 0.2, 0.5));
 
         if (AnalyticDistance analytic(solid.construction()); analytic.exists()) {
             double worst = 0;
-            for (const Face& face : solid.faces()) {
+            const Progress faces_done = progress_part(options.progress, 0.5, 0.8);
+            for (std::size_t f = 0; f < solid.faces().size(); ++f) {
+                const Face& face = solid.faces()[f];
                 if (face.kind() != Face::Kind::surface) continue;  // caps and end faces are planes
                 analytic.set_face(face);
                 const Interval du = face.surface().domain_u(), dv = face.surface().domain_v();
-                for (int i = 0; i < options.grid; ++i)
+                for (int i = 0; i < options.grid; ++i) {
+                    if (faces_done)
+                        faces_done((static_cast<double>(f) + static_cast<double>(i) / options.grid) /
+                                   static_cast<double>(solid.faces().size()));
                     for (int j = 0; j < options.grid; ++j) {
                         const double v = sample(dv.min, dv.max, j, options.grid);
                         worst = std::max(worst, analytic(face.point(sample(du.min, du.max, i, options.grid), v), v));
                     }
+                }
             }
             report.max_analytic_deviation = worst;
         }
 
+        report_progress(0.8);
         GProp_GProps volume_properties, area_properties;
         BRepGProp::VolumeProperties(converted.solid, volume_properties, kPropertiesEps);
         BRepGProp::SurfaceProperties(converted.solid, area_properties, kPropertiesEps);
@@ -246,6 +261,7 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
         report.failures.push_back(std::string("OpenCASCADE raised ") + failure.DynamicType()->Name() +
                                   (message && *message ? std::string(": ") + message : std::string()));
     }
+    report_progress(0.95);
     report.volume = solid.volume();
     report.area = solid.area();
     report.closed_form_volume = solid.construction().exact_volume();
@@ -268,6 +284,7 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
         report.failures.push_back("volume " + number(report.volume) + " differs from the closed form " +
                                   number(*report.closed_form_volume));
     report.passed = report.failures.empty();
+    report_progress(1.0);
     return report;
 }
 

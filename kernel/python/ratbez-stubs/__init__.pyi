@@ -128,8 +128,9 @@ class BezierSurface(object):
         differ by at most this.
         max_triangles: a request that would need more raises ratbez.Error naming 'tolerance' with an estimate of
         the triangles it would need (default 20,000,000).
-        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0; an exception it raises stops the
-        tessellation and propagates. Ctrl-C raises KeyboardInterrupt while the call runs (the GIL is released)."""
+        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+        and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+        while the call runs (the GIL is released)."""
     def closest_point(self, p: Point) -> tuple:
         """The nearest point of the surface to p (a 2D or 3D point): ((u, v), point, distance), (u, v) in the domain, distance >= 0 in model units. Global: seeds over every span, then Newton (closest_point.hpp)."""
     def closest_points(self, points: Sequence[Point]) -> list:
@@ -198,8 +199,9 @@ class Face(object):
         differ by at most this.
         max_triangles: a request that would need more raises ratbez.Error naming 'tolerance' with an estimate of
         the triangles it would need (default 20,000,000).
-        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0; an exception it raises stops the
-        tessellation and propagates. Ctrl-C raises KeyboardInterrupt while the call runs (the GIL is released)."""
+        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+        and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+        while the call runs (the GIL is released)."""
     def evaluate(self, us: ArrayLike, vs: ArrayLike, du: int = ..., dv: int = ...) -> numpy.ndarray:
         """The (du, dv) partial d^(du+dv) S / du^du dv^dv (du = dv = 0: the points) at every (us[i], vs[j]):
         a float64 array of shape (len(us), len(vs), 3). us and vs in any order, inside the domain."""
@@ -390,8 +392,9 @@ class NurbsSurface(object):
         differ by at most this.
         max_triangles: a request that would need more raises ratbez.Error naming 'tolerance' with an estimate of
         the triangles it would need (default 20,000,000).
-        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0; an exception it raises stops the
-        tessellation and propagates. Ctrl-C raises KeyboardInterrupt while the call runs (the GIL is released)."""
+        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+        and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+        while the call runs (the GIL is released)."""
     def closest_point(self, p: Point) -> tuple:
         """The nearest point of the surface to p (a 2D or 3D point): ((u, v), point, distance), (u, v) in the domain, distance >= 0 in model units. Global: seeds over every span, then Newton (closest_point.hpp)."""
     def closest_points(self, points: Sequence[Point]) -> list:
@@ -447,10 +450,20 @@ class Solid(object):
     @property
     def exact_area(self) -> Optional[float]:
         """The closed-form surface area of a cylinder, cone, sphere or torus; None for other kinds."""
-    def volume(self) -> float:
-        """The enclosed volume (model units cubed), by cubature of the exact faces; GIL released."""
-    def area(self) -> float:
-        """The surface area (model units squared), by cubature of the exact faces; GIL released."""
+    def volume(self, progress: Optional[Callable[[float], object]] = ...) -> float:
+        """The enclosed volume (model units cubed), by adaptive cubature of the exact faces to about
+        1e-14 relative (milliseconds for an ordinary solid).
+        
+        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+        and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+        while the call runs (the GIL is released)."""
+    def area(self, progress: Optional[Callable[[float], object]] = ...) -> float:
+        """The surface area (model units squared), by adaptive cubature of the exact faces to about
+        1e-14 relative.
+        
+        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+        and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+        while the call runs (the GIL is released)."""
     def euler_characteristic(self) -> int:
         """V - E + F of the B-rep (2 for a sphere-like shell)."""
     def bounding_box(self) -> tuple:
@@ -467,8 +480,9 @@ class Solid(object):
         differ by at most this.
         max_triangles: a request that would need more raises ratbez.Error naming 'tolerance' with an estimate of
         the triangles it would need (default 20,000,000).
-        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0; an exception it raises stops the
-        tessellation and propagates. Ctrl-C raises KeyboardInterrupt while the call runs (the GIL is released)."""
+        progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+        and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+        while the call runs (the GIL is released)."""
     def translated(self, v: Point) -> Solid:
         """The solid (faces kept outward; the kind and its parameters kept where the map preserves them: rigid motions,
         mirrors and uniform scalings keep a cylinder, cone, sphere, torus or revolution, any affine map an
@@ -534,8 +548,12 @@ def brep_string(solid: Solid, bezier_faces: bool = ...) -> str:
 def bspline_basis(i: int, p: int, knots: Sequence[float], u: float) -> float:
     """N_{i,p}(u) by the Cox-de Boor recursion with 0/0 := 0."""
 
-def check_mesh(mesh: Mesh, check_self_intersections: bool = ...) -> dict:
-    """The CGAL checks every exported mesh passes: closed, manifold, outward, no self-intersections."""
+def check_mesh(mesh: Mesh, check_self_intersections: bool = ..., progress: Optional[Callable[[float], object]] = ...) -> dict:
+    """The CGAL checks every exported mesh passes: closed, manifold, outward, no self-intersections.
+    
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
 
 def circle(radius: float, center: Point = ..., normal: Point = ...) -> NurbsCurve:
     """A full circle as a piecewise rational quadratic NurbsCurve, counterclockwise about normal."""
@@ -555,11 +573,15 @@ def default_tolerance(solid: Solid) -> float:
 def ellipse_arc(a: float, b: float, start_deg: float, end_deg: float, center: Point = ..., normal: Point = ...) -> NurbsCurve:
     """An elliptical arc with semi-axes a and b as an exact NurbsCurve."""
 
-def export_openscad(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., module: Any = ..., max_triangles: Optional[int] = ...) -> None:
+def export_openscad(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., module: Any = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an OpenSCAD library file, `module NAME() { polyhedron(...); }` then `NAME();` (NAME: module, else
     the file's stem made an identifier), after the CGAL mesh checks. A Solid is tessellated at tolerance
     first and written with the fewest decimals that keep the written mesh within tolerance; the header
-    states the tolerance, the measured deviation, counts, bounding box and volumes."""
+    states the tolerance, the measured deviation, counts, bounding box and volumes.
+    
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
 
 def extrude(profile: Union[Curve, Sequence[Curve]], direction: Point, distance: float, holes: Optional[Sequence[Union[Curve, Sequence[Curve]]]] = ...) -> Solid:
     """Sweep a closed planar profile by distance along direction; holes: closed profiles inside it (a list,
@@ -590,11 +612,15 @@ def loft(profiles: Sequence[Union[Curve, Sequence[Curve]]], degree: int = ..., r
 def loft_surface(curves: Union[Curve, Sequence[Curve]], degree: int = ...) -> NurbsSurface:
     """The skinned surface through >= 2 section curves (The NURBS Book 10.3), passing through every section exactly; degree across >= 1 (at most sections - 1 is used). u along the sections, v across, both [0, 1]."""
 
-def occt_check(solid: Solid, grid: int = ..., deviation_limit: float = ..., volume_limit: float = ..., bezier_faces: bool = ...) -> dict:
+def occt_check(solid: Solid, grid: int = ..., deviation_limit: float = ..., volume_limit: float = ..., bezier_faces: bool = ..., progress: Optional[Callable[[float], object]] = ...) -> dict:
     """Convert to an OpenCASCADE solid (bezier_faces: as brep_string) and compare: validity, evaluation
     deviation, volume and area; for a cylinder, cone, sphere, torus or revolution also the distance to
     OCCT's analytic surface of that kind (max_analytic_deviation) and, for the four primitives, the
-    closed-form volume (closed_form_volume); both None otherwise."""
+    closed-form volume (closed_form_volume); both None otherwise.
+    
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
 
 def power_to_bezier(coefficients: Sequence[Point]) -> list:
     """Bezier control points P = M^-1 a of a power basis curve (Ex. 1.14)."""
@@ -624,16 +650,24 @@ def torus(major_radius: float, minor_radius: float, center: Point = ..., axis: P
 def write_brep(solid: Solid, path: Path, bezier_faces: bool = ...) -> None:
     """Write OpenCASCADE's native .brep text (bezier_faces: as brep_string)."""
 
-def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., max_triangles: Optional[int] = ...) -> None:
+def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with
-    the fewest decimals that keep the written mesh within tolerance)."""
+    the fewest decimals that keep the written mesh within tolerance).
+    
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
 
 def write_step(solid: Solid, path: Path, bezier_faces: bool = ...) -> None:
     """Write the exact B-spline B-rep as an AP214 STEP file (bezier_faces: as brep_string)."""
 
-def write_stl(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., binary: bool = ..., max_triangles: Optional[int] = ...) -> None:
+def write_stl(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., binary: bool = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),
-    or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance."""
+    or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance.
+    
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
 
 def write_text_file(path: Path, text: str) -> None:
     """Write `text` (UTF-8) to `path` the way every ratbez writer does: a new temporary file beside it,

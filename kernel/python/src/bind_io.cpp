@@ -10,6 +10,7 @@
 #include <string>
 
 #include "convert.hpp"
+#include "python_progress.hpp"
 #include "ratbez/brep.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/mesh.hpp"
@@ -41,9 +42,14 @@ namespace {
 // Writes a Solid tessellated at `tolerance` (default: default_tolerance(solid)) through
 // export_tessellation (rounded coordinates checked as written, the .scad header with the measured
 // deviation), or a Mesh as it is; `options` carry the format's own settings.
+// The tessellation of a Solid counts as this share of the export's progress.
+[[maybe_unused]] constexpr double kTessellationShare = 0.3;
+
 [[maybe_unused]] void export_shape(const py::object& shape, const std::string& file, const py::object& tolerance,
-                                   const py::object& max_triangles, exporter::ExportOptions options) {
+                                   const py::object& max_triangles, const py::object& progress,
+                                   exporter::ExportOptions options) {
     options.source = "Python";
+    const Progress poll = python_progress(progress);
     if (py::isinstance<Solid>(shape)) {
         const auto& solid = shape.cast<const Solid&>();
         const std::optional<double> requested =
@@ -56,15 +62,18 @@ namespace {
         }
         py::gil_scoped_release release;
         tessellation.tolerance = requested ? *requested : default_tolerance(solid);
+        tessellation.progress = progress_part(poll, 0, kTessellationShare);
         const double used = tessellation.tolerance;
         const Mesh mesh = tessellate(solid, tessellation);
         options.checks = exporter::tessellation_checks(solid, mesh, used);
+        options.progress = progress_part(poll, kTessellationShare, 1);
         exporter::export_tessellation(solid, mesh, used, file, options);
         return;
     }
     if (py::isinstance<Mesh>(shape)) {
         const Mesh mesh = shape.cast<Mesh>();
         py::gil_scoped_release release;
+        options.progress = poll;
         exporter::export_mesh(mesh, file, options);
         return;
     }
@@ -106,50 +115,58 @@ void bind_io(py::module_& m) {
     m.def(
         "export_openscad",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance,
-           const py::object& module, const py::object& max_triangles) {
+           const py::object& module, const py::object& max_triangles, const py::object& progress) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".scad")) throw Error("path", "an OpenSCAD file name must end in .scad");
             exporter::ExportOptions options;
             options.openscad.module_name = module_for(module, file);
-            export_shape(solid_or_mesh, file, tolerance, max_triangles, options);
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, progress, options);
         },
         py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("module") = py::none(),
-        py::arg("max_triangles") = py::none(),
-        "Write an OpenSCAD library file, `module NAME() { polyhedron(...); }` then `NAME();` (NAME: module, else\n"
-        "the file's stem made an identifier), after the CGAL mesh checks. A Solid is tessellated at tolerance\n"
-        "first and written with the fewest decimals that keep the written mesh within tolerance; the header\n"
-        "states the tolerance, the measured deviation, counts, bounding box and volumes.");
+        py::arg("max_triangles") = py::none(), py::arg("progress") = py::none(),
+        (std::string(
+            "Write an OpenSCAD library file, `module NAME() { polyhedron(...); }` then `NAME();` (NAME: module, else\n"
+            "the file's stem made an identifier), after the CGAL mesh checks. A Solid is tessellated at tolerance\n"
+            "first and written with the fewest decimals that keep the written mesh within tolerance; the header\n"
+            "states the tolerance, the measured deviation, counts, bounding box and volumes.") +
+         "\n\n" + progress_doc).c_str());
     m.def(
         "write_stl",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance, bool binary,
-           const py::object& max_triangles) {
+           const py::object& max_triangles, const py::object& progress) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".stl")) throw Error("path", "an STL file name must end in .stl");
             exporter::ExportOptions options;
             options.binary_stl = binary;
             options.openscad.module_name = exporter::openscad_identifier(std::filesystem::path(file).stem().string());
-            export_shape(solid_or_mesh, file, tolerance, max_triangles, options);
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, progress, options);
         },
         py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("binary") = true,
-        py::arg("max_triangles") = py::none(),
-        "Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),\n"
-        "or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance.");
+        py::arg("max_triangles") = py::none(), py::arg("progress") = py::none(),
+        (std::string(
+            "Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),\n"
+            "or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance.") +
+         "\n\n" + progress_doc).c_str());
     m.def(
         "write_off",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance,
-           const py::object& max_triangles) {
+           const py::object& max_triangles, const py::object& progress) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".off")) throw Error("path", "an OFF file name must end in .off");
-            export_shape(solid_or_mesh, file, tolerance, max_triangles, exporter::ExportOptions{});
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, progress, exporter::ExportOptions{});
         },
         py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("max_triangles") = py::none(),
-        "Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with\n"
-        "the fewest decimals that keep the written mesh within tolerance).");
+        py::arg("progress") = py::none(),
+        (std::string(
+            "Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with\n"
+            "the fewest decimals that keep the written mesh within tolerance).") +
+         "\n\n" + progress_doc).c_str());
     m.def(
         "check_mesh",
-        [](const Mesh& mesh, bool check_self_intersections) {
+        [](const Mesh& mesh, bool check_self_intersections, const py::object& progress) {
             exporter::MeshCheckOptions options;
             options.check_self_intersections = check_self_intersections;
+            options.progress = python_progress(progress);
             exporter::MeshReport report;
             {
                 py::gil_scoped_release release;
@@ -165,8 +182,9 @@ void bind_io(py::module_& m) {
             result["problems"] = report.problems;
             return result;
         },
-        py::arg("mesh"), py::arg("check_self_intersections") = true,
-        "The CGAL checks every exported mesh passes: closed, manifold, outward, no self-intersections.");
+        py::arg("mesh"), py::arg("check_self_intersections") = true, py::arg("progress") = py::none(),
+        (std::string("The CGAL checks every exported mesh passes: closed, manifold, outward, no self-intersections.\n\n") +
+         progress_doc).c_str());
 #else
     m.attr("has_cgal") = false;
 #endif
@@ -212,9 +230,11 @@ void bind_io(py::module_& m) {
         "passes. More faces and poles; the same exact geometry.");
     m.def(
         "occt_check",
-        [](const py::object& solid, int grid, double deviation_limit, double volume_limit, bool bezier_faces) {
+        [](const py::object& solid, int grid, double deviation_limit, double volume_limit, bool bezier_faces,
+           const py::object& progress) {
             const Solid& s = solid_of(solid);
             occt::CheckOptions options;
+            options.progress = python_progress(progress);
             options.grid = grid;
             options.deviation_limit = deviation_limit;
             options.volume_limit = volume_limit;
@@ -230,11 +250,12 @@ void bind_io(py::module_& m) {
             return result;
         },
         py::arg("solid"), py::arg("grid") = 50, py::arg("deviation_limit") = 1e-9, py::arg("volume_limit") = 1e-6,
-        py::arg("bezier_faces") = false,
-        "Convert to an OpenCASCADE solid (bezier_faces: as brep_string) and compare: validity, evaluation\n"
-        "deviation, volume and area; for a cylinder, cone, sphere, torus or revolution also the distance to\n"
-        "OCCT's analytic surface of that kind (max_analytic_deviation) and, for the four primitives, the\n"
-        "closed-form volume (closed_form_volume); both None otherwise.");
+        py::arg("bezier_faces") = false, py::arg("progress") = py::none(),
+        (std::string("Convert to an OpenCASCADE solid (bezier_faces: as brep_string) and compare: validity, evaluation\n"
+                     "deviation, volume and area; for a cylinder, cone, sphere, torus or revolution also the distance to\n"
+                     "OCCT's analytic surface of that kind (max_analytic_deviation) and, for the four primitives, the\n"
+                     "closed-form volume (closed_form_volume); both None otherwise.\n\n") +
+         progress_doc).c_str());
 #else
     m.attr("has_occt") = false;
 #endif

@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <optional>
 #include <sstream>
+#include <string>
 
 #include "convert.hpp"
+#include "python_progress.hpp"
 #include "ratbez/brep.hpp"
 #include "ratbez/construction.hpp"
 #include "ratbez/curves.hpp"
@@ -16,6 +18,7 @@
 #include "ratbez/mesh.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
+#include "ratbez/properties.hpp"
 #include "ratbez/revolve.hpp"
 #include "ratbez/tessellate.hpp"
 
@@ -205,10 +208,26 @@ void bind_solids(py::module_& m) {
         .def_property_readonly(
             "exact_area", [](const Solid& s) { return s.construction().exact_area(); },
             "The closed-form surface area of a cylinder, cone, sphere or torus; None for other kinds.")
-        .def("volume", &Solid::volume, py::call_guard<py::gil_scoped_release>(),
-             "The enclosed volume (model units cubed), by cubature of the exact faces; GIL released.")
-        .def("area", &Solid::area, py::call_guard<py::gil_scoped_release>(),
-             "The surface area (model units squared), by cubature of the exact faces; GIL released.")
+        .def(
+            "volume",
+            [](const Solid& s, const py::object& progress) {
+                const Progress poll = python_progress(progress);
+                py::gil_scoped_release release;
+                return enclosed_volume(s, poll);
+            },
+            py::arg("progress") = py::none(),
+            (std::string("The enclosed volume (model units cubed), by adaptive cubature of the exact faces to about\n"
+                         "1e-14 relative (milliseconds for an ordinary solid).\n\n") + progress_doc).c_str())
+        .def(
+            "area",
+            [](const Solid& s, const py::object& progress) {
+                const Progress poll = python_progress(progress);
+                py::gil_scoped_release release;
+                return surface_area(s, poll);
+            },
+            py::arg("progress") = py::none(),
+            (std::string("The surface area (model units squared), by adaptive cubature of the exact faces to about\n"
+                         "1e-14 relative.\n\n") + progress_doc).c_str())
         .def("euler_characteristic", &Solid::euler_characteristic, "V - E + F of the B-rep (2 for a sphere-like shell).")
         .def(
             "bounding_box",

@@ -6,11 +6,13 @@
 
 #include "ratbez/brep.hpp"
 #include "ratbez/mesh.hpp"
+#include "ratbez/progress.hpp"
 
 namespace ratbez {
 
 struct DeviationOptions {
     int samples_per_edge = 6;  // barycentric samples per triangle: (n+1)(n+2)/2, vertices included
+    Progress progress;         // optional: called with the share of triangles measured; may throw to cancel
 };
 
 // The largest distance from a point of the mesh to the solid's boundary surface.

@@ -12,6 +12,13 @@ namespace ratbez {
 
 using Progress = std::function<void(double fraction)>;
 
+// The Progress of a step that is the part [from, to] of the work `whole` reports: the step's fraction f
+// becomes from + (to - from) f. Empty when `whole` is; `whole` must outlive the result.
+inline Progress progress_part(const Progress& whole, double from, double to) {
+    if (!whole) return {};
+    return [&whole, from, to](double fraction) { whole(from + (to - from) * fraction); };
+}
+
 // What a progress callback throws to stop a computation on request (not an error in the input).
 class Cancelled : public std::exception {
 public:

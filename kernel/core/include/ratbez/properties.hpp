@@ -7,6 +7,7 @@
 // accuracy cannot be reached instead of returning an unverified number.
 
 #include "ratbez/brep.hpp"
+#include "ratbez/progress.hpp"
 
 namespace ratbez {
 
@@ -14,5 +15,11 @@ double surface_area(const Face& face);
 double surface_area(const NurbsSurface& surface);  // the whole untrimmed surface
 double surface_area(const Solid& solid);
 double enclosed_volume(const Solid& solid);
+
+// The same, polling `progress` (with 0) every few thousand cubature cells and calling it with 1 at the end:
+// a Ctrl-C check for solids whose extreme weights need very many cells (an ordinary solid takes a
+// millisecond). The callback may throw to cancel (progress.hpp).
+double surface_area(const Solid& solid, const Progress& progress);
+double enclosed_volume(const Solid& solid, const Progress& progress);
 
 }  // namespace ratbez

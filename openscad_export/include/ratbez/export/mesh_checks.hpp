@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ratbez/mesh.hpp"
+#include "ratbez/progress.hpp"
 
 namespace ratbez::exporter {
 
@@ -19,6 +20,9 @@ struct MeshCheckOptions {
     // of the self-intersection test); a larger mesh is refused up front with an Error naming "mesh" rather
     // than running out of memory after a minute (8.1M triangles died at a 4 GB cap).
     std::size_t max_triangles = 4'000'000;
+    // Optional: called between the checks and, inside the self-intersection test (most of the time), every
+    // few thousand point reads with the same fraction; may throw to cancel (progress.hpp).
+    Progress progress;
 };
 inline constexpr std::size_t bytes_per_checked_triangle = 450;
 

@@ -10,6 +10,7 @@
 
 #include "ratbez/brep.hpp"
 #include "ratbez/occt/convert_options.hpp"
+#include "ratbez/progress.hpp"
 
 namespace ratbez::occt {
 
@@ -18,6 +19,7 @@ struct CheckOptions {
     double deviation_limit = 1e-9;    // relative to the solid's size: larger deviations fail the check
     double volume_limit = 1e-6;       // relative volume disagreement that fails the check
     ConvertOptions convert{};         // the representation checked (validity, deviation, OCCT's volume)
+    Progress progress;                // optional: called between the steps and faces; may throw to cancel
 };
 
 struct CheckReport {
