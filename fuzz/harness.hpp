@@ -108,5 +108,6 @@ void attempt(Step&& step) {
 void run_spec(const std::uint8_t* data, std::size_t size);      // fuzz_spec.cpp
 void run_geometry(const std::uint8_t* data, std::size_t size);  // fuzz_geometry.cpp
 void run_mesh(const std::uint8_t* data, std::size_t size);      // fuzz_mesh.cpp
+void run_output(const std::uint8_t* data, std::size_t size);    // fuzz_output.cpp
 
 }  // namespace ratbez::fuzz

@@ -1,4 +1,4 @@
-# Writes the binary seeds of fuzz_geometry and fuzz_mesh (decoded by fuzz/harness.hpp's ByteReader).
+# Writes the binary seeds of fuzz_geometry, fuzz_mesh and fuzz_output (decoded by fuzz/harness.hpp's ByteReader).
 import os, struct, sys
 root = sys.argv[1]
 def num(v):
@@ -70,3 +70,24 @@ cube_v = [(x, y, z) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
 cube_t = [(0,1,3),(0,3,2),(4,6,7),(4,7,5),(0,4,5),(0,5,1),(2,3,7),(2,7,6),(0,2,6),(0,6,4),(1,5,7),(1,7,3)]
 write('fuzz_mesh', 'cube', mesh_seed(cube_v, cube_t))
 write('fuzz_mesh', 'index_out_of_range', mesh_seed(tet_v, tet_t[:3] + [(1, 2, 5)]))
+
+# fuzz_output (fuzz_output.cpp's write_once): writes count (1 + b % 3), then per write: name kind (b % 8; 0 is
+# "out<k>.scad" with k = b % 3), what is planted (b % 6: nothing, file, read-only file, link to a file outside,
+# dangling link, folder), the byte count (b % 65) and bytes, the failure (b % 4: 0 none, 2 Error, 3 another
+# exception), where it fails (b % 65, modulo the size), and the entry point (b & 1: write_file_by_name).
+def output_write(name, plant, data, failure=0, fail_after=0, by_name=0):
+    return name + bytes([plant, len(data)]) + data + bytes([failure, fail_after, by_name])
+plain = lambda k: bytes([0, k])
+for plant, what in enumerate(['new', 'over_file', 'over_read_only', 'over_link', 'over_dangling_link', 'over_folder']):
+    write('fuzz_output', what, b'\x00' + output_write(plain(0), plant, b'solid'))
+    write('fuzz_output', what + '_by_name', b'\x00' + output_write(plain(0), plant, b'ISO-10303-21;', by_name=1))
+write('fuzz_output', 'writer_error_part_way', b'\x00' + output_write(plain(1), 1, b'0123456789', failure=2, fail_after=4))
+write('fuzz_output', 'writer_exception_by_name', b'\x00' + output_write(plain(1), 1, b'0123456789', failure=3, fail_after=7, by_name=1))
+write('fuzz_output', 'name_too_long', b'\x00' + output_write(bytes([2, 16]), 0, b'x'))
+write('fuzz_output', 'name_with_nul', b'\x00' + output_write(bytes([3]), 0, b'x'))
+write('fuzz_output', 'missing_folder', b'\x00' + output_write(bytes([4]), 0, b'x'))
+write('fuzz_output', 'under_a_file', b'\x00' + output_write(bytes([5]), 0, b'x'))
+write('fuzz_output', 'dot_names', b'\x01' + output_write(bytes([6, 0]), 0, b'x') + output_write(bytes([6, 1]), 0, b'x'))
+write('fuzz_output', 'odd_bytes', b'\x00' + output_write(bytes([1, 5]) + b"\x1b[2J\n!", 0, b'x'))
+write('fuzz_output', 'three_writes_one_name', b'\x02' + output_write(plain(2), 0, b'first') + output_write(plain(2), 0, b'second', 2, 3)
+      + output_write(plain(2), 0, b'third', 0, 0, 1))

@@ -12,7 +12,7 @@ exec </dev/null
 seconds="${1:-20}"
 shift || true
 targets=("$@")
-[ "${#targets[@]}" -gt 0 ] || targets=(fuzz_spec fuzz_geometry fuzz_mesh)
+[ "${#targets[@]}" -gt 0 ] || targets=(fuzz_spec fuzz_geometry fuzz_mesh fuzz_output)
 jobs="${RATBEZ_JOBS:-2}"
 build=build-fuzz
 export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1

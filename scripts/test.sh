@@ -10,7 +10,7 @@
 # Budget: at most 15 minutes on 2 cores with a warm ccache. Runs unattended (CI=true, no stdin); exits
 # non-zero when anything fails. Run as root on Debian 12: bash scripts/test.sh
 # (RATBEZ_BUILD_DIR and RATBEZ_ASAN_DIR override build/ and build-asan/, RATBEZ_JOBS the -j 2,
-# RATBEZ_FUZZ_SECONDS the 20 s per fuzz target; RATBEZ_ROUND_TRIP_CASES sets the cases per shard of both runs.)
+# RATBEZ_FUZZ_SECONDS the 15 s per fuzz target; RATBEZ_ROUND_TRIP_CASES sets the cases per shard of both runs.)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 exec </dev/null
@@ -66,8 +66,8 @@ else
 fi
 end_stage
 
-begin_stage fuzzing "each libFuzzer target for ${RATBEZ_FUZZ_SECONDS:-20} s (scripts/fuzz.sh)"
-if ! bash scripts/fuzz.sh "${RATBEZ_FUZZ_SECONDS:-20}" 2>&1 | tee "$logs/fuzz.txt"; then
+begin_stage fuzzing "each libFuzzer target for ${RATBEZ_FUZZ_SECONDS:-15} s (scripts/fuzz.sh)"
+if ! bash scripts/fuzz.sh "${RATBEZ_FUZZ_SECONDS:-15}" 2>&1 | tee "$logs/fuzz.txt"; then
   echo "test.sh: fuzzing found a problem (see $logs/fuzz.txt)"
   status=1
 fi

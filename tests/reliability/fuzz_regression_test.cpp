@@ -62,6 +62,7 @@ std::vector<std::uint8_t> bytes(std::string_view text) { return {text.begin(), t
 
 TEST(FuzzCorpus, GeometrySeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_geometry", fuzz::run_geometry), 0u); }
 TEST(FuzzCorpus, MeshSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_mesh", fuzz::run_mesh), 0u); }
+TEST(FuzzCorpus, OutputSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_output", fuzz::run_output), 0u); }
 #ifdef RATBEZ_HAVE_SPEC_FUZZER
 TEST(FuzzCorpus, SpecSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_spec", fuzz::run_spec), 0u); }
 
