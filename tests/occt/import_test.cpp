@@ -1,0 +1,208 @@
+// Reading solids back: read_brep / read_step of our own files gives the same solid (volume and points of every
+// face to 1e-12), OpenCASCADE's own primitives (planes, analytic faces) convert exactly, and what cannot be
+// converted (several solids, trimmed faces, files that are not STEP / .brep) is refused naming the path.
+
+#include <gtest/gtest.h>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Ax2.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "../core/temp_directory_test_support.hpp"
+#include "occt_test_support.hpp"
+#include "ratbez/curves.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/extrude.hpp"
+#include "ratbez/loft.hpp"
+#include "ratbez/occt/files.hpp"
+#include "ratbez/occt/shape_import.hpp"
+#include "ratbez/primitives.hpp"
+#include "ratbez/profile.hpp"
+#include "ratbez/properties.hpp"
+#include "ratbez/revolve.hpp"
+
+namespace ratbez::occt {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+class Import : public test::TempDirectoryTest {
+protected:
+    Import() : TempDirectoryTest("occt_import") {}
+};
+
+std::vector<std::pair<std::string, Solid>> solids() {
+    std::vector<std::pair<std::string, Solid>> out;
+    out.emplace_back("cylinder", cylinder(1.5, 2, {1, -1, 0.5}, {1, 1, 2}));
+    out.emplace_back("cone", cone(2, 0.5, 3));
+    out.emplace_back("apex_cone", cone(2, 0, 3));
+    out.emplace_back("sphere", sphere(2, {0.5, 0, 1}));
+    out.emplace_back("torus", torus(3, 1, {1, 2, 3}, {1, 0, 1}));
+    const Profile vase = Profile::from_beziers(
+        {BezierCurve({{0, 0, 0}, {4, 0, 0.5}, {0.5, 0, 3}, {0, 0, 4}}, {1, 0.5, 2, 1})});
+    out.emplace_back("vase", revolve(vase));
+    out.emplace_back("vase_270", revolve(vase, {}, {0, 0, 1}, 270));
+    const Profile square({line_segment({1, 0, 0}, {2, 0, 0}), line_segment({2, 0, 0}, {2, 0, 1}),
+                          line_segment({2, 0, 1}, {1, 0, 1}), line_segment({1, 0, 1}, {1, 0, 0})});
+    out.emplace_back("washer_90", revolve(square, {}, {0, 0, 1}, 90));
+    out.emplace_back("extrusion", extrude(Profile({arc(1, 0, 180), line_segment({-1, 0, 0}, {1, 0, 0})}), {0.2, 0, 1}, 2,
+                                          {Profile({circle(0.2, {0, 0.5, 0})})}));
+    out.emplace_back("loft", loft({Profile({circle(1)}), Profile({circle(2, {0, 0, 1})}), Profile({circle(1, {0, 0, 2})})}));
+    return out;
+}
+
+// The same solid: faces of the same kinds, volumes and points of every face at a few parameters to 1e-12.
+void expect_same(const Solid& read, const Solid& original, const std::string& name) {
+    ASSERT_EQ(read.faces().size(), original.faces().size()) << name;
+    const double volume = original.volume();
+    EXPECT_NEAR(read.volume(), volume, 1e-12 * volume) << name;
+    const double size = original.bounding_box().diagonal();
+    for (std::size_t f = 0; f < original.faces().size(); ++f) {
+        const Face& a = original.faces()[f];
+        const Face& b = read.faces()[f];
+        ASSERT_EQ(a.kind(), b.kind()) << name << " face " << f;
+        const Interval du = a.surface().domain_u(), dv = a.surface().domain_v();
+        const Interval read_du = b.surface().domain_u(), read_dv = b.surface().domain_v();
+        for (const auto& [ours, theirs] : {std::pair{du, read_du}, std::pair{dv, read_dv}}) {
+            EXPECT_NEAR(theirs.min, ours.min, 1e-12 * ours.width()) << name << " face " << f;
+            EXPECT_NEAR(theirs.max, ours.max, 1e-12 * ours.width()) << name << " face " << f;
+        }
+        for (double s : {0.0, 0.3, 0.7, 1.0})
+            for (double t : {0.0, 0.4, 1.0}) {
+                const auto at = [](const Interval& d, double fraction) { return std::min(d.min + fraction * d.width(), d.max); };
+                const Vec3 p = a.point(at(du, s), at(dv, t));
+                const Vec3 q = b.point(at(read_du, s), at(read_dv, t));
+                EXPECT_LE(distance(p, q), 1e-12 * size) << name << " face " << f << " at " << s << ", " << t;
+            }
+    }
+}
+
+TEST_F(Import, BrepAndStepRoundTripsGiveTheSameSolid) {
+    for (const auto& [name, solid] : solids()) {
+        write_brep(solid, path(name + ".brep"));
+        expect_same(read_brep(path(name + ".brep")), solid, name + " (brep)");
+        write_step(solid, path(name + ".step"));
+        expect_same(read_step(path(name + ".step")), solid, name + " (step)");
+        // One face per Bézier patch (flat ones as planes): as many faces or more, the same volume.
+        write_brep(solid, path(name + "_patches.brep"), ConvertOptions{true});
+        const Solid patches = read_brep(path(name + "_patches.brep"));
+        EXPECT_GE(patches.faces().size(), solid.faces().size()) << name;
+        EXPECT_NEAR(patches.volume(), solid.volume(), 1e-12 * solid.volume()) << name;
+    }
+}
+
+// OpenCASCADE's own solids: planes with loops, and analytic faces converted exactly (the closed-form volume).
+TEST(ImportShapes, OcctPrimitivesConvertExactly) {
+    const gp_Ax2 frame(gp_Pnt(1, 2, 3), gp_Dir(0, 1, 1));
+    struct Case {
+        std::string name;
+        TopoDS_Shape shape;
+        double volume;
+        std::size_t faces;
+    };
+    const std::vector<Case> cases{
+        {"box", BRepPrimAPI_MakeBox(frame, 1, 2, 3).Shape(), 6, 6},
+        {"cylinder", BRepPrimAPI_MakeCylinder(frame, 1.5, 2).Shape(), pi * 1.5 * 1.5 * 2, 3},
+        {"half cylinder", BRepPrimAPI_MakeCylinder(frame, 1.5, 2, pi).Shape(), pi * 1.5 * 1.5, 5},
+        {"cone", BRepPrimAPI_MakeCone(frame, 2, 0.5, 3).Shape(), pi * 3 * (4 + 1 + 0.25) / 3, 3},
+        {"sphere", BRepPrimAPI_MakeSphere(frame, 2).Shape(), 4 * pi * 8 / 3, 1},
+        {"torus", BRepPrimAPI_MakeTorus(frame, 3, 1).Shape(), 2 * pi * pi * 3, 1},
+    };
+    for (const Case& c : cases) {
+        const Solid solid = from_occt(c.shape);
+        EXPECT_EQ(solid.faces().size(), c.faces) << c.name;
+        EXPECT_NEAR(solid.volume(), c.volume, 1e-12 * c.volume) << c.name;
+    }
+}
+
+TEST(ImportShapes, SeveralSolidsAreRefused) {
+    TopoDS_Compound two;
+    BRep_Builder builder;
+    builder.MakeCompound(two);
+    builder.Add(two, BRepPrimAPI_MakeBox(1, 1, 1).Shape());
+    builder.Add(two, BRepPrimAPI_MakeBox(gp_Pnt(2, 0, 0), 1, 1, 1).Shape());
+    try {
+        from_occt(two);
+        FAIL() << "two solids accepted";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.argument(), "shape");
+        EXPECT_NE(std::string(e.reason()).find("holds 2 solids"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ImportShapes, TrimmedFacesAreRefusedNamingTheFace) {
+    // A box with a cylindrical hole: the box's faces keep their loops, the hole's face is a full cylinder; a
+    // box cut by a sphere reaching out of its sides leaves a spherical face bounded by circles that are not
+    // isocurves of the sphere.
+    const TopoDS_Shape drilled =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(-2, -2, 0), 4, 4, 1).Shape(), BRepPrimAPI_MakeCylinder(1, 1).Shape()).Shape();
+    const Solid solid = from_occt(drilled);
+    EXPECT_NEAR(solid.volume(), 16 - pi, 1e-12 * 16);
+    const TopoDS_Shape scooped =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 0), 2, 2, 2).Shape(), BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 2), 1.2).Shape())
+            .Shape();
+    try {
+        from_occt(scooped);
+        FAIL() << "a trimmed spherical face accepted";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.argument(), "shape");
+        EXPECT_NE(std::string(e.reason()).find("face "), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.reason()).find("trimmed Geom_SphericalSurface face is not supported"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST_F(Import, BadFilesAreRefusedNamingThePath) {
+    const auto expect_path_error = [](const std::function<void()>& read, const std::string& words) {
+        try {
+            read();
+            FAIL() << "accepted";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.argument(), "path") << e.what();
+            EXPECT_NE(std::string(e.reason()).find(words), std::string::npos) << e.what();
+        }
+    };
+    const std::string missing = path("missing.step"), garbage = path("garbage.step");
+    std::ofstream(garbage) << "this is not STEP\n";
+    expect_path_error([&] { read_step(missing); }, "does not exist");
+    expect_path_error([&] { read_brep(missing); }, "does not exist");
+    expect_path_error([&] { read_step(garbage); }, "not a readable STEP file");
+    expect_path_error([&] { read_brep(garbage); }, "not a readable .brep file");
+    expect_path_error([&] { read_step(directory_.string()); }, "is not a file");
+    // A .brep of two solids names the file and the count.
+    TopoDS_Compound two;
+    BRep_Builder builder;
+    builder.MakeCompound(two);
+    builder.Add(two, BRepPrimAPI_MakeBox(1, 1, 1).Shape());
+    builder.Add(two, BRepPrimAPI_MakeBox(gp_Pnt(2, 0, 0), 1, 1, 1).Shape());
+    ASSERT_TRUE(BRepTools::Write(two, path("two.brep").c_str()));
+    expect_path_error([&] { read_brep(path("two.brep")); }, "two.brep': holds 2 solids");
+}
+
+TEST_F(Import, ProgressReachesOneAndCancels) {
+    write_brep(sphere(1), path("sphere.brep"));
+    double last = -1;
+    read_brep(path("sphere.brep"), [&](double fraction) {
+        EXPECT_GE(fraction, last);
+        last = fraction;
+    });
+    EXPECT_EQ(last, 1.0);
+    EXPECT_THROW(read_brep(path("sphere.brep"), [](double) { throw Cancelled(); }), Cancelled);
+}
+
+}  // namespace
+}  // namespace ratbez::occt
