@@ -5,15 +5,22 @@
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
+#include <gp_Ax1.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Elips.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -108,6 +115,11 @@ TEST_F(Import, BrepAndStepRoundTripsGiveTheSameSolid) {
 // OpenCASCADE's own solids: planes with loops, and analytic faces converted exactly (the closed-form volume).
 TEST(ImportShapes, OcctPrimitivesConvertExactly) {
     const gp_Ax2 frame(gp_Pnt(1, 2, 3), gp_Dir(0, 1, 1));
+    // An ellipse (semi-axes 1 and 0.5) in the xz plane around (3, 0, 0): revolved about z, a surface of
+    // revolution of a conic (Pappus: 2 pi 3 x its area); extruded along y, a surface of linear extrusion.
+    const TopoDS_Face ellipse = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(
+        BRepBuilderAPI_MakeEdge(gp_Elips(gp_Ax2(gp_Pnt(3, 0, 0), gp_Dir(0, 1, 0), gp_Dir(1, 0, 0)), 1, 0.5)).Edge()).Wire());
+    const double ellipse_area = pi * 0.5;
     struct Case {
         std::string name;
         TopoDS_Shape shape;
@@ -121,6 +133,9 @@ TEST(ImportShapes, OcctPrimitivesConvertExactly) {
         {"cone", BRepPrimAPI_MakeCone(frame, 2, 0.5, 3).Shape(), pi * 3 * (4 + 1 + 0.25) / 3, 3},
         {"sphere", BRepPrimAPI_MakeSphere(frame, 2).Shape(), 4 * pi * 8 / 3, 1},
         {"torus", BRepPrimAPI_MakeTorus(frame, 3, 1).Shape(), 2 * pi * pi * 3, 1},
+        {"revolution", BRepPrimAPI_MakeRevol(ellipse, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1))).Shape(),
+         2 * pi * 3 * ellipse_area, 1},
+        {"extrusion", BRepPrimAPI_MakePrism(ellipse, gp_Vec(0, 2, 0)).Shape(), 2 * ellipse_area, 3},
     };
     for (const Case& c : cases) {
         const Solid solid = from_occt(c.shape);
