@@ -8,6 +8,7 @@
 
 #include "convert.hpp"
 #include "numpy_arrays.hpp"
+#include "python_progress.hpp"
 #include "ratbez/bezier_surface.hpp"
 #include "ratbez/brep.hpp"
 #include "ratbez/error.hpp"
@@ -28,18 +29,6 @@ constexpr const char* arguments_doc =
     "progress: optional callable(fraction), fraction in [0, 1] rising to 1.0; an exception it raises stops the\n"
     "tessellation and propagates. Ctrl-C raises KeyboardInterrupt while the call runs (the GIL is released).";
 
-// The kernel's Progress for a call from Python: with the GIL taken for a moment, runs pending signal
-// handlers (Ctrl-C becomes KeyboardInterrupt) and then the caller's callback; either raising throws
-// error_already_set through the kernel, which unwinds and hands back nothing. The callback is borrowed:
-// the caller's argument keeps it alive for the whole call.
-Progress python_progress(py::handle callback) {
-    return [callback](double fraction) {
-        py::gil_scoped_acquire gil;
-        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-        if (!callback.is_none()) callback(fraction);
-    };
-}
-
 TessellationOptions options_of(double tolerance, std::optional<double> angle_deg, const py::object& max_triangles,
                                const py::object& progress) {
     TessellationOptions options;
@@ -50,8 +39,6 @@ TessellationOptions options_of(double tolerance, std::optional<double> angle_deg
         require(count > 0, "max_triangles", "must be a positive integer (got " + std::to_string(count) + ")");
         options.max_triangles = static_cast<std::size_t>(count);
     }
-    if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
-        fail("progress", "expected a callable taking the fraction done, or None");
     options.progress = python_progress(progress);
     return options;
 }
