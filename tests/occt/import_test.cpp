@@ -17,10 +17,24 @@
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepLib.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
 #include <gp_Ax1.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Ax3.hxx>
 #include <gp_Elips.hxx>
+#include <gp_Pln.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -142,6 +156,47 @@ TEST(ImportShapes, OcctPrimitivesConvertExactly) {
         EXPECT_EQ(solid.faces().size(), c.faces) << c.name;
         EXPECT_NEAR(solid.volume(), c.volume, 1e-12 * c.volume) << c.name;
     }
+}
+
+// A cylinder whose lateral face turns from u = 1 to 1 + 2 pi (its seam away from GeomConvert's u = 0; sewn, so
+// that its two seam edges become one) capped by planes on its circle edges: the conversion keeps the seam.
+TEST(ImportShapes, FullTurnsKeepTheirOwnSeam) {
+    const Handle(Geom_CylindricalSurface) surface = new Geom_CylindricalSurface(gp_Ax3(), 1.5);
+    BRepBuilderAPI_Sewing sewing(1e-6);
+    sewing.Add(BRepBuilderAPI_MakeFace(surface, 1, 1 + 2 * pi, 0, 2, 1e-7).Face());
+    sewing.Perform();
+    const TopoDS_Face side = TopoDS::Face(sewing.SewedShape());
+    TopoDS_Shell shell;
+    BRep_Builder builder;
+    builder.MakeShell(shell);
+    builder.Add(shell, side);
+    for (TopExp_Explorer it(side, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge e = TopoDS::Edge(it.Current());
+        double first = 0, last = 0;
+        const Handle(Geom_Curve) curve = BRep_Tool::Curve(e, first, last);
+        if (!curve->IsKind(STANDARD_TYPE(Geom_Circle))) continue;
+        // The side runs the bottom circle forward (counterclockwise about z), so the bottom cap (normal -z) runs it
+        // backwards; the top one the other way round.
+        const double z = curve->Value(first).Z();
+        const gp_Pln plane(gp_Pnt(0, 0, z), gp_Dir(0, 0, 1));
+        const TopoDS_Face cap =
+            BRepBuilderAPI_MakeFace(plane, BRepBuilderAPI_MakeWire(TopoDS::Edge(e.Oriented(TopAbs_FORWARD))).Wire()).Face();
+        builder.Add(shell, cap.Oriented(z < 1 ? TopAbs_REVERSED : TopAbs_FORWARD));
+    }
+    TopoDS_Solid solid;
+    builder.MakeSolid(solid);
+    builder.Add(solid, shell);
+    ASSERT_TRUE(BRepCheck_Analyzer(solid).IsValid());
+    const Solid read = from_occt(solid);
+    EXPECT_NEAR(read.volume(), pi * 1.5 * 1.5 * 2, 1e-12 * 14);
+    const auto lateral = std::find_if(read.faces().begin(), read.faces().end(),
+                                      [](const Face& f) { return f.kind() == Face::Kind::surface; });
+    ASSERT_NE(lateral, read.faces().end());
+    const Interval du = lateral->surface().domain_u();
+    EXPECT_NEAR(du.min, 1.0, 1e-15);
+    EXPECT_NEAR(du.max, 1.0 + 2 * pi, 1e-14);
+    const Vec3 seam{1.5 * std::cos(1.0), 1.5 * std::sin(1.0), 0};
+    EXPECT_LE(std::min(distance(lateral->point(du.min, 0), seam), distance(lateral->point(du.max, 0), seam)), 1e-14);
 }
 
 TEST(ImportShapes, SeveralSolidsAreRefused) {

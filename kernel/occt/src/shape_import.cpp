@@ -5,6 +5,10 @@
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <Convert_ConeToBSplineSurface.hxx>
+#include <Convert_CylinderToBSplineSurface.hxx>
+#include <Convert_SphereToBSplineSurface.hxx>
+#include <Convert_TorusToBSplineSurface.hxx>
 #include <Geom2d_Curve.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -23,6 +27,10 @@
 #include <Geom_ToroidalSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <Standard_Failure.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -31,8 +39,12 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
+#include <gp_Cone.hxx>
+#include <gp_Cylinder.hxx>
 #include <gp_Pln.hxx>
 #include <gp_Pnt2d.hxx>
+#include <gp_Sphere.hxx>
+#include <gp_Torus.hxx>
 
 #include <algorithm>
 #include <array>
@@ -84,6 +96,35 @@ Handle(Geom_Surface) exact_basis(Handle(Geom_Surface) surface) {
     if (surface->IsKind(STANDARD_TYPE(Geom_SurfaceOfLinearExtrusion)) &&
         !exact_basis(Handle(Geom_SurfaceOfLinearExtrusion)::DownCast(surface)->BasisCurve()).IsNull())
         return surface;
+    return {};
+}
+
+// The B-spline of a Convert_* conversion (what GeomConvert's own builder copies).
+Handle(Geom_BSplineSurface) bspline_of(const Convert_ElementarySurfaceToBSplineSurface& c) {
+    TColgp_Array2OfPnt poles(1, c.NbUPoles(), 1, c.NbVPoles());
+    TColStd_Array2OfReal weights(1, c.NbUPoles(), 1, c.NbVPoles());
+    for (int i = 1; i <= c.NbUPoles(); ++i)
+        for (int j = 1; j <= c.NbVPoles(); ++j) poles(i, j) = c.Pole(i, j), weights(i, j) = c.Weight(i, j);
+    TColStd_Array1OfReal u_knots(1, c.NbUKnots()), v_knots(1, c.NbVKnots());
+    TColStd_Array1OfInteger u_multiplicities(1, c.NbUKnots()), v_multiplicities(1, c.NbVKnots());
+    for (int i = 1; i <= c.NbUKnots(); ++i) u_knots(i) = c.UKnot(i), u_multiplicities(i) = c.UMultiplicity(i);
+    for (int i = 1; i <= c.NbVKnots(); ++i) v_knots(i) = c.VKnot(i), v_multiplicities(i) = c.VMultiplicity(i);
+    return new Geom_BSplineSurface(poles, weights, u_knots, v_knots, u_multiplicities, v_multiplicities, c.UDegree(),
+                                   c.VDegree(), c.IsUPeriodic(), c.IsVPeriodic());
+}
+
+// A cylinder, cone, sphere or torus over exactly the rectangle r: knots at its bounds, so the corners keep their
+// parameters wherever a full turn starts (GeomConvert turns a full turn from angle 0 and segments it, which
+// leaves the corner of a seam at angle 1 at 0.995); null for other surfaces.
+Handle(Geom_BSplineSurface) elementary_bspline(const Handle(Geom_Surface)& basis, const std::array<double, 4>& r) {
+    if (const auto s = Handle(Geom_CylindricalSurface)::DownCast(basis); !s.IsNull())
+        return bspline_of(Convert_CylinderToBSplineSurface(s->Cylinder(), r[0], r[1], r[2], r[3]));
+    if (const auto s = Handle(Geom_ConicalSurface)::DownCast(basis); !s.IsNull())
+        return bspline_of(Convert_ConeToBSplineSurface(s->Cone(), r[0], r[1], r[2], r[3]));
+    if (const auto s = Handle(Geom_SphericalSurface)::DownCast(basis); !s.IsNull())
+        return bspline_of(Convert_SphereToBSplineSurface(s->Sphere(), r[0], r[1], r[2], r[3]));
+    if (const auto s = Handle(Geom_ToroidalSurface)::DownCast(basis); !s.IsNull())
+        return bspline_of(Convert_TorusToBSplineSurface(s->Torus(), r[0], r[1], r[2], r[3]));
     return {};
 }
 
@@ -261,30 +302,40 @@ private:
 
     // The exact NURBS of a face's surface over the rectangle [u0, u1] x [v0, v1] of its parameters.
     static NurbsSurface exact_surface(const Handle(Geom_Surface)& basis, const std::array<double, 4>& r) {
-        Handle(Geom_BSplineSurface) nurbs;
-        if (basis->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) || basis->IsKind(STANDARD_TYPE(Geom_BezierSurface))) {
-            nurbs = GeomConvert::SurfaceToBSplineSurface(basis);  // a copy; a Bézier patch over [0, 1]^2
-            if (nurbs->IsUPeriodic()) nurbs->SetUNotPeriodic();
-            if (nurbs->IsVPeriodic()) nurbs->SetVNotPeriodic();
-            double a = 0, b = 0, c = 0, d = 0;
-            nurbs->Bounds(a, b, c, d);
-            const double tol_u = 1e-9 * (b - a), tol_v = 1e-9 * (d - c);
-            require(r[0] >= a - tol_u && r[1] <= b + tol_u && r[2] >= c - tol_v && r[3] <= d + tol_v, "shape",
-                    "its parameter rectangle leaves its " + type_name(basis) + "'s domain");
-            // Segment only a proper part: knot insertion at the ends is exact but not free of rounding.
-            if (r[0] > a + tol_u || r[1] < b - tol_u || r[2] > c + tol_v || r[3] < d - tol_v)
-                nurbs->Segment(std::max(r[0], a), std::min(r[1], b), std::max(r[2], c), std::min(r[3], d));
-        } else {
-            // Cylinders, cones, spheres, tori, revolutions, extrusions: GeomConvert's rational form over the
-            // rectangle (a full turn closes periodically over [0, 2 pi]).
-            nurbs = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(basis, r[0], r[1], r[2], r[3]));
+        // B-splines as they are (a Bézier patch over [0, 1]^2); the quadrics and tori through the Convert_* class
+        // over the rectangle; revolutions and extrusions in GeomConvert's rational form over the rectangle.
+        Handle(Geom_BSplineSurface) nurbs = elementary_bspline(basis, r);
+        const bool spline = basis->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) || basis->IsKind(STANDARD_TYPE(Geom_BezierSurface));
+        if (nurbs.IsNull())
+            nurbs = GeomConvert::SurfaceToBSplineSurface(
+                spline ? basis : Handle(Geom_Surface)(new Geom_RectangularTrimmedSurface(basis, r[0], r[1], r[2], r[3])));
+        double a = 0, b = 0, c = 0, d = 0;
+        nurbs->Bounds(a, b, c, d);
+        const double tol_u = 1e-9 * (r[1] - r[0]), tol_v = 1e-9 * (r[3] - r[2]);
+        const bool u_fits = std::abs(r[0] - a) <= tol_u && std::abs(r[1] - b) <= tol_u;
+        const bool v_fits = std::abs(r[2] - c) <= tol_v && std::abs(r[3] - d) <= tol_v;
+        if (!u_fits || !v_fits) {
+            // A part of a B-spline surface (or a period of a periodic one starting elsewhere): segment it there
+            // (knot insertion, exact to rounding).
+            require((nurbs->IsUPeriodic() || (r[0] >= a - tol_u && r[1] <= b + tol_u)) &&
+                        (nurbs->IsVPeriodic() || (r[2] >= c - tol_v && r[3] <= d + tol_v)),
+                    "shape", "its parameter rectangle leaves its " + type_name(basis) + "'s domain");
+            const auto clamp = [](double x, double lo, double hi, bool periodic) { return periodic ? x : std::clamp(x, lo, hi); };
+            nurbs->Segment(u_fits ? a : clamp(r[0], a, b, nurbs->IsUPeriodic()), u_fits ? b : clamp(r[1], a, b, nurbs->IsUPeriodic()),
+                           v_fits ? c : clamp(r[2], c, d, nurbs->IsVPeriodic()), v_fits ? d : clamp(r[3], c, d, nurbs->IsVPeriodic()));
         }
         NurbsSurface surface = from_occt(nurbs);
         const Interval du = surface.domain_u(), dv = surface.domain_v();
-        const double tol_u = 1e-9 * (r[1] - r[0]), tol_v = 1e-9 * (r[3] - r[2]);
         require(std::abs(du.min - r[0]) <= tol_u && std::abs(du.max - r[1]) <= tol_u && std::abs(dv.min - r[2]) <= tol_v &&
                     std::abs(dv.max - r[3]) <= tol_v,
                 "shape", "the exact form of its " + type_name(basis) + " is not parameterised over the face's rectangle");
+        // A rational form may run through the surface at another pace (the tangent half-angle of the arcs), but it
+        // must meet the face's corners at the face's parameters: then it covers the same rectangle of the surface.
+        const double tolerance = 1e-9 * surface.control_box().diagonal();
+        for (const auto& [u, v] : {std::pair{r[0], r[2]}, std::pair{r[1], r[2]}, std::pair{r[1], r[3]}, std::pair{r[0], r[3]}})
+            require(distance(surface.point(std::clamp(u, du.min, du.max), std::clamp(v, dv.min, dv.max)),
+                             from_occt(basis->Value(u, v))) <= tolerance,
+                    "shape", "the exact form of its " + type_name(basis) + " misses the face's corners");
         return surface;
     }
 
