@@ -53,6 +53,7 @@
 #include <string>
 #include <vector>
 
+#include "face_sides.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 
@@ -63,8 +64,8 @@ const char* side_name(int side) {
     static const char* names[] = {"v_min", "u_max", "v_max", "u_min"};
     return names[side];
 }
-bool along_u(int side) { return side == static_cast<int>(Side::v_min) || side == static_cast<int>(Side::v_max); }
-bool traversal_increasing(int side) { return side == static_cast<int>(Side::v_min) || side == static_cast<int>(Side::u_max); }
+using detail::along_u;
+using detail::traversal_increasing;
 
 std::string type_name(const Handle(Standard_Transient)& object) { return object->DynamicType()->Name(); }
 
