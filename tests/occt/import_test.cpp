@@ -34,6 +34,8 @@
 #include <gp_Ax2.hxx>
 #include <gp_Ax3.hxx>
 #include <gp_Elips.hxx>
+#include <gp_Trsf.hxx>
+#include <TopLoc_Location.hxx>
 #include <gp_Pln.hxx>
 
 #include <algorithm>
@@ -50,6 +52,7 @@
 #include "ratbez/extrude.hpp"
 #include "ratbez/loft.hpp"
 #include "ratbez/occt/files.hpp"
+#include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/shape_import.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
@@ -151,6 +154,9 @@ TEST_F(Import, BrepAndStepRoundTripsGiveTheSameSolid) {
 // OpenCASCADE's own solids: planes with loops, and analytic faces converted exactly (the closed-form volume).
 TEST(ImportShapes, OcctPrimitivesConvertExactly) {
     const gp_Ax2 frame(gp_Pnt(1, 2, 3), gp_Dir(0, 1, 1));
+    gp_Trsf moved;
+    moved.SetRotation(gp_Ax1(gp_Pnt(1, 0, 0), gp_Dir(1, 1, 0)), 0.7);
+    moved.SetTranslationPart(gp_Vec(1, -2, 3));
     // An ellipse (semi-axes 1 and 0.5) in the xz plane around (3, 0, 0): revolved about z, a surface of
     // revolution of a conic (Pappus: 2 pi 3 x its area); extruded along y, a surface of linear extrusion.
     const TopoDS_Face ellipse = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(
@@ -168,6 +174,8 @@ TEST(ImportShapes, OcctPrimitivesConvertExactly) {
         {"half cylinder", BRepPrimAPI_MakeCylinder(frame, 1.5, 2, pi).Shape(), pi * 1.5 * 1.5, 5},
         {"cone", BRepPrimAPI_MakeCone(frame, 2, 0.5, 3).Shape(), pi * 3 * (4 + 1 + 0.25) / 3, 3},
         {"sphere", BRepPrimAPI_MakeSphere(frame, 2).Shape(), 4 * pi * 8 / 3, 1},
+        // A located shape (TopLoc_Location): surfaces, curves and points are read where the location puts them.
+        {"moved cone", BRepPrimAPI_MakeCone(2, 0.5, 3).Shape().Moved(TopLoc_Location(moved)), pi * 3 * (4 + 1 + 0.25) / 3, 3},
         {"torus", BRepPrimAPI_MakeTorus(frame, 3, 1).Shape(), 2 * pi * pi * 3, 1},
         {"revolution", BRepPrimAPI_MakeRevol(ellipse, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1))).Shape(),
          2 * pi * 3 * ellipse_area, 1},
@@ -177,6 +185,15 @@ TEST(ImportShapes, OcctPrimitivesConvertExactly) {
         const Solid solid = from_occt(c.shape);
         EXPECT_EQ(solid.faces().size(), c.faces) << c.name;
         EXPECT_NEAR(solid.volume(), c.volume, 1e-12 * c.volume) << c.name;
+    }
+    // The moved cone's caps lie in the planes through the moved centres of its base and top.
+    const Solid cone = from_occt(std::find_if(cases.begin(), cases.end(), [](const Case& c) { return c.name == "moved cone"; })->shape);
+    for (const double z : {0.0, 3.0}) {
+        const Vec3 centre = from_occt(gp_Pnt(0, 0, z).Transformed(moved));
+        const bool on_a_cap = std::any_of(cone.faces().begin(), cone.faces().end(), [&](const Face& f) {
+            return f.kind() == Face::Kind::planar && std::abs(dot(centre - f.plane().origin, f.plane().normal)) < 1e-12;
+        });
+        EXPECT_TRUE(on_a_cap) << "z = " << z;
     }
 }
 
