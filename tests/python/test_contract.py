@@ -23,7 +23,7 @@ def test_contract_names_exist():
     if ratbez.has_cgal:
         assert hasattr(ratbez, "export_openscad") and hasattr(ratbez, "write_stl")
     if ratbez.has_occt:
-        for name in ("write_step", "write_brep", "occt_check", "brep_string"):
+        for name in ("write_step", "write_brep", "occt_check", "brep_string", "read_step", "read_brep"):
             assert hasattr(ratbez, name), name
 
 
@@ -68,6 +68,8 @@ def test_keyword_names():
         # bezier_faces: an addition, optional (one face per Bézier patch, for FreeCAD's measurements)
         expected.append((ratbez.write_step, ["solid", "path", "bezier_faces"]))
         expected.append((ratbez.write_brep, ["solid", "path", "bezier_faces"]))
+        expected.append((ratbez.read_step, ["path", "progress"]))
+        expected.append((ratbez.read_brep, ["path", "progress"]))
         expected.append((ratbez.occt_check,
                          ["solid", "grid", "deviation_limit", "volume_limit", "bezier_faces", "progress"]))
     for function, names in expected:

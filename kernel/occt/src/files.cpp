@@ -1,21 +1,28 @@
-// Writing solids through OpenCASCADE: STEP (AP214) and the native .brep text.
+// Writing and reading solids through OpenCASCADE: STEP (AP214) and the native .brep text.
 
 #include "ratbez/occt/files.hpp"
 
 #include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
+#include <Message_ProgressIndicator.hxx>
+#include <STEPControl_Reader.hxx>
 #include <STEPControl_StepModelType.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 
+#include <exception>
+#include <filesystem>
+#include <fstream>
 #include <mutex>
 #include <sstream>
 
 #include "ratbez/error.hpp"
+#include "ratbez/occt/shape_import.hpp"
 #include "ratbez/occt/topology.hpp"
 #include "ratbez/output_file.hpp"
 
@@ -48,6 +55,51 @@ private:
     std::lock_guard<std::mutex> lock_;
     Message_SequenceOfPrinters removed_;
 };
+
+// OpenCASCADE's readers poll their progress indicator's UserBreak(): that is where our Progress is called
+// (with the reader's position scaled to the first half), and where an exception it throws (Ctrl-C in Python)
+// is kept, to stop the reader and be rethrown once it has returned.
+class PolledIndicator : public Message_ProgressIndicator {
+public:
+    explicit PolledIndicator(const Progress& progress) : progress_(progress) {}
+    Standard_Boolean UserBreak() override {
+        if (progress_ && !stopped_) {
+            try {
+                progress_(0.5 * GetPosition());
+            } catch (...) {
+                stopped_ = std::current_exception();
+            }
+        }
+        return stopped_ != nullptr;
+    }
+    void Show(const Message_ProgressScope&, const Standard_Boolean) override {}
+    void rethrow_if_stopped() const {
+        if (stopped_) std::rethrow_exception(stopped_);
+    }
+
+private:
+    const Progress& progress_;
+    std::exception_ptr stopped_;
+};
+
+void require_readable(const std::string& path) {
+    std::error_code error;
+    require(std::filesystem::exists(path, error), "path", "'" + path + "' does not exist");
+    require(std::filesystem::is_regular_file(path, error), "path", "'" + path + "' is not a file");
+    require(std::ifstream(path).good(), "path", "cannot read '" + path + "'");
+}
+
+// The one solid of the shape read from `path`, conversion errors blamed on the file.
+Solid solid_from_file(const TopoDS_Shape& shape, const std::string& path, const Progress& progress) {
+    const Progress second_half = [&](double fraction) {
+        if (progress) progress(0.5 + 0.5 * fraction);
+    };
+    try {
+        return from_occt(shape, second_half);
+    } catch (const Error& e) {
+        throw Error("path", "'" + path + "': " + std::string(e.reason()));
+    }
+}
 
 }  // namespace
 
@@ -82,6 +134,49 @@ std::string brep_string(const Solid& solid, const ConvertOptions& options) {
     out << "DBRep_DrawableShape\n";
     BRepTools::Write(to_occt(solid, options), out);
     return out.str();
+}
+
+Solid read_step(const std::string& path, const Progress& progress) {
+    require_readable(path);
+    TopoDS_Shape shape;
+    {
+        QuietMessenger quiet;
+        try {
+            STEPControl_Reader reader;
+            require(reader.ReadFile(path.c_str()) == IFSelect_RetDone, "path", "'" + path + "' is not a readable STEP file");
+            Handle(PolledIndicator) indicator = new PolledIndicator(progress);
+            const int transferred = reader.TransferRoots(indicator->Start());
+            indicator->rethrow_if_stopped();
+            require(transferred > 0, "path", "'" + path + "' holds no shape OpenCASCADE can translate");
+            shape = reader.OneShape();
+        } catch (const Standard_Failure& failure) {
+            throw Error("path", "reading STEP from '" + path + "' failed: " + failure.GetMessageString());
+        }
+    }
+    return solid_from_file(shape, path, progress);
+}
+
+Solid read_brep(const std::string& path, const Progress& progress) {
+    require_readable(path);
+    {
+        // BRepTools::Read prints to stdout when a file is not .brep: look at its first line first. A .brep file
+        // starts with OCCT's "CASCADE Topology V<n>" or with BRepTools::Write's Draw tag line before it.
+        std::ifstream in(path);
+        std::string first;
+        std::getline(in, first);
+        require(first.rfind("DBRep_DrawableShape", 0) == 0 || first.rfind("CASCADE Topology V", 0) == 0, "path",
+                "'" + path + "' is not a readable .brep file (it does not start with OpenCASCADE's header)");
+    }
+    TopoDS_Shape shape;
+    try {
+        Handle(PolledIndicator) indicator = new PolledIndicator(progress);
+        const bool read = BRepTools::Read(shape, path.c_str(), BRep_Builder(), indicator->Start());
+        indicator->rethrow_if_stopped();
+        require(read && !shape.IsNull(), "path", "'" + path + "' is not a readable .brep file");
+    } catch (const Standard_Failure& failure) {
+        throw Error("path", "reading .brep from '" + path + "' failed: " + failure.GetMessageString());
+    }
+    return solid_from_file(shape, path, progress);
 }
 
 }  // namespace ratbez::occt

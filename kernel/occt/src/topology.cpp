@@ -31,6 +31,7 @@
 #include <string>
 #include <utility>
 
+#include "face_sides.hpp"
 #include "gprop_patches.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
@@ -58,10 +59,8 @@ Handle(Geom2d_Curve) side_pcurve(int side, double fixed, double a, double b, boo
     return new Geom2d_Line(gp_Pnt2d(fixed, start), gp_Dir2d(0, sign));
 }
 
-// Which way a face runs along side s (brep.hpp): v_min and u_max with increasing parameter, v_max and
-// u_min decreasing.
-bool traversal_increasing(int side) { return side == static_cast<int>(Side::v_min) || side == static_cast<int>(Side::u_max); }
-bool along_u(int side) { return side == static_cast<int>(Side::v_min) || side == static_cast<int>(Side::v_max); }
+using detail::along_u;
+using detail::traversal_increasing;
 
 // The distinct interior knots of a knot vector.
 std::vector<double> interior_knots(const std::vector<double>& knots) {

@@ -625,6 +625,29 @@ def occt_check(solid: Solid, grid: int = ..., deviation_limit: float = ..., volu
 def power_to_bezier(coefficients: Sequence[Point]) -> list:
     """Bezier control points P = M^-1 a of a power basis curve (Ex. 1.14)."""
 
+def read_brep(path: Path, progress: Optional[Callable[[float], object]] = ...) -> Solid:
+    """The one solid of an OpenCASCADE .brep file as an exact Solid; read_brep of write_brep's output is the
+    same solid (volume and points to 1e-12).
+    Faces convert exactly: B-spline and Bezier faces bounded by their parameter rectangle, planes with any
+    loops of edges, and cylinder, cone, sphere, torus, revolution and extrusion faces through their exact
+    rational forms; edges and vertices stay shared. Raises ratbez.Error naming path for a missing or
+    unreadable file, a file of another format, a file with no solid or several, and a face that does not
+    convert ("face 7: a trimmed Geom_BSplineSurface face is not supported ...").
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
+
+def read_step(path: Path, progress: Optional[Callable[[float], object]] = ...) -> Solid:
+    """The one solid of a STEP file (AP203 / AP214, read in millimetres) as an exact Solid.
+    Faces convert exactly: B-spline and Bezier faces bounded by their parameter rectangle, planes with any
+    loops of edges, and cylinder, cone, sphere, torus, revolution and extrusion faces through their exact
+    rational forms; edges and vertices stay shared. Raises ratbez.Error naming path for a missing or
+    unreadable file, a file of another format, a file with no solid or several, and a face that does not
+    convert ("face 7: a trimmed Geom_BSplineSurface face is not supported ...").
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
+
 def revolve(profile: Union[Curve, Sequence[Curve]], axis_point: Point = ..., axis_dir: Point = ..., angle: float = ...) -> Solid:
     """Revolve a profile (BezierCurve, NurbsCurve or a list of them joined end to end) by angle degrees."""
 

@@ -92,6 +92,24 @@ namespace {
     return name;
 }
 
+#if RATBEZ_PYTHON_WITH_OCCT
+const char* const read_doc =
+    "Faces convert exactly: B-spline and Bezier faces bounded by their parameter rectangle, planes with any\n"
+    "loops of edges, and cylinder, cone, sphere, torus, revolution and extrusion faces through their exact\n"
+    "rational forms; edges and vertices stay shared. Raises ratbez.Error naming path for a missing or\n"
+    "unreadable file, a file of another format, a file with no solid or several, and a face that does not\n"
+    "convert (\"face 7: a trimmed Geom_BSplineSurface face is not supported ...\").\n";
+
+// A file reader called with the GIL released: the path and the progress callback checked first.
+template <class Read>
+Solid read_released(const py::object& path, const py::object& progress, Read read) {
+    const std::string file = to_path(path, "path");
+    const Progress polled = python_progress(progress);
+    py::gil_scoped_release release;
+    return read(file, polled);
+}
+#endif
+
 [[maybe_unused]] const Solid& solid_of(const py::object& shape) {
     if (!py::isinstance<Solid>(shape)) throw Error("solid", "expected a ratbez.Solid");
     return shape.cast<const Solid&>();
@@ -211,6 +229,21 @@ void bind_io(py::module_& m) {
         },
         py::arg("solid"), py::arg("path"), py::arg("bezier_faces") = false,
         "Write OpenCASCADE's native .brep text (bezier_faces: as brep_string).");
+    m.def(
+        "read_step",
+        [](const py::object& path, const py::object& progress) { return read_released(path, progress, occt::read_step); },
+        py::arg("path"), py::arg("progress") = py::none(),
+        ("The one solid of a STEP file (AP203 / AP214, read in millimetres) as an exact Solid.\n" +
+         std::string(read_doc) + progress_doc)
+            .c_str());
+    m.def(
+        "read_brep",
+        [](const py::object& path, const py::object& progress) { return read_released(path, progress, occt::read_brep); },
+        py::arg("path"), py::arg("progress") = py::none(),
+        ("The one solid of an OpenCASCADE .brep file as an exact Solid; read_brep of write_brep's output is the\n"
+         "same solid (volume and points to 1e-12).\n" +
+         std::string(read_doc) + progress_doc)
+            .c_str());
     m.def(
         "brep_string",
         [](const py::object& solid, bool bezier_faces) {

@@ -19,8 +19,9 @@ Progress python_progress(const py::object& callback) {
         if (fraction < 1 && now - *last < kInterval) return;
         *last = now;
         py::gil_scoped_acquire gil;
-        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         if (!handle.is_none()) handle(fraction);
+        // After the callback, so that a signal raised while it ran (or by it) is seen now.
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
     };
 }
 

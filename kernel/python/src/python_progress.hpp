@@ -17,8 +17,8 @@ inline constexpr const char* progress_doc =
     "and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt\n"
     "while the call runs (the GIL is released).";
 
-// The kernel's Progress for a call from Python. Taking the GIL for a moment, it runs pending signal
-// handlers (Ctrl-C becomes KeyboardInterrupt) and then `callback` (None: no callback); either raising
+// The kernel's Progress for a call from Python. Taking the GIL for a moment, it calls `callback` (None: no
+// callback) and then runs pending signal handlers (Ctrl-C becomes KeyboardInterrupt); either raising
 // throws error_already_set through the kernel, which unwinds and hands back nothing. It does so at most
 // every 20 ms, and always for the end (fraction 1): the kernel's loops poll every few thousand items, and
 // the GIL and a Python call each time would cost more than the work between. The callback is borrowed:

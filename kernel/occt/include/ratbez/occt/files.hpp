@@ -1,11 +1,12 @@
 #pragma once
-// Writing solids through OpenCASCADE. This header includes no OCCT header, so the Python module and
+// Writing and reading solids through OpenCASCADE. This header includes no OCCT header, so the Python module and
 // the CLI can use it beside CGAL (whose headers clash with OCCT's Handle macro).
 
 #include <string>
 
 #include "ratbez/brep.hpp"
 #include "ratbez/occt/convert_options.hpp"
+#include "ratbez/progress.hpp"
 
 namespace ratbez::occt {
 
@@ -15,5 +16,13 @@ void write_step(const Solid& solid, const std::string& path, const ConvertOption
 void write_brep(const Solid& solid, const std::string& path, const ConvertOptions& options = {});
 // The same .brep text as a string (what FreeCAD's Part.Shape.importBrepFromString reads).
 std::string brep_string(const Solid& solid, const ConvertOptions& options = {});
+
+// The one solid of a STEP file or a .brep file, converted exactly (shape_import.hpp says which faces convert
+// and which are refused). Throws ratbez::Error naming "path" for a missing or unreadable file, a file that is
+// not STEP / .brep, a file with no solid or several, and a face that does not convert ("'a.step': face 7: ...").
+// `progress` gets the fraction done (reading the file is the first half, the faces the second) and may throw
+// to cancel; OpenCASCADE's reader is stopped at its next check.
+Solid read_step(const std::string& path, const Progress& progress = {});
+Solid read_brep(const std::string& path, const Progress& progress = {});
 
 }  // namespace ratbez::occt

@@ -1,0 +1,297 @@
+// Reading solids back: read_brep / read_step of our own files gives the same solid (volume and points of every
+// face to 1e-12), OpenCASCADE's own primitives (planes, analytic faces) convert exactly, and what cannot be
+// converted (several solids, trimmed faces, files that are not STEP / .brep) is refused naming the path.
+
+#include <gtest/gtest.h>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepLib.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Elips.hxx>
+#include <gp_Trsf.hxx>
+#include <TopLoc_Location.hxx>
+#include <gp_Pln.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "../core/temp_directory_test_support.hpp"
+#include "occt_test_support.hpp"
+#include "ratbez/curves.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/extrude.hpp"
+#include "ratbez/loft.hpp"
+#include "ratbez/occt/files.hpp"
+#include "ratbez/occt/geometry.hpp"
+#include "ratbez/occt/shape_import.hpp"
+#include "ratbez/primitives.hpp"
+#include "ratbez/profile.hpp"
+#include "ratbez/properties.hpp"
+#include "ratbez/revolve.hpp"
+
+namespace ratbez::occt {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+class Import : public test::TempDirectoryTest {
+protected:
+    Import() : TempDirectoryTest("occt_import") {}
+};
+
+std::vector<std::pair<std::string, Solid>> solids() {
+    std::vector<std::pair<std::string, Solid>> out;
+    out.emplace_back("cylinder", cylinder(1.5, 2, {1, -1, 0.5}, {1, 1, 2}));
+    out.emplace_back("cone", cone(2, 0.5, 3));
+    out.emplace_back("apex_cone", cone(2, 0, 3));
+    out.emplace_back("sphere", sphere(2, {0.5, 0, 1}));
+    out.emplace_back("torus", torus(3, 1, {1, 2, 3}, {1, 0, 1}));
+    const Profile vase = Profile::from_beziers(
+        {BezierCurve({{0, 0, 0}, {4, 0, 0.5}, {0.5, 0, 3}, {0, 0, 4}}, {1, 0.5, 2, 1})});
+    out.emplace_back("vase", revolve(vase));
+    out.emplace_back("vase_270", revolve(vase, {}, {0, 0, 1}, 270));
+    const Profile square({line_segment({1, 0, 0}, {2, 0, 0}), line_segment({2, 0, 0}, {2, 0, 1}),
+                          line_segment({2, 0, 1}, {1, 0, 1}), line_segment({1, 0, 1}, {1, 0, 0})});
+    out.emplace_back("washer_90", revolve(square, {}, {0, 0, 1}, 90));
+    out.emplace_back("extrusion", extrude(Profile({arc(1, 0, 180), line_segment({-1, 0, 0}, {1, 0, 0})}), {0.2, 0, 1}, 2,
+                                          {Profile({circle(0.2, {0, 0.5, 0})})}));
+    out.emplace_back("loft", loft({Profile({circle(1)}), Profile({circle(2, {0, 0, 1})}), Profile({circle(1, {0, 0, 2})})}));
+    return out;
+}
+
+// Two unit cubes side by side in one compound.
+TopoDS_Compound two_boxes() {
+    TopoDS_Compound two;
+    BRep_Builder builder;
+    builder.MakeCompound(two);
+    builder.Add(two, BRepPrimAPI_MakeBox(1, 1, 1).Shape());
+    builder.Add(two, BRepPrimAPI_MakeBox(gp_Pnt(2, 0, 0), 1, 1, 1).Shape());
+    return two;
+}
+
+// Why from_occt refuses `shape` (it must, with an Error naming "shape").
+std::string refusal(const TopoDS_Shape& shape) {
+    try {
+        from_occt(shape);
+    } catch (const Error& e) {
+        EXPECT_EQ(e.argument(), "shape") << e.what();
+        return std::string(e.reason());
+    }
+    ADD_FAILURE() << "accepted";
+    return {};
+}
+
+// The same solid: faces of the same kinds, volumes and points of every face at a few parameters to 1e-12.
+void expect_same(const Solid& read, const Solid& original, const std::string& name) {
+    ASSERT_EQ(read.faces().size(), original.faces().size()) << name;
+    const double volume = original.volume();
+    EXPECT_NEAR(read.volume(), volume, 1e-12 * volume) << name;
+    const double size = original.bounding_box().diagonal();
+    for (std::size_t f = 0; f < original.faces().size(); ++f) {
+        const Face& a = original.faces()[f];
+        const Face& b = read.faces()[f];
+        ASSERT_EQ(a.kind(), b.kind()) << name << " face " << f;
+        const Interval du = a.surface().domain_u(), dv = a.surface().domain_v();
+        const Interval read_du = b.surface().domain_u(), read_dv = b.surface().domain_v();
+        for (const auto& [ours, theirs] : {std::pair{du, read_du}, std::pair{dv, read_dv}}) {
+            EXPECT_NEAR(theirs.min, ours.min, 1e-12 * ours.width()) << name << " face " << f;
+            EXPECT_NEAR(theirs.max, ours.max, 1e-12 * ours.width()) << name << " face " << f;
+        }
+        for (double s : {0.0, 0.3, 0.7, 1.0})
+            for (double t : {0.0, 0.4, 1.0}) {
+                const auto at = [](const Interval& d, double fraction) { return std::min(d.min + fraction * d.width(), d.max); };
+                const Vec3 p = a.point(at(du, s), at(dv, t));
+                const Vec3 q = b.point(at(read_du, s), at(read_dv, t));
+                EXPECT_LE(distance(p, q), 1e-12 * size) << name << " face " << f << " at " << s << ", " << t;
+            }
+    }
+}
+
+TEST_F(Import, BrepAndStepRoundTripsGiveTheSameSolid) {
+    for (const auto& [name, solid] : solids()) {
+        write_brep(solid, path(name + ".brep"));
+        expect_same(read_brep(path(name + ".brep")), solid, name + " (brep)");
+        write_step(solid, path(name + ".step"));
+        expect_same(read_step(path(name + ".step")), solid, name + " (step)");
+        // One face per Bézier patch (flat ones as planes): as many faces or more, the same volume.
+        write_brep(solid, path(name + "_patches.brep"), ConvertOptions{true});
+        const Solid patches = read_brep(path(name + "_patches.brep"));
+        EXPECT_GE(patches.faces().size(), solid.faces().size()) << name;
+        EXPECT_NEAR(patches.volume(), solid.volume(), 1e-12 * solid.volume()) << name;
+    }
+}
+
+// OpenCASCADE's own solids: planes with loops, and analytic faces converted exactly (the closed-form volume).
+TEST(ImportShapes, OcctPrimitivesConvertExactly) {
+    const gp_Ax2 frame(gp_Pnt(1, 2, 3), gp_Dir(0, 1, 1));
+    gp_Trsf moved;
+    moved.SetRotation(gp_Ax1(gp_Pnt(1, 0, 0), gp_Dir(1, 1, 0)), 0.7);
+    moved.SetTranslationPart(gp_Vec(1, -2, 3));
+    // An ellipse (semi-axes 1 and 0.5) in the xz plane around (3, 0, 0): revolved about z, a surface of
+    // revolution of a conic (Pappus: 2 pi 3 x its area); extruded along y, a surface of linear extrusion.
+    const TopoDS_Face ellipse = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(
+        BRepBuilderAPI_MakeEdge(gp_Elips(gp_Ax2(gp_Pnt(3, 0, 0), gp_Dir(0, 1, 0), gp_Dir(1, 0, 0)), 1, 0.5)).Edge()).Wire());
+    const double ellipse_area = pi * 0.5;
+    struct Case {
+        std::string name;
+        TopoDS_Shape shape;
+        double volume;
+        std::size_t faces;
+    };
+    const std::vector<Case> cases{
+        {"box", BRepPrimAPI_MakeBox(frame, 1, 2, 3).Shape(), 6, 6},
+        {"cylinder", BRepPrimAPI_MakeCylinder(frame, 1.5, 2).Shape(), pi * 1.5 * 1.5 * 2, 3},
+        {"half cylinder", BRepPrimAPI_MakeCylinder(frame, 1.5, 2, pi).Shape(), pi * 1.5 * 1.5, 5},
+        {"cone", BRepPrimAPI_MakeCone(frame, 2, 0.5, 3).Shape(), pi * 3 * (4 + 1 + 0.25) / 3, 3},
+        {"sphere", BRepPrimAPI_MakeSphere(frame, 2).Shape(), 4 * pi * 8 / 3, 1},
+        // A located shape (TopLoc_Location): surfaces, curves and points are read where the location puts them.
+        {"moved cone", BRepPrimAPI_MakeCone(2, 0.5, 3).Shape().Moved(TopLoc_Location(moved)), pi * 3 * (4 + 1 + 0.25) / 3, 3},
+        {"torus", BRepPrimAPI_MakeTorus(frame, 3, 1).Shape(), 2 * pi * pi * 3, 1},
+        {"revolution", BRepPrimAPI_MakeRevol(ellipse, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1))).Shape(),
+         2 * pi * 3 * ellipse_area, 1},
+        {"extrusion", BRepPrimAPI_MakePrism(ellipse, gp_Vec(0, 2, 0)).Shape(), 2 * ellipse_area, 3},
+    };
+    for (const Case& c : cases) {
+        const Solid solid = from_occt(c.shape);
+        EXPECT_EQ(solid.faces().size(), c.faces) << c.name;
+        EXPECT_NEAR(solid.volume(), c.volume, 1e-12 * c.volume) << c.name;
+    }
+    // The moved cone's caps lie in the planes through the moved centres of its base and top.
+    const Solid cone = from_occt(std::find_if(cases.begin(), cases.end(), [](const Case& c) { return c.name == "moved cone"; })->shape);
+    for (const double z : {0.0, 3.0}) {
+        const Vec3 centre = from_occt(gp_Pnt(0, 0, z).Transformed(moved));
+        const bool on_a_cap = std::any_of(cone.faces().begin(), cone.faces().end(), [&](const Face& f) {
+            return f.kind() == Face::Kind::planar && std::abs(dot(centre - f.plane().origin, f.plane().normal)) < 1e-12;
+        });
+        EXPECT_TRUE(on_a_cap) << "z = " << z;
+    }
+}
+
+// A cylinder whose lateral face turns from u = 1 to 1 + 2 pi (its seam away from GeomConvert's u = 0; sewn, so
+// that its two seam edges become one) capped by planes on its circle edges: the conversion keeps the seam.
+TEST(ImportShapes, FullTurnsKeepTheirOwnSeam) {
+    const Handle(Geom_CylindricalSurface) surface = new Geom_CylindricalSurface(gp_Ax3(), 1.5);
+    BRepBuilderAPI_Sewing sewing(1e-6);
+    sewing.Add(BRepBuilderAPI_MakeFace(surface, 1, 1 + 2 * pi, 0, 2, 1e-7).Face());
+    sewing.Perform();
+    const TopoDS_Face side = TopoDS::Face(sewing.SewedShape());
+    TopoDS_Shell shell;
+    BRep_Builder builder;
+    builder.MakeShell(shell);
+    builder.Add(shell, side);
+    for (TopExp_Explorer it(side, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge e = TopoDS::Edge(it.Current());
+        double first = 0, last = 0;
+        const Handle(Geom_Curve) curve = BRep_Tool::Curve(e, first, last);
+        if (!curve->IsKind(STANDARD_TYPE(Geom_Circle))) continue;
+        // The side runs the bottom circle forward (counterclockwise about z), so the bottom cap (normal -z) runs it
+        // backwards; the top one the other way round.
+        const double z = curve->Value(first).Z();
+        const gp_Pln plane(gp_Pnt(0, 0, z), gp_Dir(0, 0, 1));
+        const TopoDS_Face cap =
+            BRepBuilderAPI_MakeFace(plane, BRepBuilderAPI_MakeWire(TopoDS::Edge(e.Oriented(TopAbs_FORWARD))).Wire()).Face();
+        builder.Add(shell, cap.Oriented(z < 1 ? TopAbs_REVERSED : TopAbs_FORWARD));
+    }
+    TopoDS_Solid solid;
+    builder.MakeSolid(solid);
+    builder.Add(solid, shell);
+    ASSERT_TRUE(BRepCheck_Analyzer(solid).IsValid());
+    const Solid read = from_occt(solid);
+    EXPECT_NEAR(read.volume(), pi * 1.5 * 1.5 * 2, 1e-12 * 14);
+    const auto lateral = std::find_if(read.faces().begin(), read.faces().end(),
+                                      [](const Face& f) { return f.kind() == Face::Kind::surface; });
+    ASSERT_NE(lateral, read.faces().end());
+    const Interval du = lateral->surface().domain_u();
+    EXPECT_NEAR(du.min, 1.0, 1e-15);
+    EXPECT_NEAR(du.max, 1.0 + 2 * pi, 1e-14);
+    const Vec3 seam{1.5 * std::cos(1.0), 1.5 * std::sin(1.0), 0};
+    EXPECT_LE(std::min(distance(lateral->point(du.min, 0), seam), distance(lateral->point(du.max, 0), seam)), 1e-14);
+}
+
+TEST(ImportShapes, SeveralSolidsAreRefused) {
+    const std::string reason = refusal(two_boxes());
+    EXPECT_NE(reason.find("holds 2 solids"), std::string::npos) << reason;
+}
+
+TEST(ImportShapes, TrimmedFacesAreRefusedNamingTheFace) {
+    // A box with a cylindrical hole: the box's faces keep their loops, the hole's face is a full cylinder; a
+    // box cut by a sphere reaching out of its sides leaves a spherical face bounded by circles that are not
+    // isocurves of the sphere.
+    const TopoDS_Shape drilled =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(-2, -2, 0), 4, 4, 1).Shape(), BRepPrimAPI_MakeCylinder(1, 1).Shape()).Shape();
+    const Solid solid = from_occt(drilled);
+    EXPECT_NEAR(solid.volume(), 16 - pi, 1e-12 * 16);
+    const TopoDS_Shape scooped =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 0), 2, 2, 2).Shape(), BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 2), 1.2).Shape())
+            .Shape();
+    const std::string reason = refusal(scooped);
+    EXPECT_EQ(reason.rfind("face ", 0), 0u) << reason;
+    EXPECT_NE(reason.find("a trimmed Geom_SphericalSurface face is not supported"), std::string::npos) << reason;
+}
+
+TEST_F(Import, BadFilesAreRefusedNamingThePath) {
+    const auto expect_path_error = [](const std::function<void()>& read, const std::string& words) {
+        try {
+            read();
+            FAIL() << "accepted";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.argument(), "path") << e.what();
+            EXPECT_NE(std::string(e.reason()).find(words), std::string::npos) << e.what();
+        }
+    };
+    const std::string missing = path("missing.step"), garbage = path("garbage.step");
+    std::ofstream(garbage) << "this is not STEP\n";
+    expect_path_error([&] { read_step(missing); }, "does not exist");
+    expect_path_error([&] { read_brep(missing); }, "does not exist");
+    expect_path_error([&] { read_step(garbage); }, "not a readable STEP file");
+    expect_path_error([&] { read_brep(garbage); }, "not a readable .brep file");
+    expect_path_error([&] { read_step(directory_.string()); }, "is not a file");
+    // A .brep of two solids names the file and the count.
+    const TopoDS_Compound two = two_boxes();
+    ASSERT_TRUE(BRepTools::Write(two, path("two.brep").c_str()));
+    expect_path_error([&] { read_brep(path("two.brep")); }, "two.brep': holds 2 solids");
+}
+
+TEST_F(Import, ProgressReachesOneAndCancels) {
+    write_brep(sphere(1), path("sphere.brep"));
+    double last = -1;
+    read_brep(path("sphere.brep"), [&](double fraction) {
+        EXPECT_GE(fraction, last);
+        last = fraction;
+    });
+    EXPECT_EQ(last, 1.0);
+    EXPECT_THROW(read_brep(path("sphere.brep"), [](double) { throw Cancelled(); }), Cancelled);
+}
+
+}  // namespace
+}  // namespace ratbez::occt

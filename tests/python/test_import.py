@@ -1,0 +1,66 @@
+"""read_step / read_brep: our own files come back as the same solid, OpenCASCADE's refusals name the path,
+and a read stops on Ctrl-C."""
+import os
+import signal
+
+import pytest
+
+import ratbez
+from conftest import needs_occt, raises_naming
+
+
+def face_points(solid):
+    """Points of every face at a few fractions of its parameter domain."""
+    points = []
+    for face in solid.faces:
+        (u0, u1), (v0, v1) = face.surface.domain
+        for s in (0.0, 0.3, 1.0):
+            for t in (0.0, 0.6, 1.0):
+                points.append(face.point(min(u0 + s * (u1 - u0), u1), min(v0 + t * (v1 - v0), v1)))
+    return points
+
+
+@needs_occt
+@pytest.mark.parametrize("reader, writer, suffix", [("read_brep", "write_brep", ".brep"),
+                                                    ("read_step", "write_step", ".step")])
+def test_round_trip_gives_the_same_solid(tmp_path, reader, writer, suffix):
+    vase = ratbez.BezierCurve([(0, 0, 0), (4, 0, 0.5), (0.5, 0, 3), (0, 0, 4)], weights=[1, 0.5, 2, 1])
+    for solid in (ratbez.torus(3, 1, center=(1, 2, 3), axis=(1, 0, 1)), ratbez.cone(2, 0.5, 3),
+                  ratbez.revolve(vase, angle=270)):
+        path = tmp_path / ("solid" + suffix)
+        getattr(ratbez, writer)(solid, path)
+        read = getattr(ratbez, reader)(path)
+        assert isinstance(read, ratbez.Solid)
+        assert [f.kind for f in read.faces] == [f.kind for f in solid.faces]
+        assert read.volume() == pytest.approx(solid.volume(), rel=1e-12)
+        size = max(abs(x) for p in face_points(solid) for x in p)
+        for p, q in zip(face_points(solid), face_points(read)):
+            assert max(abs(a - b) for a, b in zip(p, q)) <= 1e-12 * size
+
+
+@needs_occt
+def test_bad_files_name_the_path(tmp_path):
+    raises_naming("path", ratbez.read_step, tmp_path / "missing.step")
+    raises_naming("path", ratbez.read_brep, str(tmp_path / "missing.brep"))
+    garbage = tmp_path / "garbage.step"
+    garbage.write_text("not a STEP file\n")
+    assert "not a readable STEP file" in str(raises_naming("path", ratbez.read_step, garbage))
+    assert "not a readable .brep file" in str(raises_naming("path", ratbez.read_brep, garbage))
+    raises_naming("path", ratbez.read_step, 42)
+    raises_naming("progress", ratbez.read_brep, garbage, progress=3)
+
+
+@needs_occt
+def test_progress_and_ctrl_c(tmp_path):
+    path = tmp_path / "sphere.brep"
+    ratbez.write_brep(ratbez.sphere(1), path)
+    fractions = []
+    ratbez.read_brep(path, progress=fractions.append)
+    assert fractions and fractions[-1] == 1.0 and fractions == sorted(fractions)
+
+    # Ctrl-C arriving during the read (here: sent at its first progress call) ends it with KeyboardInterrupt.
+    def interrupt(fraction):
+        os.kill(os.getpid(), signal.SIGINT)
+
+    with pytest.raises(KeyboardInterrupt):
+        ratbez.read_brep(path, progress=interrupt)
