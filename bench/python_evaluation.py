@@ -5,9 +5,8 @@ with all of those rows (medians of the repetitions, CPU time), which bench/repor
 "python" rows of the table.
 
   D0: s.evaluate(us, vs)                                   the points, shape (n, n, 3)
-  D1: s.evaluate(us, vs), s.evaluate(us, vs, du=1) and s.evaluate(us, vs, dv=1)
-      the point and both first partials, as OCCT's D1 gives them; the rate counts grid points per
-      second over the three calls together.
+  D1: s.evaluate_partials(us, vs)                          the point and both first partials in one pass,
+                                                           shape (n, n, 3, 3), as OCCT's D1 gives them
 
 Names: eval/<surface>/<D0|D1>/python/<n>, beside the C++ rows eval/<surface>/<D0|D1>/<ours|GeomAdaptor_Surface>/<n>.
 The surfaces are bench_shapes.hpp's sphere, torus and revolved rational cubic (the random bicubic is drawn
@@ -89,7 +88,7 @@ def main(build, out):
         (u0, u1), (v0, v1) = surface.domain
         us, vs = np.linspace(u0, u1, GRID), np.linspace(v0, v1, GRID)
         calls = {"D0": lambda: surface.evaluate(us, vs),
-                 "D1": lambda: (surface.evaluate(us, vs), surface.evaluate(us, vs, du=1), surface.evaluate(us, vs, dv=1))}
+                 "D1": lambda: surface.evaluate_partials(us, vs)}
         for order, call in calls.items():
             label = f"eval/{name}/{order}/python/{GRID}"
             if wanted.search(label):

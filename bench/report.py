@@ -175,7 +175,7 @@ def export_rows(table, rows):
 def python_rows(table, rows):
     """Bulk evaluation through Python (bench/python_evaluation.py) against OCCT's GeomAdaptor_Surface and the C++
     grid evaluator, all measured in that script's run. D0 is held to >= 100M points/s and >= 4x GeomAdaptor,
-    D1 (the point and both partials: three calls) to >= 40M points/s."""
+    D1 (the point and both partials in one evaluate_partials call) to >= 40M points/s."""
     for base, n, b in evaluation_runs(rows, "python"):
         rate = b["points_per_second"]
         adaptor, cpp = rows.get(f"{base}/GeomAdaptor_Surface/{n}"), rows.get(f"{base}/ours/{n}")

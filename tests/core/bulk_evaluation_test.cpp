@@ -41,6 +41,29 @@ TEST(BulkEvaluation, UnsortedGridMatchesPointwiseEvaluation) {
         for (std::size_t j = 0; j < vs.size(); ++j) expect_near(at(normals, i * vs.size() + j), s.normal(us[i], vs[j]), 1e-14);
 }
 
+TEST(BulkEvaluation, PartialsInOnePassAreTheGridsOfEachPartial) {
+    const NurbsSurface s = torus(2.0, 0.5).faces()[0].surface();
+    const Interval du = s.domain_u(), dv = s.domain_v();
+    // Unsorted in both directions, more rows than a block.
+    std::vector<double> us, vs{dv.max, dv.min, 0.3 * dv.min + 0.7 * dv.max};
+    for (int k = 0; k < 1500; ++k) us.push_back(du.max - (du.max - du.min) * (k % 700) / 699.0);
+    const std::vector<std::pair<int, int>> partials{{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+    for (const std::size_t m : {std::size_t{3}, std::size_t{6}}) {
+        std::vector<double> out(3 * m * us.size() * vs.size());
+        evaluate_surface_partials(s, us, vs, m == 3 ? 1 : 2, out);
+        for (std::size_t k = 0; k < m; ++k) {
+            std::vector<double> single(3 * us.size() * vs.size());
+            evaluate_surface_grid(s, us, vs, partials[k].first, partials[k].second, single);
+            for (std::size_t i = 0; i < us.size(); i += 37)
+                for (std::size_t j = 0; j < vs.size(); ++j)
+                    expect_near(at(out, (i * vs.size() + j) * m + k), at(single, i * vs.size() + j), 1e-13);
+        }
+    }
+    std::vector<double> out(9);
+    EXPECT_THROW(evaluate_surface_partials(s, std::vector<double>{du.min}, std::vector<double>{dv.min}, 3, out), Error);
+    EXPECT_THROW(evaluate_surface_partials(s, std::vector<double>{du.min}, std::vector<double>{dv.min}, 2, out), Error);
+}
+
 TEST(BulkEvaluation, CurvesAndPairsAreTheirPointwiseValuesExactly) {
     const NurbsCurve c = circle(2.0, {1, 2, 3}, {0, 1, 1});
     const std::vector<double> us{1.0, 0.0, 0.25, 0.6, 0.25};

@@ -92,6 +92,32 @@ def test_surface_evaluate_agrees_with_the_per_point_calls(name, surface):
     assert np.allclose(np.linalg.norm(normals, axis=2), 1, rtol=0, atol=1e-14)
 
 
+def fixed_surfaces():
+    """Surfaces drawn without the module's RNG (drawing here would shift the other tests' random cases)."""
+    profile = ratbez.BezierCurve([(0, 0, 0), (1.6, 0, 0.2), (1.1, 0, 1.7), (0, 0, 2)], [1.0, 0.6, 1.8, 1.0])
+    net = [[(i, j, (i * j) % 3 - 0.5 * i) for j in range(4)] for i in range(3)]
+    weights = [[1.0, 0.5, 2.0, 1.0], [0.7, 1.3, 1.0, 0.9], [1.0, 1.0, 0.6, 1.0]]
+    return {"sphere": ratbez.sphere(1.0).faces[0].surface, "torus face": ratbez.torus(2.0, 0.5).faces[0],
+            "revolved cubic": ratbez.revolve(profile).faces[0].surface,
+            "bezier": ratbez.BezierSurface(net, weights)}
+
+
+@pytest.mark.parametrize("name", list(fixed_surfaces()))
+def test_evaluate_partials_is_every_partial_in_one_array(name):
+    surface = fixed_surfaces()[name]
+    if isinstance(surface, ratbez.BezierSurface):
+        us, vs = np.linspace(1, 0, 11), np.linspace(0, 1, 7)
+    else:
+        (u0, u1), (v0, v1) = (surface.surface if isinstance(surface, ratbez.Face) else surface).domain
+        us, vs = np.linspace(u1, u0, 11), np.linspace(v0, v1, 7)  # any order
+    for order, partials in ((1, ((0, 0), (1, 0), (0, 1))), (2, ((0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)))):
+        table = surface.evaluate_partials(us, vs, order=order)
+        assert table.shape == (len(us), len(vs), len(partials), 3)
+        for k, (du, dv) in enumerate(partials):
+            agree(table[:, :, k, :], surface.evaluate(us, vs, du, dv))
+    raises_naming("order", surface.evaluate_partials, us, vs, order=3)
+
+
 def test_sphere_normals_at_the_poles_are_the_limit_normals():
     sphere = ratbez.sphere(2.0, center=(1, 1, 1))
     surface = sphere.faces[0].surface

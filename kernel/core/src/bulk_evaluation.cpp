@@ -3,6 +3,7 @@
 #include "ratbez/bulk_evaluation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -73,25 +74,49 @@ struct Ascending {
     std::size_t original(std::size_t r) const { return from.empty() ? r : from[r]; }
 };
 
-// The grid output that holds the (du, dv) partial, and the member of SurfaceGrid it is in.
+// The grid output that holds the wanted vectors, and the members of SurfaceGrid they are in, in the order
+// they are interleaved at each point.
 struct GridChoice {
     GridOutput output;
-    GridVectors SurfaceGrid::*vectors;
+    std::vector<GridVectors SurfaceGrid::*> vectors;
 };
 
 std::optional<GridChoice> grid_choice(int du, int dv, bool normals) {
-    if (normals) return GridChoice{GridOutput::normals, &SurfaceGrid::normals};
-    if (du == 0 && dv == 0) return GridChoice{GridOutput::points, &SurfaceGrid::points};
-    if (du + dv == 1) return GridChoice{GridOutput::partials, du == 1 ? &SurfaceGrid::du : &SurfaceGrid::dv};
+    if (normals) return GridChoice{GridOutput::normals, {&SurfaceGrid::normals}};
+    if (du == 0 && dv == 0) return GridChoice{GridOutput::points, {&SurfaceGrid::points}};
+    if (du + dv == 1) return GridChoice{GridOutput::partials, {du == 1 ? &SurfaceGrid::du : &SurfaceGrid::dv}};
     if (du + dv == 2)
         return GridChoice{GridOutput::second_partials,
-                          du == 2 ? &SurfaceGrid::duu : du == 1 ? &SurfaceGrid::duv : &SurfaceGrid::dvv};
+                          {du == 2 ? &SurfaceGrid::duu : du == 1 ? &SurfaceGrid::duv : &SurfaceGrid::dvv}};
     return std::nullopt;  // third and higher partials: point by point
 }
 
-// The grid a block of rows at a time (evaluate_grid_blocks: each block's three coordinate arrays are
-// still in cache when read back), interleaved into `out`, scattered back to the caller's order when the
-// parameters came unsorted.
+// Writes the block's rows [0, grid.u_count) of the M chosen vectors into `out`, interleaved: the M vectors
+// of a point one after the other. M is a template parameter so that the copy loop unrolls (the D0 grid
+// runs at the speed of memory).
+template <std::size_t M>
+void interleave_block(const SurfaceGrid& grid, const std::vector<GridVectors SurfaceGrid::*>& members,
+                      std::size_t first, const Ascending& u_order, const Ascending& v_order, std::size_t nv,
+                      std::span<double> out) {
+    std::array<const GridVectors*, M> vectors{};
+    for (std::size_t k = 0; k < M; ++k) vectors[k] = &(grid.*members[k]);
+    const auto copy = [&](std::size_t at, double* p) {
+        for (std::size_t k = 0; k < M; ++k, p += 3)
+            p[0] = vectors[k]->x[at], p[1] = vectors[k]->y[at], p[2] = vectors[k]->z[at];
+    };
+    for (std::size_t r = 0; r < grid.u_count; ++r) {
+        double* row = out.data() + 3 * M * u_order.original(first + r) * nv;
+        if (v_order.from.empty()) {
+            for (std::size_t j = 0; j < nv; ++j) copy(r * nv + j, row + 3 * M * j);
+        } else {
+            for (std::size_t j = 0; j < nv; ++j) copy(r * nv + j, row + 3 * M * v_order.from[j]);
+        }
+    }
+}
+
+// The grid a block of rows at a time (evaluate_grid_blocks: each block's coordinate arrays are still in
+// cache when read back), interleaved into `out`, scattered back to the caller's order when the parameters
+// came unsorted.
 void interleave_grid(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
                      const GridChoice& choice, std::span<double> out) {
     const Ascending u_order(us), v_order(vs);
@@ -101,33 +126,30 @@ void interleave_grid(const NurbsSurface& surface, std::span<const double> us, st
     SurfaceGrid block;
     evaluate_grid_blocks(surface, u_order.values(us), v_order.values(vs), choice.output, block_rows, block,
                          [&](std::size_t first, const SurfaceGrid& grid) {
-        const GridVectors& values = grid.*choice.vectors;
-        for (std::size_t r = 0; r < grid.u_count; ++r) {
-            const double* x = values.x.data() + r * nv;
-            const double* y = values.y.data() + r * nv;
-            const double* z = values.z.data() + r * nv;
-            double* row = out.data() + 3 * u_order.original(first + r) * nv;
-            if (v_order.from.empty()) {
-                for (std::size_t j = 0; j < nv; ++j) row[3 * j] = x[j], row[3 * j + 1] = y[j], row[3 * j + 2] = z[j];
-            } else {
-                for (std::size_t j = 0; j < nv; ++j) {
-                    double* p = row + 3 * v_order.from[j];
-                    p[0] = x[j], p[1] = y[j], p[2] = z[j];
-                }
-            }
+        switch (choice.vectors.size()) {
+            case 1: return interleave_block<1>(grid, choice.vectors, first, u_order, v_order, nv, out);
+            case 3: return interleave_block<3>(grid, choice.vectors, first, u_order, v_order, nv, out);
+            default: return interleave_block<6>(grid, choice.vectors, first, u_order, v_order, nv, out);
         }
     });
+}
+
+// The checks every grid call makes: parameters inside the domain, a grid whose size fits, and room for
+// `per_point` vectors at each grid point.
+void require_grid(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
+                  std::size_t per_point, std::span<double> out) {
+    require_parameters(us, surface.domain_u(), "us");
+    require_parameters(vs, surface.domain_v(), "vs");
+    require(vs.empty() || us.size() <= std::numeric_limits<std::size_t>::max() / 3 / per_point / vs.size(), "us",
+            "the grid is too large");
+    require_output(out, us.size() * vs.size() * per_point);
 }
 
 void evaluate_grid_checked(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
                            int du, int dv, bool normals, std::span<double> out) {
     require_order(du, "du");
     require_order(dv, "dv");
-    require_parameters(us, surface.domain_u(), "us");
-    require_parameters(vs, surface.domain_v(), "vs");
-    require(vs.empty() || us.size() <= std::numeric_limits<std::size_t>::max() / 3 / vs.size(), "us",
-            "the grid is too large");
-    require_output(out, us.size() * vs.size());
+    require_grid(surface, us, vs, 1, out);
     if (us.empty() || vs.empty()) return;
     if (const auto choice = grid_choice(du, dv, normals)) {
         interleave_grid(surface, us, vs, *choice, out);
@@ -151,6 +173,19 @@ void evaluate_curve(const BezierCurve& curve, std::span<const double> us, int or
 void evaluate_surface_grid(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
                            int du, int dv, std::span<double> out) {
     evaluate_grid_checked(surface, us, vs, du, dv, false, out);
+}
+
+void evaluate_surface_partials(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
+                               int order, std::span<double> out) {
+    require(order == 1 || order == 2, "order", [&] { return "must be 1 or 2, got " + std::to_string(order); });
+    GridChoice choice{GridOutput::partials, {&SurfaceGrid::points, &SurfaceGrid::du, &SurfaceGrid::dv}};
+    if (order == 2) {
+        choice.output = GridOutput::second_partials;
+        choice.vectors.insert(choice.vectors.end(), {&SurfaceGrid::duu, &SurfaceGrid::duv, &SurfaceGrid::dvv});
+    }
+    require_grid(surface, us, vs, choice.vectors.size(), out);
+    if (us.empty() || vs.empty()) return;
+    interleave_grid(surface, us, vs, choice, out);
 }
 
 void evaluate_surface_normals(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,

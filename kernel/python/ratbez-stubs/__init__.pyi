@@ -142,6 +142,11 @@ class BezierSurface(object):
         a float64 array of shape (len(us), len(vs), 3). us and vs in any order, inside the domain."""
     def evaluate_at(self, uv: ArrayLike, du: int = ..., dv: int = ...) -> numpy.ndarray:
         """The (du, dv) partial at each (u, v) row of uv, an array of shape (N, 2): shape (N, 3)."""
+    def evaluate_partials(self, us: ArrayLike, vs: ArrayLike, order: int = ...) -> numpy.ndarray:
+        """Every partial up to `order` (1 or 2) at every (us[i], vs[j]) in one pass (the bases computed once, as
+        OpenCASCADE's D1 / D2): a float64 array of shape (len(us), len(vs), 3, 3) for order 1, whose [i, j, 0],
+        [i, j, 1] and [i, j, 2] are S, S_u and S_v; shape (len(us), len(vs), 6, 3) for order 2, then S_uu, S_uv
+        and S_vv. Equal to evaluate(us, vs, du, dv) for each partial; about twice as fast as those calls."""
     def normals(self, us: ArrayLike, vs: ArrayLike) -> numpy.ndarray:
         """The unit normals at every (us[i], vs[j]): shape (len(us), len(vs), 3); at poles and apexes, where
         S_u x S_v vanishes, the limit direction (as normal(u, v))."""
@@ -207,6 +212,11 @@ class Face(object):
         a float64 array of shape (len(us), len(vs), 3). us and vs in any order, inside the domain."""
     def evaluate_at(self, uv: ArrayLike, du: int = ..., dv: int = ...) -> numpy.ndarray:
         """The (du, dv) partial at each (u, v) row of uv, an array of shape (N, 2): shape (N, 3)."""
+    def evaluate_partials(self, us: ArrayLike, vs: ArrayLike, order: int = ...) -> numpy.ndarray:
+        """Every partial up to `order` (1 or 2) at every (us[i], vs[j]) in one pass (the bases computed once, as
+        OpenCASCADE's D1 / D2): a float64 array of shape (len(us), len(vs), 3, 3) for order 1, whose [i, j, 0],
+        [i, j, 1] and [i, j, 2] are S, S_u and S_v; shape (len(us), len(vs), 6, 3) for order 2, then S_uu, S_uv
+        and S_vv. Equal to evaluate(us, vs, du, dv) for each partial; about twice as fast as those calls."""
     def normals(self, us: ArrayLike, vs: ArrayLike) -> numpy.ndarray:
         """The unit normals at every (us[i], vs[j]): shape (len(us), len(vs), 3); at poles and apexes, where
         S_u x S_v vanishes, the limit direction (as normal(u, v))."""
@@ -406,6 +416,11 @@ class NurbsSurface(object):
         a float64 array of shape (len(us), len(vs), 3). us and vs in any order, inside the domain."""
     def evaluate_at(self, uv: ArrayLike, du: int = ..., dv: int = ...) -> numpy.ndarray:
         """The (du, dv) partial at each (u, v) row of uv, an array of shape (N, 2): shape (N, 3)."""
+    def evaluate_partials(self, us: ArrayLike, vs: ArrayLike, order: int = ...) -> numpy.ndarray:
+        """Every partial up to `order` (1 or 2) at every (us[i], vs[j]) in one pass (the bases computed once, as
+        OpenCASCADE's D1 / D2): a float64 array of shape (len(us), len(vs), 3, 3) for order 1, whose [i, j, 0],
+        [i, j, 1] and [i, j, 2] are S, S_u and S_v; shape (len(us), len(vs), 6, 3) for order 2, then S_uu, S_uv
+        and S_vv. Equal to evaluate(us, vs, du, dv) for each partial; about twice as fast as those calls."""
     def normals(self, us: ArrayLike, vs: ArrayLike) -> numpy.ndarray:
         """The unit normals at every (us[i], vs[j]): shape (len(us), len(vs), 3); at poles and apexes, where
         S_u x S_v vanishes, the limit direction (as normal(u, v))."""

@@ -1,6 +1,7 @@
 // Bulk evaluation: numpy in, numpy out, the GIL released while the kernel computes (bulk_evaluation.hpp).
 // curve.evaluate(us, order=0); surface.evaluate(us, vs, du=0, dv=0), evaluate_at(uv, du=0, dv=0) and
-// normals(us, vs) on BezierSurface, NurbsSurface and Face (through its surface).
+// evaluate_partials(us, vs, order=1) and normals(us, vs) on BezierSurface, NurbsSurface and Face (through its
+// surface).
 
 #include <string>
 
@@ -64,6 +65,18 @@ py::array_t<double> surface_evaluate(const NurbsSurface& surface, const py::obje
     return out;
 }
 
+py::array_t<double> surface_partials(const NurbsSurface& surface, const py::object& us, const py::object& vs,
+                                     int order) {
+    const DoubleArray u = parameters(us, "us"), v = parameters(vs, "vs");
+    const py::ssize_t per_point = order == 2 ? 6 : 3;  // any other order is refused by the kernel
+    auto out = py::array_t<double>({u.size(), v.size(), per_point, py::ssize_t{3}});
+    {
+        py::gil_scoped_release release;
+        evaluate_surface_partials(surface, values(u), values(v), order, values(out));
+    }
+    return out;
+}
+
 py::array_t<double> surface_normals(const NurbsSurface& surface, const py::object& us, const py::object& vs) {
     const DoubleArray u = parameters(us, "us"), v = parameters(vs, "vs");
     auto out = grid_array(u, v);
@@ -92,11 +105,16 @@ constexpr const char* grid_doc =
     "a float64 array of shape (len(us), len(vs), 3). us and vs in any order, inside the domain.";
 constexpr const char* at_doc =
     "The (du, dv) partial at each (u, v) row of uv, an array of shape (N, 2): shape (N, 3).";
+constexpr const char* partials_doc =
+    "Every partial up to `order` (1 or 2) at every (us[i], vs[j]) in one pass (the bases computed once, as\n"
+    "OpenCASCADE's D1 / D2): a float64 array of shape (len(us), len(vs), 3, 3) for order 1, whose [i, j, 0],\n"
+    "[i, j, 1] and [i, j, 2] are S, S_u and S_v; shape (len(us), len(vs), 6, 3) for order 2, then S_uu, S_uv\n"
+    "and S_vv. Equal to evaluate(us, vs, du, dv) for each partial; about twice as fast as those calls.";
 constexpr const char* normals_doc =
     "The unit normals at every (us[i], vs[j]): shape (len(us), len(vs), 3); at poles and apexes, where\n"
     "S_u x S_v vanishes, the limit direction (as normal(u, v)).";
 
-// The four surface methods on a class whose surface is `surface_of(object)`.
+// The five surface methods on a class whose surface is `surface_of(object)`.
 template <class T, class SurfaceOf>
 void def_surface_methods(py::class_<T>& cls, SurfaceOf surface_of) {
     cls.def(
@@ -111,6 +129,12 @@ void def_surface_methods(py::class_<T>& cls, SurfaceOf surface_of) {
                 return surface_evaluate_at(surface_of(self), uv, du, dv);
             },
             py::arg("uv"), py::arg("du") = 0, py::arg("dv") = 0, at_doc)
+        .def(
+            "evaluate_partials",
+            [surface_of](const T& self, const py::object& us, const py::object& vs, int order) {
+                return surface_partials(surface_of(self), us, vs, order);
+            },
+            py::arg("us"), py::arg("vs"), py::arg("order") = 1, partials_doc)
         .def(
             "normals",
             [surface_of](const T& self, const py::object& us, const py::object& vs) {

@@ -27,6 +27,12 @@ void evaluate_curve(const BezierCurve& curve, std::span<const double> us, int or
 // out[3 (i vs.size() + j) ..] = d^(du+dv) S / du^du dv^dv at (us[i], vs[j]). out.size() == 3 us.size() vs.size().
 void evaluate_surface_grid(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
                            int du, int dv, std::span<double> out);
+// Every partial up to `order` (1 or 2) at each grid point, from one pass of the grid evaluator (the bases are
+// computed once for all of them, as OpenCASCADE's D1 / D2 give them): m = 3 vectors per point for order 1
+// (S, S_u, S_v), m = 6 for order 2 (then S_uu, S_uv, S_vv), out[3 ((i vs.size() + j) m + k) ..] = vector k.
+// out.size() == 3 m us.size() vs.size().
+void evaluate_surface_partials(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
+                               int order, std::span<double> out);
 // The unit normals (NurbsSurface::normal: the limit direction at poles and apexes) on the same grid.
 void evaluate_surface_normals(const NurbsSurface& surface, std::span<const double> us, std::span<const double> vs,
                               std::span<double> out);
