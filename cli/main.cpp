@@ -1,6 +1,7 @@
 // The `ratbez` command: JSON shape spec in, files and reports out.
 //
 //   ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
+//                [--import-stl]
 //                 [--max-triangles N] [--skip-self-intersection-check]
 //   ratbez check SPEC.json [--json]
 //   ratbez info SPEC.json [--json]
@@ -57,7 +58,9 @@ using ratbez::spec::ShapeSpec;
 constexpr const char* usage_text =
     "usage: ratbez <command> ...\n"
     "  ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
-    "                [--max-triangles N] [--skip-self-intersection-check]   (for very large meshes: CGAL's test is the slow one)\n"
+    "                [--max-triangles N] [--import-stl] [--skip-self-intersection-check]\n"
+    "                --import-stl: a .scad whose module import()s the mesh from a binary STL beside it (faster in\n"
+    "                OpenSCAD for large meshes); --skip-self-intersection-check: for very large meshes\n"
     "  ratbez check SPEC.json [--json]      check against OpenCASCADE; exit 1 when a check fails\n"
     "  ratbez info SPEC.json [--json]       faces, edges, vertices, Euler characteristic, area, volume, box\n"
     "  ratbez demo [DIR] [--examples DIR] [--no-render]\n"
@@ -240,7 +243,7 @@ constexpr double kTessellationShare = 0.3;
 
 int command_export(const std::vector<std::string>& raw) {
     const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module", "--max-triangles"},
-                                            {"--ascii", "--skip-self-intersection-check"});
+                                            {"--ascii", "--import-stl", "--skip-self-intersection-check"});
     const std::string& spec_path = single_spec(args, "export");
     const auto output = args.value("--output");
     if (!output || output->empty()) throw UsageError("-o", "the output file is required (-o OUT.scad|stl|off|step|brep)");
@@ -253,6 +256,7 @@ int command_export(const std::vector<std::string>& raw) {
     // Options that cannot apply are errors rather than silently ignored (they are usually typos).
     if (args.value("--module") && extension != ".scad") throw UsageError("--module", "applies only to .scad output");
     if (args.flag("--ascii") && extension != ".stl") throw UsageError("--ascii", "applies only to .stl output");
+    if (args.flag("--import-stl") && extension != ".scad") throw UsageError("--import-stl", "applies only to .scad output");
     if (brep_format && args.value("--tolerance")) throw UsageError("--tolerance", "does not apply to exact " + extension + " output");
     if (brep_format && args.value("--angle")) throw UsageError("--angle", "does not apply to exact " + extension + " output");
     if (brep_format && args.value("--max-triangles"))
@@ -294,6 +298,7 @@ int command_export(const std::vector<std::string>& raw) {
                                    : spec.named ? ratbez::exporter::openscad_identifier(spec.name)
                                                 : ratbez::exporter::openscad_identifier(fs::path(*output).stem().string());
     options.binary_stl = !args.flag("--ascii");
+    options.import_stl = args.flag("--import-stl");
     options.source = "spec " + spec_path;
     options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, used_tolerance);
     // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but
@@ -312,7 +317,9 @@ int command_export(const std::vector<std::string>& raw) {
         }
         throw;
     }
-    std::cout << "wrote " << *output << " (" << mesh.triangles.size() << " triangles, " << mesh.vertices.size()
+    std::cout << "wrote " << *output
+              << (options.import_stl ? " and " + fs::path(*output).replace_extension(".stl").string() : std::string())
+              << " (" << mesh.triangles.size() << " triangles, " << mesh.vertices.size()
               << " vertices, tolerance " << format_number(used_tolerance, 6) << ")\n";
     return 0;
 }

@@ -39,6 +39,12 @@ Format checked_format(const std::string& path, const ExportOptions& options) {
 }
 
 
+// Whether the mesh is written as binary STL (float32 coordinates): an .stl unless ASCII was asked for, and
+// the STL beside a .scad that imports it.
+bool writes_float32(Format format, const ExportOptions& options) {
+    return (format == Format::stl && options.binary_stl) || (format == Format::openscad && options.import_stl);
+}
+
 // One writer for every format (output_file.hpp): a new temporary beside the target, renamed over it.
 void write_file(const Mesh& mesh, const std::string& path, Format format, const ExportOptions& options) {
     output::write_file(path, [&](std::ostream& out) {
@@ -55,6 +61,17 @@ void write_file(const Mesh& mesh, const std::string& path, Format format, const 
     });
 }
 
+// The file or files of an export: with import_stl the mesh goes to the binary STL beside the .scad first,
+// then the .scad that imports it (a reader never finds the .scad without its STL).
+void write_files(const Mesh& mesh, const std::string& path, Format format, const ExportOptions& options) {
+    if (format != Format::openscad || !options.import_stl) return write_file(mesh, path, format, options);
+    std::filesystem::path stl(path);
+    stl.replace_extension(".stl");
+    ExportOptions binary = options;
+    binary.binary_stl = true;
+    write_file(mesh, stl.string(), Format::stl, binary);
+    output::write_file(path, [&](std::ostream& out) { write_openscad_import(stl.filename().string(), out, options.openscad); });
+}
 
 std::string number_text(double value, int digits) {
     char text[64];
@@ -80,6 +97,7 @@ struct Measured {
     double max_deviation = 0;
     double exact_volume = 0;
     std::optional<int> decimals;
+    bool float32 = false;  // the mesh is in a binary STL
 };
 
 std::vector<std::string> header_lines(const Mesh& written, const std::string& source, const std::optional<Measured>& measured) {
@@ -94,8 +112,9 @@ std::vector<std::string> header_lines(const Mesh& written, const std::string& so
     }
     lines.push_back(std::to_string(written.triangles.size()) + " triangles, " + std::to_string(written.vertices.size()) +
                     " vertices; coordinates " +
-                    (measured && measured->decimals ? "rounded to " + std::to_string(*measured->decimals) + " decimals"
-                                                    : std::string("exact (shortest round trip)")));
+                    (measured && measured->float32    ? std::string("float32 (binary STL)")
+                     : measured && measured->decimals ? "rounded to " + std::to_string(*measured->decimals) + " decimals"
+                                                      : std::string("exact (shortest round trip)")));
     Vec3 low = written.vertices.empty() ? Vec3{} : written.vertices.front(), high = low;
     for (const Vec3& p : written.vertices) {
         low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
@@ -156,15 +175,16 @@ MeshCheckOptions tessellation_checks(const Solid& solid, const Mesh& mesh, doubl
     return options;
 }
 
-void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions& options) {
+void export_mesh(const Mesh& given, const std::string& path, const ExportOptions& options) {
     const Format format = checked_format(path, options);
+    const Mesh mesh = writes_float32(format, options) ? float32_mesh(given) : given;
     MeshCheckOptions checks = options.checks;
     if (options.progress) checks.progress = progress_part(options.progress, 0, 0.95);
     const MeshReport report = check_mesh(mesh, checks);
     if (!report.ok()) refuse(report);
     ExportOptions written = options;
     written.openscad.header = header_lines(mesh, options.source, std::nullopt);
-    write_file(mesh, path, format, written);
+    write_files(mesh, path, format, written);
     if (options.progress) options.progress(1.0);
 }
 
@@ -172,8 +192,9 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
                                 const ExportOptions& options) {
     const Format format = checked_format(path, options);
     require(std::isfinite(tolerance) && tolerance > 0, "tolerance", "must be a positive number");
-    const bool text = format != Format::stl || !options.binary_stl;
-    WrittenMesh result{mesh, 0, std::nullopt};
+    const bool float32 = writes_float32(format, options);
+    const bool text = !float32;
+    WrittenMesh result{float32 ? float32_mesh(mesh) : mesh, 0, std::nullopt};
     bool chosen = false;
     // The work, in shares of the progress reported: the deviation of the mesh as given, then for each
     // decimal candidate (fewest first) its deviation and checks, which end at the first that passes; then the
@@ -204,18 +225,27 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
             break;
         }
     }
-    if (!chosen) {
+    if (float32) {
+        result.max_deviation = measured(result.mesh, 0, 0.5);
+        const MeshReport report = checked(result.mesh, 0.5, 0.95);
+        if (!report.ok() || !(result.max_deviation <= tolerance))
+            throw Error("mesh", "binary STL stores float32 coordinates, which leave this mesh " +
+                                    (report.ok() ? number_text(result.max_deviation, 4) + " from the surface, beyond the tolerance " +
+                                                       number_text(tolerance, 4)
+                                                 : "invalid (" + report.problems.front() + ")") +
+                                    ": write ASCII STL, .off or .scad text, or use a coarser tolerance");
+    } else if (!chosen) {
         const MeshReport report = checked(mesh, text ? kCandidatesEnd : 0, 0.95);
         if (!report.ok()) refuse(report);
-        if (text && !(result.max_deviation <= tolerance))
+        if (!(result.max_deviation <= tolerance))
             throw Error("mesh", "refusing to export a mesh " + number_text(result.max_deviation, 4) +
                                     " from the surface, beyond the tolerance " + number_text(tolerance, 4));
     }
     if (options.progress) options.progress(0.95);
     ExportOptions written = options;
-    written.openscad.header = header_lines(
-        result.mesh, options.source, Measured{tolerance, result.max_deviation, solid.volume(), result.decimals});
-    write_file(result.mesh, path, format, written);
+    written.openscad.header = header_lines(result.mesh, options.source,
+                                           Measured{tolerance, result.max_deviation, solid.volume(), result.decimals, float32});
+    write_files(result.mesh, path, format, written);
     if (options.progress) options.progress(1.0);
     return result;
 }

@@ -154,25 +154,33 @@ std::string comment_text(std::string_view text) {
     return escaped;
 }
 
+namespace {
+
+void require_module_name(const OpenScadOptions& options) {
+    require(is_openscad_identifier(options.module_name), "module_name", [&] {
+        std::string reason = "'";
+        reason += comment_text(options.module_name);
+        return reason + "' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit; not a keyword)";
+    });
+}
+
+// The header comment lines and the line that says how the file is used (then `note`).
+std::string library_preamble(const OpenScadOptions& options, std::string_view note) {
+    std::string text;
+    for (const std::string& line : options.header) text += "// " + comment_text(line) + "\n";
+    text += "// use <this file> imports module " + options.module_name + "(); opening the file renders it.";
+    return text.append(note) + "\n";
+}
+
+}  // namespace
+
 void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& options) {
     validate_mesh(mesh);
-    require(is_openscad_identifier(options.module_name), "module_name",
-            [&] {
-                std::string reason = "'";
-                reason += comment_text(options.module_name);
-                return reason + "' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit; not a keyword)";
-            });
+    require_module_name(options);
     require(options.convexity >= 1, "convexity", "must be at least 1");
 
     BufferedOutput buffer(out);
-    for (const std::string& line : options.header) {
-        buffer.text("// ");
-        buffer.text(comment_text(line));
-        buffer.character('\n');
-    }
-    buffer.text("// use <this file> imports module ");
-    buffer.text(options.module_name);
-    buffer.text("(); opening the file renders it. Faces are clockwise seen from outside (OpenSCAD's order).\n");
+    buffer.text(library_preamble(options, " Faces are clockwise seen from outside (OpenSCAD's order)."));
     buffer.text("module ");
     buffer.text(options.module_name);
     buffer.text("() {\npolyhedron(points=[\n");
@@ -202,6 +210,30 @@ void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& 
     buffer.text(options.module_name);
     buffer.text("();\n");
     buffer.flush();
+}
+
+void write_openscad_import(const std::string& stl_file, std::ostream& out, const OpenScadOptions& options) {
+    require_module_name(options);
+    require(!stl_file.empty(), "stl_file", "is empty");
+    require(options.convexity >= 1, "convexity", "must be at least 1");
+    // An OpenSCAD string literal: \\ and \" escaped; control characters cannot be written in one.
+    std::string literal;
+    for (const char c : stl_file) {
+        require(static_cast<unsigned char>(c) >= 0x20 && c != 0x7f, "stl_file", "contains a control character");
+        if (c == '\\' || c == '"') literal += '\\';
+        literal += c;
+    }
+    out << library_preamble(options, " The mesh is in " + comment_text(stl_file) + " beside it.") << "module " << options.module_name << "() {\nimport(\"" << literal
+        << "\", convexity=" << options.convexity << ");\n}\n"
+        << options.module_name << "();\n";
+}
+
+Mesh float32_mesh(const Mesh& mesh) {
+    Mesh result = mesh;
+    for (Vec3& p : result.vertices)
+        p = {static_cast<double>(static_cast<float>(p.x)), static_cast<double>(static_cast<float>(p.y)),
+             static_cast<double>(static_cast<float>(p.z))};
+    return result;
 }
 
 void write_stl_binary(const Mesh& mesh, std::ostream& out) {

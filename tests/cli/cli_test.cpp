@@ -269,6 +269,16 @@ TEST_F(Cli, ExportsEveryFormat) {
     EXPECT_EQ(scad.substr(scad.size() - 10), "}\nball();\n");
     EXPECT_NE(scad.find("\n// source: spec " + sphere + "\n// tolerance: "), std::string::npos) << scad.substr(0, 400);
 
+    run = ratbez({"export", sphere, "-o", path("i.scad"), "--import-stl", "--tolerance", "0.05"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.out.rfind("wrote " + path("i.scad") + " and " + path("i.stl") + " (", 0), 0u) << run.out;
+    EXPECT_NE(read_file(path("i.scad")).find("module sphere() {\nimport(\"i.stl\", convexity=10);\n}\nsphere();\n"),
+              std::string::npos)
+        << read_file(path("i.scad"));
+    EXPECT_GE(read_file(path("i.stl")).size(), 84u);
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.stl"), "--import-stl"}),
+                     "usage error: --import-stl: applies only to .scad output");
+
     run = ratbez({"export", sphere, "-o", path("s.stl"), "--tolerance", "0.05"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const std::string stl = read_file(path("s.stl"));

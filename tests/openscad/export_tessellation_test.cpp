@@ -4,12 +4,16 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "ratbez/deviation.hpp"
 #include "../core/temp_directory_test_support.hpp"
@@ -115,6 +119,66 @@ TEST_F(ExportTessellation, BadModuleNameIsRefusedBeforeAnyWork) {
         EXPECT_EQ(std::string(e.what()), "module_name: 'x\\ncube(1);' is not an OpenSCAD identifier");
     }
     EXPECT_FALSE(fs::exists(path("x.scad")));
+}
+
+// A binary STL as a reader gets it: three float32 vertices per triangle, widened to double.
+std::vector<std::array<Vec3, 3>> read_binary_stl(const std::string& bytes) {
+    std::uint32_t count = 0;
+    std::memcpy(&count, bytes.data() + 80, 4);
+    EXPECT_EQ(bytes.size(), 84 + 50 * std::size_t{count});
+    std::vector<std::array<Vec3, 3>> triangles(count);
+    for (std::size_t t = 0; t < count; ++t)
+        for (std::size_t k = 0; k < 3; ++k) {
+            float xyz[3];
+            std::memcpy(xyz, bytes.data() + 84 + 50 * t + 12 + 12 * k, 12);
+            triangles[t][k] = {xyz[0], xyz[1], xyz[2]};
+        }
+    return triangles;
+}
+
+TEST_F(ExportTessellation, ImportStlWritesTheMeshBesideAndAModuleThatImportsIt) {
+    const Solid ball = sphere(10, {1, 2, 3});
+    const double tolerance = 0.01;
+    const Mesh mesh = tessellate(ball, tolerance);
+    ExportOptions options;
+    options.openscad.module_name = "ball";
+    options.import_stl = true;
+    options.checks = tessellation_checks(ball, mesh, tolerance);
+    const WrittenMesh written = export_tessellation(ball, mesh, tolerance, path("ball.scad"), options);
+    EXPECT_EQ(written.mesh.vertices, float32_mesh(mesh).vertices);
+    EXPECT_LE(written.max_deviation, tolerance);
+    const std::string text = read(path("ball.scad"));
+    EXPECT_NE(text.find("; coordinates float32 (binary STL)\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\nmodule ball() {\nimport(\"ball.stl\", convexity=10);\n}\nball();\n"), std::string::npos) << text;
+    // The STL holds the mesh as checked: the float32 coordinates, triangle by triangle.
+    const auto triangles = read_binary_stl(read(path("ball.stl")));
+    ASSERT_EQ(triangles.size(), mesh.triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); t += 97)
+        for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(triangles[t][k], written.mesh.vertices[mesh.triangles[t][k]]);
+}
+
+TEST_F(ExportTessellation, BinaryStlRefusesAMeshItsFloat32CoordinatesMoveBeyondTheTolerance) {
+    // Far from the origin float32 coordinates are 1/16 apart: the unit sphere's vertices move up to 0.03.
+    const Solid far = sphere(1, {1e6, 0, 0});
+    const double tolerance = 1e-3;
+    const Mesh mesh = tessellate(far, tolerance);
+    ExportOptions options;
+    options.checks = tessellation_checks(far, mesh, tolerance);
+    for (const char* name : {"far.stl", "far_import.scad"}) {
+        options.import_stl = std::string(name).ends_with(".scad");
+        try {
+            export_tessellation(far, mesh, tolerance, path(name), options);
+            FAIL() << name << ": expected ratbez::Error";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.argument(), "mesh");
+            EXPECT_NE(e.reason().find("float32"), std::string::npos) << e.what();
+        }
+        EXPECT_TRUE(fs::is_empty(path("")));
+    }
+    // ASCII STL keeps the digits it needs.
+    options.import_stl = false;
+    options.binary_stl = false;
+    EXPECT_LE(export_tessellation(far, mesh, tolerance, path("far.stl"), options).max_deviation, tolerance);
 }
 
 }  // namespace

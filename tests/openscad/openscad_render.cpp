@@ -132,6 +132,40 @@ TEST_P(OpenScadRender, RendersWithoutWarningsAndKeepsTheVolume) {
     fs::remove_all(dir);
 }
 
+// import_stl: the library's module import()s a binary STL beside it; used from another folder, OpenSCAD
+// finds the STL next to the library (it resolves the name against the file that holds the import).
+TEST(OpenScadImportStl, AUsedLibraryFindsItsStlBesideItAndRendersCleanly) {
+    const auto spec = ratbez::spec::load_spec(std::string(RATBEZ_EXAMPLES_DIR) + "/vase.json");
+    const auto box = spec.solid.bounding_box();
+    const double size = box.diagonal(), tolerance = 1e-2 * size;
+    const ratbez::Mesh mesh = ratbez::tessellate(spec.solid, tolerance);
+    const fs::path dir = fs::temp_directory_path() / "ratbez_openscad_import_stl";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "lib");
+    fs::create_directories(dir / "work");
+    ratbez::exporter::ExportOptions options;
+    options.openscad.module_name = "vase";
+    options.import_stl = true;
+    options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, tolerance);
+    const auto written =
+        ratbez::exporter::export_tessellation(spec.solid, mesh, tolerance, (dir / "lib" / "vase.scad").string(), options);
+    ASSERT_TRUE(fs::exists(dir / "lib" / "vase.stl"));
+    std::ofstream(dir / "work" / "cut.scad") << "use <../lib/vase.scad>\ndifference() {\n  vase();\n  translate(["
+                                             << box.max.x + size << ", 0, 0]) cube(" << size * 1e-3 << ");\n}\n";
+    const std::string command = "cd '" + (dir / "work").string() + "' && '" RATBEZ_OPENSCAD_EXECUTABLE
+                                "' -o out.stl cut.scad > openscad.log 2>&1";
+    const int status = std::system(command.c_str());
+    const std::string log = read_file(dir / "work" / "openscad.log");
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << log;
+    EXPECT_EQ(log.find("WARNING"), std::string::npos) << log;
+    EXPECT_EQ(log.find("ERROR"), std::string::npos) << log;
+    std::size_t facets = 0;
+    const double volume = ascii_stl_volume(read_file(dir / "work" / "out.stl"), facets);
+    ASSERT_GT(facets, 0u) << "OpenSCAD imported nothing:\n" << log;
+    EXPECT_NEAR(volume, written.mesh.volume(), 2e-5 * std::abs(written.mesh.volume()));
+    fs::remove_all(dir);
+}
+
 std::vector<Case> all_cases() {
     std::vector<Case> cases;
     for (const auto& name : example_names())

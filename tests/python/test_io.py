@@ -196,3 +196,15 @@ def test_occt_check_reports_the_analytic_distance_of_a_sphere():
     assert report["passed"] is True, report["failures"]
     assert 0 <= report["max_analytic_deviation"] < 1e-12 * report["size"] * 100
     assert report["closed_form_volume"] == pytest.approx(4 / 3 * math.pi * 2.5 ** 3, rel=1e-15)
+
+
+@needs_cgal
+def test_export_openscad_import_stl_writes_the_mesh_beside(tmp_path):
+    target = tmp_path / "ball.scad"
+    ratbez.export_openscad(ratbez.sphere(1.0), target, tolerance=1e-3, import_stl=True)
+    text = target.read_text()
+    assert 'module ball() {\nimport("ball.stl", convexity=10);\n}\nball();\n' in text
+    assert "coordinates float32 (binary STL)" in text
+    stl = (tmp_path / "ball.stl").read_bytes()
+    count = int.from_bytes(stl[80:84], "little")
+    assert count > 0 and len(stl) == 84 + 50 * count

@@ -133,20 +133,24 @@ void bind_io(py::module_& m) {
     m.def(
         "export_openscad",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance,
-           const py::object& module, const py::object& max_triangles, const py::object& progress) {
+           const py::object& module, const py::object& max_triangles, bool import_stl, const py::object& progress) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".scad")) throw Error("path", "an OpenSCAD file name must end in .scad");
             exporter::ExportOptions options;
             options.openscad.module_name = module_for(module, file);
+            options.import_stl = import_stl;
             export_shape(solid_or_mesh, file, tolerance, max_triangles, progress, options);
         },
         py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("module") = py::none(),
-        py::arg("max_triangles") = py::none(), py::arg("progress") = py::none(),
+        py::arg("max_triangles") = py::none(), py::arg("import_stl") = false, py::arg("progress") = py::none(),
         (std::string(
             "Write an OpenSCAD library file, `module NAME() { polyhedron(...); }` then `NAME();` (NAME: module, else\n"
             "the file's stem made an identifier), after the CGAL mesh checks. A Solid is tessellated at tolerance\n"
             "first and written with the fewest decimals that keep the written mesh within tolerance; the header\n"
-            "states the tolerance, the measured deviation, counts, bounding box and volumes.") +
+            "states the tolerance, the measured deviation, counts, bounding box and volumes.\n"
+            "import_stl=True: the mesh goes to a binary STL beside the file (same name, .stl; float32 coordinates,\n"
+            "checked as written) and the module is `import(\"NAME.stl\")`, which OpenSCAD loads several times\n"
+            "faster for large meshes.") +
          "\n\n" + progress_doc).c_str());
     m.def(
         "write_stl",

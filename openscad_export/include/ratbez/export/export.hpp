@@ -18,6 +18,9 @@ struct ExportOptions {
     OpenScadOptions openscad{};  // its header is filled in by the exporter
     MeshCheckOptions checks{};
     bool binary_stl = true;
+    // .scad only: the mesh goes to a binary STL beside it (the same name with .stl), which the module
+    // import()s: OpenSCAD loads a large mesh from binary STL several times faster than from polyhedron().
+    bool import_stl = false;
     std::string source = "a mesh";  // the .scad header's "source:" line ("spec vase.json", "Python")
     Progress progress;              // export_tessellation: called with the fraction done after each step
 };
@@ -29,13 +32,16 @@ void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions&
 struct WrittenMesh {
     Mesh mesh;                    // the coordinates as a reader of the file gets them
     double max_deviation = 0;     // max_deviation(solid, mesh) of that mesh
-    std::optional<int> decimals;  // coordinates rounded to this many decimals; unset: every double exact
+    std::optional<int> decimals;  // coordinates rounded to this many decimals; unset: every double exact,
+                                  // or float32 in a binary STL
 };
 
 // `mesh`, a tessellation of `solid` at `tolerance`, written to path. Text formats (.scad, .off, ASCII
 // .stl) get the fewest decimals that keep the mesh AS WRITTEN within tolerance (max_deviation) and
 // CGAL-clean; when no rounding passes, the exact doubles are written (the same checks must then pass,
-// or Error "mesh"). The .scad header also states the tolerance, that deviation and the exact volume.
+// or Error "mesh"). Binary STL (also under import_stl) holds float32 coordinates: the checks run on those,
+// and a mesh they move beyond the tolerance or break is refused (Error "mesh": write text, or a coarser
+// tolerance). The .scad header also states the tolerance, that deviation and the exact volume.
 WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tolerance, const std::string& path,
                                 const ExportOptions& options = {});
 

@@ -29,6 +29,12 @@ bool is_openscad_identifier(std::string_view name);
 std::string comment_text(std::string_view text);
 
 void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& options = {});
+// The library file for a mesh kept in an STL file beside it: `module NAME() { import("stl_file"); }` then
+// `NAME();` (OpenSCAD resolves the name against the folder of the .scad file, also through `use`, and
+// loads a large mesh from binary STL several times faster than from polyhedron() text).
+void write_openscad_import(const std::string& stl_file, std::ostream& out, const OpenScadOptions& options = {});
+// `mesh` as binary STL stores it: every coordinate rounded to float32 (what a reader of the file gets).
+Mesh float32_mesh(const Mesh& mesh);
 void write_stl_binary(const Mesh& mesh, std::ostream& out);
 void write_stl_ascii(const Mesh& mesh, std::ostream& out, const std::string& solid_name = "ratbez");
 void write_off(const Mesh& mesh, std::ostream& out);
