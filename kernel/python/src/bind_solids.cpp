@@ -119,6 +119,14 @@ NurbsCurve coedge_curve(const Coedge& coedge) {
     return coedge.reversed ? coedge.edge->curve.reversed() : coedge.edge->curve;
 }
 
+// A measurement of a solid (properties.hpp) from Python: the GIL released, Ctrl-C and `progress` polled.
+template <double (*Measure)(const Solid&, const Progress&)>
+double measured(const Solid& solid, const py::object& progress) {
+    const Progress poll = python_progress(progress);
+    py::gil_scoped_release release;
+    return Measure(solid, poll);
+}
+
 }  // namespace
 
 void bind_solids(py::module_& m) {
@@ -208,26 +216,12 @@ void bind_solids(py::module_& m) {
         .def_property_readonly(
             "exact_area", [](const Solid& s) { return s.construction().exact_area(); },
             "The closed-form surface area of a cylinder, cone, sphere or torus; None for other kinds.")
-        .def(
-            "volume",
-            [](const Solid& s, const py::object& progress) {
-                const Progress poll = python_progress(progress);
-                py::gil_scoped_release release;
-                return enclosed_volume(s, poll);
-            },
-            py::arg("progress") = py::none(),
-            (std::string("The enclosed volume (model units cubed), by adaptive cubature of the exact faces to about\n"
-                         "1e-14 relative (milliseconds for an ordinary solid).\n\n") + progress_doc).c_str())
-        .def(
-            "area",
-            [](const Solid& s, const py::object& progress) {
-                const Progress poll = python_progress(progress);
-                py::gil_scoped_release release;
-                return surface_area(s, poll);
-            },
-            py::arg("progress") = py::none(),
-            (std::string("The surface area (model units squared), by adaptive cubature of the exact faces to about\n"
-                         "1e-14 relative.\n\n") + progress_doc).c_str())
+        .def("volume", &measured<enclosed_volume>, py::arg("progress") = py::none(),
+             (std::string("The enclosed volume (model units cubed), by adaptive cubature of the exact faces to about\n"
+                          "1e-14 relative (milliseconds for an ordinary solid).\n\n") + progress_doc).c_str())
+        .def("area", &measured<surface_area>, py::arg("progress") = py::none(),
+             (std::string("The surface area (model units squared), by adaptive cubature of the exact faces to about\n"
+                          "1e-14 relative.\n\n") + progress_doc).c_str())
         .def("euler_characteristic", &Solid::euler_characteristic, "V - E + F of the B-rep (2 for a sphere-like shell).")
         .def(
             "bounding_box",
