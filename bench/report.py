@@ -12,7 +12,7 @@ import json
 import os
 import sys
 
-PROGRAMS = ("evaluation", "tessellation", "profile_check", "properties", "modelling", "export", "python")
+PROGRAMS = ("evaluation", "tessellation", "profile_check", "properties", "modelling", "export", "python", "native")
 
 
 def load(results, program):
@@ -192,9 +192,26 @@ def python_rows(table, rows):
                       f"{rate / cpp['points_per_second']:.2f} of C++ {si(cpp['points_per_second'])} pt/s")
 
 
+def native_rows(table, rows):
+    """Triangles against OpenSCAD's own sphere($fn) / rotate_extrude($fn) meshes at equal measured deviation
+    (bench/openscad_native.py; the "OCCT" column holds OpenSCAD's): ours must need fewer, both within the
+    tolerance."""
+    for name, b in rows.items():
+        parts = name.split("/")
+        if len(parts) != 3 or parts[2] != "ours" or f"native/{parts[1]}/openscad" not in rows:
+            continue
+        o = rows[f"native/{parts[1]}/openscad"]
+        ok = b["triangles"] < o["triangles"] and b["deviation"] <= b["tolerance"] and o["deviation"] <= o["tolerance"]
+        status = "PASS" if ok else "FAIL"
+        table.row(f"native/{parts[1]} triangles vs OpenSCAD $fn {o['fn']}", si(b["triangles"]), si(o["triangles"]),
+                  f"{b['triangles'] / o['triangles']:.2f}", "< 1", status, verdict=status)
+        table.row(f"native/{parts[1]} deviation/tol", f"{b['deviation'] / b['tolerance']:.3f}",
+                  f"{o['deviation'] / o['tolerance']:.3f}", "", "both <= 1", "")
+
+
 SECTIONS = (("evaluation", evaluation_rows), ("tessellation", tessellation_rows), ("profile_check", profile_rows),
             ("properties", properties_rows), ("modelling", modelling_rows), ("export", export_rows),
-            ("python", python_rows))
+            ("python", python_rows), ("native", native_rows))
 
 
 def main(results, cores):

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the project as scripts/setup.sh does (the normal Release build in build/ includes bench/),
 # runs the benchmark programs (evaluation, tessellation, the profile check, volume/area and lofts/sweeps
-# against OpenCASCADE in the same run, export alone, bulk evaluation through Python) and prints ONE table:
+# against OpenCASCADE in the same run, export alone, bulk evaluation through Python, triangles against
+# OpenSCAD's native $fn meshes) and prints ONE table:
 # every row with ours / OCCT ratios and the target it is held to.
 #
 # Times are CPU times of the (single-threaded) benchmark thread, the median of the repetitions: on a
@@ -41,6 +42,13 @@ if ls "$build"/kernel/python/ratbez*.so >/dev/null 2>&1; then
   echo "== python bulk evaluation" >&2
   BENCH_REPETITIONS="$repetitions" BENCH_MIN_TIME="$min_time" BENCH_FILTER="$filter" \
     /usr/bin/python3 bench/python_evaluation.py "$build" "$results/python.json"
+fi
+
+# Triangles against OpenSCAD's own sphere($fn) and rotate_extrude($fn) at equal measured deviation, with the
+# real openscad (bench/openscad_native.py).
+if ls "$build"/kernel/python/ratbez*.so >/dev/null 2>&1; then
+  echo "== native OpenSCAD meshes" >&2
+  /usr/bin/python3 bench/openscad_native.py "$build" "$results/native.json"
 fi
 
 /usr/bin/python3 bench/report.py "$results" "$(nproc)"

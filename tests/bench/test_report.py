@@ -32,11 +32,13 @@ def test_every_section_prints_its_rows_without_a_filter(capsys):
                    "sweep/torus vs MakePipeShell volume error", "sweep/helix_1e-4 vs MakePipeShell deviation",
                    "sweep/helix_1e-6 vs MakePipeShell valid (BRepCheck)", "export/scad", "export/stl_binary",
                    "python eval/sphere/D0 1000x1000 vs GeomAdaptor", "python eval/sphere/D1 1000x1000 vs GeomAdaptor",
-                   "python eval/sphere/D0 1000x1000 vs C++ grid"):
+                   "python eval/sphere/D0 1000x1000 vs C++ grid", "native/sphere_r10_tol0.01 triangles vs OpenSCAD",
+                   "native/torus_R10_r3_tol0.01 deviation/tol"):
         assert any(n.startswith(prefix) for n in names), prefix
     # The fixture's targets (evaluation >= 3x GeomAdaptor, tessellation, .scad export rate, each loft and
-    # sweep valid, the two helix sweeps within their tolerance, Python D0 and D1) all get a verdict.
-    assert len(table.verdicts) == 4 + 5 + 2 + 2 and set(table.verdicts) <= {"PASS", "FAIL"}
+    # sweep valid, the two helix sweeps within their tolerance, Python D0 and D1, fewer triangles than
+    # OpenSCAD's sphere and torus) all get a verdict.
+    assert len(table.verdicts) == 4 + 5 + 2 + 2 + 2 and set(table.verdicts) <= {"PASS", "FAIL"}
     out = capsys.readouterr().out
     assert "targets met" in out and "ratbez benchmarks: nproc = 2" in out
     assert all(len(row) == len(table.rows[0]) for row in table.rows)
@@ -57,7 +59,8 @@ def test_a_program_that_matched_no_filter_has_no_rows(tmp_path, missing):
     table = report.main(str(tmp_path), "2")
     assert len(table.rows) > 1
     first = {"evaluation": "eval/", "tessellation": "tess/", "profile_check": "profile/",
-             "properties": "volume/", "modelling": "loft/", "export": "export/", "python": "python "}[missing]
+             "properties": "volume/", "modelling": "loft/", "export": "export/", "python": "python ",
+             "native": "native/"}[missing]
     assert not any(n.startswith(first) for n in labels(table))
 
 
@@ -96,3 +99,17 @@ def test_python_rows_hold_d0_and_d1_to_their_targets(tmp_path):
     assert python_json(2e8, 2e7, 5e7) == ["PASS", "PASS"]
     assert python_json(9e7, 1e7, 5e7) == ["FAIL", "PASS"]   # under 100M points/s
     assert python_json(2e8, 6e7, 3e7) == ["FAIL", "FAIL"]   # under 4x GeomAdaptor; D1 under 40M
+
+
+def test_native_rows_want_fewer_triangles_within_the_tolerance(tmp_path):
+    def verdict(ours, theirs, our_deviation=0.009):
+        rows = [{"name": "native/s/ours", "tolerance": 0.01, "triangles": ours, "deviation": our_deviation},
+                {"name": "native/s/openscad", "tolerance": 0.01, "triangles": theirs, "deviation": 0.0099, "fn": 99}]
+        (tmp_path / "native.json").write_text(json.dumps({"context": {}, "benchmarks": rows}))
+        table = report.Table()
+        report.native_rows(table, report.load(str(tmp_path), "native")[1])
+        return table.verdicts
+
+    assert verdict(4000, 9896) == ["PASS"]
+    assert verdict(9896, 9896) == ["FAIL"]
+    assert verdict(4000, 9896, our_deviation=0.011) == ["FAIL"]

@@ -630,6 +630,16 @@ def loft(profiles: Sequence[Union[Curve, Sequence[Curve]]], degree: int = ..., r
 def loft_surface(curves: Union[Curve, Sequence[Curve]], degree: int = ...) -> NurbsSurface:
     """The skinned surface through >= 2 section curves (The NURBS Book 10.3), passing through every section exactly; degree across >= 1 (at most sections - 1 is used). u along the sections, v across, both [0, 1]."""
 
+def max_deviation(solid: Solid, mesh: Mesh, samples_per_edge: int = ..., progress: Optional[Callable[[float], object]] = ...) -> float:
+    """The largest distance from a point of `mesh` to the solid's exact boundary (model units): every
+    triangle sampled at (n+1)(n+2)/2 barycentric points (n = samples_per_edge, in [1, 1000]; its
+    vertices included), each projected onto the nearest face. Works for any mesh of the solid, ours or
+    another mesher's (an OpenSCAD sphere($fn), an STL read back).
+    
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
+
 def occt_check(solid: Solid, grid: int = ..., deviation_limit: float = ..., volume_limit: float = ..., bezier_faces: bool = ..., progress: Optional[Callable[[float], object]] = ...) -> dict:
     """Convert to an OpenCASCADE solid (bezier_faces: as brep_string) and compare: validity, evaluation
     deviation, volume and area; for a cylinder, cone, sphere, torus or revolution also the distance to

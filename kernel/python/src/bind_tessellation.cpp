@@ -1,5 +1,6 @@
 // Bindings of tessellation: Solid.tessellate (closed meshes), Face.tessellate and the surfaces'
-// tessellate (open meshes of one face), with max_triangles, a progress callback and Ctrl-C.
+// tessellate (open meshes of one face), with max_triangles, a progress callback and Ctrl-C; and
+// max_deviation, how far any mesh of a solid strays from it.
 
 #include <pybind11/stl.h>
 
@@ -11,6 +12,7 @@
 #include "python_progress.hpp"
 #include "ratbez/bezier_surface.hpp"
 #include "ratbez/brep.hpp"
+#include "ratbez/deviation.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/nurbs_surface.hpp"
 #include "ratbez/tessellate.hpp"
@@ -64,7 +66,23 @@ void def_tessellate(py::class_<T>& cls, ShapeOf shape_of, const std::string& wha
 
 }  // namespace
 
-void bind_tessellation(py::module_&) {
+void bind_tessellation(py::module_& m) {
+    m.def(
+        "max_deviation",
+        [](const Solid& solid, const Mesh& mesh, int samples_per_edge, const py::object& progress) {
+            DeviationOptions options;
+            options.samples_per_edge = samples_per_edge;
+            options.progress = python_progress(progress);
+            py::gil_scoped_release release;
+            return max_deviation(solid, mesh, options);
+        },
+        py::arg("solid"), py::arg("mesh"), py::arg("samples_per_edge") = 6, py::arg("progress") = py::none(),
+        (std::string("The largest distance from a point of `mesh` to the solid's exact boundary (model units): every\n"
+                     "triangle sampled at (n+1)(n+2)/2 barycentric points (n = samples_per_edge, in [1, 1000]; its\n"
+                     "vertices included), each projected onto the nearest face. Works for any mesh of the solid, ours or\n"
+                     "another mesher's (an OpenSCAD sphere($fn), an STL read back).\n\n") +
+         progress_doc)
+            .c_str());
     auto solid = reopen<Solid>();
     def_tessellate(solid, [](const Solid& s) -> const Solid& { return s; },
                    "A closed, outward, 2-manifold mesh within `tolerance` of the exact faces.");
