@@ -1,10 +1,13 @@
 // Adaptive watertight tessellation (tessellate.hpp), the pipeline:
 //  1. planning (tessellate_plan.hpp): every surface face gets a tensor grid of parameter lines, chosen
-//     from its curvature, then checked cell by cell on the real surface and refined where a cell fails
-//     (tessellate_cells.hpp);
+//     from its curvature, and offsets that move its vertices off the surface so that the mesh straddles
+//     it; then checked cell by cell on the real surface, with the vertices where the mesh will have them,
+//     and refined where a cell fails (tessellate_cells.hpp);
 //  2. edge sampling (here): edges are sampled once: an edge used by surface faces takes the union of
 //     their lines along it (tessellate_sides.hpp), an edge of planar faces only is sampled by its own
-//     chordal deviation;
+//     chordal deviation; a sample, and a B-rep vertex, moves as all the faces using it wish
+//     (tessellate_offsets.hpp), a function of its parameter alone, so that the checks of both faces and
+//     the mesh see the same point;
 //  3. assembly (here): the cells of each grid become triangles on the shared edge samples; cells along
 //     a boundary whose edge carries extra samples (from the neighbouring face) are closed with a zipper
 //     strip; degenerate sides collapse to their single vertex, so cells at a pole become fan triangles.
@@ -15,6 +18,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -28,6 +34,7 @@
 #include "ratbez/error.hpp"
 #include "ratbez/surface_grid.hpp"
 #include "tessellate_cells.hpp"
+#include "tessellate_offsets.hpp"
 #include "tessellate_plan.hpp"
 #include "tessellate_sides.hpp"
 
@@ -52,9 +59,10 @@ public:
         mesh_.vertices.push_back(p);
         return static_cast<Id>(mesh_.vertices.size() - 1);
     }
-    Id vertex_id(const VertexPtr& vertex) {
-        const auto [it, inserted] = vertex_ids_.try_emplace(vertex.get(), 0);
-        if (inserted) it->second = add_point(vertex->point);
+    template <class MakePoint>
+    Id vertex_id(const Vertex* vertex, MakePoint&& make_point) {
+        const auto [it, inserted] = vertex_ids_.try_emplace(vertex, 0);
+        if (inserted) it->second = add_point(make_point());
         return it->second;
     }
     void add_triangle(Id a, Id b, Id c) {
@@ -120,7 +128,8 @@ public:
     // Progress: planning reports up to kPlannedFraction, then each face meshed takes an equal share of
     // the rest (rows of a surface face poll in between).
     Mesh run() {
-        plans_ = detail::plan_surfaces(faces_, settings_);
+        detail::plan_surfaces(
+            faces_, settings_, [this](const SurfacePlan& p, std::vector<Vec3>& out) { grid_points(p, out); }, plans_);
         sample_edges();
         const double step = (1 - detail::kPlannedFraction) / static_cast<double>(faces_.size());
         double done = detail::kPlannedFraction;
@@ -140,34 +149,245 @@ public:
     }
 
 private:
+    // One use of an edge by a face: a side of a surface face (plan index) or a loop of a planar face.
+    struct EdgeUse {
+        const Face* face;
+        std::size_t plan = 0;  // surface faces
+        Side side = Side::v_min;
+    };
+    // Where a B-rep vertex sits on a surface face: a corner (u, v), or a whole collapsed side (a pole).
+    struct VertexUse {
+        const Face* face;
+        std::size_t plan = 0;
+        double u = 0, v = 0;
+        std::optional<Side> pole;  // the collapsed side, for a pole
+    };
+
+    // Who uses each edge and each vertex, from the plans (built once, the first time it is asked for).
+    void index_uses() {
+        if (!edge_uses_.empty()) return;
+        for (std::size_t k = 0; k < plans_.size(); ++k) {
+            const SurfacePlan& p = plans_[k];
+            const NurbsSurface& s = p.face->surface();
+            for (Side side : kSides) {
+                const SideMap& m = p.sides[side_slot(side)];
+                const Coedge& coedge = p.face->sides()[side_slot(side)];
+                edge_uses_[m.edge].push_back({p.face, k, side});
+                const double fixed = detail::side_parameter(s, side);
+                auto corner = [&](double q) { return runs_along_u(side) ? std::pair{q, fixed} : std::pair{fixed, q}; };
+                if (m.degenerate) {
+                    const auto [u, v] = corner(0.5 * (m.p0 + m.p1));
+                    vertex_uses_[coedge.edge->start.get()].push_back({p.face, k, u, v, side});
+                    continue;
+                }
+                const auto [u0, v0] = corner(m.p0);
+                const auto [u1, v1] = corner(m.p1);
+                vertex_uses_[(m.flipped ? coedge.edge->end : coedge.edge->start).get()].push_back({p.face, k, u0, v0, std::nullopt});
+                vertex_uses_[(m.flipped ? coedge.edge->start : coedge.edge->end).get()].push_back({p.face, k, u1, v1, std::nullopt});
+            }
+        }
+        for (const Face& face : faces_) {
+            if (face.kind() != Face::Kind::planar) continue;
+            for (const auto& loop : face.loops())
+                for (const Coedge& coedge : loop) {
+                    edge_uses_[coedge.edge.get()].push_back({&face, 0, Side::v_min});
+                    for (const Vertex* v : {coedge.edge->start.get(), coedge.edge->end.get()})
+                        vertex_uses_[v].push_back({&face, 0, 0, 0, std::nullopt});
+                }
+        }
+    }
+
+    // The face's unit normal at (u, v) (the surface's limit normal where its partials are parallel).
+    static Vec3 face_normal(const SurfacePlan& p, double u, double v) {
+        const detail::SurfaceFirstDerivatives d = p.evaluator->first_derivatives(u, v);
+        const Vec3 n = cross(d.su, d.sv);
+        const double length = norm(n);
+        return length > 1e-10 * (dot(d.su, d.su) + dot(d.sv, d.sv)) ? n / length : p.face->surface().normal(u, v);
+    }
+
+    static detail::OffsetWish planar_wish(const Face& face) { return {face.plane().normal, 0.0, 0.0, 0.0, true, false, 0.0}; }
+    static detail::OffsetWish surface_wish(const SurfacePlan& p, const Vec3& normal, double u, double v) {
+        return {normal, p.offsets.at(u, v), p.offsets.lowest_at(u, v), p.offsets.highest_at(u, v), false, !p.straddle,
+                p.grid.cells()};
+    }
+
+    // The move of the edge sample at parameter t, `gap` away from its nearest neighbour on the edge: what its
+    // faces wish (a planar face: to stay in its plane), at most the smallest max_offset of its surface faces,
+    // a quarter of the edge's radius of curvature there (longer moves towards the centre of curvature would
+    // fold the edge's polygon, and a cap with it) and the offset_room its neighbours leave (the face's own
+    // lines: see sample_edges).
+    Vec3 edge_offset(const Edge* edge, double t, double gap) {
+        wishes_.clear();
+        double cap = std::numeric_limits<double>::infinity();
+        for (const EdgeUse& use : edge_uses_[edge]) {
+            if (use.face->kind() == Face::Kind::planar) {
+                wishes_.push_back(planar_wish(*use.face));
+                continue;
+            }
+            const SurfacePlan& p = plans_[use.plan];
+            cap = std::min(cap, p.max_offset());
+            const SideMap& m = p.sides[side_slot(use.side)];
+            const double q = m.to_face(t), fixed = detail::side_parameter(p.face->surface(), use.side);
+            const double u = runs_along_u(use.side) ? q : fixed, v = runs_along_u(use.side) ? fixed : q;
+            wishes_.push_back(surface_wish(p, face_normal(p, u, v), u, v));
+        }
+        if (!std::isfinite(cap)) return {};  // planar faces only: the edge stays put
+        const Vec3 d1 = edge->curve.derivative(t, 1), d2 = edge->curve.derivative(t, 2);
+        const double speed = norm(d1);
+        const double curvature = speed > 0 ? norm(cross(d1, d2)) / (speed * speed * speed) : 0.0;
+        if (curvature > 0) cap = std::min(cap, 0.25 / curvature);
+        cap = detail::offset_room(gap, cap);
+        if (std::getenv("RATBEZ_DEBUG_WISH")) {
+            const Vec3 o = detail::shared_offset(wishes_, cap);
+            std::fprintf(stderr, "edge %p t %.4f cap %.4g ->(%.4g %.4g %.4g):", (const void*)edge, t, cap, o.x, o.y, o.z);
+            for (const auto& w : wishes_) std::fprintf(stderr, " [n %.3f %.3f %.3f c %.4g lo %.4g hi %.4g i%d]", w.normal.x, w.normal.y, w.normal.z, w.offset, w.lowest, w.highest, (int)w.inscribed);
+            std::fprintf(stderr, "\n");
+        }
+        return detail::shared_offset(wishes_, cap);
+    }
+
+    // The move of a B-rep vertex: none at a sharp point (an apex, whose limit normals differ around it). Its
+    // neighbours on the edges through it come from several faces, which no single face's check sees: it
+    // keeps to max_offset and its faces' fields (which the curvature bounds).
+    Vec3 vertex_offset(const Vertex* vertex) {
+        wishes_.clear();
+        double cap = std::numeric_limits<double>::infinity();
+        for (const VertexUse& use : vertex_uses_[vertex]) {
+            if (use.face->kind() == Face::Kind::planar) {
+                wishes_.push_back(planar_wish(*use.face));
+                continue;
+            }
+            const SurfacePlan& p = plans_[use.plan];
+            cap = std::min(cap, p.max_offset());
+            if (use.pole) {
+                const SideMap& m = p.sides[side_slot(*use.pole)];
+                const double fixed = detail::side_parameter(p.face->surface(), *use.pole);
+                auto normal_at = [&](double q) {
+                    return runs_along_u(*use.pole) ? p.face->surface().normal(q, fixed) : p.face->surface().normal(fixed, q);
+                };
+                const Vec3 n = normal_at(0.5 * (m.p0 + m.p1));
+                for (double f : {0.0, 0.25, 0.75, 1.0})
+                    if (distance(normal_at(m.p0 + f * (m.p1 - m.p0)), n) > 1e-6) return {};
+                wishes_.push_back(surface_wish(p, n, use.u, use.v));
+                continue;
+            }
+            wishes_.push_back(surface_wish(p, face_normal(p, use.u, use.v), use.u, use.v));
+        }
+        if (!std::isfinite(cap)) return {};
+        return detail::shared_offset(wishes_, cap);
+    }
+
+    Id vertex_id(const VertexPtr& vertex) {
+        return assembler_.vertex_id(vertex.get(), [&] { return vertex->point + vertex_offset(vertex.get()); });
+    }
+
+    // Where the mesh puts the vertices of plan p's grid (detail::GridPoints): inside, the plan's own offsets;
+    // on its sides what the shared edge samples, poles and corners get.
+    void grid_points(const SurfacePlan& p, std::vector<Vec3>& out) {
+        index_uses();
+        detail::interior_grid_points(p, p.grid, out);
+        if (std::getenv("RATBEZ_DEBUG_INTERIOR")) return;
+        const std::size_t nu = p.grid.u.size(), nv = p.grid.v.size();
+        for (Side side : kSides) {
+            const SideMap& m = p.sides[side_slot(side)];
+            const Coedge& coedge = p.face->sides()[side_slot(side)];
+            const bool along_u = runs_along_u(side);
+            const std::vector<double>& lines = along_u ? p.grid.u : p.grid.v;
+            const std::size_t fixed = side == Side::v_min || side == Side::u_min ? 0 : (along_u ? nv : nu) - 1;
+            auto at = [&](std::size_t k) -> Vec3& { return along_u ? out[k * nv + fixed] : out[fixed * nv + k]; };
+            if (m.degenerate) {
+                const Vec3 pole = coedge.edge->start->point + vertex_offset(coedge.edge->start.get());
+                for (std::size_t k = 0; k < lines.size(); ++k) at(k) = pole;
+                continue;
+            }
+            side_points_.resize(lines.size());
+            for (std::size_t k = 0; k < lines.size(); ++k) side_points_[k] = coedge.edge->curve.point(m.to_edge(lines[k]));
+            for (std::size_t k = 0; k < lines.size(); ++k) {
+                if (k == 0 || k + 1 == lines.size()) {
+                    const Vertex* v = (k == 0) != m.flipped ? coedge.edge->start.get() : coedge.edge->end.get();
+                    at(k) = v->point + vertex_offset(v);
+                } else {
+                    at(k) = side_points_[k] + edge_offset(m.edge, m.to_edge(lines[k]), neighbour_gap(side_points_, k));
+                }
+            }
+        }
+        // A corner between a degenerate side and another: the pole wins (it is the same vertex).
+        for (Side side : kSides) {
+            const SideMap& m = p.sides[side_slot(side)];
+            if (!m.degenerate) continue;
+            const Vec3 pole = p.face->sides()[side_slot(side)].edge->start->point +
+                              vertex_offset(p.face->sides()[side_slot(side)].edge->start.get());
+            const bool along_u = runs_along_u(side);
+            const std::size_t fixed = side == Side::v_min || side == Side::u_min ? 0 : (along_u ? nv : nu) - 1;
+            for (std::size_t k = 0; k < (along_u ? nu : nv); ++k) (along_u ? out[k * nv + fixed] : out[fixed * nv + k]) = pole;
+        }
+    }
+
+    // Every edge's samples: the union of the lines of the surface faces along it (or its own chordal
+    // sampling for an edge of planar faces only), each moved by edge_offset with the gap its proposing face
+    // saw between its own lines (the smallest, when both faces propose it): the very point that face's
+    // check saw. The other face sees it as an extra sample of a boundary cell, as before the offsets.
     void sample_edges() {
-        std::map<const Edge*, std::vector<double>> from_surfaces;
+        struct Proposal {
+            double t, gap;
+        };
+        std::map<const Edge*, std::vector<Proposal>> from_surfaces;
         for (const SurfacePlan& plan : plans_)
             for (Side side : kSides) {
                 const SideMap& m = plan.sides[side_slot(side)];
                 if (m.degenerate) continue;
-                auto& params = from_surfaces[m.edge];
-                for (double p : runs_along_u(side) ? plan.grid.u : plan.grid.v) params.push_back(m.to_edge(p));
+                const std::vector<double>& lines = runs_along_u(side) ? plan.grid.u : plan.grid.v;
+                side_points_.resize(lines.size());
+                for (std::size_t k = 0; k < lines.size(); ++k) side_points_[k] = m.edge->curve.point(m.to_edge(lines[k]));
+                auto& proposals = from_surfaces[m.edge];
+                for (std::size_t k = 0; k < lines.size(); ++k)
+                    proposals.push_back({m.to_edge(lines[k]), neighbour_gap(side_points_, k)});
             }
         for (const EdgePtr& edge : distinct_edges(faces_)) {
             EdgeSamples samples;
             if (edge->degenerate) {
-                samples.ids = {assembler_.vertex_id(edge->start)};
+                samples.ids = {vertex_id(edge->start)};
                 samples.params = {edge->curve.domain().min};
+                edge_samples_.emplace(edge.get(), std::move(samples));
+                continue;
+            }
+            const Interval d = edge->curve.domain();
+            auto it = from_surfaces.find(edge.get());
+            std::vector<Proposal> proposals;
+            if (it != from_surfaces.end()) {
+                proposals = std::move(it->second);
+                std::sort(proposals.begin(), proposals.end(), [](const Proposal& a, const Proposal& b) { return a.t < b.t; });
+                std::vector<double> ts;
+                for (const Proposal& q : proposals) ts.push_back(q.t);
+                samples.params = detail::merge_params(std::move(ts), d.min, d.max);
             } else {
-                const Interval d = edge->curve.domain();
-                const auto it = from_surfaces.find(edge.get());
-                samples.params = detail::merge_params(it != from_surfaces.end() ? it->second : sample_curve(edge->curve, settings_.tolerance),
-                                              d.min, d.max);
-                samples.ids.reserve(samples.params.size());
-                for (std::size_t k = 0; k < samples.params.size(); ++k) {
-                    if (k == 0) samples.ids.push_back(assembler_.vertex_id(edge->start));
-                    else if (k + 1 == samples.params.size()) samples.ids.push_back(assembler_.vertex_id(edge->end));
-                    else samples.ids.push_back(assembler_.add_point(edge->curve.point(samples.params[k])));
+                samples.params = detail::merge_params(sample_curve(edge->curve, settings_.check_tolerance()), d.min, d.max);
+            }
+            const std::size_t n = samples.params.size();
+            samples.ids.reserve(n);
+            const double eps = 1e-12 * (d.max - d.min);  // merge_params' rounding
+            std::size_t first = 0;
+            for (std::size_t k = 0; k < n; ++k) {
+                const double t = samples.params[k];
+                if (k == 0) samples.ids.push_back(vertex_id(edge->start));
+                else if (k + 1 == n) samples.ids.push_back(vertex_id(edge->end));
+                else {
+                    double gap = std::numeric_limits<double>::infinity();
+                    while (first < proposals.size() && proposals[first].t < t - eps) ++first;
+                    for (std::size_t q = first; q < proposals.size() && proposals[q].t <= t + eps; ++q) gap = std::min(gap, proposals[q].gap);
+                    samples.ids.push_back(assembler_.add_point(edge->curve.point(t) + edge_offset(edge.get(), t, gap)));
                 }
             }
             edge_samples_.emplace(edge.get(), std::move(samples));
         }
+    }
+
+    // The distance from points[k] to the nearer of its neighbours in the list.
+    static double neighbour_gap(const std::vector<Vec3>& points, std::size_t k) {
+        double gap = std::numeric_limits<double>::infinity();
+        if (k > 0) gap = std::min(gap, distance(points[k], points[k - 1]));
+        if (k + 1 < points.size()) gap = std::min(gap, distance(points[k], points[k + 1]));
+        return gap;
     }
 
     const EdgeSamples& samples_of(const Edge* edge) const {
@@ -209,8 +429,9 @@ private:
             return {false, side_samples[side_slot(side)][side_index(side, p)].second};
         };
 
-        // The interior grid points in one batch (surface_grid.hpp); boundary points are edge samples.
-        evaluate_grid(plan.face->surface(), g.u, g.v, GridOutput::points, grid_points_);
+        // The interior grid points in one batch (surface_grid.hpp), moved by the plan's offsets; boundary
+        // points are edge samples.
+        detail::interior_grid_points(plan, g, grid_points_);
         std::vector<Id> ids(nu * nv);
         for (std::size_t i = 0; i < nu; ++i)
             for (std::size_t j = 0; j < nv; ++j) {
@@ -223,7 +444,7 @@ private:
                 if (i == nu - 1) consider(side_id(Side::u_max, g.v[j]));
                 if (j == nv - 1) consider(side_id(Side::v_max, g.u[i]));
                 if (i == 0) consider(side_id(Side::u_min, g.v[j]));
-                ids[i * nv + j] = chosen ? chosen->second : assembler_.add_point(grid_points_.point(i, j));
+                ids[i * nv + j] = chosen ? chosen->second : assembler_.add_point(grid_points_[i * nv + j]);
             }
 
         auto vertex = [&](std::size_t i, std::size_t j) {
@@ -264,7 +485,7 @@ private:
                 triangles.clear();
                 if (detail::triangulate_cell(s, bottom, right, top, left, lower, upper, center, triangles)) {
                     const double u = 0.5 * (g.u[i] + g.u[i + 1]), v = 0.5 * (g.v[j] + g.v[j + 1]);
-                    const Vec3 p = s.point(u, v);
+                    const Vec3 p = s.point(u, v) + face_normal(plan, u, v) * plan.offsets.at(u, v);
                     center = CellVertex{u, v, p, assembler_.add_point(p)};
                 }
                 for (const auto& t : triangles) assembler_.add_triangle(t[0]->id, t[1]->id, t[2]->id);
@@ -310,7 +531,11 @@ private:
     std::vector<SurfacePlan> plans_;
     std::map<const Edge*, EdgeSamples> edge_samples_;
     MeshAssembler assembler_;
-    SurfaceGrid grid_points_;  // mesh_surface's batch, kept to reuse its storage from face to face
+    std::vector<Vec3> grid_points_;  // mesh_surface's batch, kept to reuse its storage from face to face
+    std::map<const Edge*, std::vector<EdgeUse>> edge_uses_;
+    std::map<const Vertex*, std::vector<VertexUse>> vertex_uses_;
+    std::vector<detail::OffsetWish> wishes_;
+    std::vector<Vec3> side_points_;
 };
 
 }  // namespace

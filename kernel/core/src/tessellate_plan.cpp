@@ -3,6 +3,8 @@
 #include "tessellate_plan.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -193,6 +195,8 @@ CurvatureSamples sample_curvature(const NurbsSurface& s, std::size_t per_span) {
     c.vs = sample_params(breakpoints(s.degree_v(), s.knots_v()), per_span);
     c.L.resize(c.us.size() * c.vs.size());
     c.N.resize(c.L.size());
+    c.M.resize(c.L.size());
+    c.k_max.assign(c.L.size(), 0.0);
     c.normals.resize(c.L.size());
     // One batched evaluation of every partial up to order two (surface_grid.hpp), not a jet per sample.
     const SurfaceGrid g = evaluate_grid(s, c.us, c.vs, GridOutput::second_partials);
@@ -214,7 +218,17 @@ CurvatureSamples sample_curvature(const NurbsSurface& s, std::size_t per_span) {
             }
             c.L[k] = dot(g.duu[k], n);
             c.N[k] = dot(g.dvv[k], n);
+            c.M[k] = dot(g.duv[k], n);
             c.normals[k] = n;
+            // The principal curvatures from the fundamental forms: kappa = H +- sqrt(H^2 - K), with
+            // K = (LN - M^2) / (EG - F^2) and H = (EN - 2FM + GL) / (2 (EG - F^2)).
+            const double E = dot(su, su), F = dot(su, sv), G = dot(sv, sv), M = c.M[k];
+            const double area2 = E * G - F * F;
+            if (area2 > 1e-20 * (E * G + 1e-300)) {
+                const double K = (c.L[k] * c.N[k] - M * M) / area2;
+                const double H = (E * c.N[k] - 2 * F * M + G * c.L[k]) / (2 * area2);
+                c.k_max[k] = std::abs(H) + std::sqrt(std::max(H * H - K, 0.0));
+            }
         }
     return c;
 }
@@ -225,7 +239,7 @@ CurvatureSamples sample_curvature(const NurbsSurface& s, std::size_t per_span) {
 // direction's budget (which depends on the first direction's actual spacing), comparing |k| / budget
 // and taking one square root per sample interval.
 ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle_rad, std::array<int, 2> min_segments,
-                          const std::array<std::vector<double>, 2>& creases, double max_cells) {
+                          const std::array<std::vector<double>, 2>& creases, double max_cells, bool straddle) {
     const std::size_t nu = c.us.size(), nv = c.vs.size();
     std::vector<double> max_L(nu, 0.0), max_N(nv, 0.0), turn_u(nu - 1, 0.0), turn_v(nv - 1, 0.0);
     for (std::size_t i = 0; i < nu; ++i)
@@ -255,8 +269,11 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
         const auto& creases_second = creases[u_first ? 1 : 0];
         const double floor_first = min_first / (first_samples.back() - first_samples.front());
         const double floor_second = min_second / (second_samples.back() - second_samples.front());
-        for (double share : {0.3, 0.4, 0.5, 0.6, 0.7, 0.8}) {
-            const double budget8 = 8 * share * target;
+        for (double share : {0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8}) {
+            // |k| h^2 is 8 times a direction's part of the span, which may be twice the target in all for a
+            // straddling mesh, the target for an inscribed one.
+            const double span = straddle ? 2 * target : target;
+            const double budget8 = 8 * share * span;
             const auto first = lines_from_density(
                 first_samples,
                 [&](std::size_t a) {
@@ -265,17 +282,28 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
                 },
                 creases_first, max_cells, rho);
             if (first.empty()) continue;
-            // What the first direction's actual chords leave of the budget where the curvatures add up.
+            // What the first direction's actual chords leave of the span at each place (whatever the signs:
+            // the mesh straddles the surface, see tessellate_plan.hpp), for the second direction's chords and
+            // the twist: 8 x span = |k1| h1^2 + |k2| h2^2 + 2 |M| h1 h2 <= 16 target, solved for 1 / h2^2.
             h_first.resize(first_samples.size());
             for (std::size_t a = 0; a < h_first.size(); ++a) h_first[a] = spacing_at(first, first_samples[a]);
-            const double full = 8 * target, least = 0.05 * 8 * target;
+            // An inscribed mesh: the larger of the two directions' errors where the curvatures differ in sign
+            // (they take both signs already), their sum where they agree; the twist is left to the check.
+            const double full = 8 * span, least = 0.05 * 8 * span;
             ratio.assign(second_samples.size(), 0.0);
             for (std::size_t i = 0; i < nu; ++i)
                 for (std::size_t j = 0; j < nv; ++j) {
                     const std::size_t k = c.at(i, j), a = u_first ? i : j, b = u_first ? j : i;
-                    const double k1 = k_first[k], k2 = k_second[k];
-                    const double used = k1 * k2 > 0 ? std::abs(k1) * h_first[a] * h_first[a] : 0.0;
-                    ratio[b] = std::max(ratio[b], std::abs(k2) / std::max(full - used, least));
+                    if (!straddle) {
+                        const double k1 = k_first[k], k2 = k_second[k];
+                        const double used = k1 * k2 > 0 ? std::abs(k1) * h_first[a] * h_first[a] : 0.0;
+                        ratio[b] = std::max(ratio[b], std::abs(k2) / std::max(full - used, least));
+                        continue;
+                    }
+                    const double used = std::abs(k_first[k]) * h_first[a] * h_first[a];
+                    const double rest = std::max(full - used, least), twist = std::abs(c.M[k]) * h_first[a];
+                    const double inverse_h2 = (twist + std::sqrt(twist * twist + std::abs(k_second[k]) * rest)) / rest;
+                    ratio[b] = std::max(ratio[b], inverse_h2 * inverse_h2);
                 }
             const auto second = lines_from_density(
                 second_samples,
@@ -294,6 +322,95 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
         }
     }
     return best;
+}
+
+double OffsetField::interpolate(const std::vector<double>& field, double u, double v) const {
+    if (field.empty()) return 0;
+    auto locate = [](const std::vector<double>& t, double x, std::size_t& k, double& f) {
+        const auto it = std::upper_bound(t.begin() + 1, t.end() - 1, x);
+        k = static_cast<std::size_t>(it - t.begin()) - 1;
+        const double h = t[k + 1] - t[k];
+        f = h > 0 ? std::clamp((x - t[k]) / h, 0.0, 1.0) : 0.0;
+    };
+    std::size_t i = 0, j = 0;
+    double fu = 0, fv = 0;
+    locate(us, u, i, fu);
+    locate(vs, v, j, fv);
+    const std::size_t n = vs.size();
+    return (1 - fu) * ((1 - fv) * field[i * n + j] + fv * field[i * n + j + 1]) +
+           fu * ((1 - fv) * field[(i + 1) * n + j] + fv * field[(i + 1) * n + j + 1]);
+}
+
+OffsetField offset_field(const CurvatureSamples& c, const ParameterGrid& g, const std::array<bool, 4>& collapsed_sides,
+                         double max_offset, double target, bool straddle) {
+    OffsetField field;
+    field.us = c.us;
+    field.vs = c.vs;
+    const std::size_t nu = c.us.size(), nv = c.vs.size();
+    field.values.assign(nu * nv, 0.0);
+    field.lowest.assign(nu * nv, 0.0);
+    field.highest.assign(nu * nv, 0.0);
+    for (std::size_t i = 0; i < nu; ++i) {
+        const double hu = spacing_at(g.u, c.us[i]);
+        for (std::size_t j = 0; j < nv; ++j) {
+            const std::size_t k = c.at(i, j);
+            const double hv = spacing_at(g.v, c.vs[j]);
+            const double reach = c.k_max[k] > 0 ? std::min(max_offset, 0.25 / c.k_max[k]) : max_offset;
+            // The errors of the mesh minus the surface with the vertices on it: each chord term on the
+            // side its curvature puts it, the twist's on the other (see tessellate_plan.hpp).
+            double below = 0, above = 0;
+            for (double term : {c.L[k] * hu * hu / 8, c.N[k] * hv * hv / 8, -c.M[k] * hu * hv / 4})
+                (term < 0 ? below : above) += term;
+            const double centre = std::clamp(-(below + above) / 2, -reach, reach);
+            field.values[k] = straddle ? centre : 0.0;
+            field.lowest[k] = std::max(-target - below, -reach);
+            field.highest[k] = std::min(target - above, reach);
+            if (field.lowest[k] > field.highest[k]) field.lowest[k] = field.highest[k] = field.values[k];
+        }
+    }
+    // A collapsed side's row takes the next row's values.
+    for (std::vector<double>* values : {&field.values, &field.lowest, &field.highest}) {
+        std::vector<double>& f = *values;
+        for (std::size_t i = 0; i < nu && nv > 1; ++i) {
+            if (collapsed_sides[side_slot(Side::v_min)]) f[c.at(i, 0)] = f[c.at(i, 1)];
+            if (collapsed_sides[side_slot(Side::v_max)]) f[c.at(i, nv - 1)] = f[c.at(i, nv - 2)];
+        }
+        for (std::size_t j = 0; j < nv && nu > 1; ++j) {
+            if (collapsed_sides[side_slot(Side::u_min)]) f[c.at(0, j)] = f[c.at(1, j)];
+            if (collapsed_sides[side_slot(Side::u_max)]) f[c.at(nu - 1, j)] = f[c.at(nu - 2, j)];
+        }
+    }
+    return field;
+}
+
+void interior_grid_points(const SurfacePlan& plan, const ParameterGrid& grid, std::vector<Vec3>& out) {
+    thread_local SurfaceGrid batch;
+    evaluate_grid(plan.face->surface(), grid.u, grid.v, GridOutput::normals, batch);
+    const std::size_t nu = grid.u.size(), nv = grid.v.size();
+    out.resize(nu * nv);
+    for (std::size_t i = 0; i < nu; ++i)
+        for (std::size_t j = 0; j < nv; ++j) {
+            const std::size_t k = i * nv + j;
+            const Vec3 p = batch.points[k];
+            // The room the grid's neighbours leave (offset_room); a collapsed neighbour (a pole row) counts
+            // as far as any.
+            double gap = std::numeric_limits<double>::infinity();
+            auto near = [&](std::size_t a, std::size_t b) {
+                const double d = distance(p, batch.points[a * nv + b]);
+                if (d > 0) gap = std::min(gap, d);
+            };
+            if (i > 0) near(i - 1, j);
+            if (i + 1 < nu) near(i + 1, j);
+            if (j > 0) near(i, j - 1);
+            if (j + 1 < nv) near(i, j + 1);
+            const double reach = offset_room(gap, plan.max_offset());
+            out[k] = p + batch.normals[k] * std::clamp(plan.offsets.at(grid.u[i], grid.v[j]), -reach, reach);
+        }
+}
+
+double offset_room(double gap, double max_offset) {
+    if (!std::isfinite(gap)) return max_offset;
+    return std::min(max_offset, 0.25 * gap * std::min(1.0, gap / (4 * max_offset)));
 }
 
 // Detected by normals just either side of the knot, from the evaluator's partials (NurbsSurface::normal,
@@ -383,54 +500,109 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
     // largest over a longer sample interval): that costs a few cells on a small grid, while the fine
     // sampling would cost more than checking the whole grid. Resampled finely once the grid has
     // more than a quarter as many cells as the fine samples (or the coarse estimate is over budget).
+    // Straddling the surface or inscribed in it, whichever the model finds cheaper: a twisted or saddle
+    // shaped face errs both ways already when inscribed (see tessellate_plan.hpp), and gains little or
+    // nothing from offsets. The inscribed grid is checked against the tolerance itself, as before there
+    // were offsets; the straddling one a little below it (check_tolerance).
+    auto choose = [&] {
+        const ParameterGrid straddling = choose_grid(curvature, settings.check_tolerance(), settings.angle_rad,
+                                                     plan.min_segments, plan.creases, max_cells(settings), true);
+        ParameterGrid inscribed = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments,
+                                              plan.creases, max_cells(settings), false);
+        plan.straddle = !straddling.u.empty() && (inscribed.u.empty() || straddling.cells() < inscribed.cells());
+        plan.target = plan.straddle ? settings.check_tolerance() : settings.tolerance;
+        plan.grid = plan.straddle ? straddling : std::move(inscribed);
+    };
     curvature = sample_curvature(face.surface(), kCoarseSamplesPerSpan);
-    plan.grid = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments, plan.creases,
-                            max_cells(settings));
+    choose();
     if (plan.grid.u.empty() || 4 * plan.grid.cells() > curvature_sample_count(face.surface(), kFineSamplesPerSpan)) {
         curvature = sample_curvature(face.surface(), kFineSamplesPerSpan);
-        plan.grid = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments, plan.creases,
-                                max_cells(settings));
+        choose();
     }
     if (plan.grid.u.empty()) throw_over_budget(over_budget_triangles(plan, curvature, settings), settings.max_triangles);
+    set_offsets(plan, curvature);
     return plan;
 }
 
-void refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const TessellationSettings& settings) {
-    double target = settings.tolerance;
+namespace {
+
+std::array<bool, 4> collapsed_sides(const SurfacePlan& plan) {
     std::array<bool, 4> collapsed{};
     for (Side side : kSides) collapsed[side_slot(side)] = plan.sides[side_slot(side)].degenerate;
-    // The intervals whose cells are new since the last check (all of them for a fresh grid).
-    std::vector<char> new_u(plan.grid.u.size() - 1, 1), new_v(plan.grid.v.size() - 1, 1);
-    auto bisect = [](std::vector<double>& lines, const std::vector<char>& marked, std::vector<char>& fresh) {
-        fresh.clear();
-        for (char m : marked) fresh.insert(fresh.end(), m ? 2 : 1, m);
-        lines = bisect_marked(lines, marked);
-    };
+    return collapsed;
+}
+
+// The worst check of a fresh straddling grid beyond which the face is meshed inscribed instead.
+constexpr double kStraddleGiveUp = 1.5;
+
+}  // namespace
+
+void set_offsets(SurfacePlan& plan, const CurvatureSamples& curvature) {
+    plan.offsets = offset_field(curvature, plan.grid, collapsed_sides(plan), plan.max_offset(), plan.target, plan.straddle);
+}
+
+bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const TessellationSettings& settings,
+                 const GridPoints& points, const RefineStart& start) {
+    double target = plan.target;
+    std::vector<Vec3> corners;
+    const std::array<bool, 4> collapsed = collapsed_sides(plan);
+    // The intervals whose cells are to be checked: all of them for a fresh grid, and after every change of
+    // the grid, whose offsets follow its spacing.
+    std::vector<char> new_u = start.check_u, new_v = start.check_v;
+    if (new_u.empty()) new_u.assign(plan.grid.u.size() - 1, 1);
+    if (new_v.empty()) new_v.assign(plan.grid.v.size() - 1, 1);
+    bool changed = false, bisected = false;
     for (int iteration = 0; iteration < 40; ++iteration) {
         settings.poll();
         if (plan.grid.cells() * 2 > static_cast<double>(settings.max_triangles))
             throw_over_budget(plan.grid.cells() * 2, settings.max_triangles);
-        const GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed,
-                                           settings.tolerance, settings.angle_rad, new_u, new_v,
-                                           [&] { settings.poll(); });
-        if (check.worst_ratio <= 1) return;
-        const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
-                                     std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;
-        if (iteration < 3 && check.worst_ratio < 1.5) {
-            target *= 0.99 / check.worst_ratio;
+        points(plan, corners);
+        const GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed, plan.target,
+                                           settings.angle_rad, new_u, new_v, corners, [&] { settings.poll(); });
+        if (std::getenv("RATBEZ_DEBUG_PLAN"))
+            std::fprintf(stderr, "refine it %d cells %zux%zu worst %.4f target %.4g rescale %d straddle %d\n", iteration, plan.grid.u.size() - 1,
+                         plan.grid.v.size() - 1, check.worst_ratio, target, (int)start.rescale, (int)plan.straddle);
+        if (std::getenv("RATBEZ_DEBUG_PLAN")) {
+            std::fprintf(stderr, "  u marks:");
+            for (char m : check.refine_u) std::fprintf(stderr, "%d", m);
+            std::fprintf(stderr, "\n  v marks:");
+            for (char m : check.refine_v) std::fprintf(stderr, "%d", m);
+            std::fprintf(stderr, "\n");
+        }
+        if (check.worst_ratio <= 1) return changed;
+        if (start.rescale && iteration == 0 && plan.straddle && check.worst_ratio > kStraddleGiveUp) {
+            // The model is far off on this face (curvature that jumps between its samples, a strong twist):
+            // the offsets it centres the errors with are no better, and the grid inscribed in the surface is
+            // planned and refined as it was before there were offsets.
+            plan.straddle = false;
+            plan.target = target = settings.tolerance;
             ParameterGrid g = choose_grid(curvature, target, settings.angle_rad, plan.min_segments, plan.creases,
-                                          max_cells(settings));
+                                          max_cells(settings), false);
             if (g.u.empty()) throw_over_budget(max_cells(settings) * 2, settings.max_triangles);
             plan.grid = std::move(g);
-            new_u.assign(plan.grid.u.size() - 1, 1);
-            new_v.assign(plan.grid.v.size() - 1, 1);
-        } else if (some_marked) {
-            bisect(plan.grid.u, check.refine_u, new_u);
-            bisect(plan.grid.v, check.refine_v, new_v);
         } else {
-            return;
+        const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
+                                     std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;
+        if (start.rescale && !bisected && iteration < 3 && check.worst_ratio < 1.5) {
+            target *= 0.99 / check.worst_ratio;
+            ParameterGrid g = choose_grid(curvature, target, settings.angle_rad, plan.min_segments, plan.creases,
+                                          max_cells(settings), plan.straddle);
+            if (g.u.empty()) throw_over_budget(max_cells(settings) * 2, settings.max_triangles);
+            plan.grid = std::move(g);
+        } else if (some_marked) {
+            plan.grid.u = bisect_marked(plan.grid.u, check.refine_u);
+            plan.grid.v = bisect_marked(plan.grid.v, check.refine_v);
+            bisected = true;
+        } else {
+            return changed;
         }
+        }
+        changed = true;
+        set_offsets(plan, curvature);
+        new_u.assign(plan.grid.u.size() - 1, 1);
+        new_v.assign(plan.grid.v.size() - 1, 1);
     }
+    return changed;
 }
 
 // Where a face's row along a crease (a profile corner) is thin, it takes the other face's lines
@@ -496,8 +668,9 @@ void match_lines_at_creases(std::vector<SurfacePlan>& plans, const TessellationS
     }
 }
 
-std::vector<SurfacePlan> plan_surfaces(std::span<const Face> faces, const TessellationSettings& settings) {
-    std::vector<SurfacePlan> plans;
+void plan_surfaces(std::span<const Face> faces, const TessellationSettings& settings, const GridPoints& points,
+                   std::vector<SurfacePlan>& plans) {
+    plans.clear();
     std::vector<CurvatureSamples> curvatures;
     for (const Face& face : faces) {
         if (face.kind() != Face::Kind::surface) continue;
@@ -512,10 +685,40 @@ std::vector<SurfacePlan> plan_surfaces(std::span<const Face> faces, const Tessel
     if (estimate > static_cast<double>(settings.max_triangles)) throw_over_budget(estimate, settings.max_triangles);
     for (std::size_t k = 0; k < plans.size(); ++k) {
         settings.report(kPlannedFraction * static_cast<double>(k) / static_cast<double>(plans.size()));
-        refine_grid(plans[k], curvatures[k], settings);
+        refine_grid(plans[k], curvatures[k], settings, points);
     }
+    std::vector<std::size_t> cells_before;
+    for (const SurfacePlan& plan : plans) cells_before.push_back(static_cast<std::size_t>(plan.grid.cells()));
     match_lines_at_creases(plans, settings);
-    return plans;
+    // The points along a face's sides move as the faces on both sides wish (and a face that took lines
+    // across a crease has new offsets): the faces refined before a neighbour were checked with points that
+    // have moved since. Checked again with the final points, all cells of a face whose grid changed, the
+    // cells along the sides of the others, until no face changes (bounded: a change is rare after the first
+    // round).
+    std::vector<char> changed(plans.size());
+    for (std::size_t k = 0; k < plans.size(); ++k) {
+        changed[k] = static_cast<std::size_t>(plans[k].grid.cells()) != cells_before[k];
+        if (changed[k]) set_offsets(plans[k], curvatures[k]);
+    }
+    for (int round = 0; round < 4; ++round) {
+        bool any = false;
+        for (std::size_t k = 0; k < plans.size(); ++k) {
+            RefineStart start;
+            start.rescale = false;
+            if (!changed[k]) {
+                auto ring = [](std::size_t intervals) {
+                    std::vector<char> r(intervals, 0);
+                    r.front() = r.back() = 1;
+                    return r;
+                };
+                start.check_u = ring(plans[k].grid.u.size() - 1);
+                start.check_v = ring(plans[k].grid.v.size() - 1);
+            }
+            changed[k] = refine_grid(plans[k], curvatures[k], settings, points, start) ? 1 : 0;
+            any = any || changed[k];
+        }
+        if (!any) break;
+    }
 }
 
 }  // namespace ratbez::detail
