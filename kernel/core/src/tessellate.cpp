@@ -216,7 +216,7 @@ private:
     // a quarter of the edge's radius of curvature there (longer moves towards the centre of curvature would
     // fold the edge's polygon, and a cap with it) and the offset_room its neighbours leave (the face's own
     // lines: see sample_edges).
-    Vec3 edge_offset(const Edge* edge, double t, double gap) {
+    Vec3 edge_offset(const Edge* edge, double t, double gap, double chord) {
         wishes_.clear();
         double cap = std::numeric_limits<double>::infinity();
         for (const EdgeUse& use : edge_uses_[edge]) {
@@ -237,18 +237,37 @@ private:
         const double curvature = speed > 0 ? norm(cross(d1, d2)) / (speed * speed * speed) : 0.0;
         if (curvature > 0) cap = std::min(cap, 0.25 / curvature);
         cap = detail::offset_room(gap, cap);
-        if (std::getenv("RATBEZ_DEBUG_WISH")) {
-            const Vec3 o = detail::shared_offset(wishes_, cap);
-            std::fprintf(stderr, "edge %p t %.4f cap %.4g ->(%.4g %.4g %.4g):", (const void*)edge, t, cap, o.x, o.y, o.z);
-            for (const auto& w : wishes_) std::fprintf(stderr, " [n %.3f %.3f %.3f c %.4g lo %.4g hi %.4g i%d]", w.normal.x, w.normal.y, w.normal.z, w.offset, w.lowest, w.highest, (int)w.inscribed);
-            std::fprintf(stderr, "\n");
+        // The edge's own wish (used at a crease): its chords, `chord` long, sag by curvature chord^2 / 8.
+        detail::EdgeBend bend{};
+        if (curvature > 0 && std::isfinite(chord)) {
+            const Vec3 tangent = d1 / speed, towards_centre = d2 - tangent * dot(d2, tangent);
+            bend = {towards_centre / -norm(towards_centre), curvature * chord * chord / 16};
         }
-        return detail::shared_offset(wishes_, cap);
+        return detail::shared_offset(wishes_, cap, curvature > 0 && std::isfinite(chord) ? &bend : nullptr);
     }
 
-    // The move of a B-rep vertex: none at a sharp point (an apex, whose limit normals differ around it). Its
-    // neighbours on the edges through it come from several faces, which no single face's check sees: it
-    // keeps to max_offset and its faces' fields (which the curvature bounds).
+    // True when the faces along the edge meet at an angle (their normals differ at its middle).
+    bool is_crease(const Edge* edge) {
+        const auto [it, inserted] = crease_.try_emplace(edge, false);
+        if (!inserted) return it->second;
+        const double t = 0.5 * (edge->curve.domain().min + edge->curve.domain().max);
+        std::vector<Vec3> normals;
+        for (const EdgeUse& use : edge_uses_[edge]) {
+            if (use.face->kind() == Face::Kind::planar) {
+                normals.push_back(use.face->plane().normal);
+                continue;
+            }
+            const SurfacePlan& p = plans_[use.plan];
+            const SideMap& m = p.sides[side_slot(use.side)];
+            const double q = m.to_face(t), fixed = detail::side_parameter(p.face->surface(), use.side);
+            normals.push_back(runs_along_u(use.side) ? face_normal(p, q, fixed) : face_normal(p, fixed, q));
+        }
+        for (std::size_t a = 0; a < normals.size(); ++a)
+            for (std::size_t b = a + 1; b < normals.size(); ++b)
+                if (dot(normals[a], normals[b]) < std::cos(1e-3)) it->second = true;
+        return it->second;
+    }
+
     Vec3 vertex_offset(const Vertex* vertex) {
         wishes_.clear();
         double cap = std::numeric_limits<double>::infinity();
@@ -307,7 +326,8 @@ private:
                     const Vertex* v = (k == 0) != m.flipped ? coedge.edge->start.get() : coedge.edge->end.get();
                     at(k) = v->point + vertex_offset(v);
                 } else {
-                    at(k) = side_points_[k] + edge_offset(m.edge, m.to_edge(lines[k]), neighbour_gap(side_points_, k));
+                    at(k) = side_points_[k] + edge_offset(m.edge, m.to_edge(lines[k]), neighbour_gap(side_points_, k),
+                                                          neighbour_chord(side_points_, k));
                 }
             }
         }
@@ -363,23 +383,78 @@ private:
             } else {
                 samples.params = detail::merge_params(sample_curve(edge->curve, settings_.check_tolerance()), d.min, d.max);
             }
+            const double eps = 1e-12 * (d.max - d.min);  // merge_params' rounding
+            // The gap each sample's proposing face saw between its own lines (the smallest, when both propose
+            // it; a sample added below: its own).
+            auto proposed_gap = [&](double t) {
+                const auto lower = std::lower_bound(proposals.begin(), proposals.end(), t - eps,
+                                                    [](const Proposal& q, double x) { return q.t < x; });
+                double gap = std::numeric_limits<double>::infinity();
+                for (auto q = lower; q != proposals.end() && q->t <= t + eps; ++q) gap = std::min(gap, q->gap);
+                return gap;
+            };
+            std::vector<Vec3> points;
+            auto place = [&] {
+                const std::size_t n = samples.params.size();
+                side_points_.resize(n);
+                for (std::size_t k = 0; k < n; ++k) side_points_[k] = edge->curve.point(samples.params[k]);
+                points.resize(n);
+                for (std::size_t k = 0; k < n; ++k) {
+                    if (k == 0 || k + 1 == n) {
+                        const Vertex* v = k == 0 ? edge->start.get() : edge->end.get();
+                        points[k] = v->point + vertex_offset(v);
+                        continue;
+                    }
+                    const double t = samples.params[k];
+                    const double gap = std::min(proposed_gap(t), neighbour_gap(side_points_, k));
+                    points[k] = side_points_[k] + edge_offset(edge.get(), t, gap, neighbour_chord(side_points_, k));
+                }
+            };
+            place();
+            // Along a crease the edge is the faces' boundary: the polyline must keep within the tolerance of
+            // the curve itself, which neither face's check sees. A chord that strays further is split (the
+            // faces close the cells along it with a zipper strip, as for another face's extra samples).
+            if (from_surfaces.count(edge.get()) != 0 && is_crease(edge.get())) {
+                for (int round = 0; round < 8; ++round) {
+                    std::vector<double> added;
+                    for (std::size_t k = 0; k + 1 < samples.params.size(); ++k) {
+                        const double a = samples.params[k], b = samples.params[k + 1];
+                        double error = 0;
+                        for (double f : {0.25, 0.5, 0.75})
+                            error = std::max(error, point_segment_distance(edge->curve.point(a + f * (b - a)), points[k],
+                                                                           points[k + 1]));
+                        if (error > settings_.check_tolerance()) added.push_back(0.5 * (a + b));
+                    }
+                    if (added.empty()) break;
+                    added.insert(added.end(), samples.params.begin(), samples.params.end());
+                    samples.params = detail::merge_params(std::move(added), d.min, d.max);
+                    place();
+                }
+            }
             const std::size_t n = samples.params.size();
             samples.ids.reserve(n);
-            const double eps = 1e-12 * (d.max - d.min);  // merge_params' rounding
-            std::size_t first = 0;
             for (std::size_t k = 0; k < n; ++k) {
-                const double t = samples.params[k];
                 if (k == 0) samples.ids.push_back(vertex_id(edge->start));
                 else if (k + 1 == n) samples.ids.push_back(vertex_id(edge->end));
-                else {
-                    double gap = std::numeric_limits<double>::infinity();
-                    while (first < proposals.size() && proposals[first].t < t - eps) ++first;
-                    for (std::size_t q = first; q < proposals.size() && proposals[q].t <= t + eps; ++q) gap = std::min(gap, proposals[q].gap);
-                    samples.ids.push_back(assembler_.add_point(edge->curve.point(t) + edge_offset(edge.get(), t, gap)));
-                }
+                else samples.ids.push_back(assembler_.add_point(points[k]));
             }
             edge_samples_.emplace(edge.get(), std::move(samples));
         }
+    }
+
+    static double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+        const Vec3 ab = b - a;
+        const double length2 = dot(ab, ab);
+        const double f = length2 > 0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+        return distance(p, a + ab * f);
+    }
+
+    // The distance from points[k] to the farther of its neighbours in the list.
+    static double neighbour_chord(const std::vector<Vec3>& points, std::size_t k) {
+        double chord = 0;
+        if (k > 0) chord = std::max(chord, distance(points[k], points[k - 1]));
+        if (k + 1 < points.size()) chord = std::max(chord, distance(points[k], points[k + 1]));
+        return chord;
     }
 
     // The distance from points[k] to the nearer of its neighbours in the list.
@@ -535,6 +610,7 @@ private:
     std::map<const Edge*, std::vector<EdgeUse>> edge_uses_;
     std::map<const Vertex*, std::vector<VertexUse>> vertex_uses_;
     std::vector<detail::OffsetWish> wishes_;
+    std::map<const Edge*, bool> crease_;
     std::vector<Vec3> side_points_;
 };
 

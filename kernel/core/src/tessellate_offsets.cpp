@@ -8,7 +8,7 @@
 
 namespace ratbez::detail {
 
-Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset) {
+Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset, const EdgeBend* bend) {
     if (wishes.empty()) return {};
     // Normals within 1e-3 radians are one normal: their wishes are one offset (tessellate_offsets.hpp).
     struct Merged {
@@ -58,9 +58,23 @@ Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset) {
     if (merged.size() > 2) return {};
     // o = a n1 + b n2 with o . n1 = d1, o . n2 = d2: [1 c; c 1] (a, b) = (d1, d2), c = n1 . n2.
     const Vec3 n1 = merged[0].normal(), n2 = merged[1].normal();
-    const double d1 = merged[0].offset(), d2 = merged[1].offset();
+    double d1 = merged[0].offset(), d2 = merged[1].offset();
     const double c = dot(n1, n2), det = 1 - c * c;
     if (!(det > 1e-12)) return mean();
+    if (bend != nullptr) {
+        // o . outward = d1 w1 + d2 w2: the faces' offsets move within what they accept towards the edge's
+        // own wish, the larger lever first.
+        const double w1 = dot(n1 - n2 * c, bend->outward) / det, w2 = dot(n2 - n1 * c, bend->outward) / det;
+        double rest = bend->wanted - (d1 * w1 + d2 * w2);
+        auto lean = [&](const Merged& m, double& d, double w) {
+            if (m.planar || !(std::abs(w) > 1e-6) || !(m.lowest <= m.highest)) return;
+            const double moved = std::clamp(d + rest / w, m.lowest, m.highest);
+            rest -= (moved - d) * w;
+            d = moved;
+        };
+        if (std::abs(w1) >= std::abs(w2)) lean(merged[0], d1, w1), lean(merged[1], d2, w2);
+        else lean(merged[1], d2, w2), lean(merged[0], d1, w1);
+    }
     const Vec3 o = n1 * ((d1 - c * d2) / det) + n2 * ((d2 - c * d1) / det);
     // Too long: at a crease of less than 0.1 radians the solution runs off along the faces (the two wishes
     // nearly contradict each other), so the mean wish is taken; at a sharper crease it is shortened, which

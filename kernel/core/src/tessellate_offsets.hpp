@@ -27,6 +27,14 @@ struct OffsetWish {
     double weight = 0;      // the face's cells: where the faces accept nothing in common, the heaviest wins
 };
 
-Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset);
+// A crease edge's own wish for its samples: its polyline's chords sag by s from the curve, towards the
+// centre of curvature, so the samples are best moved s / 2 away from it (`outward`, unit), which centres
+// the curve on the polyline. At a crease the faces' offsets move within the ranges they accept towards it.
+struct EdgeBend {
+    Vec3 outward;
+    double wanted;
+};
+
+Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset, const EdgeBend* bend = nullptr);
 
 }  // namespace ratbez::detail
