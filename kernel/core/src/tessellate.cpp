@@ -18,8 +18,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -305,7 +303,6 @@ private:
     void grid_points(const SurfacePlan& p, std::vector<Vec3>& out) {
         index_uses();
         detail::interior_grid_points(p, p.grid, out);
-        if (std::getenv("RATBEZ_DEBUG_INTERIOR")) return;
         const std::size_t nu = p.grid.u.size(), nv = p.grid.v.size();
         for (Side side : kSides) {
             const SideMap& m = p.sides[side_slot(side)];

@@ -3,8 +3,6 @@
 #include "tessellate_plan.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -559,17 +557,9 @@ bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
         points(plan, corners);
         const GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed, plan.target,
                                            settings.angle_rad, new_u, new_v, corners, [&] { settings.poll(); });
-        if (std::getenv("RATBEZ_DEBUG_PLAN"))
-            std::fprintf(stderr, "refine it %d cells %zux%zu worst %.4f target %.4g rescale %d straddle %d\n", iteration, plan.grid.u.size() - 1,
-                         plan.grid.v.size() - 1, check.worst_ratio, target, (int)start.rescale, (int)plan.straddle);
-        if (std::getenv("RATBEZ_DEBUG_PLAN")) {
-            std::fprintf(stderr, "  u marks:");
-            for (char m : check.refine_u) std::fprintf(stderr, "%d", m);
-            std::fprintf(stderr, "\n  v marks:");
-            for (char m : check.refine_v) std::fprintf(stderr, "%d", m);
-            std::fprintf(stderr, "\n");
-        }
         if (check.worst_ratio <= 1) return changed;
+        const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
+                                     std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;
         if (start.rescale && iteration == 0 && plan.straddle && check.worst_ratio > kStraddleGiveUp) {
             // The model is far off on this face (curvature that jumps between its samples, a strong twist):
             // the offsets it centres the errors with are no better, and the grid inscribed in the surface is
@@ -580,10 +570,7 @@ bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
                                           max_cells(settings), false);
             if (g.u.empty()) throw_over_budget(max_cells(settings) * 2, settings.max_triangles);
             plan.grid = std::move(g);
-        } else {
-        const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
-                                     std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;
-        if (start.rescale && !bisected && iteration < 3 && check.worst_ratio < 1.5) {
+        } else if (start.rescale && !bisected && iteration < 3 && check.worst_ratio < 1.5) {
             target *= 0.99 / check.worst_ratio;
             ParameterGrid g = choose_grid(curvature, target, settings.angle_rad, plan.min_segments, plan.creases,
                                           max_cells(settings), plan.straddle);
@@ -595,7 +582,6 @@ bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
             bisected = true;
         } else {
             return changed;
-        }
         }
         changed = true;
         set_offsets(plan, curvature);

@@ -9,10 +9,14 @@
 // whatever the signs (the classic bound for piecewise-linear interpolation, e.g. Filip, Magedson and
 // Markot, "Surface algorithms using bounds on derivatives", CAGD 1986). Vertices moved along the normal by
 // delta = -(c_u + c_v) / 2, c = k h^2 / 8, put the middle of that span on the surface: the mesh errs by at
-// most half the span on either side, so the span may be twice the tolerance. A mesh with its vertices on
-// the surface (inscribed) may span only one tolerance where the curvatures agree in sign (a sphere: it
-// needs twice the cells, and the bound for any inscribed mesh is 4 pi r^2 / ((3 sqrt 3 / 4) 2 r tol)
-// triangles), and gains nothing on a saddle, whose inscribed errors already take both signs.
+// most half the span on either side, so the span may be twice the tolerance. The twist M = S_uv . n adds
+// M s t h_u h_v, which a cell's two triangles interpolate with an error of one sign whatever the diagonal,
+// up to c_twist = |M| h_u h_v / 4: it widens the span and shifts the centre by c_twist / 2. A mesh with its
+// vertices on the surface (inscribed) may span only one tolerance where the curvatures agree in sign (a
+// sphere: it needs twice the cells, and the bound for any inscribed mesh is 4 pi r^2 / ((3 sqrt 3 / 4) 2 r
+// tol) triangles), and gains little on a saddle or a twisted face, whose inscribed errors take both signs
+// already: plan_face takes whichever model needs fewer cells, and falls back to the inscribed grid when
+// the check finds the straddling model far off (refine_grid).
 //
 // Lines in the first direction are equidistributed for a share of the span; the second direction gets what
 // that leaves at each place (so a sphere's latitude lines spread out towards the poles, where the longitude
