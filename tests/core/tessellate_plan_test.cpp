@@ -31,23 +31,17 @@ const Face& surface_face(const Solid& solid) {
     fail("test", "no surface face");
 }
 
-// A face on its own: its grid points moved by its offsets inside, on the surface along its sides (the
-// tessellator moves those as the neighbouring faces wish too), one point for a pole.
+// A face on its own, as the tessellator places its points where no other face shares them: every grid
+// point moved by the face's offsets (its seams take the same wish from both sides), one point for a pole.
 void standalone_points(const SurfacePlan& plan, std::vector<Vec3>& out) {
     interior_grid_points(plan, plan.grid, out);
     const std::size_t nu = plan.grid.u.size(), nv = plan.grid.v.size();
-    const NurbsSurface& s = plan.face->surface();
-    for (std::size_t i = 0; i < nu; ++i)
-        for (std::size_t j = 0; j < nv; ++j)
-            if (i == 0 || j == 0 || i + 1 == nu || j + 1 == nv) out[i * nv + j] = s.point(plan.grid.u[i], plan.grid.v[j]);
     for (Side side : kSides) {
         if (!plan.sides[side_slot(side)].degenerate) continue;
-        const Vec3 pole = plan.face->sides()[side_slot(side)].edge->start->point;
-        for (std::size_t i = 0; i < nu; ++i)
-            for (std::size_t j = 0; j < nv; ++j)
-                if ((side == Side::v_min && j == 0) || (side == Side::v_max && j + 1 == nv) || (side == Side::u_min && i == 0) ||
-                    (side == Side::u_max && i + 1 == nu))
-                    out[i * nv + j] = pole;
+        const bool row_of_u = runs_along_u(side);
+        const std::size_t fixed = side == Side::v_min || side == Side::u_min ? 0 : (row_of_u ? nv : nu) - 1;
+        auto at = [&](std::size_t k) -> Vec3& { return row_of_u ? out[k * nv + fixed] : out[fixed * nv + k]; };
+        for (std::size_t k = 1; k < (row_of_u ? nu : nv); ++k) at(k) = at(0);
     }
 }
 
@@ -130,16 +124,48 @@ TEST(TessellatePlan, OffsetsCentreTheSpanOnTheSurface) {
         const OffsetField field = offset_field(c, g, {}, 0.95 * target, target);
         const double hu = widths(g.u).front(), hv = widths(g.v).front();
         const double expected = std::clamp(-(L * hu * hu + N * hv * hv) / 16, -0.95 * target, 0.95 * target);
+        // The offsets the cells accept: the tolerance either way of the errors' span, which holds the centre.
+        const double span = (std::abs(L) * hu * hu + std::abs(N) * hv * hv) / 8;
         for (double u : {0.1, 0.5, 0.93})
-            for (double v : {0.2, 0.77}) EXPECT_NEAR(field.at(u, v), expected, 1e-15);
-        if (L < 0) EXPECT_GT(expected, 0.4 * target);
-        if (L > 0 && N > 0) EXPECT_LT(expected, -0.4 * target);
+            for (double v : {0.2, 0.77}) {
+                EXPECT_NEAR(field.at(u, v), expected, 1e-15);
+                EXPECT_NEAR(field.highest_at(u, v) - field.lowest_at(u, v), 2 * target - span, 1e-15);
+                EXPECT_NEAR(0.5 * (field.highest_at(u, v) + field.lowest_at(u, v)), expected, 1e-15);
+            }
+        if (L < 0) {
+            EXPECT_GT(expected, 0.4 * target);
+        }
+        if (L > 0 && N > 0) {
+            EXPECT_LT(expected, -0.4 * target);
+        }
     }
+    // An inscribed face keeps its vertices on the surface, and accepts the offsets its span leaves.
+    const CurvatureSamples convex = constant_curvature(-2.0, -5.0);
+    const ParameterGrid inscribed = choose_grid(convex, target, 0.0, {1, 1}, kNoCreases, 1e9, false);
+    const OffsetField on_surface = offset_field(convex, inscribed, {}, 0.95 * target, target, false);
+    EXPECT_EQ(on_surface.at(0.5, 0.5), 0.0);
+    EXPECT_LE(on_surface.lowest_at(0.5, 0.5), 0.0);
+    EXPECT_GE(on_surface.highest_at(0.5, 0.5), 0.0);
     // Within a quarter of the radius of curvature, however large max_offset is.
     CurvatureSamples tight = constant_curvature(-2.0, -5.0);
     tight.k_max.assign(tight.L.size(), 1e6);
     const OffsetField capped = offset_field(tight, choose_grid(tight, 1.0, 0.0, {1, 1}, kNoCreases, 1e9), {}, 0.95, 1.0);
     EXPECT_LE(capped.at(0.5, 0.5), 0.25e-6 * (1 + 1e-12));
+}
+
+TEST(TessellatePlan, TwistIsCentredAndBudgeted) {
+    // A hyperbolic paraboloid's twist M s t h_u h_v: two triangles interpolate it with an error of one sign,
+    // up to |M| h_u h_v / 4, which the offset M h_u h_v / 8 centres; the cells keep it within twice the target.
+    const double M = 3.0, target = 1e-4;
+    CurvatureSamples c = constant_curvature(0.0, 0.0);
+    c.M.assign(c.L.size(), M);
+    const ParameterGrid g = choose_grid(c, target, 0.0, {1, 1}, kNoCreases, 1e9);
+    const OffsetField field = offset_field(c, g, {}, 0.95 * target, target);
+    for (double hu : widths(g.u))
+        for (double hv : widths(g.v)) EXPECT_LE(M * hu * hv / 4, 2 * target * (1 + 1e-12));
+    const double hu = widths(g.u).front(), hv = widths(g.v).front();
+    EXPECT_GT(M * hu * hv / 4, target);  // not much finer than needed
+    EXPECT_NEAR(field.at(0.5, 0.5), M * hu * hv / 8, 1e-15);
 }
 
 TEST(TessellatePlan, MinimumSegmentsCreasesAndBudgetAreHonoured) {

@@ -96,7 +96,9 @@ TEST_P(TessellateShape, ClosedOutwardWithinToleranceAndVolumeBound) {
     EXPECT_GT(deviation, 0.05 * tolerance);  // not absurdly finer than asked
     // And the other way: the mesh covers the surface within the tolerance (its vertices lie off the surface,
     // so this is not implied by the triangles lying close to it). Measured on the smaller meshes only.
-    if (fraction >= 1e-3) EXPECT_LE(max_surface_to_mesh_distance(solid, mesh), tolerance);
+    if (fraction >= 1e-3) {
+        EXPECT_LE(max_surface_to_mesh_distance(solid, mesh), tolerance);
+    }
     const double exact_volume = solid.volume();
     EXPECT_LE(std::abs(mesh.volume() - exact_volume), tolerance * solid.area());
 }

@@ -316,15 +316,16 @@ private:
                 for (std::size_t k = 0; k < lines.size(); ++k) at(k) = pole;
                 continue;
             }
-            side_points_.resize(lines.size());
-            for (std::size_t k = 0; k < lines.size(); ++k) side_points_[k] = coedge.edge->curve.point(m.to_edge(lines[k]));
+            const std::vector<Proposal> proposals = proposals_of(m.edge);
+            const Interval d = m.edge->curve.domain();
             for (std::size_t k = 0; k < lines.size(); ++k) {
                 if (k == 0 || k + 1 == lines.size()) {
                     const Vertex* v = (k == 0) != m.flipped ? coedge.edge->start.get() : coedge.edge->end.get();
                     at(k) = v->point + vertex_offset(v);
                 } else {
-                    at(k) = side_points_[k] + edge_offset(m.edge, m.to_edge(lines[k]), neighbour_gap(side_points_, k),
-                                                          neighbour_chord(side_points_, k));
+                    const double t = m.to_edge(lines[k]);
+                    const auto [gap, chord] = proposed_at(proposals, t, 1e-12 * (d.max - d.min));
+                    at(k) = m.edge->curve.point(t) + edge_offset(m.edge, t, gap, chord);
                 }
             }
         }
@@ -345,21 +346,6 @@ private:
     // saw between its own lines (the smallest, when both faces propose it): the very point that face's
     // check saw. The other face sees it as an extra sample of a boundary cell, as before the offsets.
     void sample_edges() {
-        struct Proposal {
-            double t, gap;
-        };
-        std::map<const Edge*, std::vector<Proposal>> from_surfaces;
-        for (const SurfacePlan& plan : plans_)
-            for (Side side : kSides) {
-                const SideMap& m = plan.sides[side_slot(side)];
-                if (m.degenerate) continue;
-                const std::vector<double>& lines = runs_along_u(side) ? plan.grid.u : plan.grid.v;
-                side_points_.resize(lines.size());
-                for (std::size_t k = 0; k < lines.size(); ++k) side_points_[k] = m.edge->curve.point(m.to_edge(lines[k]));
-                auto& proposals = from_surfaces[m.edge];
-                for (std::size_t k = 0; k < lines.size(); ++k)
-                    proposals.push_back({m.to_edge(lines[k]), neighbour_gap(side_points_, k)});
-            }
         for (const EdgePtr& edge : distinct_edges(faces_)) {
             EdgeSamples samples;
             if (edge->degenerate) {
@@ -369,11 +355,8 @@ private:
                 continue;
             }
             const Interval d = edge->curve.domain();
-            auto it = from_surfaces.find(edge.get());
-            std::vector<Proposal> proposals;
-            if (it != from_surfaces.end()) {
-                proposals = std::move(it->second);
-                std::sort(proposals.begin(), proposals.end(), [](const Proposal& a, const Proposal& b) { return a.t < b.t; });
+            const std::vector<Proposal> proposals = proposals_of(edge.get());
+            if (!proposals.empty()) {
                 std::vector<double> ts;
                 for (const Proposal& q : proposals) ts.push_back(q.t);
                 samples.params = detail::merge_params(std::move(ts), d.min, d.max);
@@ -381,15 +364,6 @@ private:
                 samples.params = detail::merge_params(sample_curve(edge->curve, settings_.check_tolerance()), d.min, d.max);
             }
             const double eps = 1e-12 * (d.max - d.min);  // merge_params' rounding
-            // The gap each sample's proposing face saw between its own lines (the smallest, when both propose
-            // it; a sample added below: its own).
-            auto proposed_gap = [&](double t) {
-                const auto lower = std::lower_bound(proposals.begin(), proposals.end(), t - eps,
-                                                    [](const Proposal& q, double x) { return q.t < x; });
-                double gap = std::numeric_limits<double>::infinity();
-                for (auto q = lower; q != proposals.end() && q->t <= t + eps; ++q) gap = std::min(gap, q->gap);
-                return gap;
-            };
             std::vector<Vec3> points;
             auto place = [&] {
                 const std::size_t n = samples.params.size();
@@ -402,16 +376,18 @@ private:
                         points[k] = v->point + vertex_offset(v);
                         continue;
                     }
+                    // As the faces' checks placed it (grid_points); a sample added below: from its neighbours.
                     const double t = samples.params[k];
-                    const double gap = std::min(proposed_gap(t), neighbour_gap(side_points_, k));
-                    points[k] = side_points_[k] + edge_offset(edge.get(), t, gap, neighbour_chord(side_points_, k));
+                    auto [gap, chord] = proposed_at(proposals, t, eps);
+                    if (!std::isfinite(gap)) gap = neighbour_gap(side_points_, k), chord = neighbour_chord(side_points_, k);
+                    points[k] = side_points_[k] + edge_offset(edge.get(), t, gap, chord);
                 }
             };
             place();
             // Along a crease the edge is the faces' boundary: the polyline must keep within the tolerance of
             // the curve itself, which neither face's check sees. A chord that strays further is split (the
             // faces close the cells along it with a zipper strip, as for another face's extra samples).
-            if (from_surfaces.count(edge.get()) != 0 && is_crease(edge.get())) {
+            if (!proposals.empty() && is_crease(edge.get())) {
                 for (int round = 0; round < 8; ++round) {
                     std::vector<double> added;
                     for (std::size_t k = 0; k + 1 < samples.params.size(); ++k) {
@@ -437,6 +413,40 @@ private:
             }
             edge_samples_.emplace(edge.get(), std::move(samples));
         }
+    }
+
+    // A sample a surface face proposes for an edge: one of its lines along it, with the distances to the
+    // nearer (gap) and farther (chord) of its neighbouring lines there, measured on the edge's curve.
+    struct Proposal {
+        double t, gap, chord;
+    };
+
+    // The proposals of every surface face along `edge` from the plans as they are now, sorted by t: what
+    // the checks and the mesh both place the edge's samples from (a function of the plans alone).
+    std::vector<Proposal> proposals_of(const Edge* edge) {
+        std::vector<Proposal> proposals;
+        for (const EdgeUse& use : edge_uses_[edge]) {
+            if (use.face->kind() == Face::Kind::planar) continue;
+            const SurfacePlan& plan = plans_[use.plan];
+            const SideMap& m = plan.sides[side_slot(use.side)];
+            if (m.degenerate) continue;
+            const std::vector<double>& lines = runs_along_u(use.side) ? plan.grid.u : plan.grid.v;
+            side_points_.resize(lines.size());
+            for (std::size_t k = 0; k < lines.size(); ++k) side_points_[k] = edge->curve.point(m.to_edge(lines[k]));
+            for (std::size_t k = 0; k < lines.size(); ++k)
+                proposals.push_back({m.to_edge(lines[k]), neighbour_gap(side_points_, k), neighbour_chord(side_points_, k)});
+        }
+        std::sort(proposals.begin(), proposals.end(), [](const Proposal& a, const Proposal& b) { return a.t < b.t; });
+        return proposals;
+    }
+
+    // The smallest gap and chord the proposals at t hold (infinity for none).
+    static std::pair<double, double> proposed_at(const std::vector<Proposal>& proposals, double t, double eps) {
+        const auto lower = std::lower_bound(proposals.begin(), proposals.end(), t - eps,
+                                            [](const Proposal& q, double x) { return q.t < x; });
+        double gap = std::numeric_limits<double>::infinity(), chord = gap;
+        for (auto q = lower; q != proposals.end() && q->t <= t + eps; ++q) gap = std::min(gap, q->gap), chord = std::min(chord, q->chord);
+        return {gap, chord};
     }
 
     static double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {

@@ -530,6 +530,39 @@ std::array<bool, 4> collapsed_sides(const SurfacePlan& plan) {
     return collapsed;
 }
 
+// The polylines along the face's sides against its boundary curves: a side's points are off the surface
+// (by its offsets, or as the faces beyond it wish), and at a crease the curve is the mesh's edge, which no
+// cell's check sees: a chord whose curve strays more than the target from it fails like a cell (marking
+// its interval), so that the surface's points keep within the tolerance of the mesh along the boundary too.
+void check_sides(const SurfacePlan& plan, const std::vector<Vec3>& corners, GridCheck& check) {
+    const ParameterGrid& g = plan.grid;
+    const std::size_t nu = g.u.size(), nv = g.v.size();
+    for (Side side : kSides) {
+        if (plan.sides[side_slot(side)].degenerate) continue;
+        const bool along_u = runs_along_u(side);
+        const std::vector<double>& lines = along_u ? g.u : g.v;
+        const std::size_t fixed = side == Side::v_min || side == Side::u_min ? 0 : (along_u ? nv : nu) - 1;
+        const double across = along_u ? g.v[fixed] : g.u[fixed];
+        std::vector<char>& marks = along_u ? check.refine_u : check.refine_v;
+        for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
+            const Vec3& a = along_u ? corners[k * nv + fixed] : corners[fixed * nv + k];
+            const Vec3& b = along_u ? corners[(k + 1) * nv + fixed] : corners[fixed * nv + k + 1];
+            const Vec3 ab = b - a;
+            const double length2 = dot(ab, ab);
+            double error = 0;
+            for (double f : {0.25, 0.5, 0.75}) {
+                const double t = lines[k] + f * (lines[k + 1] - lines[k]);
+                const Vec3 p = along_u ? plan.evaluator->point(t, across) : plan.evaluator->point(across, t);
+                const double along = length2 > 0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+                error = std::max(error, distance(p, a + ab * along));
+            }
+            const double ratio = error / plan.target;
+            check.worst_ratio = std::max(check.worst_ratio, ratio);
+            if (ratio > 1) marks[k] = 1;
+        }
+    }
+}
+
 // The worst check of a fresh straddling grid beyond which the face is meshed inscribed instead.
 constexpr double kStraddleGiveUp = 1.5;
 
@@ -555,8 +588,9 @@ bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
         if (plan.grid.cells() * 2 > static_cast<double>(settings.max_triangles))
             throw_over_budget(plan.grid.cells() * 2, settings.max_triangles);
         points(plan, corners);
-        const GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed, plan.target,
-                                           settings.angle_rad, new_u, new_v, corners, [&] { settings.poll(); });
+        GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed, plan.target,
+                                     settings.angle_rad, new_u, new_v, corners, [&] { settings.poll(); });
+        check_sides(plan, corners, check);
         if (check.worst_ratio <= 1) return changed;
         const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
                                      std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;
