@@ -82,28 +82,29 @@ TEST(TessellatePlan, CurvatureInOneDirectionOnlyGivesTheFewestUniformLines) {
     // ceil(sqrt(L / (16 target))) equal intervals along u, one along v.
     const double L = 3.0, target = 1e-3;
     const ParameterGrid g = choose_grid(constant_curvature(L, 0.0), target, 0.0, {1, 1}, kNoCreases, 1e9);
-    const auto expected = static_cast<std::size_t>(std::ceil(std::sqrt(L / (16 * target))));
+    const double span = 2 * kOffsetShare * target;  // twice the largest offset
+    const auto expected = static_cast<std::size_t>(std::ceil(std::sqrt(L / (8 * span))));
     ASSERT_EQ(g.u.size() - 1, expected);
     EXPECT_EQ(g.v.size(), 2u);
     for (double h : widths(g.u)) {
         EXPECT_NEAR(h, 1.0 / static_cast<double>(expected), 1e-12);
-        EXPECT_LE(L * h * h / 8, 2 * target * (1 + 1e-12));
+        EXPECT_LE(L * h * h / 8, span * (1 + 1e-12));
     }
     // One interval fewer would break the model.
     const double wider = 1.0 / static_cast<double>(expected - 1);
-    EXPECT_GT(L * wider * wider / 8, 2 * target);
+    EXPECT_GT(L * wider * wider / 8, span);
 }
 
 TEST(TessellatePlan, CellsSpanAtMostTwiceTheTarget) {
     // Whatever the signs of the curvatures (a sphere's, a saddle's), the errors of the two directions span
-    // (|L| h_u^2 + |N| h_v^2) / 8 at most, which the offsets centre on the surface: twice the target.
-    const double target = 1e-4;
+    // (|L| h_u^2 + |N| h_v^2) / 8 at most, which the offsets centre on the surface: twice the largest offset.
+    const double target = 1e-4, span = 2 * kOffsetShare * target;
     for (const auto& [L, N] : {std::pair{2.0, 5.0}, std::pair{2.0, -5.0}, std::pair{-2.0, -5.0}}) {
         const ParameterGrid g = choose_grid(constant_curvature(L, N), target, 0.0, {1, 1}, kNoCreases, 1e9);
         ASSERT_GE(g.u.size(), 2u);
         ASSERT_GE(g.v.size(), 2u);
         for (double hu : widths(g.u))
-            for (double hv : widths(g.v)) EXPECT_LE((std::abs(L) * hu * hu + std::abs(N) * hv * hv) / 8, 2 * target * (1 + 1e-12));
+            for (double hv : widths(g.v)) EXPECT_LE((std::abs(L) * hu * hu + std::abs(N) * hv * hv) / 8, span * (1 + 1e-12));
         // Economical: the span is not spent on one direction only (within the tried shares).
         const double hu = widths(g.u).front(), hv = widths(g.v).front();
         EXPECT_GT((std::abs(L) * hu * hu + std::abs(N) * hv * hv) / 8, target);
@@ -121,16 +122,21 @@ TEST(TessellatePlan, OffsetsCentreTheSpanOnTheSurface) {
     for (const auto& [L, N] : {std::pair{-2.0, -5.0}, std::pair{2.0, 5.0}, std::pair{0.0, 0.0}, std::pair{2.0, -2.0}}) {
         const CurvatureSamples c = constant_curvature(L, N);
         const ParameterGrid g = choose_grid(c, target, 0.0, {1, 1}, kNoCreases, 1e9);
-        const OffsetField field = offset_field(c, g, {}, 0.95 * target, target);
+        const OffsetField field = offset_field(c, g, {}, kOffsetShare * target, target);
         const double hu = widths(g.u).front(), hv = widths(g.v).front();
-        const double expected = std::clamp(-(L * hu * hu + N * hv * hv) / 16, -0.95 * target, 0.95 * target);
-        // The offsets the cells accept: the tolerance either way of the errors' span, which holds the centre.
-        const double span = (std::abs(L) * hu * hu + std::abs(N) * hv * hv) / 8;
+        const double expected = std::clamp(-(L * hu * hu + N * hv * hv) / 16, -kOffsetShare * target, kOffsetShare * target);
+        // The offsets the cells accept: those that keep the errors (on the side each curvature puts them)
+        // within the target either way, and within max_offset; they hold the centre.
+        const double reach = kOffsetShare * target;
+        const double below = std::min(0.0, L * hu * hu / 8) + std::min(0.0, N * hv * hv / 8);
+        const double above = std::max(0.0, L * hu * hu / 8) + std::max(0.0, N * hv * hv / 8);
         for (double u : {0.1, 0.5, 0.93})
             for (double v : {0.2, 0.77}) {
                 EXPECT_NEAR(field.at(u, v), expected, 1e-15);
-                EXPECT_NEAR(field.highest_at(u, v) - field.lowest_at(u, v), 2 * target - span, 1e-15);
-                EXPECT_NEAR(0.5 * (field.highest_at(u, v) + field.lowest_at(u, v)), expected, 1e-15);
+                EXPECT_NEAR(field.lowest_at(u, v), std::max(-target - below, -reach), 1e-15);
+                EXPECT_NEAR(field.highest_at(u, v), std::min(target - above, reach), 1e-15);
+                EXPECT_LE(field.lowest_at(u, v), field.at(u, v));
+                EXPECT_GE(field.highest_at(u, v), field.at(u, v));
             }
         if (L < 0) {
             EXPECT_GT(expected, 0.4 * target);
@@ -142,27 +148,28 @@ TEST(TessellatePlan, OffsetsCentreTheSpanOnTheSurface) {
     // An inscribed face keeps its vertices on the surface, and accepts the offsets its span leaves.
     const CurvatureSamples convex = constant_curvature(-2.0, -5.0);
     const ParameterGrid inscribed = choose_grid(convex, target, 0.0, {1, 1}, kNoCreases, 1e9, false);
-    const OffsetField on_surface = offset_field(convex, inscribed, {}, 0.95 * target, target, false);
+    const OffsetField on_surface = offset_field(convex, inscribed, {}, kOffsetShare * target, target, false);
     EXPECT_EQ(on_surface.at(0.5, 0.5), 0.0);
     EXPECT_LE(on_surface.lowest_at(0.5, 0.5), 0.0);
     EXPECT_GE(on_surface.highest_at(0.5, 0.5), 0.0);
     // Within a quarter of the radius of curvature, however large max_offset is.
     CurvatureSamples tight = constant_curvature(-2.0, -5.0);
     tight.k_max.assign(tight.L.size(), 1e6);
-    const OffsetField capped = offset_field(tight, choose_grid(tight, 1.0, 0.0, {1, 1}, kNoCreases, 1e9), {}, 0.95, 1.0);
+    const OffsetField capped = offset_field(tight, choose_grid(tight, 1.0, 0.0, {1, 1}, kNoCreases, 1e9), {}, kOffsetShare, 1.0);
     EXPECT_LE(capped.at(0.5, 0.5), 0.25e-6 * (1 + 1e-12));
 }
 
 TEST(TessellatePlan, TwistIsCentredAndBudgeted) {
     // A hyperbolic paraboloid's twist M s t h_u h_v: two triangles interpolate it with an error of one sign,
-    // up to |M| h_u h_v / 4, which the offset M h_u h_v / 8 centres; the cells keep it within twice the target.
+    // up to |M| h_u h_v / 4, which the offset M h_u h_v / 8 centres; the cells keep it within twice the
+    // largest offset.
     const double M = 3.0, target = 1e-4;
     CurvatureSamples c = constant_curvature(0.0, 0.0);
     c.M.assign(c.L.size(), M);
     const ParameterGrid g = choose_grid(c, target, 0.0, {1, 1}, kNoCreases, 1e9);
-    const OffsetField field = offset_field(c, g, {}, 0.95 * target, target);
+    const OffsetField field = offset_field(c, g, {}, kOffsetShare * target, target);
     for (double hu : widths(g.u))
-        for (double hv : widths(g.v)) EXPECT_LE(M * hu * hv / 4, 2 * target * (1 + 1e-12));
+        for (double hv : widths(g.v)) EXPECT_LE(M * hu * hv / 4, 2 * kOffsetShare * target * (1 + 1e-12));
     const double hu = widths(g.u).front(), hv = widths(g.v).front();
     EXPECT_GT(M * hu * hv / 4, target);  // not much finer than needed
     EXPECT_NEAR(field.at(0.5, 0.5), M * hu * hv / 8, 1e-15);

@@ -268,9 +268,9 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
         const double floor_first = min_first / (first_samples.back() - first_samples.front());
         const double floor_second = min_second / (second_samples.back() - second_samples.front());
         for (double share : {0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8}) {
-            // |k| h^2 is 8 times a direction's part of the span, which may be twice the target in all for a
-            // straddling mesh, the target for an inscribed one.
-            const double span = straddle ? 2 * target : target;
+            // |k| h^2 is 8 times a direction's part of the span, which may be twice the largest offset in
+            // all for a straddling mesh, the target for an inscribed one.
+            const double span = straddle ? 2 * kOffsetShare * target : target;
             const double budget8 = 8 * share * span;
             const auto first = lines_from_density(
                 first_samples,

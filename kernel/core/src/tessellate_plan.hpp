@@ -61,6 +61,10 @@ struct TessellationSettings {
     double check_tolerance() const { return 0.98 * tolerance; }
 };
 
+// The largest offset of a vertex as a share of the target its face is checked against: below it, so that
+// refining a failing cell always ends. A straddling grid's errors may span twice that.
+inline constexpr double kOffsetShare = 0.95;
+
 // Throws Error naming "tolerance": the mesh would need about `estimate` triangles, more than `budget`.
 [[noreturn]] void throw_over_budget(double estimate, std::size_t budget);
 
@@ -132,7 +136,7 @@ struct SurfacePlan {
 
     // The largest offset of a vertex of this face: the vertex itself errs by that much, below the target so
     // that refining a failing cell always ends.
-    double max_offset() const { return 0.95 * target; }
+    double max_offset() const { return kOffsetShare * target; }
 };
 
 // Where the mesh puts the vertices of a plan's grid (index i * grid.v.size() + j): inside the face its
