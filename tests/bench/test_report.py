@@ -32,11 +32,12 @@ def test_every_section_prints_its_rows_without_a_filter(capsys):
                    "sweep/torus vs MakePipeShell volume error", "sweep/helix_1e-4 vs MakePipeShell deviation",
                    "sweep/helix_1e-6 vs MakePipeShell valid (BRepCheck)", "export/scad", "export/stl_binary",
                    "python eval/sphere/D0 1000x1000 vs GeomAdaptor", "python eval/sphere/D1 1000x1000 vs GeomAdaptor",
-                   "python eval/sphere/D0 1000x1000 vs C++ grid"):
+                   "python eval/sphere/D0 1000x1000 vs C++ grid", "sphere_r10_tol0.01 triangles vs inscribed bound"):
         assert any(n.startswith(prefix) for n in names), prefix
-    # The fixture's targets (evaluation >= 3x GeomAdaptor, tessellation, .scad export rate, each loft and
-    # sweep valid, the two helix sweeps within their tolerance, Python D0 and D1) all get a verdict.
-    assert len(table.verdicts) == 4 + 5 + 2 + 2 and set(table.verdicts) <= {"PASS", "FAIL"}
+    # The fixture's targets (evaluation >= 3x GeomAdaptor, tessellation, the sphere against its inscribed
+    # bound, .scad export rate, each loft and sweep valid, the two helix sweeps within their tolerance, Python
+    # D0 and D1) all get a verdict.
+    assert len(table.verdicts) == 4 + 5 + 2 + 2 + 1 and set(table.verdicts) <= {"PASS", "FAIL"}
     out = capsys.readouterr().out
     assert "targets met" in out and "ratbez benchmarks: nproc = 2" in out
     assert all(len(row) == len(table.rows[0]) for row in table.rows)
@@ -96,3 +97,20 @@ def test_python_rows_hold_d0_and_d1_to_their_targets(tmp_path):
     assert python_json(2e8, 2e7, 5e7) == ["PASS", "PASS"]
     assert python_json(9e7, 1e7, 5e7) == ["FAIL", "PASS"]   # under 100M points/s
     assert python_json(2e8, 6e7, 3e7) == ["FAIL", "FAIL"]   # under 4x GeomAdaptor; D1 under 40M
+
+
+def test_the_sphere_passes_at_or_below_its_inscribed_bound_only(tmp_path):
+    """bound/sphere_r10_tol0.01 (issue 17): PASS with the fixture's 4,284 triangles of 4,837, FAIL above it."""
+    with open(os.path.join(FIXTURE, "tessellation.json")) as f:
+        data = json.load(f)
+    table = report.Table()
+    report.bound_rows(table, report.load(FIXTURE, "tessellation")[1])
+    assert table.verdicts == ["PASS"]
+    for b in data["benchmarks"]:
+        if b["run_name"].startswith("bound/"):
+            b["triangles"] = b["bound"] + 1
+    with open(tmp_path / "tessellation.json", "w") as f:
+        json.dump(data, f)
+    table = report.Table()
+    report.bound_rows(table, report.load(str(tmp_path), "tessellation")[1])
+    assert table.verdicts == ["FAIL"]
