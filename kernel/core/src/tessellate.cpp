@@ -195,18 +195,24 @@ private:
         }
     }
 
-    // The face's unit normal at (u, v) (the surface's limit normal where its partials are parallel).
-    static Vec3 face_normal(const SurfacePlan& p, double u, double v) {
+    // The face's unit normal at (u, v) (the surface's limit normal where its partials are parallel), or none
+    // where it has no tangent plane at all (a profile that meets the axis in a cusp): no offset there.
+    static std::optional<Vec3> face_normal(const SurfacePlan& p, double u, double v) {
         const detail::SurfaceFirstDerivatives d = p.evaluator->first_derivatives(u, v);
         const Vec3 n = cross(d.su, d.sv);
         const double length = norm(n);
-        return length > 1e-10 * (dot(d.su, d.su) + dot(d.sv, d.sv)) ? n / length : p.face->surface().normal(u, v);
+        if (length > 1e-10 * (dot(d.su, d.su) + dot(d.sv, d.sv))) return n / length;
+        try {
+            return p.face->surface().normal(u, v);
+        } catch (const Error&) {
+            return std::nullopt;
+        }
     }
 
-    static detail::OffsetWish planar_wish(const Face& face) { return {face.plane().normal, 0.0, 0.0, 0.0, true, false, 0.0}; }
+    static detail::OffsetWish planar_wish(const Face& face) { return {face.plane().normal, 0.0, 0.0, 0.0, true, 0.0}; }
     static detail::OffsetWish surface_wish(const SurfacePlan& p, const Vec3& normal, double u, double v) {
-        return {normal, p.offsets.at(u, v), p.offsets.lowest_at(u, v), p.offsets.highest_at(u, v), false, !p.straddle,
-                p.grid.cells()};
+        if (!p.straddle) return {normal, 0.0, 0.0, 0.0, true, p.grid.cells()};
+        return {normal, p.offsets.at(u, v), p.offsets.lowest_at(u, v), p.offsets.highest_at(u, v), false, p.grid.cells()};
     }
 
     // The move of the edge sample at parameter t, `gap` away from its nearest neighbour on the edge: what its
@@ -227,7 +233,9 @@ private:
             const SideMap& m = p.sides[side_slot(use.side)];
             const double q = m.to_face(t), fixed = detail::side_parameter(p.face->surface(), use.side);
             const double u = runs_along_u(use.side) ? q : fixed, v = runs_along_u(use.side) ? fixed : q;
-            wishes_.push_back(surface_wish(p, face_normal(p, u, v), u, v));
+            const std::optional<Vec3> n = face_normal(p, u, v);
+            if (!n) return {};
+            wishes_.push_back(surface_wish(p, *n, u, v));
         }
         if (!std::isfinite(cap)) return {};  // planar faces only: the edge stays put
         const Vec3 d1 = edge->curve.derivative(t, 1), d2 = edge->curve.derivative(t, 2);
@@ -258,7 +266,8 @@ private:
             const SurfacePlan& p = plans_[use.plan];
             const SideMap& m = p.sides[side_slot(use.side)];
             const double q = m.to_face(t), fixed = detail::side_parameter(p.face->surface(), use.side);
-            normals.push_back(runs_along_u(use.side) ? face_normal(p, q, fixed) : face_normal(p, fixed, q));
+            const std::optional<Vec3> n = runs_along_u(use.side) ? face_normal(p, q, fixed) : face_normal(p, fixed, q);
+            if (n) normals.push_back(*n);
         }
         for (std::size_t a = 0; a < normals.size(); ++a)
             for (std::size_t b = a + 1; b < normals.size(); ++b)
@@ -280,15 +289,20 @@ private:
                 const SideMap& m = p.sides[side_slot(*use.pole)];
                 const double fixed = detail::side_parameter(p.face->surface(), *use.pole);
                 auto normal_at = [&](double q) {
-                    return runs_along_u(*use.pole) ? p.face->surface().normal(q, fixed) : p.face->surface().normal(fixed, q);
+                    return runs_along_u(*use.pole) ? face_normal(p, q, fixed) : face_normal(p, fixed, q);
                 };
-                const Vec3 n = normal_at(0.5 * (m.p0 + m.p1));
-                for (double f : {0.0, 0.25, 0.75, 1.0})
-                    if (distance(normal_at(m.p0 + f * (m.p1 - m.p0)), n) > 1e-6) return {};
-                wishes_.push_back(surface_wish(p, n, use.u, use.v));
+                const std::optional<Vec3> n = normal_at(0.5 * (m.p0 + m.p1));
+                if (!n) return {};
+                for (double f : {0.0, 0.25, 0.75, 1.0}) {
+                    const std::optional<Vec3> other = normal_at(m.p0 + f * (m.p1 - m.p0));
+                    if (!other || distance(*other, *n) > 1e-6) return {};
+                }
+                wishes_.push_back(surface_wish(p, *n, use.u, use.v));
                 continue;
             }
-            wishes_.push_back(surface_wish(p, face_normal(p, use.u, use.v), use.u, use.v));
+            const std::optional<Vec3> n = face_normal(p, use.u, use.v);
+            if (!n) return {};
+            wishes_.push_back(surface_wish(p, *n, use.u, use.v));
         }
         if (!std::isfinite(cap)) return {};
         return detail::shared_offset(wishes_, cap);
@@ -387,6 +401,11 @@ private:
             // Along a crease the edge is the faces' boundary: the polyline must keep within the tolerance of
             // the curve itself, which neither face's check sees. A chord that strays further is split (the
             // faces close the cells along it with a zipper strip, as for another face's extra samples).
+            // The bound: the loosest target of the faces along the edge (an inscribed face's chords already
+            // keep within its own, the tolerance: no split).
+            double bound = 0;
+            for (const EdgeUse& use : edge_uses_[edge.get()])
+                if (use.face->kind() == Face::Kind::surface) bound = std::max(bound, plans_[use.plan].target);
             if (!proposals.empty() && is_crease(edge.get())) {
                 for (int round = 0; round < 8; ++round) {
                     std::vector<double> added;
@@ -396,7 +415,7 @@ private:
                         for (double f : {0.25, 0.5, 0.75})
                             error = std::max(error, point_segment_distance(edge->curve.point(a + f * (b - a)), points[k],
                                                                            points[k + 1]));
-                        if (error > settings_.check_tolerance()) added.push_back(0.5 * (a + b));
+                        if (error > bound) added.push_back(0.5 * (a + b));
                     }
                     if (added.empty()) break;
                     added.insert(added.end(), samples.params.begin(), samples.params.end());
@@ -567,7 +586,8 @@ private:
                 triangles.clear();
                 if (detail::triangulate_cell(s, bottom, right, top, left, lower, upper, center, triangles)) {
                     const double u = 0.5 * (g.u[i] + g.u[i + 1]), v = 0.5 * (g.v[j] + g.v[j + 1]);
-                    const Vec3 p = s.point(u, v) + face_normal(plan, u, v) * plan.offsets.at(u, v);
+                    const std::optional<Vec3> n = face_normal(plan, u, v);
+                    const Vec3 p = s.point(u, v) + (n ? *n * plan.offsets.at(u, v) : Vec3{});
                     center = CellVertex{u, v, p, assembler_.add_point(p)};
                 }
                 for (const auto& t : triangles) assembler_.add_triangle(t[0]->id, t[1]->id, t[2]->id);

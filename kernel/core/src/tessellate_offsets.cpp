@@ -14,14 +14,13 @@ Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset, const 
     struct Merged {
         Vec3 normal_sum;
         double lowest = 0, highest = 0;
-        bool planar = false, inscribed = true;
-        double planar_offset = 0;
+        bool fixed = false;
+        double fixed_offset = 0;
         double weight = 0, weight_lowest = 0, weight_highest = 0;  // the heaviest wish's range
         Vec3 normal() const { return normal_sum / norm(normal_sum); }
         double offset() const {
-            if (planar) return planar_offset;
-            const double preferred = inscribed ? 0.0 : 0.5 * (lowest + highest);
-            if (lowest <= highest) return std::clamp(preferred, lowest, highest);
+            if (fixed) return fixed_offset;
+            if (lowest <= highest) return 0.5 * (lowest + highest);
             return std::clamp(0.5 * (lowest + highest), weight_lowest, weight_highest);
         }
     };
@@ -34,14 +33,13 @@ Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset, const 
         all_offsets += w.offset;
         auto it = std::find_if(merged.begin(), merged.end(), [&](const Merged& m) { return dot(m.normal(), w.normal) > same; });
         if (it == merged.end()) {
-            merged.push_back({w.normal, w.lowest, w.highest, w.planar, w.inscribed, w.offset, w.weight, w.lowest, w.highest});
+            merged.push_back({w.normal, w.lowest, w.highest, w.fixed, w.offset, w.weight, w.lowest, w.highest});
             continue;
         }
         it->normal_sum = it->normal_sum + w.normal;
         it->lowest = std::max(it->lowest, w.lowest);
         it->highest = std::min(it->highest, w.highest);
-        it->inscribed = it->inscribed && w.inscribed;
-        if (w.planar) it->planar = true, it->planar_offset = w.offset;
+        if (w.fixed) it->fixed = true, it->fixed_offset = w.offset;
         if (w.weight > it->weight) it->weight = w.weight, it->weight_lowest = w.lowest, it->weight_highest = w.highest;
     }
     auto capped = [&](const Vec3& o) {
@@ -67,7 +65,7 @@ Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset, const 
         const double w1 = dot(n1 - n2 * c, bend->outward) / det, w2 = dot(n2 - n1 * c, bend->outward) / det;
         double rest = bend->wanted - (d1 * w1 + d2 * w2);
         auto lean = [&](const Merged& m, double& d, double w) {
-            if (m.planar || !(std::abs(w) > 1e-6) || !(m.lowest <= m.highest)) return;
+            if (m.fixed || !(std::abs(w) > 1e-6) || !(m.lowest <= m.highest)) return;
             const double moved = std::clamp(d + rest / w, m.lowest, m.highest);
             rest -= (moved - d) * w;
             d = moved;

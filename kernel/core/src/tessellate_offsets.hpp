@@ -1,10 +1,10 @@
 #pragma once
 // Where a mesh vertex shared by several faces goes: each face wishes the vertex moved along its own
 // outward normal by its own offset within the range its cells accept (tessellate_plan.hpp's offset field;
-// a planar face wishes exactly 0, which keeps the vertex in its plane), and the vertex takes the shortest
+// a planar face, and one inscribed in its surface, wish exactly 0), and the vertex takes the shortest
 // move that grants every wish: the move o with o . n_i = offset_i for each distinct normal n_i. Along a
 // smooth edge (one normal: a seam, a G1 joint) the faces' wishes are one offset: the middle of the ranges
-// they all accept (0 between inscribed faces, as before there were offsets), or when they accept nothing
+// they all accept (a fixed wish wins), or when they accept nothing
 // in common what the face with the most cells accepts (the others, cheaper to refine, are refined); along a crease (two normals) the solution in the plane
 // of the two normals, which for a crease with a planar face lies in the plane (a cylinder's cap circle
 // moves out radially, the cap stays flat); at a corner of three or more faces, nothing. A move longer
@@ -20,10 +20,10 @@ namespace ratbez::detail {
 
 struct OffsetWish {
     Vec3 normal;            // unit, outward
-    double offset;          // along it: the centre of the face's errors there (0 for an inscribed face)
+    double offset;          // along it: the centre of the face's errors there
     double lowest, highest; // the offsets the face's cells accept there
-    bool planar = false;    // a planar face: exactly `offset` (0), so that the face stays planar
-    bool inscribed = false; // a face meshed on the surface: 0 where its neighbours accept it
+    bool fixed = false;     // exactly `offset` (0): a planar face, which stays planar, or one inscribed in
+                            // its surface, which keeps its vertices on it (its grid was checked so)
     double weight = 0;      // the face's cells: where the faces accept nothing in common, the heaviest wins
 };
 

@@ -383,9 +383,21 @@ OffsetField offset_field(const CurvatureSamples& c, const ParameterGrid& g, cons
 
 void interior_grid_points(const SurfacePlan& plan, const ParameterGrid& grid, std::vector<Vec3>& out) {
     thread_local SurfaceGrid batch;
-    evaluate_grid(plan.face->surface(), grid.u, grid.v, GridOutput::normals, batch);
     const std::size_t nu = grid.u.size(), nv = grid.v.size();
     out.resize(nu * nv);
+    bool offsets = plan.straddle;
+    if (offsets) {
+        try {
+            evaluate_grid(plan.face->surface(), grid.u, grid.v, GridOutput::normals, batch);
+        } catch (const Error&) {
+            offsets = false;  // a grid point without a tangent plane (nor a limit normal): none is moved
+        }
+    }
+    if (!offsets) {
+        evaluate_grid(plan.face->surface(), grid.u, grid.v, GridOutput::points, batch);
+        for (std::size_t k = 0; k < out.size(); ++k) out[k] = batch.points[k];
+        return;
+    }
     for (std::size_t i = 0; i < nu; ++i)
         for (std::size_t j = 0; j < nv; ++j) {
             const std::size_t k = i * nv + j;
@@ -470,7 +482,19 @@ double over_budget_triangles(const SurfacePlan& plan, const CurvatureSamples& cu
 
 }  // namespace
 
-SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, CurvatureSamples& curvature) {
+bool may_straddle(std::span<const Face> faces) {
+    for (const Face& face : faces) {
+        if (face.kind() != Face::Kind::surface) continue;
+        double lightest = std::numeric_limits<double>::infinity(), heaviest = 0;
+        for (const auto& row : face.surface().weights())
+            for (double w : row) lightest = std::min(lightest, w), heaviest = std::max(heaviest, w);
+        if (!(heaviest <= kStraddleWeightRatio * lightest)) return false;
+    }
+    return true;
+}
+
+SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, CurvatureSamples& curvature,
+                      bool straddle) {
     // The curvature samples cost memory and time like triangles do (about 200 bytes each): a face
     // with more knot spans than the budget can sample (10^5 spans revolved into 4 x 10^5 patches) is
     // refused up front. A small budget still allows the 2^18 samples any ordinary face needs.
@@ -507,7 +531,7 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
                                                      plan.min_segments, plan.creases, max_cells(settings), true);
         ParameterGrid inscribed = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments,
                                               plan.creases, max_cells(settings), false);
-        plan.straddle = !straddling.u.empty() && (inscribed.u.empty() || straddling.cells() < inscribed.cells());
+        plan.straddle = straddle && !straddling.u.empty() && (inscribed.u.empty() || straddling.cells() < inscribed.cells());
         plan.target = plan.straddle ? settings.check_tolerance() : settings.tolerance;
         plan.grid = plan.straddle ? straddling : std::move(inscribed);
     };
@@ -692,10 +716,11 @@ void plan_surfaces(std::span<const Face> faces, const TessellationSettings& sett
                    std::vector<SurfacePlan>& plans) {
     plans.clear();
     std::vector<CurvatureSamples> curvatures;
+    const bool straddle = may_straddle(faces);
     for (const Face& face : faces) {
         if (face.kind() != Face::Kind::surface) continue;
         curvatures.emplace_back();
-        plans.push_back(plan_face(face, settings, curvatures.back()));
+        plans.push_back(plan_face(face, settings, curvatures.back(), straddle));
     }
     // The estimate for the whole solid before any mesh is built: two triangles per cell, plus the
     // planar faces (about one triangle per boundary sample, bounded by the cells along their edges).

@@ -161,9 +161,20 @@ double offset_room(double gap, double max_offset);
 std::array<int, 2> minimum_segments(const std::array<SideMap, 4>& sides);
 
 // The model plan of surface face `face` (sides, creases, and the grid choose_grid makes from the
-// curvature samples, not yet checked); `curvature` receives the samples for refine_grid. Throws Error
-// when the face alone needs more curvature samples or cells than settings.max_triangles allows.
-SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, CurvatureSamples& curvature);
+// curvature samples, not yet checked; straddling the surface where that is cheaper and `straddle` allows
+// it); `curvature` receives the samples for refine_grid. Throws Error when the face alone needs more
+// curvature samples or cells than settings.max_triangles allows.
+SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, CurvatureSamples& curvature,
+                      bool straddle = true);
+
+// False when any surface face's weights differ by more than kStraddleWeightRatio: weights far apart crowd
+// a surface's geometry into slivers of its parameter domain (the round trip test's weights within
+// 10^+-3), which the offsets, bilinear between curvature samples, follow poorly; their faces and the faces
+// they share edges with would be moved by offsets none of the checks can trust (round trip seeds 20261512,
+// 20262302: a deviation over the tolerance, a mesh that intersects itself). Such solids are inscribed in
+// their surfaces, as before there were offsets.
+inline constexpr double kStraddleWeightRatio = 16;
+bool may_straddle(std::span<const Face> faces);
 
 // The plan's offsets for its current grid (offset_field).
 void set_offsets(SurfacePlan& plan, const CurvatureSamples& curvature);
