@@ -6,8 +6,8 @@
 //  2. edge sampling (here): edges are sampled once: an edge used by surface faces takes the union of
 //     their lines along it (tessellate_sides.hpp), an edge of planar faces only is sampled by its own
 //     chordal deviation; a sample, and a B-rep vertex, moves as all the faces using it wish
-//     (tessellate_offsets.hpp), a function of its parameter alone, so that the checks of both faces and
-//     the mesh see the same point;
+//     (tessellate_offsets.hpp), a function of the plans alone (proposals_of), so that the checks of both
+//     faces and the mesh see the same point; a crease's polyline is split where it strays from its curve;
 //  3. assembly (here): the cells of each grid become triangles on the shared edge samples; cells along
 //     a boundary whose edge carries extra samples (from the neighbouring face) are closed with a zipper
 //     strip; degenerate sides collapse to their single vertex, so cells at a pole become fan triangles.
@@ -35,6 +35,7 @@
 #include "tessellate_offsets.hpp"
 #include "tessellate_plan.hpp"
 #include "tessellate_sides.hpp"
+#include "triangle_grid.hpp"
 
 namespace ratbez {
 namespace {
@@ -375,7 +376,7 @@ private:
                 for (const Proposal& q : proposals) ts.push_back(q.t);
                 samples.params = detail::merge_params(std::move(ts), d.min, d.max);
             } else {
-                samples.params = detail::merge_params(sample_curve(edge->curve, settings_.check_tolerance()), d.min, d.max);
+                samples.params = detail::merge_params(sample_curve(edge->curve, settings_.tolerance), d.min, d.max);
             }
             const double eps = 1e-12 * (d.max - d.min);  // merge_params' rounding
             std::vector<Vec3> points;
@@ -401,19 +402,23 @@ private:
             // Along a crease the edge is the faces' boundary: the polyline must keep within the tolerance of
             // the curve itself, which neither face's check sees. A chord that strays further is split (the
             // faces close the cells along it with a zipper strip, as for another face's extra samples).
-            // The bound: the loosest target of the faces along the edge (an inscribed face's chords already
-            // keep within its own, the tolerance: no split).
+            // The bound: the loosest target of the faces along the edge. Between faces inscribed in their
+            // surfaces the edge's samples lie on it and the meshes stay as they were before the offsets.
             double bound = 0;
+            bool straddled = false;
             for (const EdgeUse& use : edge_uses_[edge.get()])
-                if (use.face->kind() == Face::Kind::surface) bound = std::max(bound, plans_[use.plan].target);
-            if (!proposals.empty() && is_crease(edge.get())) {
+                if (use.face->kind() == Face::Kind::surface) {
+                    bound = std::max(bound, plans_[use.plan].target);
+                    straddled = straddled || plans_[use.plan].straddle;
+                }
+            if (straddled && is_crease(edge.get())) {
                 for (int round = 0; round < 8; ++round) {
                     std::vector<double> added;
                     for (std::size_t k = 0; k + 1 < samples.params.size(); ++k) {
                         const double a = samples.params[k], b = samples.params[k + 1];
                         double error = 0;
                         for (double f : {0.25, 0.5, 0.75})
-                            error = std::max(error, point_segment_distance(edge->curve.point(a + f * (b - a)), points[k],
+                            error = std::max(error, detail::point_segment_distance(edge->curve.point(a + f * (b - a)), points[k],
                                                                            points[k + 1]));
                         if (error > bound) added.push_back(0.5 * (a + b));
                     }
@@ -466,13 +471,6 @@ private:
         double gap = std::numeric_limits<double>::infinity(), chord = gap;
         for (auto q = lower; q != proposals.end() && q->t <= t + eps; ++q) gap = std::min(gap, q->gap), chord = std::min(chord, q->chord);
         return {gap, chord};
-    }
-
-    static double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
-        const Vec3 ab = b - a;
-        const double length2 = dot(ab, ab);
-        const double f = length2 > 0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-        return distance(p, a + ab * f);
     }
 
     // The distance from points[k] to the farther of its neighbours in the list.

@@ -15,6 +15,7 @@
 #include "ratbez/error.hpp"
 #include "ratbez/tessellate.hpp"
 #include "ratbez/surface_grid.hpp"
+#include "triangle_grid.hpp"
 
 namespace ratbez::detail {
 namespace {
@@ -571,14 +572,11 @@ void check_sides(const SurfacePlan& plan, const std::vector<Vec3>& corners, Grid
         for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
             const Vec3& a = along_u ? corners[k * nv + fixed] : corners[fixed * nv + k];
             const Vec3& b = along_u ? corners[(k + 1) * nv + fixed] : corners[fixed * nv + k + 1];
-            const Vec3 ab = b - a;
-            const double length2 = dot(ab, ab);
             double error = 0;
             for (double f : {0.25, 0.5, 0.75}) {
                 const double t = lines[k] + f * (lines[k + 1] - lines[k]);
                 const Vec3 p = along_u ? plan.evaluator->point(t, across) : plan.evaluator->point(across, t);
-                const double along = length2 > 0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-                error = std::max(error, distance(p, a + ab * along));
+                error = std::max(error, point_segment_distance(p, a, b));
             }
             const double ratio = error / plan.target;
             check.worst_ratio = std::max(check.worst_ratio, ratio);
@@ -614,7 +612,7 @@ bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
         points(plan, corners);
         GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed, plan.target,
                                      settings.angle_rad, new_u, new_v, corners, [&] { settings.poll(); });
-        check_sides(plan, corners, check);
+        if (plan.straddle) check_sides(plan, corners, check);  // an inscribed face's sides lie on its surface
         if (check.worst_ratio <= 1) return changed;
         const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
                                      std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;

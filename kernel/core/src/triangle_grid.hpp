@@ -13,6 +13,9 @@
 
 namespace ratbez::detail {
 
+// The distance from p to the segment (a, b): to its closest point, the projection clamped to the segment.
+double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b);
+
 // The distance from p to the triangle (a, b, c): the closest point on a triangle by its Voronoi regions
 // (Ericson, Real-Time Collision Detection, 2005, §5.1.5).
 double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
