@@ -210,17 +210,20 @@ private:
         }
     }
 
-    static detail::OffsetWish planar_wish(const Face& face) { return {face.plane().normal, 0.0, 0.0, 0.0, true, 0.0}; }
+    static detail::OffsetWish planar_wish(const Face& face) {
+        return {face.plane().normal, 0.0, 0.0, 0.0, true, 0.0, &face};
+    }
     static detail::OffsetWish surface_wish(const SurfacePlan& p, const Vec3& normal, double u, double v) {
-        if (!p.straddle) return {normal, 0.0, 0.0, 0.0, true, p.grid.cells()};
-        return {normal, p.offsets.at(u, v), p.offsets.lowest_at(u, v), p.offsets.highest_at(u, v), false, p.grid.cells()};
+        if (!p.straddle) return {normal, 0.0, 0.0, 0.0, true, p.grid.cells(), p.face};
+        return {normal, p.offsets.at(u, v), p.offsets.lowest_at(u, v), p.offsets.highest_at(u, v), false, p.grid.cells(),
+                p.face};
     }
 
-    // The move of the edge sample at parameter t, `gap` away from its nearest neighbour on the edge: what its
-    // faces wish (a planar face: to stay in its plane), at most the smallest max_offset of its surface faces,
-    // a quarter of the edge's radius of curvature there (longer moves towards the centre of curvature would
-    // fold the edge's polygon, and a cap with it) and the offset_room its neighbours leave (the face's own
-    // lines: see sample_edges).
+    // The move of the edge sample at parameter t, `gap` and `chord` away from its nearer and farther
+    // neighbours on the edge (proposals_of): what its faces wish (a planar face: to stay in its plane), at
+    // most the smallest max_offset of its surface faces, a quarter of the edge's radius of curvature there
+    // (longer moves towards the centre of curvature would fold the edge's polygon, and a cap with it) and the
+    // offset_room its neighbours leave; at a crease leaning towards centring the edge's polyline on its curve.
     Vec3 edge_offset(const Edge* edge, double t, double gap, double chord) {
         wishes_.clear();
         double cap = std::numeric_limits<double>::infinity();
@@ -276,6 +279,9 @@ private:
         return it->second;
     }
 
+    // The move of a B-rep vertex: as its faces wish (a planar face, an inscribed one: none), nothing at a
+    // corner of three or more faces or where a face has no normal, and at a pole only when the surface's
+    // limit normal is one direction around it (not at an apex).
     Vec3 vertex_offset(const Vertex* vertex) {
         wishes_.clear();
         double cap = std::numeric_limits<double>::infinity();
@@ -357,9 +363,9 @@ private:
     }
 
     // Every edge's samples: the union of the lines of the surface faces along it (or its own chordal
-    // sampling for an edge of planar faces only), each moved by edge_offset with the gap its proposing face
-    // saw between its own lines (the smallest, when both faces propose it): the very point that face's
-    // check saw. The other face sees it as an extra sample of a boundary cell, as before the offsets.
+    // sampling for an edge of planar faces only), each moved by edge_offset as its proposals say: the very
+    // point the faces' checks saw. A face that did not propose it sees it as an extra sample of a boundary
+    // cell, as before the offsets.
     void sample_edges() {
         for (const EdgePtr& edge : distinct_edges(faces_)) {
             EdgeSamples samples;

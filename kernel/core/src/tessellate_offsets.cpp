@@ -17,9 +17,12 @@ Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset, const 
         bool fixed = false;
         double fixed_offset = 0;
         double weight = 0, weight_lowest = 0, weight_highest = 0;  // the heaviest wish's range
+        const void* face = nullptr;
+        bool joint = false;  // wishes of two different faces
         Vec3 normal() const { return normal_sum / norm(normal_sum); }
         double offset() const {
             if (fixed) return fixed_offset;
+            if (joint) return 0;
             if (lowest <= highest) return 0.5 * (lowest + highest);
             return std::clamp(0.5 * (lowest + highest), weight_lowest, weight_highest);
         }
@@ -33,13 +36,14 @@ Vec3 shared_offset(std::span<const OffsetWish> wishes, double max_offset, const 
         all_offsets += w.offset;
         auto it = std::find_if(merged.begin(), merged.end(), [&](const Merged& m) { return dot(m.normal(), w.normal) > same; });
         if (it == merged.end()) {
-            merged.push_back({w.normal, w.lowest, w.highest, w.fixed, w.offset, w.weight, w.lowest, w.highest});
+            merged.push_back({w.normal, w.lowest, w.highest, w.fixed, w.offset, w.weight, w.lowest, w.highest, w.face, false});
             continue;
         }
         it->normal_sum = it->normal_sum + w.normal;
         it->lowest = std::max(it->lowest, w.lowest);
         it->highest = std::min(it->highest, w.highest);
         if (w.fixed) it->fixed = true, it->fixed_offset = w.offset;
+        if (w.face != it->face) it->joint = true;
         if (w.weight > it->weight) it->weight = w.weight, it->weight_lowest = w.lowest, it->weight_highest = w.highest;
     }
     auto capped = [&](const Vec3& o) {

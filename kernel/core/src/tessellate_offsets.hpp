@@ -3,8 +3,11 @@
 // outward normal by its own offset within the range its cells accept (tessellate_plan.hpp's offset field;
 // a planar face, and one inscribed in its surface, wish exactly 0), and the vertex takes the shortest
 // move that grants every wish: the move o with o . n_i = offset_i for each distinct normal n_i. Along a
-// smooth edge (one normal: a seam, a G1 joint) the faces' wishes are one offset: the middle of the ranges
-// they all accept (a fixed wish wins), or when they accept nothing
+// smooth edge (one normal) between two different faces (a G1 joint), nothing: the samples of both faces'
+// lines meet there, and the strips that zip them together are checked by neither face (a ring's outer
+// wall and its rounded top, at a tolerance of 1% of its size); along a seam (one face on both sides) the
+// face's wishes are one offset: the middle of the ranges they all accept (a fixed wish wins), or when they
+// accept nothing
 // in common what the face with the most cells accepts (the others, cheaper to refine, are refined); along a crease (two normals) the solution in the plane
 // of the two normals, which for a crease with a planar face lies in the plane (a cylinder's cap circle
 // moves out radially, the cap stays flat); at a corner of three or more faces, nothing. A move longer
@@ -25,6 +28,7 @@ struct OffsetWish {
     bool fixed = false;     // exactly `offset` (0): a planar face, which stays planar, or one inscribed in
                             // its surface, which keeps its vertices on it (its grid was checked so)
     double weight = 0;      // the face's cells: where the faces accept nothing in common, the heaviest wins
+    const void* face = nullptr;  // whose wish: along a smooth joint of two faces the vertex stays put
 };
 
 // A crease edge's own wish for its samples: its polyline's chords sag by s from the curve, towards the
