@@ -95,8 +95,9 @@ TEST_P(TessellateShape, ClosedOutwardWithinToleranceAndVolumeBound) {
     EXPECT_LE(deviation, tolerance);
     EXPECT_GT(deviation, 0.05 * tolerance);  // not absurdly finer than asked
     // And the other way: the mesh covers the surface within the tolerance (its vertices lie off the surface,
-    // so this is not implied by the triangles lying close to it). Measured on the smaller meshes only.
-    if (fraction >= 1e-3) {
+    // so this is not implied by the triangles lying close to it). Measured on the smallest meshes only (it
+    // costs as much as max_deviation; TessellateEconomy measures finer meshes in the Release run).
+    if (fraction >= 1e-2) {
         EXPECT_LE(max_surface_to_mesh_distance(solid, mesh), tolerance);
     }
     const double exact_volume = solid.volume();
@@ -150,7 +151,7 @@ TEST(Tessellate, SpherePolesAreFans) {
 TEST(Tessellate, SphereMeshStraddlesTheSurface) {
     // Vertices outside the sphere, triangle middles inside: the mesh errs both ways, by at most the
     // tolerance each (an inscribed mesh errs inward only, by the whole tolerance, with twice the triangles).
-    const double radius = 2.0, tolerance = 1e-3;
+    const double radius = 2.0, tolerance = 1e-2;
     const Solid solid = sphere(radius);
     const Mesh mesh = tessellate(solid, tolerance);
     double outermost = 0, innermost = radius;
@@ -166,7 +167,7 @@ TEST(Tessellate, SphereMeshStraddlesTheSurface) {
     // The measurement is settled at its default density: the largest distance sits at a vertex or a
     // triangle's edge midpoint or centroid, which the lattice holds.
     DeviationOptions dense;
-    dense.samples_per_edge = 24;
+    dense.samples_per_edge = 12;
     EXPECT_NEAR(max_deviation(solid, mesh, dense), max_deviation(solid, mesh), 1e-3 * tolerance);
 }
 
