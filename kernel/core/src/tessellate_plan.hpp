@@ -200,8 +200,10 @@ void match_lines_at_creases(std::vector<SurfacePlan>& plans, const TessellationS
 
 // The whole planning stage for the faces of a solid (or a single face): plan_face for every surface face
 // (into `plans`, which `points` may read: the offsets of a shared edge depend on the faces on both sides),
-// the triangle estimate of them all against the budget, refine_grid for each, then match_lines_at_creases.
-// Reports progress from 0 to kPlannedFraction, face by face.
+// the triangle estimate of them all against the budget, refine_grid for each, match_lines_at_creases, then
+// every face checked again with the points of the final plans until none changes (the points along a
+// face's sides move with its neighbours' plans). Straddling only where may_straddle allows it. Reports
+// progress from 0 to kPlannedFraction, face by face.
 inline constexpr double kPlannedFraction = 0.5;
 void plan_surfaces(std::span<const Face> faces, const TessellationSettings& settings, const GridPoints& points,
                    std::vector<SurfacePlan>& plans);
