@@ -32,13 +32,13 @@ def test_every_section_prints_its_rows_without_a_filter(capsys):
                    "sweep/torus vs MakePipeShell volume error", "sweep/helix_1e-4 vs MakePipeShell deviation",
                    "sweep/helix_1e-6 vs MakePipeShell valid (BRepCheck)", "export/scad", "export/stl_binary",
                    "python eval/sphere/D0 1000x1000 vs GeomAdaptor", "python eval/sphere/D1 1000x1000 vs GeomAdaptor",
-                   "python eval/sphere/D0 1000x1000 vs C++ grid", "native/sphere_r10_tol0.01 triangles vs OpenSCAD",
-                   "native/torus_R10_r3_tol0.01 deviation/tol"):
+                   "python eval/sphere/D0 1000x1000 vs C++ grid", "sphere_r10_tol0.01 triangles vs inscribed bound",
+                   "native/sphere_r10_tol0.01 triangles vs OpenSCAD", "native/torus_R10_r3_tol0.01 deviation/tol"):
         assert any(n.startswith(prefix) for n in names), prefix
-    # The fixture's targets (evaluation >= 3x GeomAdaptor, tessellation, .scad export rate, each loft and
-    # sweep valid, the two helix sweeps within their tolerance, Python D0 and D1, fewer triangles than
-    # OpenSCAD's sphere and torus) all get a verdict.
-    assert len(table.verdicts) == 4 + 5 + 2 + 2 + 2 and set(table.verdicts) <= {"PASS", "FAIL"}
+    # The fixture's targets (evaluation >= 3x GeomAdaptor, tessellation, the sphere against its inscribed
+    # bound, .scad export rate, each loft and sweep valid, the two helix sweeps within their tolerance, Python
+    # D0 and D1, fewer triangles than OpenSCAD's sphere and torus) all get a verdict.
+    assert len(table.verdicts) == 4 + 5 + 2 + 2 + 1 + 2 and set(table.verdicts) <= {"PASS", "FAIL"}
     out = capsys.readouterr().out
     assert "targets met" in out and "ratbez benchmarks: nproc = 2" in out
     assert all(len(row) == len(table.rows[0]) for row in table.rows)
@@ -113,3 +113,20 @@ def test_native_rows_want_fewer_triangles_within_the_tolerance(tmp_path):
     assert verdict(4000, 9896) == ["PASS"]
     assert verdict(9896, 9896) == ["FAIL"]
     assert verdict(4000, 9896, our_deviation=0.011) == ["FAIL"]
+
+
+def test_the_sphere_passes_at_or_below_its_inscribed_bound_only(tmp_path):
+    """bound/sphere_r10_tol0.01 (issue 17): PASS with the fixture's 4,284 triangles of 4,837, FAIL above it."""
+    with open(os.path.join(FIXTURE, "tessellation.json")) as f:
+        data = json.load(f)
+    table = report.Table()
+    report.bound_rows(table, report.load(FIXTURE, "tessellation")[1])
+    assert table.verdicts == ["PASS"]
+    for b in data["benchmarks"]:
+        if b["run_name"].startswith("bound/"):
+            b["triangles"] = b["bound"] + 1
+    with open(tmp_path / "tessellation.json", "w") as f:
+        json.dump(data, f)
+    table = report.Table()
+    report.bound_rows(table, report.load(str(tmp_path), "tessellation")[1])
+    assert table.verdicts == ["FAIL"]

@@ -446,3 +446,30 @@ TEST_F(Cli, DemoFailsWhenTwoSpecsShareAName) {
 }
 
 }  // namespace
+
+namespace {
+
+class CliEconomy : public Cli {};
+
+// Issue 17: meshes that straddle the surface need fewer triangles; no example may need more than the
+// inscribed meshes did (main at 93a7f42, each example at its own tolerance). Binary STL without the
+// self-intersection check keeps it cheap (no deviation measurement: TessellateEconomy and TessellateShape
+// measure both directions); release only (scripts/test.sh).
+TEST_F(CliEconomy, ExamplesNeedNoMoreTrianglesThanInscribedMeshes) {
+    const std::vector<std::pair<std::string, int>> before{
+        {"cone", 344},  {"cone_apex", 70}, {"cylinder", 128}, {"extrude", 108}, {"loft", 1596},  {"partial_revolve", 1154},
+        {"ring", 1808}, {"ruled", 932},    {"sphere", 7990},  {"sweep", 1940},  {"torus", 2208}, {"vase", 6064}};
+    for (const auto& [name, most] : before) {
+        SCOPED_TRACE(name);
+        const CommandResult run =
+            ratbez({"export", example(name + ".json"), "-o", path(name + ".stl"), "--skip-self-intersection-check"});
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        const auto open = run.out.find(" ("), end = run.out.find(" triangles");
+        ASSERT_NE(end, std::string::npos) << run.out;
+        const int triangles = std::stoi(run.out.substr(open + 2, end - open - 2));
+        EXPECT_LE(triangles, most);
+        EXPECT_GT(triangles, most / 3);  // a mesh, not a token
+    }
+}
+
+}  // namespace

@@ -38,7 +38,9 @@
 #include "ratbez/box.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/surface_grid.hpp"
 #include "surface_evaluator.hpp"
+#include "triangle_grid.hpp"
 
 namespace ratbez {
 namespace {
@@ -481,7 +483,7 @@ public:
     double upper_bound(const Vec3& p, std::uint32_t face, Foot& warm, double enough) const {
         if (!regions_[face].curves.empty()) return regions_[face].distance_to(p);
         const detail::SurfaceEvaluator& s = *evaluators_[face];
-        warm = detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, warm.u, warm.v, {4, enough});
+        warm = detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, warm.u, warm.v, {8, enough});
         return warm.distance;
     }
 
@@ -507,7 +509,9 @@ private:
 
 }  // namespace
 
-double max_deviation(const Solid& solid, const Mesh& mesh, const DeviationOptions& options) {
+namespace {
+
+void require_valid(const Mesh& mesh, const DeviationOptions& options) {
     require(options.samples_per_edge >= 1 && options.samples_per_edge <= 1000, "options.samples_per_edge",
             "must be in [1, 1000]");
     for (const Vec3& v : mesh.vertices) require(is_finite(v), "mesh", "has a vertex with non-finite coordinates");
@@ -517,6 +521,99 @@ double max_deviation(const Solid& solid, const Mesh& mesh, const DeviationOption
                 return "triangle " + std::to_string(t) + " refers to vertex " + std::to_string(index) + " of " +
                        std::to_string(mesh.vertices.size());
             });
+}
+
+// Parameters along one direction of a surface at a spacing of about h in space: every weight-certified
+// piece of every knot span (seed_params) cut into as many equal parts as its longest isocurve, measured
+// along a few isocurves of the other direction, is long in units of h.
+std::vector<double> coverage_params(const NurbsSurface& s, const std::vector<std::vector<BezierSurface>>& patches,
+                                    bool along_u, double h) {
+    const detail::SeedParams pieces = along_u ? detail::seed_params(patches, true, s.knots_u(), s.degree_u())
+                                              : detail::seed_params(patches, false, s.knots_v(), s.degree_v());
+    const Interval other = along_u ? s.domain_v() : s.domain_u();
+    std::vector<double> params{pieces.pieces.front().min};
+    for (const Interval& piece : pieces.pieces) {
+        double length = 0;
+        for (int q = 0; q <= 4; ++q) {
+            const double w = other.min + (other.max - other.min) * q / 4.0;
+            auto at = [&](double t) { return along_u ? s.point(t, w) : s.point(w, t); };
+            double l = 0;
+            Vec3 previous = at(piece.min);
+            for (int k = 1; k <= 8; ++k) {
+                const Vec3 p = at(piece.min + (piece.max - piece.min) * k / 8.0);
+                l += distance(p, previous);
+                previous = p;
+            }
+            length = std::max(length, l);
+        }
+        const int parts = static_cast<int>(std::clamp(std::ceil(length / h), 1.0, 1e5));
+        for (int k = 1; k <= parts; ++k) params.push_back(k == parts ? piece.max : piece.min + (piece.max - piece.min) * k / parts);
+    }
+    return params;
+}
+
+// Points of a planar face's region at a spacing of about h: its boundary curves' polyline (make_region)
+// and a grid of rows in the plane filled between the crossings of each row with the polyline (even-odd).
+std::vector<Vec3> planar_samples(const PlanarRegion& region, double h) {
+    std::vector<Vec3> out;
+    auto to_space = [&](double x, double y) { return region.plane.origin + region.plane.x_axis * x + region.plane.y_axis * y; };
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+    for (const auto& seg : region.segments) {
+        const double length = std::hypot(seg.b.x - seg.a.x, seg.b.y - seg.a.y);
+        const int parts = static_cast<int>(std::clamp(std::ceil(length / h), 1.0, 1e5));
+        for (int k = 0; k < parts; ++k) {
+            const double f = static_cast<double>(k) / parts;
+            out.push_back(to_space(seg.a.x + f * (seg.b.x - seg.a.x), seg.a.y + f * (seg.b.y - seg.a.y)));
+        }
+        x0 = std::min({x0, seg.a.x, seg.b.x}), x1 = std::max({x1, seg.a.x, seg.b.x});
+        y0 = std::min({y0, seg.a.y, seg.b.y}), y1 = std::max({y1, seg.a.y, seg.b.y});
+    }
+    if (!(x1 > x0 && y1 > y0)) return out;
+    const int rows = static_cast<int>(std::clamp(std::ceil((y1 - y0) / h), 1.0, 1e5));
+    std::vector<double> crossings;
+    for (int r = 0; r < rows; ++r) {
+        const double y = y0 + (y1 - y0) * (r + 0.5) / rows;
+        crossings.clear();
+        for (const auto& seg : region.segments)
+            if ((seg.a.y <= y) != (seg.b.y <= y)) crossings.push_back(seg.a.x + (y - seg.a.y) / (seg.b.y - seg.a.y) * (seg.b.x - seg.a.x));
+        std::sort(crossings.begin(), crossings.end());
+        for (std::size_t k = 0; k + 1 < crossings.size(); k += 2)
+            for (double x = crossings[k]; x <= crossings[k + 1]; x += h) out.push_back(to_space(x, y));
+    }
+    return out;
+}
+
+}  // namespace
+
+double max_surface_to_mesh_distance(const Solid& solid, const Mesh& mesh, const DeviationOptions& options) {
+    require_valid(mesh, options);
+    if (mesh.triangles.empty()) return std::numeric_limits<double>::infinity();
+    const detail::TriangleGrid grid(mesh);
+    // As many samples as max_deviation takes on the mesh: (n + 1)(n + 2) / 2 per triangle.
+    const double n = options.samples_per_edge;
+    const double samples = static_cast<double>(mesh.triangles.size()) * (n + 1) * (n + 2) / 2;
+    const double h = std::sqrt(std::max(mesh.area(), 1e-300) / samples);
+    double worst = 0;
+    SurfaceGrid points;
+    for (const Face& face : solid.faces()) {
+        if (face.kind() == Face::Kind::planar) {
+            for (const Vec3& p : planar_samples(make_region(face), h)) worst = std::max(worst, grid.distance(p));
+            continue;
+        }
+        const NurbsSurface& s = face.surface();
+        const auto patches = s.bezier_patches();
+        const std::vector<double> us = coverage_params(s, patches, true, h), vs = coverage_params(s, patches, false, h);
+        // A row of the grid at a time, so memory stays with the row, not the face.
+        for (double u : us) {
+            evaluate_grid(s, std::span<const double>(&u, 1), vs, GridOutput::points, points);
+            for (std::size_t k = 0; k < points.points.size(); ++k) worst = std::max(worst, grid.distance(points.points[k]));
+        }
+    }
+    return worst;
+}
+
+double max_deviation(const Solid& solid, const Mesh& mesh, const DeviationOptions& options) {
+    require_valid(mesh, options);
     if (mesh.triangles.empty()) return 0;
 
     const DeviationMeter meter(solid);

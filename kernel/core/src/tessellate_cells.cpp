@@ -181,9 +181,8 @@ CellSamples lattice_samples(bool diagonal_00_11) {
 template <class At, class PartialsAt>
 void check_plain_cell(const SurfaceEvaluator& s, const ParameterBox& domain, double tolerance, At&& at,
                       PartialsAt&& partials_at, const double* us, const double* vs, std::size_t i, std::size_t j,
-                      const NormalTurn& turn, GridCheck& result) {
+                      const std::array<Vec3, 4>& c, const NormalTurn& turn, GridCheck& result) {
     static const std::array<CellSamples, 2> kSamples{lattice_samples(false), lattice_samples(true)};
-    const std::array<Vec3, 4> c{at(0, 0), at(6, 0), at(6, 6), at(0, 6)};
     const Vec3 center = at(3, 3);
     // zip_rails on the rails {c00, c10} and {c01, c11}: the diagonal c00-c11 unless it costs no less.
     const double cost_00_11 = distance(center, 0.5 * (c[0] + c[2])) + 1e-9 * distance(c[0], c[2]);
@@ -223,9 +222,11 @@ void check_plain_cell(const SurfaceEvaluator& s, const ParameterBox& domain, dou
         error = std::max(error, gauss_newton_bound(s, above[n].chord, domain, us[x.a], vs[x.b], at(x.a, x.b),
                                                    [&] { return partials_at(x.a, x.b); }, good_enough));
     }
+    // Which direction to refine is the surface's own chords' business (the offsets are not).
     record_cell(result, i, j, error / tolerance, turn, [&] {
-        return std::pair{std::max(distance(at(3, 0), 0.5 * (c[0] + c[1])), distance(at(3, 6), 0.5 * (c[3] + c[2]))),
-                         std::max(distance(at(0, 3), 0.5 * (c[0] + c[3])), distance(at(6, 3), 0.5 * (c[1] + c[2])))};
+        const std::array<Vec3, 4> q{at(0, 0), at(6, 0), at(6, 6), at(0, 6)};
+        return std::pair{std::max(distance(at(3, 0), 0.5 * (q[0] + q[1])), distance(at(3, 6), 0.5 * (q[3] + q[2]))),
+                         std::max(distance(at(0, 3), 0.5 * (q[0] + q[3])), distance(at(6, 3), 0.5 * (q[1] + q[2])))};
     });
 }
 
@@ -273,7 +274,7 @@ bool triangulate_cell(const SurfaceEvaluator& s, const std::vector<CellVertex>& 
 // sides (pole fans, whose samples leave the lattice) evaluate point by point.
 GridCheck check_grid(const SurfaceEvaluator& s, const NurbsSurface& surface, const ParameterGrid& g,
                      const std::array<bool, 4>& collapsed_sides, double tolerance, double angle_rad,
-                     const std::vector<char>& new_u, const std::vector<char>& new_v,
+                     const std::vector<char>& new_u, const std::vector<char>& new_v, const std::vector<Vec3>& corners,
                      const std::function<void()>& poll) {
     const std::size_t nu = g.u.size(), nv = g.v.size();
     const ParameterBox domain{s.domain_u(), s.domain_v()};
@@ -304,11 +305,9 @@ GridCheck check_grid(const SurfaceEvaluator& s, const NurbsSurface& surface, con
     std::vector<CellVertex> lower, upper;
     CellVertex center;
     std::vector<CellTriangle> triangles;
-    // The general path: any cell, every surface point evaluated here (corners from `corner`).
-    auto check_general = [&](std::size_t i, std::size_t j, auto&& corner) {
-        auto vertex = [&](std::size_t a, std::size_t b) {
-            return CellVertex{g.u[a], g.v[b], corner(a - i, b - j), id_of(a, b)};
-        };
+    // The general path: any cell, every surface point evaluated here.
+    auto check_general = [&](std::size_t i, std::size_t j) {
+        auto vertex = [&](std::size_t a, std::size_t b) { return CellVertex{g.u[a], g.v[b], corners[a * nv + b], id_of(a, b)}; };
         triangles.clear();
         const CellVertex c00 = vertex(i, j), c10 = vertex(i + 1, j), c11 = vertex(i + 1, j + 1), c01 = vertex(i, j + 1);
         if (triangulate_cell(s, {c00, c10}, {c10, c11}, {c01, c11}, {c00, c01}, lower, upper, center, triangles)) {
@@ -383,12 +382,12 @@ GridCheck check_grid(const SurfaceEvaluator& s, const NurbsSurface& surface, con
                                                        difference([&](int k) { return at(a, k); }, b, cv)};
                     };
                     if (plain(i, j)) {
-                        check_plain_cell(s, domain, tolerance, at, partials_at, cu, cv, i, j,
+                        const std::array<Vec3, 4> c{corners[i * nv + j], corners[(i + 1) * nv + j],
+                                                    corners[(i + 1) * nv + j + 1], corners[i * nv + j + 1]};
+                        check_plain_cell(s, domain, tolerance, at, partials_at, cu, cv, i, j, c,
                                          normal_turn(normals, nv, i, j, angle_rad), result);
                     } else {
-                        check_general(i, j, [&](std::size_t di, std::size_t dj) {
-                            return at(6 * static_cast<int>(di), 6 * static_cast<int>(dj));
-                        });
+                        check_general(i, j);
                     }
                 }
         }

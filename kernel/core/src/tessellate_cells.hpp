@@ -54,14 +54,15 @@ struct GridCheck {
 };
 
 // The check of a face's grid on the real surface: every cell is triangulated as the mesh will be (its
-// corners only; `collapsed_sides`, indexed like Face::sides(), make pole fans) and its chordal error
-// bounded from above at 25 barycentric points of each triangle; with `angle_rad` > 0 the unit normals at
+// corners only, where the mesh puts them: corners[i * grid.v.size() + j], off the surface by their offsets;
+// `collapsed_sides`, indexed like Face::sides(), make pole fans) and its distance to the surface bounded
+// from above at 25 barycentric points of each triangle; with `angle_rad` > 0 the unit normals at
 // its corners must also turn by at most that. Only the cells in a new row (new_u[i]) or a new column
 // (new_v[j]) are checked: every other cell is the same as in the previous check, which it passed (a
 // failing cell is always bisected in some direction).
 GridCheck check_grid(const SurfaceEvaluator& s, const NurbsSurface& surface, const ParameterGrid& grid,
                      const std::array<bool, 4>& collapsed_sides, double tolerance, double angle_rad,
-                     const std::vector<char>& new_u, const std::vector<char>& new_v,
+                     const std::vector<char>& new_u, const std::vector<char>& new_v, const std::vector<Vec3>& corners,
                      const std::function<void()>& poll = {});
 
 }  // namespace ratbez::detail

@@ -15,6 +15,7 @@
 #include "ratbez/error.hpp"
 #include "ratbez/tessellate.hpp"
 #include "ratbez/surface_grid.hpp"
+#include "triangle_grid.hpp"
 
 namespace ratbez::detail {
 namespace {
@@ -193,6 +194,8 @@ CurvatureSamples sample_curvature(const NurbsSurface& s, std::size_t per_span) {
     c.vs = sample_params(breakpoints(s.degree_v(), s.knots_v()), per_span);
     c.L.resize(c.us.size() * c.vs.size());
     c.N.resize(c.L.size());
+    c.M.resize(c.L.size());
+    c.k_max.assign(c.L.size(), 0.0);
     c.normals.resize(c.L.size());
     // One batched evaluation of every partial up to order two (surface_grid.hpp), not a jet per sample.
     const SurfaceGrid g = evaluate_grid(s, c.us, c.vs, GridOutput::second_partials);
@@ -214,7 +217,17 @@ CurvatureSamples sample_curvature(const NurbsSurface& s, std::size_t per_span) {
             }
             c.L[k] = dot(g.duu[k], n);
             c.N[k] = dot(g.dvv[k], n);
+            c.M[k] = dot(g.duv[k], n);
             c.normals[k] = n;
+            // The principal curvatures from the fundamental forms: kappa = H +- sqrt(H^2 - K), with
+            // K = (LN - M^2) / (EG - F^2) and H = (EN - 2FM + GL) / (2 (EG - F^2)).
+            const double E = dot(su, su), F = dot(su, sv), G = dot(sv, sv), M = c.M[k];
+            const double area2 = E * G - F * F;
+            if (area2 > 1e-20 * (E * G + 1e-300)) {
+                const double K = (c.L[k] * c.N[k] - M * M) / area2;
+                const double H = (E * c.N[k] - 2 * F * M + G * c.L[k]) / (2 * area2);
+                c.k_max[k] = std::abs(H) + std::sqrt(std::max(H * H - K, 0.0));
+            }
         }
     return c;
 }
@@ -225,7 +238,7 @@ CurvatureSamples sample_curvature(const NurbsSurface& s, std::size_t per_span) {
 // direction's budget (which depends on the first direction's actual spacing), comparing |k| / budget
 // and taking one square root per sample interval.
 ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle_rad, std::array<int, 2> min_segments,
-                          const std::array<std::vector<double>, 2>& creases, double max_cells) {
+                          const std::array<std::vector<double>, 2>& creases, double max_cells, bool straddle) {
     const std::size_t nu = c.us.size(), nv = c.vs.size();
     std::vector<double> max_L(nu, 0.0), max_N(nv, 0.0), turn_u(nu - 1, 0.0), turn_v(nv - 1, 0.0);
     for (std::size_t i = 0; i < nu; ++i)
@@ -255,8 +268,11 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
         const auto& creases_second = creases[u_first ? 1 : 0];
         const double floor_first = min_first / (first_samples.back() - first_samples.front());
         const double floor_second = min_second / (second_samples.back() - second_samples.front());
-        for (double share : {0.3, 0.4, 0.5, 0.6, 0.7, 0.8}) {
-            const double budget8 = 8 * share * target;
+        for (double share : {0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8}) {
+            // |k| h^2 is 8 times a direction's part of the span, which may be twice the largest offset in
+            // all for a straddling mesh, the target for an inscribed one.
+            const double span = straddle ? 2 * kOffsetShare * target : target;
+            const double budget8 = 8 * share * span;
             const auto first = lines_from_density(
                 first_samples,
                 [&](std::size_t a) {
@@ -265,17 +281,28 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
                 },
                 creases_first, max_cells, rho);
             if (first.empty()) continue;
-            // What the first direction's actual chords leave of the budget where the curvatures add up.
+            // What the first direction's actual chords leave of the span at each place (whatever the signs:
+            // the mesh straddles the surface, see tessellate_plan.hpp), for the second direction's chords and
+            // the twist: 8 x span = |k1| h1^2 + |k2| h2^2 + 2 |M| h1 h2 <= 16 target, solved for 1 / h2^2.
             h_first.resize(first_samples.size());
             for (std::size_t a = 0; a < h_first.size(); ++a) h_first[a] = spacing_at(first, first_samples[a]);
-            const double full = 8 * target, least = 0.05 * 8 * target;
+            // An inscribed mesh: the larger of the two directions' errors where the curvatures differ in sign
+            // (they take both signs already), their sum where they agree; the twist is left to the check.
+            const double full = 8 * span, least = 0.05 * 8 * span;
             ratio.assign(second_samples.size(), 0.0);
             for (std::size_t i = 0; i < nu; ++i)
                 for (std::size_t j = 0; j < nv; ++j) {
                     const std::size_t k = c.at(i, j), a = u_first ? i : j, b = u_first ? j : i;
-                    const double k1 = k_first[k], k2 = k_second[k];
-                    const double used = k1 * k2 > 0 ? std::abs(k1) * h_first[a] * h_first[a] : 0.0;
-                    ratio[b] = std::max(ratio[b], std::abs(k2) / std::max(full - used, least));
+                    if (!straddle) {
+                        const double k1 = k_first[k], k2 = k_second[k];
+                        const double used = k1 * k2 > 0 ? std::abs(k1) * h_first[a] * h_first[a] : 0.0;
+                        ratio[b] = std::max(ratio[b], std::abs(k2) / std::max(full - used, least));
+                        continue;
+                    }
+                    const double used = std::abs(k_first[k]) * h_first[a] * h_first[a];
+                    const double rest = std::max(full - used, least), twist = std::abs(c.M[k]) * h_first[a];
+                    const double inverse_h2 = (twist + std::sqrt(twist * twist + std::abs(k_second[k]) * rest)) / rest;
+                    ratio[b] = std::max(ratio[b], inverse_h2 * inverse_h2);
                 }
             const auto second = lines_from_density(
                 second_samples,
@@ -294,6 +321,107 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
         }
     }
     return best;
+}
+
+double OffsetField::interpolate(const std::vector<double>& field, double u, double v) const {
+    if (field.empty()) return 0;
+    auto locate = [](const std::vector<double>& t, double x, std::size_t& k, double& f) {
+        const auto it = std::upper_bound(t.begin() + 1, t.end() - 1, x);
+        k = static_cast<std::size_t>(it - t.begin()) - 1;
+        const double h = t[k + 1] - t[k];
+        f = h > 0 ? std::clamp((x - t[k]) / h, 0.0, 1.0) : 0.0;
+    };
+    std::size_t i = 0, j = 0;
+    double fu = 0, fv = 0;
+    locate(us, u, i, fu);
+    locate(vs, v, j, fv);
+    const std::size_t n = vs.size();
+    return (1 - fu) * ((1 - fv) * field[i * n + j] + fv * field[i * n + j + 1]) +
+           fu * ((1 - fv) * field[(i + 1) * n + j] + fv * field[(i + 1) * n + j + 1]);
+}
+
+OffsetField offset_field(const CurvatureSamples& c, const ParameterGrid& g, const std::array<bool, 4>& collapsed_sides,
+                         double max_offset, double target, bool straddle) {
+    OffsetField field;
+    field.us = c.us;
+    field.vs = c.vs;
+    const std::size_t nu = c.us.size(), nv = c.vs.size();
+    field.values.assign(nu * nv, 0.0);
+    field.lowest.assign(nu * nv, 0.0);
+    field.highest.assign(nu * nv, 0.0);
+    for (std::size_t i = 0; i < nu; ++i) {
+        const double hu = spacing_at(g.u, c.us[i]);
+        for (std::size_t j = 0; j < nv; ++j) {
+            const std::size_t k = c.at(i, j);
+            const double hv = spacing_at(g.v, c.vs[j]);
+            const double reach = c.k_max[k] > 0 ? std::min(max_offset, 0.25 / c.k_max[k]) : max_offset;
+            // The errors of the mesh minus the surface with the vertices on it: each chord term on the
+            // side its curvature puts it, the twist's on the other (see tessellate_plan.hpp).
+            double below = 0, above = 0;
+            for (double term : {c.L[k] * hu * hu / 8, c.N[k] * hv * hv / 8, -c.M[k] * hu * hv / 4})
+                (term < 0 ? below : above) += term;
+            const double centre = std::clamp(-(below + above) / 2, -reach, reach);
+            field.values[k] = straddle ? centre : 0.0;
+            field.lowest[k] = std::max(-target - below, -reach);
+            field.highest[k] = std::min(target - above, reach);
+            if (field.lowest[k] > field.highest[k]) field.lowest[k] = field.highest[k] = field.values[k];
+        }
+    }
+    // A collapsed side's row takes the next row's values.
+    for (std::vector<double>* values : {&field.values, &field.lowest, &field.highest}) {
+        std::vector<double>& f = *values;
+        for (std::size_t i = 0; i < nu && nv > 1; ++i) {
+            if (collapsed_sides[side_slot(Side::v_min)]) f[c.at(i, 0)] = f[c.at(i, 1)];
+            if (collapsed_sides[side_slot(Side::v_max)]) f[c.at(i, nv - 1)] = f[c.at(i, nv - 2)];
+        }
+        for (std::size_t j = 0; j < nv && nu > 1; ++j) {
+            if (collapsed_sides[side_slot(Side::u_min)]) f[c.at(0, j)] = f[c.at(1, j)];
+            if (collapsed_sides[side_slot(Side::u_max)]) f[c.at(nu - 1, j)] = f[c.at(nu - 2, j)];
+        }
+    }
+    return field;
+}
+
+void interior_grid_points(const SurfacePlan& plan, const ParameterGrid& grid, std::vector<Vec3>& out) {
+    thread_local SurfaceGrid batch;
+    const std::size_t nu = grid.u.size(), nv = grid.v.size();
+    out.resize(nu * nv);
+    bool offsets = plan.straddle;
+    if (offsets) {
+        try {
+            evaluate_grid(plan.face->surface(), grid.u, grid.v, GridOutput::normals, batch);
+        } catch (const Error&) {
+            offsets = false;  // a grid point without a tangent plane (nor a limit normal): none is moved
+        }
+    }
+    if (!offsets) {
+        evaluate_grid(plan.face->surface(), grid.u, grid.v, GridOutput::points, batch);
+        for (std::size_t k = 0; k < out.size(); ++k) out[k] = batch.points[k];
+        return;
+    }
+    for (std::size_t i = 0; i < nu; ++i)
+        for (std::size_t j = 0; j < nv; ++j) {
+            const std::size_t k = i * nv + j;
+            const Vec3 p = batch.points[k];
+            // The room the grid's neighbours leave (offset_room); a collapsed neighbour (a pole row) counts
+            // as far as any.
+            double gap = std::numeric_limits<double>::infinity();
+            auto near = [&](std::size_t a, std::size_t b) {
+                const double d = distance(p, batch.points[a * nv + b]);
+                if (d > 0) gap = std::min(gap, d);
+            };
+            if (i > 0) near(i - 1, j);
+            if (i + 1 < nu) near(i + 1, j);
+            if (j > 0) near(i, j - 1);
+            if (j + 1 < nv) near(i, j + 1);
+            const double reach = offset_room(gap, plan.max_offset());
+            out[k] = p + batch.normals[k] * std::clamp(plan.offsets.at(grid.u[i], grid.v[j]), -reach, reach);
+        }
+}
+
+double offset_room(double gap, double max_offset) {
+    if (!std::isfinite(gap)) return max_offset;
+    return std::min(max_offset, 0.25 * gap * std::min(1.0, gap / (4 * max_offset)));
 }
 
 // Detected by normals just either side of the knot, from the evaluator's partials (NurbsSurface::normal,
@@ -355,7 +483,19 @@ double over_budget_triangles(const SurfacePlan& plan, const CurvatureSamples& cu
 
 }  // namespace
 
-SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, CurvatureSamples& curvature) {
+bool may_straddle(std::span<const Face> faces) {
+    for (const Face& face : faces) {
+        if (face.kind() != Face::Kind::surface) continue;
+        double lightest = std::numeric_limits<double>::infinity(), heaviest = 0;
+        for (const auto& row : face.surface().weights())
+            for (double w : row) lightest = std::min(lightest, w), heaviest = std::max(heaviest, w);
+        if (!(heaviest <= kStraddleWeightRatio * lightest)) return false;
+    }
+    return true;
+}
+
+SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, CurvatureSamples& curvature,
+                      bool straddle) {
     // The curvature samples cost memory and time like triangles do (about 200 bytes each): a face
     // with more knot spans than the budget can sample (10^5 spans revolved into 4 x 10^5 patches) is
     // refused up front. A small budget still allows the 2^18 samples any ordinary face needs.
@@ -383,54 +523,128 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
     // largest over a longer sample interval): that costs a few cells on a small grid, while the fine
     // sampling would cost more than checking the whole grid. Resampled finely once the grid has
     // more than a quarter as many cells as the fine samples (or the coarse estimate is over budget).
+    // Straddling the surface or inscribed in it, whichever the model finds cheaper: a twisted or saddle
+    // shaped face errs both ways already when inscribed (see tessellate_plan.hpp), and gains little or
+    // nothing from offsets. The inscribed grid is checked against the tolerance itself, as before there
+    // were offsets; the straddling one a little below it (check_tolerance).
+    auto choose = [&] {
+        const ParameterGrid straddling = choose_grid(curvature, settings.check_tolerance(), settings.angle_rad,
+                                                     plan.min_segments, plan.creases, max_cells(settings), true);
+        ParameterGrid inscribed = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments,
+                                              plan.creases, max_cells(settings), false);
+        plan.straddle = straddle && !straddling.u.empty() && (inscribed.u.empty() || straddling.cells() < inscribed.cells());
+        plan.target = plan.straddle ? settings.check_tolerance() : settings.tolerance;
+        plan.grid = plan.straddle ? straddling : std::move(inscribed);
+    };
     curvature = sample_curvature(face.surface(), kCoarseSamplesPerSpan);
-    plan.grid = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments, plan.creases,
-                            max_cells(settings));
+    choose();
     if (plan.grid.u.empty() || 4 * plan.grid.cells() > curvature_sample_count(face.surface(), kFineSamplesPerSpan)) {
         curvature = sample_curvature(face.surface(), kFineSamplesPerSpan);
-        plan.grid = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments, plan.creases,
-                                max_cells(settings));
+        choose();
     }
     if (plan.grid.u.empty()) throw_over_budget(over_budget_triangles(plan, curvature, settings), settings.max_triangles);
+    set_offsets(plan, curvature);
     return plan;
 }
 
-void refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const TessellationSettings& settings) {
-    double target = settings.tolerance;
+namespace {
+
+std::array<bool, 4> collapsed_sides(const SurfacePlan& plan) {
     std::array<bool, 4> collapsed{};
     for (Side side : kSides) collapsed[side_slot(side)] = plan.sides[side_slot(side)].degenerate;
-    // The intervals whose cells are new since the last check (all of them for a fresh grid).
-    std::vector<char> new_u(plan.grid.u.size() - 1, 1), new_v(plan.grid.v.size() - 1, 1);
-    auto bisect = [](std::vector<double>& lines, const std::vector<char>& marked, std::vector<char>& fresh) {
-        fresh.clear();
-        for (char m : marked) fresh.insert(fresh.end(), m ? 2 : 1, m);
-        lines = bisect_marked(lines, marked);
-    };
+    return collapsed;
+}
+
+// The polylines along the face's sides against its boundary curves: a side's points are off the surface
+// (by its offsets, or as the faces beyond it wish), and at a crease the curve is the mesh's edge, which no
+// cell's check sees: a chord whose curve strays more than the target from it fails like a cell (marking
+// its interval), so that the surface's points keep within the tolerance of the mesh along the boundary too.
+void check_sides(const SurfacePlan& plan, const std::vector<Vec3>& corners, GridCheck& check) {
+    const ParameterGrid& g = plan.grid;
+    const std::size_t nu = g.u.size(), nv = g.v.size();
+    for (Side side : kSides) {
+        if (plan.sides[side_slot(side)].degenerate) continue;
+        const bool along_u = runs_along_u(side);
+        const std::vector<double>& lines = along_u ? g.u : g.v;
+        const std::size_t fixed = side == Side::v_min || side == Side::u_min ? 0 : (along_u ? nv : nu) - 1;
+        const double across = along_u ? g.v[fixed] : g.u[fixed];
+        std::vector<char>& marks = along_u ? check.refine_u : check.refine_v;
+        for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
+            const Vec3& a = along_u ? corners[k * nv + fixed] : corners[fixed * nv + k];
+            const Vec3& b = along_u ? corners[(k + 1) * nv + fixed] : corners[fixed * nv + k + 1];
+            double error = 0;
+            for (double f : {0.25, 0.5, 0.75}) {
+                const double t = lines[k] + f * (lines[k + 1] - lines[k]);
+                const Vec3 p = along_u ? plan.evaluator->point(t, across) : plan.evaluator->point(across, t);
+                error = std::max(error, point_segment_distance(p, a, b));
+            }
+            const double ratio = error / plan.target;
+            check.worst_ratio = std::max(check.worst_ratio, ratio);
+            if (ratio > 1) marks[k] = 1;
+        }
+    }
+}
+
+// The worst check of a fresh straddling grid beyond which the face is meshed inscribed instead.
+constexpr double kStraddleGiveUp = 1.5;
+
+}  // namespace
+
+void set_offsets(SurfacePlan& plan, const CurvatureSamples& curvature) {
+    plan.offsets = offset_field(curvature, plan.grid, collapsed_sides(plan), plan.max_offset(), plan.target, plan.straddle);
+}
+
+bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const TessellationSettings& settings,
+                 const GridPoints& points, const RefineStart& start) {
+    double target = plan.target;
+    std::vector<Vec3> corners;
+    const std::array<bool, 4> collapsed = collapsed_sides(plan);
+    // The intervals whose cells are to be checked: all of them for a fresh grid, and after every change of
+    // the grid, whose offsets follow its spacing.
+    std::vector<char> new_u = start.check_u, new_v = start.check_v;
+    if (new_u.empty()) new_u.assign(plan.grid.u.size() - 1, 1);
+    if (new_v.empty()) new_v.assign(plan.grid.v.size() - 1, 1);
+    bool changed = false, bisected = false;
     for (int iteration = 0; iteration < 40; ++iteration) {
         settings.poll();
         if (plan.grid.cells() * 2 > static_cast<double>(settings.max_triangles))
             throw_over_budget(plan.grid.cells() * 2, settings.max_triangles);
-        const GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed,
-                                           settings.tolerance, settings.angle_rad, new_u, new_v,
-                                           [&] { settings.poll(); });
-        if (check.worst_ratio <= 1) return;
+        points(plan, corners);
+        GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed, plan.target,
+                                     settings.angle_rad, new_u, new_v, corners, [&] { settings.poll(); });
+        if (plan.straddle) check_sides(plan, corners, check);  // an inscribed face's sides lie on its surface
+        if (check.worst_ratio <= 1) return changed;
         const bool some_marked = std::count(check.refine_u.begin(), check.refine_u.end(), 1) +
                                      std::count(check.refine_v.begin(), check.refine_v.end(), 1) > 0;
-        if (iteration < 3 && check.worst_ratio < 1.5) {
-            target *= 0.99 / check.worst_ratio;
+        if (start.rescale && iteration == 0 && plan.straddle && check.worst_ratio > kStraddleGiveUp) {
+            // The model is far off on this face (curvature that jumps between its samples, a strong twist):
+            // the offsets it centres the errors with are no better, and the grid inscribed in the surface is
+            // planned and refined as it was before there were offsets.
+            plan.straddle = false;
+            plan.target = target = settings.tolerance;
             ParameterGrid g = choose_grid(curvature, target, settings.angle_rad, plan.min_segments, plan.creases,
-                                          max_cells(settings));
+                                          max_cells(settings), false);
             if (g.u.empty()) throw_over_budget(max_cells(settings) * 2, settings.max_triangles);
             plan.grid = std::move(g);
-            new_u.assign(plan.grid.u.size() - 1, 1);
-            new_v.assign(plan.grid.v.size() - 1, 1);
+        } else if (start.rescale && !bisected && iteration < 3 && check.worst_ratio < 1.5) {
+            target *= 0.99 / check.worst_ratio;
+            ParameterGrid g = choose_grid(curvature, target, settings.angle_rad, plan.min_segments, plan.creases,
+                                          max_cells(settings), plan.straddle);
+            if (g.u.empty()) throw_over_budget(max_cells(settings) * 2, settings.max_triangles);
+            plan.grid = std::move(g);
         } else if (some_marked) {
-            bisect(plan.grid.u, check.refine_u, new_u);
-            bisect(plan.grid.v, check.refine_v, new_v);
+            plan.grid.u = bisect_marked(plan.grid.u, check.refine_u);
+            plan.grid.v = bisect_marked(plan.grid.v, check.refine_v);
+            bisected = true;
         } else {
-            return;
+            return changed;
         }
+        changed = true;
+        set_offsets(plan, curvature);
+        new_u.assign(plan.grid.u.size() - 1, 1);
+        new_v.assign(plan.grid.v.size() - 1, 1);
     }
+    return changed;
 }
 
 // Where a face's row along a crease (a profile corner) is thin, it takes the other face's lines
@@ -496,13 +710,15 @@ void match_lines_at_creases(std::vector<SurfacePlan>& plans, const TessellationS
     }
 }
 
-std::vector<SurfacePlan> plan_surfaces(std::span<const Face> faces, const TessellationSettings& settings) {
-    std::vector<SurfacePlan> plans;
+void plan_surfaces(std::span<const Face> faces, const TessellationSettings& settings, const GridPoints& points,
+                   std::vector<SurfacePlan>& plans) {
+    plans.clear();
     std::vector<CurvatureSamples> curvatures;
+    const bool straddle = may_straddle(faces);
     for (const Face& face : faces) {
         if (face.kind() != Face::Kind::surface) continue;
         curvatures.emplace_back();
-        plans.push_back(plan_face(face, settings, curvatures.back()));
+        plans.push_back(plan_face(face, settings, curvatures.back(), straddle));
     }
     // The estimate for the whole solid before any mesh is built: two triangles per cell, plus the
     // planar faces (about one triangle per boundary sample, bounded by the cells along their edges).
@@ -512,10 +728,40 @@ std::vector<SurfacePlan> plan_surfaces(std::span<const Face> faces, const Tessel
     if (estimate > static_cast<double>(settings.max_triangles)) throw_over_budget(estimate, settings.max_triangles);
     for (std::size_t k = 0; k < plans.size(); ++k) {
         settings.report(kPlannedFraction * static_cast<double>(k) / static_cast<double>(plans.size()));
-        refine_grid(plans[k], curvatures[k], settings);
+        refine_grid(plans[k], curvatures[k], settings, points);
     }
+    std::vector<std::size_t> cells_before;
+    for (const SurfacePlan& plan : plans) cells_before.push_back(static_cast<std::size_t>(plan.grid.cells()));
     match_lines_at_creases(plans, settings);
-    return plans;
+    // The points along a face's sides move as the faces on both sides wish (and a face that took lines
+    // across a crease has new offsets): the faces refined before a neighbour were checked with points that
+    // have moved since. Checked again with the final points, all cells of a face whose grid changed, the
+    // cells along the sides of the others, until no face changes (bounded: a change is rare after the first
+    // round).
+    std::vector<char> changed(plans.size());
+    for (std::size_t k = 0; k < plans.size(); ++k) {
+        changed[k] = static_cast<std::size_t>(plans[k].grid.cells()) != cells_before[k];
+        if (changed[k]) set_offsets(plans[k], curvatures[k]);
+    }
+    for (int round = 0; round < 4; ++round) {
+        bool any = false;
+        for (std::size_t k = 0; k < plans.size(); ++k) {
+            RefineStart start;
+            start.rescale = false;
+            if (!changed[k]) {
+                auto ring = [](std::size_t intervals) {
+                    std::vector<char> r(intervals, 0);
+                    r.front() = r.back() = 1;
+                    return r;
+                };
+                start.check_u = ring(plans[k].grid.u.size() - 1);
+                start.check_v = ring(plans[k].grid.v.size() - 1);
+            }
+            changed[k] = refine_grid(plans[k], curvatures[k], settings, points, start) ? 1 : 0;
+            any = any || changed[k];
+        }
+        if (!any) break;
+    }
 }
 
 }  // namespace ratbez::detail
