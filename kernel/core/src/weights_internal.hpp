@@ -11,11 +11,7 @@
 #include <cmath>
 #include <iterator>
 #include <span>
-#include <string>
-#include <string_view>
 
-#include "numeric_internal.hpp"
-#include "ratbez/error.hpp"
 #include "ratbez/vec.hpp"
 
 namespace ratbez::detail {
