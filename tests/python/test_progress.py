@@ -41,8 +41,8 @@ def interrupted(call, after):
 
 @pytest.fixture(scope="module")
 def fine_mesh():
-    """About 270k triangles: the CGAL checks take over a second."""
-    return ratbez.sphere(10.0).tessellate(3e-4)
+    """About 290k triangles: the CGAL checks take about a second."""
+    return ratbez.sphere(10.0).tessellate(1.5e-4)
 
 
 # --- volume and area --------------------------------------------------------------------------------
@@ -95,11 +95,11 @@ def test_a_raising_callback_stops_an_export_and_leaves_no_file(tmp_path):
 
 @needs_cgal
 def test_ctrl_c_stops_a_long_export_before_it_writes(tmp_path):
-    # Uninterrupted: about 15 s (the rounding search measures and checks ~270k triangles per candidate).
+    # Uninterrupted: over 10 s (the rounding search measures and checks ~290k triangles per candidate).
     # SIGINT lands in the deviation measurement or the CGAL checks, past the tessellation; the file is
     # written only at the end, so its absence shows the call stopped inside the kernel.
     target = tmp_path / "ball.scad"
-    assert interrupted(lambda: ratbez.export_openscad(ratbez.sphere(10.0), target, tolerance=3e-4), after=1.5)
+    assert interrupted(lambda: ratbez.export_openscad(ratbez.sphere(10.0), target, tolerance=1.5e-4), after=1.5)
     assert list(tmp_path.iterdir()) == []
 
 
@@ -114,7 +114,7 @@ def test_check_mesh_progress_rises_to_one():
 
 @needs_cgal
 def test_check_mesh_polls_inside_the_self_intersection_test(fine_mesh):
-    # The self-intersection test is one CGAL call, which takes most of a second here; the progress reaches
+    # The self-intersection test is one CGAL call, which takes over half a second here; the progress reaches
     # it through the point reads (kSelfIntersectionStart = 0.2 in mesh_checks.cpp), every 20 ms at most.
     during = []
 
