@@ -219,6 +219,13 @@ private:
                 p.face};
     }
 
+    // The (u, v) of the surface face of `use` at the edge's parameter t, on the side the edge is.
+    std::pair<double, double> side_point(const EdgeUse& use, double t) const {
+        const SurfacePlan& p = plans_[use.plan];
+        const double q = p.sides[side_slot(use.side)].to_face(t), fixed = detail::side_parameter(p.face->surface(), use.side);
+        return runs_along_u(use.side) ? std::pair{q, fixed} : std::pair{fixed, q};
+    }
+
     // The move of the edge sample at parameter t, `gap` and `chord` away from its nearer and farther
     // neighbours on the edge (proposals_of): what its faces wish (a planar face: to stay in its plane), at
     // most the smallest max_offset of its surface faces, a quarter of the edge's radius of curvature there
@@ -234,9 +241,7 @@ private:
             }
             const SurfacePlan& p = plans_[use.plan];
             cap = std::min(cap, p.max_offset());
-            const SideMap& m = p.sides[side_slot(use.side)];
-            const double q = m.to_face(t), fixed = detail::side_parameter(p.face->surface(), use.side);
-            const double u = runs_along_u(use.side) ? q : fixed, v = runs_along_u(use.side) ? fixed : q;
+            const auto [u, v] = side_point(use, t);
             const std::optional<Vec3> n = face_normal(p, u, v);
             if (!n) return {};
             wishes_.push_back(surface_wish(p, *n, u, v));
@@ -267,11 +272,8 @@ private:
                 normals.push_back(use.face->plane().normal);
                 continue;
             }
-            const SurfacePlan& p = plans_[use.plan];
-            const SideMap& m = p.sides[side_slot(use.side)];
-            const double q = m.to_face(t), fixed = detail::side_parameter(p.face->surface(), use.side);
-            const std::optional<Vec3> n = runs_along_u(use.side) ? face_normal(p, q, fixed) : face_normal(p, fixed, q);
-            if (n) normals.push_back(*n);
+            const auto [u, v] = side_point(use, t);
+            if (const std::optional<Vec3> n = face_normal(plans_[use.plan], u, v)) normals.push_back(*n);
         }
         for (std::size_t a = 0; a < normals.size(); ++a)
             for (std::size_t b = a + 1; b < normals.size(); ++b)
