@@ -40,6 +40,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
@@ -291,6 +292,26 @@ TEST_F(Import, ProgressReachesOneAndCancels) {
     });
     EXPECT_EQ(last, 1.0);
     EXPECT_THROW(read_brep(path("sphere.brep"), [](double) { throw Cancelled(); }), Cancelled);
+}
+
+TEST_F(Import, StepParsingIsPolledAndCanBeCancelled) {
+    // The parse (the first quarter) reports at each 16 KiB of the file: this one is over 50 KB.
+    write_step(torus(3, 1), path("torus.step"), ConvertOptions{true});
+    ASSERT_GT(std::filesystem::file_size(path("torus.step")), 50'000u);
+    std::vector<double> fractions;
+    read_step(path("torus.step"), [&](double fraction) { fractions.push_back(fraction); });
+    EXPECT_GE(std::count_if(fractions.begin(), fractions.end(), [](double f) { return f < 0.25; }), 4);
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_EQ(fractions.back(), 1.0);
+    // Cancelled in the middle of the parse: the exception comes out, and nothing after the parse ran.
+    double furthest = 0;
+    EXPECT_THROW(read_step(path("torus.step"),
+                           [&](double fraction) {
+                               furthest = std::max(furthest, fraction);
+                               if (fraction > 0.1) throw Cancelled();
+                           }),
+                 Cancelled);
+    EXPECT_LT(furthest, 0.25);
 }
 
 }  // namespace
