@@ -60,33 +60,48 @@ private:
     Message_SequenceOfPrinters removed_;
 };
 
-// The file as OpenCASCADE's STEP parser reads it (XSControl_Reader::ReadStream), kBlock bytes at a time,
-// calling `progress` with the share of the file read at each refill: the parse itself has no progress
-// hook in OCCT 7.6 (a 39 MB file parsed for 9 s unpolled). An exception the callback throws is kept and the
-// stream simply ends there (the parser sees a truncated file), to be rethrown once ReadStream has
-// returned, so nothing is thrown through OpenCASCADE's parser.
-class PolledFileBuffer : public std::streambuf {
+// The caller's Progress as OpenCASCADE's readers call it, from code our exceptions must not cross: the
+// first exception the callback throws (Ctrl-C in Python) is kept, every call from then on answers
+// "stopped" so the reader winds down, and rethrow_if_stopped() throws it once the reader has returned.
+class CapturedProgress {
 public:
-    PolledFileBuffer(const std::string& path, const Progress& progress) : file_(path, std::ios::binary), progress_(progress) {
-        std::error_code error;
-        size_ = std::max<double>(1.0, static_cast<double>(std::filesystem::file_size(path, error)));
+    explicit CapturedProgress(const Progress& progress) : progress_(progress) {}
+    // Reports `fraction`; false once the callback has thrown (now or before).
+    bool report(double fraction) {
+        if (progress_ && !stopped_) {
+            try {
+                progress_(fraction);
+            } catch (...) {
+                stopped_ = std::current_exception();
+            }
+        }
+        return stopped_ == nullptr;
     }
     void rethrow_if_stopped() const {
         if (stopped_) std::rethrow_exception(stopped_);
     }
 
+private:
+    const Progress& progress_;
+    std::exception_ptr stopped_;
+};
+
+// The file as OpenCASCADE's STEP parser reads it (XSControl_Reader::ReadStream), kBlock bytes at a time,
+// reporting the share of the file read, times `scale`, at each refill: the parse itself has no progress
+// hook in OCCT 7.6 (a 39 MB file parsed for 9 s unpolled). Once stopped the stream simply ends (the parser
+// sees a truncated file), so nothing is thrown through OpenCASCADE's parser.
+class PolledFileBuffer : public std::streambuf {
+public:
+    PolledFileBuffer(const std::string& path, CapturedProgress& progress, double scale)
+        : file_(path, std::ios::binary), progress_(progress), scale_(scale) {
+        std::error_code error;
+        size_ = std::max<double>(1.0, static_cast<double>(std::filesystem::file_size(path, error)));
+    }
+
 protected:
     int_type underflow() override {
         if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
-        if (stopped_) return traits_type::eof();
-        if (progress_) {
-            try {
-                progress_(std::min(read_ / size_, 1.0));
-            } catch (...) {
-                stopped_ = std::current_exception();
-                return traits_type::eof();
-            }
-        }
+        if (!progress_.report(scale_ * std::min(read_ / size_, 1.0))) return traits_type::eof();
         file_.read(block_.data(), static_cast<std::streamsize>(block_.size()));
         const std::streamsize count = file_.gcount();
         if (count <= 0) return traits_type::eof();
@@ -98,38 +113,23 @@ protected:
 private:
     static constexpr std::size_t kBlock = 16384;
     std::ifstream file_;
-    const Progress& progress_;
+    CapturedProgress& progress_;
+    double scale_;
     std::array<char, kBlock> block_{};
     double size_ = 1, read_ = 0;
-    std::exception_ptr stopped_;
 };
 
-// OpenCASCADE's readers poll their progress indicator's UserBreak(): that is where our Progress is called
-// (with the reader's position scaled to its part of the work), and where an exception it throws (Ctrl-C in Python)
-// is kept, to stop the reader and be rethrown once it has returned.
+// OpenCASCADE's readers poll their progress indicator's UserBreak(): there the reader's position, mapped
+// to [from, to], is reported, and a stop breaks the reader off.
 class PolledIndicator : public Message_ProgressIndicator {
 public:
-    // The reader's position times `scale` is what `progress` gets.
-    PolledIndicator(const Progress& progress, double scale) : progress_(progress), scale_(scale) {}
-    Standard_Boolean UserBreak() override {
-        if (progress_ && !stopped_) {
-            try {
-                progress_(scale_ * GetPosition());
-            } catch (...) {
-                stopped_ = std::current_exception();
-            }
-        }
-        return stopped_ != nullptr;
-    }
+    PolledIndicator(CapturedProgress& progress, double from, double to) : progress_(progress), from_(from), to_(to) {}
+    Standard_Boolean UserBreak() override { return !progress_.report(from_ + (to_ - from_) * GetPosition()); }
     void Show(const Message_ProgressScope&, const Standard_Boolean) override {}
-    void rethrow_if_stopped() const {
-        if (stopped_) std::rethrow_exception(stopped_);
-    }
 
 private:
-    const Progress& progress_;
-    double scale_;
-    std::exception_ptr stopped_;
+    CapturedProgress& progress_;
+    double from_, to_;
 };
 
 void require_readable(const std::string& path) {
@@ -194,16 +194,16 @@ Solid read_step(const std::string& path, const Progress& progress) {
         try {
             // The parse is the first quarter of the progress, the translation the second (solid_from_file
             // the second half).
-            const Progress parsing = progress_part(progress, 0, 0.25), translating = progress_part(progress, 0.25, 0.5);
+            CapturedProgress captured(progress);
             STEPControl_Reader reader;
-            PolledFileBuffer buffer(path, parsing);
+            PolledFileBuffer buffer(path, captured, 0.25);
             std::istream stream(&buffer);
             const IFSelect_ReturnStatus parsed = reader.ReadStream(path.c_str(), stream);
-            buffer.rethrow_if_stopped();
+            captured.rethrow_if_stopped();
             require(parsed == IFSelect_RetDone, "path", "'" + path + "' is not a readable STEP file");
-            Handle(PolledIndicator) indicator = new PolledIndicator(translating, 1.0);
+            Handle(PolledIndicator) indicator = new PolledIndicator(captured, 0.25, 0.5);
             const int transferred = reader.TransferRoots(indicator->Start());
-            indicator->rethrow_if_stopped();
+            captured.rethrow_if_stopped();
             require(transferred > 0, "path", "'" + path + "' holds no shape OpenCASCADE can translate");
             shape = reader.OneShape();
         } catch (const Standard_Failure& failure) {
@@ -226,9 +226,10 @@ Solid read_brep(const std::string& path, const Progress& progress) {
     }
     TopoDS_Shape shape;
     try {
-        Handle(PolledIndicator) indicator = new PolledIndicator(progress, 0.5);
+        CapturedProgress captured(progress);
+        Handle(PolledIndicator) indicator = new PolledIndicator(captured, 0, 0.5);
         const bool read = BRepTools::Read(shape, path.c_str(), BRep_Builder(), indicator->Start());
-        indicator->rethrow_if_stopped();
+        captured.rethrow_if_stopped();
         require(read && !shape.IsNull(), "path", "'" + path + "' is not a readable .brep file");
     } catch (const Standard_Failure& failure) {
         throw Error("path", "reading .brep from '" + path + "' failed: " + failure.GetMessageString());
