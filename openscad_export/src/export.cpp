@@ -177,7 +177,10 @@ MeshCheckOptions tessellation_checks(const Solid& solid, const Mesh& mesh, doubl
 
 void export_mesh(const Mesh& given, const std::string& path, const ExportOptions& options) {
     const Format format = checked_format(path, options);
-    const Mesh mesh = writes_float32(format, options) ? float32_mesh(given) : given;
+    // Checked as written: binary STL holds float32 coordinates (a copy only then).
+    const std::optional<Mesh> rounded =
+        writes_float32(format, options) ? std::optional<Mesh>(float32_mesh(given)) : std::nullopt;
+    const Mesh& mesh = rounded ? *rounded : given;
     MeshCheckOptions checks = options.checks;
     if (options.progress) checks.progress = progress_part(options.progress, 0, 0.95);
     const MeshReport report = check_mesh(mesh, checks);
