@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "../tests/core/modelling_test_support.hpp"
+#include "modelling_test_support.hpp"
 #include "bench_shapes.hpp"
 #include "ratbez/closest_point.hpp"
 #include "ratbez/curves.hpp"

@@ -1,5 +1,5 @@
 // The profile check that revolve and extrude run before building faces (the profile must not cross or
-// touch itself: kernel/core/src/profile_crossings.hpp), against OpenCASCADE's nearest counterpart in the
+// touch itself: kernel/core/src/modelling/profile_crossings.hpp), against OpenCASCADE's nearest counterpart in the
 // same run, single-threaded:
 //   ours       detail::require_no_crossings(profile, plane)
 //   BRepCheck  BRepCheck_Analyzer on the planar cap face bounded by the same profile (the extrusion's top
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "../kernel/core/src/profile_crossings.hpp"
+#include "modelling/profile_crossings.hpp"
 #include "bench_shapes.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/extrude.hpp"

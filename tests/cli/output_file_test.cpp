@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "../core/temp_directory_test_support.hpp"
+#include "temp_directory_test_support.hpp"
 
 namespace {
 

@@ -22,7 +22,7 @@
 
 #include "occt_test_support.hpp"
 #include "ratbez/error.hpp"
-#include "../core/temp_directory_test_support.hpp"
+#include "temp_directory_test_support.hpp"
 #include "ratbez/occt/files.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"

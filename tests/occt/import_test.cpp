@@ -46,7 +46,7 @@
 #include <string>
 #include <vector>
 
-#include "../core/temp_directory_test_support.hpp"
+#include "temp_directory_test_support.hpp"
 #include "occt_test_support.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"

@@ -10,7 +10,7 @@
 #include <iostream>
 #include <numbers>
 
-#include "../core/modelling_test_support.hpp"
+#include "modelling_test_support.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/loft.hpp"
 #include "ratbez/occt/check.hpp"

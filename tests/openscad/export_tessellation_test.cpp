@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "ratbez/deviation.hpp"
-#include "../core/temp_directory_test_support.hpp"
+#include "temp_directory_test_support.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/tessellate.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "../core/modelling_test_support.hpp"
+#include "modelling_test_support.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/export/mesh_checks.hpp"
 #include "ratbez/loft.hpp"

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "../core/test_support.hpp"
+#include "test_support.hpp"
 #include "ratbez/error.hpp"
 
 namespace ratbez::exporter {

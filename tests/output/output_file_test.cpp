@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "../core/temp_directory_test_support.hpp"
+#include "temp_directory_test_support.hpp"
 #include "ratbez/error.hpp"
 
 namespace {

@@ -23,7 +23,7 @@ namespace {
 constexpr int kMaxGaussPoints = 61;
 // Halvings of a cell whose rule misses the tolerance even at kMaxGaussPoints.
 constexpr int kMaxHalvings = 3;
-// The kernel's weight certificate (core/src/cubature.hpp, kMaxWeightSpread): a patch whose weights vary
+// The kernel's weight certificate (core/src/geometry/subdivision.hpp, kMaxWeightSpread): a patch whose weights vary
 // by at most this factor along each line of control points has no pole of its rational integrand near
 // the cell, so a Gauss rule of moderate size converges on it. Halvings to get there are bounded too.
 constexpr double kMaxWeightSpread = 4;

@@ -9,11 +9,12 @@
 #include <utility>
 #include <vector>
 
+#include "ratbez/control_points.hpp"
 #include "ratbez/vec.hpp"
 
 namespace ratbez {
 
-class BezierCurve {
+class BezierCurve : public ControlPolygon {
 public:
     // Polynomial curve through control points P_0..P_n (n >= 0); throws on empty or non-finite input.
     explicit BezierCurve(std::vector<Vec3> points);
@@ -24,10 +25,7 @@ public:
     static BezierCurve from_homogeneous(std::vector<Vec4> homogeneous_points, bool rational = true);
 
     int degree() const { return static_cast<int>(pw_.size()) - 1; }
-    bool is_rational() const { return rational_; }
-    const std::vector<Vec4>& homogeneous_points() const { return pw_; }
-    std::vector<Vec3> points() const;    // the Euclidean control points P_i
-    std::vector<double> weights() const; // the w_i as given (all 1 for a polynomial curve)
+    // is_rational(), homogeneous_points(), points() and weights(): ControlPolygon.
 
     // C(u) by A1.4 (Bernstein basis times homogeneous points, then H).
     Vec3 point(double u) const;
@@ -60,9 +58,6 @@ private:
     friend class NurbsCurve;  // from_bezier keeps the weight scale
     // Unvalidated; the weights of pw are 2^weight_exponent times the ones weights() reports.
     BezierCurve(std::vector<Vec4> homogeneous_points, bool rational, int weight_exponent);
-    std::vector<Vec4> pw_;
-    bool rational_ = false;
-    int weight_exponent_ = 0;
 };
 
 }  // namespace ratbez

@@ -7,11 +7,12 @@
 #include <vector>
 
 #include "ratbez/bezier_curve.hpp"
+#include "ratbez/control_points.hpp"
 #include "ratbez/vec.hpp"
 
 namespace ratbez {
 
-class BezierSurface {
+class BezierSurface : public ControlNet {
 public:
     explicit BezierSurface(std::vector<std::vector<Vec3>> net);
     BezierSurface(std::vector<std::vector<Vec3>> net, std::vector<std::vector<double>> weights);
@@ -21,11 +22,8 @@ public:
 
     int degree_u() const { return rows_ - 1; }
     int degree_v() const { return columns_ - 1; }
-    bool is_rational() const { return rational_; }
-    const std::vector<Vec4>& homogeneous_points() const { return pw_; }
-    const Vec4& homogeneous_point(int i, int j) const { return pw_[static_cast<std::size_t>(i * columns_ + j)]; }
-    std::vector<std::vector<Vec3>> points() const;
-    std::vector<std::vector<double>> weights() const;
+    // rows(), columns(), is_rational(), homogeneous_points(), homogeneous_point(i, j), points() and
+    // weights(): ControlNet.
 
     // S(u, v); the default is the basis form on P^w (point_basis).
     Vec3 point(double u, double v) const;
@@ -52,10 +50,6 @@ private:
     friend class NurbsSurface;  // from_bezier keeps the weight scale
     // Unvalidated; the weights of pw are 2^weight_exponent times the ones weights() reports.
     BezierSurface(int rows, int columns, std::vector<Vec4> homogeneous_points, bool rational, int weight_exponent);
-    int rows_ = 0, columns_ = 0;
-    std::vector<Vec4> pw_;
-    bool rational_ = false;
-    int weight_exponent_ = 0;
 };
 
 }  // namespace ratbez

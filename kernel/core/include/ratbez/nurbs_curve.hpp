@@ -9,11 +9,12 @@
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/box.hpp"
 #include "ratbez/bspline_basis.hpp"
+#include "ratbez/control_points.hpp"
 #include "ratbez/vec.hpp"
 
 namespace ratbez {
 
-class NurbsCurve {
+class NurbsCurve : public ControlPolygon {
 public:
     // Validates: degree >= 0 (degree >= 1 unless a single span), knots.size() == points.size() + degree + 1,
     // finite points, a valid knot vector, and (when given) as many weights as points, each finite and > 0.
@@ -26,10 +27,7 @@ public:
 
     int degree() const { return degree_; }
     const std::vector<double>& knots() const { return knots_; }
-    const std::vector<Vec4>& homogeneous_points() const { return pw_; }
-    std::vector<Vec3> points() const;
-    std::vector<double> weights() const;
-    bool is_rational() const { return rational_; }
+    // is_rational(), homogeneous_points(), points() and weights(): ControlPolygon.
     Interval domain() const;
     // The box of the control points: it contains the curve (convex hull property).
     Box control_box() const;
@@ -64,9 +62,6 @@ private:
                int weight_exponent);
     int degree_ = 0;
     std::vector<double> knots_;
-    std::vector<Vec4> pw_;
-    bool rational_ = false;
-    int weight_exponent_ = 0;
 };
 
 }  // namespace ratbez

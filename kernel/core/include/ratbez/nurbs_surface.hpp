@@ -8,12 +8,13 @@
 #include "ratbez/bezier_surface.hpp"
 #include "ratbez/box.hpp"
 #include "ratbez/bspline_basis.hpp"
+#include "ratbez/control_points.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/vec.hpp"
 
 namespace ratbez {
 
-class NurbsSurface {
+class NurbsSurface : public ControlNet {
 public:
     NurbsSurface(int degree_u, int degree_v, std::vector<double> knots_u, std::vector<double> knots_v,
                  std::vector<std::vector<Vec3>> net);
@@ -29,19 +30,15 @@ public:
     int degree_v() const { return degree_v_; }
     const std::vector<double>& knots_u() const { return knots_u_; }
     const std::vector<double>& knots_v() const { return knots_v_; }
-    int rows() const { return rows_; }        // control points along u
-    int columns() const { return columns_; }  // control points along v
-    const std::vector<Vec4>& homogeneous_points() const { return pw_; }
-    const Vec4& homogeneous_point(int i, int j) const { return pw_[static_cast<std::size_t>(i * columns_ + j)]; }
-    std::vector<std::vector<Vec3>> points() const;
-    std::vector<std::vector<double>> weights() const;
-    bool is_rational() const { return rational_; }
+    // rows(), columns(), is_rational(), homogeneous_points(), homogeneous_point(i, j), points() and
+    // weights(): ControlNet.
     Interval domain_u() const;
     Interval domain_v() const;
     // The box of the control points: it contains the surface (convex hull property).
     Box control_box() const;
 
     Vec3 point(double u, double v) const;      // A4.3
+    using ControlNet::homogeneous_point;  // the control point (i, j), beside the evaluation
     Vec4 homogeneous_point(double u, double v) const;
     // SKL[k][l] = d^{k+l}S/du^k dv^l for 0 <= k + l <= order (A3.6 on P^w, then A4.4).
     std::vector<std::vector<Vec3>> derivatives(double u, double v, int order) const;
@@ -64,10 +61,6 @@ private:
     NurbsCurve isocurve(bool fixed_u, double t0) const;  // isocurve_u (fixed_u) and isocurve_v
     int degree_u_ = 0, degree_v_ = 0;
     std::vector<double> knots_u_, knots_v_;
-    int rows_ = 0, columns_ = 0;
-    std::vector<Vec4> pw_;
-    bool rational_ = false;
-    int weight_exponent_ = 0;
 };
 
 }  // namespace ratbez

@@ -4,8 +4,11 @@
 // construction; degenerate edges (poles, apexes) become fans; planar faces are triangulated from
 // their boundary loops.
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
+#include <string>
 
 #include "ratbez/brep.hpp"
 #include "ratbez/error.hpp"
@@ -26,13 +29,28 @@ struct TessellationOptions {
 // A tolerance that needs more than max_triangles: an Error naming "tolerance", with the estimated count
 // (from a coarser tessellation that fits, scaled by the tolerance ratio: curved faces need triangles in
 // proportion to 1 / tolerance) so that callers can word the message after their own options.
+// Defined here whole: the planner throws it, the driver refines its estimate and callers catch it.
 class TooFine : public Error {
 public:
-    TooFine(double estimated_triangles, std::size_t max_triangles);
+    TooFine(double estimated_triangles, std::size_t max_triangles)
+        : Error("tolerance", "too fine: the mesh would need about " + about(estimated_triangles) +
+                                 " triangles, more than max_triangles = " + std::to_string(max_triangles) + " allows"),
+          estimated_(estimated_triangles),
+          max_triangles_(max_triangles) {}
     double estimated_triangles() const noexcept { return estimated_; }
     std::size_t max_triangles() const noexcept { return max_triangles_; }
 
 private:
+    // Rounded to two significant digits: an estimate, not a count.
+    static std::string about(double count) {
+        const double rounded = count < 100 ? std::ceil(count)
+                                           : [&] {
+                                                 const double unit = std::pow(10.0, std::floor(std::log10(count)) - 1);
+                                                 return std::ceil(count / unit) * unit;
+                                             }();
+        return std::to_string(static_cast<long long>(std::min(rounded, 9e18)));
+    }
+
     double estimated_;
     std::size_t max_triangles_;
 };

@@ -1,0 +1,452 @@
+// The integration engine (cubature.hpp): globally adaptive Gauss–Legendre cubature on the rational
+// Bézier pieces of surfaces and plane curves, for the measures of faces (brep/face_integrals.cpp) and
+// the area checks of profiles and planar loops (green_area).
+//
+// Every surface is cut into its rational Bézier patches (A5.7, NurbsSurface::bezier_patches) and every
+// curve into its Bézier segments; each piece is a "cell" with a homogeneous control net of its own over
+// [0, 1]^2 (a curve is a net of one column). A fixed rule is not enough: extreme weights crowd the
+// geometry into a tiny parameter interval (a quadratic with weights 1, w, 1 runs from P0 to P1 for
+// t of order 1/w), where no Gauss node falls, so a rule and its refinement agree on a wrong value.
+// Two phases therefore:
+//  1. Weight certificate. A cell is halved by deCasteljau (A1.5 on the homogeneous points, Eq. 1.19)
+//     until, along each direction, its weights' Bernstein coefficients differ by at most a factor
+//     kMaxWeightSpread. The weight function then stays within that factor over the cell (convex hull
+//     property) and |w_s / w| <= degree · spread, so no pole of the rational integrand comes near the
+//     cell and Gauss–Legendre converges geometrically on it. Circle arcs (weights 1, cos θ) pass at once;
+//     a weight ratio R costs about log2(R) halvings per end, each a cell.
+//  2. Global adaptivity (QUADPACK's QAG strategy in 2D). On each cell the n x n rule on the whole cell
+//     is compared with the rule on its two halves in u and, separately, in v; the differences estimate
+//     the error of the whole-cell rule in each direction. The cell with the largest estimate is halved
+//     in the direction that disagrees most, until the estimates add up to at most the tolerance
+//     (kRelativeTolerance of size^3 for volume, size^2 for area, size = control box diagonal).
+// Rounding sets a floor under every cell's estimate: the quotient rule and the subdivision leave
+// errors of about ε · size in S_s and S_t, so a cell's integral carries noise of about
+// ε · size^(k-1) · (its rounding lengths in s and t: control polygon lengths plus the quotient rule's
+// cancellation, see rounding_length), k = 2 for area, 3 for volume. Refining a
+// cell whose estimate is at that floor cannot improve it (with weights 1e300 thousands of cells sit
+// where the surface all but stops), so such a cell counts as converged.
+// Both phases count cells against kMaxCells, so hostile input costs bounded work; when the budget runs
+// out before the tolerance is met, Error says so instead of returning an unverified number.
+// Two shortcuts keep large faces (10^5 spans) cheap without changing what is computed:
+//  - A non-rational face or edge has a polynomial integrand for the volume and for Green's area, and
+//    n Gauss nodes integrate a polynomial of degree 2n - 1 exactly: its cells need no error estimate.
+//  - The quick rule of the orientation check takes a face or edge whose control weights already vary by
+//    at most kMaxWeightSpread straight on its knot spans (span_rule.hpp): every patch would pass the
+//    certificate at once, so extracting the patches would only cost allocations.
+#include "analysis/cubature.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "math/numeric_internal.hpp"
+#include "ratbez/bspline_basis.hpp"
+#include "analysis/span_rule.hpp"
+#include "geometry/subdivision.hpp"
+#include "geometry/surface_evaluator.hpp"
+#include "math/gauss_legendre.hpp"
+#include "ratbez/error.hpp"
+
+namespace ratbez::detail {
+
+namespace {
+
+// ------------------------------------------------------------------------------------ the engine
+
+constexpr double kRelativeTolerance = 1e-14;
+constexpr int kRulePoints = 12;
+constexpr int kQuickRulePoints = 6;
+constexpr std::size_t kMaxCells = 40'000;
+// The rounding floor of a cell, in units of ε · size^(k-1) · (polygon lengths): generous for degree 25.
+constexpr double kNoiseFactor = 16 * std::numeric_limits<double>::epsilon();
+
+using Integrand = Cubature::Integrand;
+
+// One integrand over Bézier pieces of one pair of degrees: a surface face, or one edge of a planar
+// face's loop (degree_v = 0: the piece is a curve in s and S_t = 0).
+// `polynomial_factor` k > 0 says that the integrand is a polynomial of degree k·p - 1 along a direction
+// of degree p (a non-rational source: k = 3 for the volume, 2 for Green's area); 0 that it is not.
+struct Source {
+    int degree_u = 0, degree_v = 0;
+    Integrand integrand;
+    int polynomial_factor = 0;
+};
+
+// A piece of a source as a rational Bézier patch over [0, 1]^2 of its own; the integrand is taken in
+// these local parameters (S_s x S_t carries the Jacobian of the halving, so no scaling is needed).
+struct Cell {
+    const Source* source = nullptr;
+    std::vector<Vec4> net;  // (degree_u + 1) x (degree_v + 1), row-major
+    double whole = std::numeric_limits<double>::quiet_NaN();  // the rule on the whole cell, once known
+    // Set by assess(): the rule on the halves in u and in v, the estimate and its error bound.
+    std::array<double, 2> halves_u{}, halves_v{};
+    // `error` is the error bound, or 0 once the bound is down at the rounding floor.
+    double estimate = 0, error = 0;
+    bool split_along_u = true;
+};
+
+}  // namespace
+
+// The pieces and integrands of a problem; sources live in a deque so cells can point at them.
+// The integrals add up to within `tolerance`; `noise_scale` = kNoiseFactor · size^(k-1).
+// A `quick` problem (the orientation check) keeps a net whose weights pass the certificate as a whole
+// in `nets`, for the quick rule on its spans, instead of cutting it into cells.
+struct Cubature::Problem {
+    std::deque<Source> sources;
+    std::vector<Cell> cells;
+    double tolerance = 0, noise_scale = 0;
+    bool quick = false;
+    std::vector<std::pair<const Source*, SpanNet>> nets;
+};
+
+namespace {
+
+using Problem = Cubature::Problem;
+
+// Cells created so far against kMaxCells. `quick` (the orientation check of a new Solid) stops refining
+// when the budget is spent; the measuring functions say that they cannot reach the accuracy.
+// Every kCellsPerPoll new cells the caller's progress callback is polled (progress.hpp), which is how
+// Ctrl-C reaches a measurement of a face that extreme weights cut into very many cells.
+struct Budget {
+    static constexpr std::size_t kCellsPerPoll = 4096;
+    std::string_view argument;
+    bool quick = false;
+    const Progress* progress = nullptr;
+    std::size_t cells = 0;
+
+    // Counts n new cells; false (quick) or Error (measuring) once the budget is spent.
+    bool spend(std::size_t n) {
+        if (progress != nullptr && *progress && cells / kCellsPerPoll != (cells + n) / kCellsPerPoll) (*progress)(0.0);
+        cells += n;
+        if (cells <= kMaxCells) return true;
+        if (quick) return false;
+        fail(argument, "the quadrature of its area or volume cannot reach a relative accuracy of 1e-14 within " +
+                           std::to_string(kMaxCells) + " cells (its rational weights crowd the surface into too small a parameter range)");
+    }
+};
+
+// ------------------------------------------------------------------------------------ cell geometry
+
+// The net of a cell as lines along one direction: `count` lines of `degree + 1` entries each.
+struct Lines {
+    const Source& source;
+    bool along_u;
+    int count() const { return (along_u ? source.degree_v : source.degree_u) + 1; }
+    int degree() const { return along_u ? source.degree_u : source.degree_v; }
+    // The index in the row-major net (i along u, j along v) of entry k of line `line`.
+    std::size_t at(int line, int k) const {
+        const int i = along_u ? k : line, j = along_u ? line : k;
+        return static_cast<std::size_t>(i * (source.degree_v + 1) + j);
+    }
+};
+
+// max / min of the weights along one direction, the worst over the lines of the net.
+double weight_spread(const Cell& cell, bool along_u) {
+    const Lines lines{*cell.source, along_u};
+    double worst = 1;
+    for (int line = 0; line < lines.count(); ++line) {
+        double lo = std::numeric_limits<double>::infinity(), hi = 0;
+        for (int k = 0; k <= lines.degree(); ++k) {
+            const double w = cell.net[lines.at(line, k)].w;
+            lo = std::min(lo, w);
+            hi = std::max(hi, w);
+        }
+        worst = std::max(worst, hi / lo);
+    }
+    return worst;
+}
+
+// The scale of the rounding errors of S_s or S_t on a cell, along one direction, the worst over the
+// lines of the net: the control polygon's length (the size of the isocurves, which the subdivision's
+// errors are proportional to) plus |P|max · n · max|Δw| / min w, the quotient rule's share: S_s =
+// (A_s - S w_s) / w loses about ε |S| |w_s / w| to cancellation, and |S| is the distance from the
+// coordinate origin, not from the cell. The second term matters where extreme weights make a curve all
+// but stop (a conic with weights 1, 1e300, 1 near its middle): the polygon is tiny there, but S_s is
+// still the difference of two large numbers.
+double rounding_length(const Cell& cell, bool along_u) {
+    const Lines lines{*cell.source, along_u};
+    double longest = 0;
+    for (int line = 0; line < lines.count(); ++line) {
+        double polygon = 0, magnitude = 0, min_weight = std::numeric_limits<double>::infinity(), max_step = 0;
+        for (int k = 0; k <= lines.degree(); ++k) {
+            const Vec4& p = cell.net[lines.at(line, k)];
+            magnitude = std::max(magnitude, norm(project(p)));
+            min_weight = std::min(min_weight, p.w);
+            if (k == 0) continue;
+            const Vec4& q = cell.net[lines.at(line, k - 1)];
+            polygon += distance(project(q), project(p));
+            max_step = std::max(max_step, std::abs(p.w - q.w));
+        }
+        longest = std::max(longest, polygon + magnitude * lines.degree() * max_step / min_weight);
+    }
+    return longest;
+}
+
+// The two halves of a cell at the parameter 1/2 along one direction: deCasteljau (A1.5) on every line
+// of homogeneous points; the left edge of the triangle is the first half's net, the right edge the
+// second's (the same subdivision as BezierCurve::split, Eq. 1.19).
+std::pair<Cell, Cell> halve(const Cell& cell, bool along_u) {
+    const Lines lines{*cell.source, along_u};
+    const int n = lines.degree();
+    std::pair<Cell, Cell> halves{Cell{cell.source, cell.net}, Cell{cell.source, cell.net}};
+    std::vector<Vec4> row(static_cast<std::size_t>(n + 1));
+    for (int line = 0; line < lines.count(); ++line) {
+        for (int k = 0; k <= n; ++k) row[static_cast<std::size_t>(k)] = cell.net[lines.at(line, k)];
+        const auto [left, right] = halve_bezier(row);
+        for (int k = 0; k <= n; ++k) {
+            halves.first.net[lines.at(line, k)] = left[static_cast<std::size_t>(k)];
+            halves.second.net[lines.at(line, k)] = right[static_cast<std::size_t>(k)];
+        }
+    }
+    return halves;
+}
+
+// ------------------------------------------------------------------------------------- quadrature
+
+// The tensor Gauss–Legendre rule on [s0, s1] x [t0, t1] of a cell with `points_s` x `points_t` nodes
+// (one node in t for a curve, whose integrand does not depend on t).
+double rule(const Cell& cell, double s0, double s1, double t0, double t1, int points_s, int points_t) {
+    const Source& source = *cell.source;
+    const GaussRule& rs = gauss_legendre(points_s);
+    const GaussRule& rt = gauss_legendre(source.degree_v == 0 ? 1 : points_t);
+    double sum = 0;
+    for (std::size_t i = 0; i < rs.nodes.size(); ++i) {
+        const double s = s0 + (s1 - s0) * rs.nodes[i];
+        double row = 0;
+        for (std::size_t j = 0; j < rt.nodes.size(); ++j) {
+            const double t = t0 + (t1 - t0) * rt.nodes[j];
+            row += rt.weights[j] *
+                   source.integrand(bezier_patch_first_derivatives(cell.net.data(), source.degree_u, source.degree_v, s, t));
+        }
+        sum += rs.weights[i] * row;
+    }
+    return sum * (s1 - s0) * (t1 - t0);
+}
+double rule(const Cell& cell, double s0, double s1, double t0, double t1, int points) {
+    return rule(cell, s0, s1, t0, t1, points, points);
+}
+
+// Gauss nodes that integrate a polynomial source's integrand exactly along a direction of degree p
+// (n nodes are exact to degree 2n - 1, the integrand has degree k·p - 1), or 0 for another source.
+int exact_points(const Source& source, int degree) {
+    if (source.polynomial_factor == 0) return 0;
+    return std::max(1, (source.polynomial_factor * degree + 1) / 2);
+}
+
+// The whole-cell rule against the rules on the halves in u and in v. Their differences estimate the
+// whole rule's error in each direction (E_u, E_v); halves_u + halves_v - whole removes both to first
+// order and is the cell's estimate, E_u + E_v its (pessimistic) error bound — or 0 when that is no more
+// than the cell's rounding floor. A polynomial integrand is integrated exactly at once: error 0, so the
+// cell is never halved.
+void assess(Cell& cell, double noise_scale) {
+    const int exact_u = exact_points(*cell.source, cell.source->degree_u), exact_v = exact_points(*cell.source, cell.source->degree_v);
+    if (exact_u > 0 && exact_u <= kRulePoints && exact_v <= kRulePoints) {
+        cell.whole = cell.estimate = rule(cell, 0, 1, 0, 1, exact_u, exact_v);
+        cell.error = 0;
+        return;
+    }
+    if (std::isnan(cell.whole)) cell.whole = rule(cell, 0, 1, 0, 1, kRulePoints);
+    cell.halves_u = {rule(cell, 0, 0.5, 0, 1, kRulePoints), rule(cell, 0.5, 1, 0, 1, kRulePoints)};
+    if (cell.source->degree_v == 0)
+        cell.halves_v = {cell.whole, 0.0};  // a curve: nothing varies along t
+    else
+        cell.halves_v = {rule(cell, 0, 1, 0, 0.5, kRulePoints), rule(cell, 0, 1, 0.5, 1, kRulePoints)};
+    const double along_u = cell.halves_u[0] + cell.halves_u[1], along_v = cell.halves_v[0] + cell.halves_v[1];
+    const double error_u = std::abs(along_u - cell.whole), error_v = std::abs(along_v - cell.whole);
+    cell.estimate = along_u + along_v - cell.whole;
+    const double floor = noise_scale * (rounding_length(cell, true) + rounding_length(cell, false));
+    cell.error = error_u + error_v > floor ? error_u + error_v : 0.0;
+    cell.split_along_u = error_u >= error_v;
+}
+
+// Phase 1: halve every cell until its weights vary by at most kMaxWeightSpread in each direction.
+std::vector<Cell> certified(std::vector<Cell> pending, Budget& budget) {
+    std::vector<Cell> done;
+    while (!pending.empty()) {
+        Cell cell = std::move(pending.back());
+        pending.pop_back();
+        const double spread_u = weight_spread(cell, true), spread_v = weight_spread(cell, false);
+        if (std::max(spread_u, spread_v) <= kMaxWeightSpread || !budget.spend(2)) {
+            done.push_back(std::move(cell));
+            continue;
+        }
+        auto [first, second] = halve(cell, spread_u >= spread_v);
+        pending.push_back(std::move(first));
+        pending.push_back(std::move(second));
+    }
+    return done;
+}
+
+// Phase 2: refine the cell with the largest error estimate until the estimates add up to `tolerance`.
+double adaptive_sum(std::vector<Cell> cells, double tolerance, double noise_scale, Budget& budget) {
+    auto by_error = [](const Cell& a, const Cell& b) { return a.error < b.error; };
+    for (Cell& cell : cells) assess(cell, noise_scale);
+    std::make_heap(cells.begin(), cells.end(), by_error);
+    auto total_error = [&] {
+        double e = 0;
+        for (const Cell& cell : cells) e += cell.error;
+        return e;
+    };
+    double error = total_error();
+    for (;;) {
+        // The running total drifts by rounding as errors are removed and added: confirm with a fresh sum.
+        if (error <= tolerance && (error = total_error()) <= tolerance) break;
+        if (!std::isfinite(error)) break;  // a non-finite integrand: the caller reports the non-finite result
+        budget.spend(2);
+        std::pop_heap(cells.begin(), cells.end(), by_error);
+        Cell worst = std::move(cells.back());
+        cells.pop_back();
+        auto [first, second] = halve(worst, worst.split_along_u);
+        const auto& halves = worst.split_along_u ? worst.halves_u : worst.halves_v;
+        first.whole = halves[0];
+        second.whole = halves[1];
+        error -= worst.error;
+        for (Cell* child : {&first, &second}) {
+            assess(*child, noise_scale);
+            error += child->error;
+            cells.push_back(std::move(*child));
+            std::push_heap(cells.begin(), cells.end(), by_error);
+        }
+    }
+    CompensatedSum sum;  // 10^5 cells: naive summation would cost more than the tolerance
+    for (const Cell& cell : cells) sum.add(cell.estimate);
+    return sum.value();
+}
+
+// Nodes per direction for the quick rule: the volume integrand (S - c) · (S_u x S_v) of a polynomial
+// cell of degree p has degree 3p - 1 there, which ceil(3p / 2) Gauss nodes integrate exactly (exact to
+// degree 2n - 1); one more for the certified rational cells, at most kQuickRulePoints. A polygonal
+// profile (p = 1) of 10^5 segments costs 3 nodes across each instead of 6.
+int quick_points(int degree) { return std::min(kQuickRulePoints, (3 * degree + 1) / 2 + 1); }
+
+// The quick estimate for the orientation check: the low-order rule on the certified cells and on the
+// spans of the nets that needed no certificate (the same rule: a span is a patch), no refinement.
+double quick_sum(const std::vector<Cell>& cells, const std::vector<std::pair<const Source*, SpanNet>>& nets) {
+    double sum = 0;
+    for (const Cell& cell : cells)
+        sum += rule(cell, 0, 1, 0, 1, quick_points(cell.source->degree_u), quick_points(cell.source->degree_v));
+    for (const auto& [source, net] : nets)
+        sum += span_rule(net, quick_points(net.degree_u), quick_points(net.degree_v), source->integrand);
+    return sum;
+}
+
+double integrate(Problem problem, Budget& budget) {
+    for (const Source& source : problem.sources)
+        require(source.degree_u <= kMaxEvaluatorDegree && source.degree_v <= kMaxEvaluatorDegree,
+                budget.argument, "a face or edge of degree above 25 cannot be measured (OpenCASCADE's limit too)");
+    std::vector<Cell> cells = certified(std::move(problem.cells), budget);
+    return problem.quick ? quick_sum(cells, problem.nets) : adaptive_sum(std::move(cells), problem.tolerance, problem.noise_scale, budget);
+}
+
+// ------------------------------------------------------------------------------------------- faces
+
+// The source of a curve's or surface's integrand (`polynomial_factor` as in Source, if its weights are
+// all equal). Returns the source for the caller to add its Bézier pieces as cells, or nullptr when a
+// quick problem takes the net whole (its weights pass the certificate already).
+const Source* add_source(const SpanNet& net, Integrand integrand, int polynomial_factor, Problem& problem) {
+    const double weight_ratio = control_weight_ratio(net.points);
+    const Source& source = problem.sources.emplace_back(
+        Source{net.degree_u, net.degree_v, std::move(integrand), weight_ratio == 1 ? polynomial_factor : 0});
+    if (!problem.quick || !(weight_ratio <= kMaxWeightSpread)) return &source;
+    problem.nets.emplace_back(&source, net);
+    return nullptr;
+}
+
+// The cells of a surface face's Bézier patches (A5.7), all with one integrand of (S, S_u, S_v).
+void add_surface(const NurbsSurface& surface, Integrand integrand, int polynomial_factor, Problem& problem) {
+    const Source* source = add_source(span_net(surface), std::move(integrand), polynomial_factor, problem);
+    if (source == nullptr) return;
+    for (const auto& row : surface.bezier_patches())
+        for (const BezierSurface& patch : row) problem.cells.push_back(Cell{source, patch.homogeneous_points()});
+}
+
+// The cells of one curve's Bézier segments for `factor` times Green's area integral (1/2)(x y' - y x'),
+// x = (C - origin)·x_axis, y = (C - origin)·y_axis, in the curve's own direction. The frame is copied
+// into the integrand, so the caller's vectors need not outlive the problem.
+void add_green(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis, double factor,
+               Problem& problem) {
+    // x y' - y x' has degree 2p - 1 on a polynomial curve of degree p.
+    const Source* source = add_source(
+        span_net(curve),
+        [factor, origin, x_axis, y_axis](const SurfaceFirstDerivatives& d) {
+            const Vec3 r = d.s - origin;
+            const double x = dot(r, x_axis), y = dot(r, y_axis);
+            return factor * 0.5 * (x * dot(d.su, y_axis) - y * dot(d.su, x_axis));
+        },
+        2, problem);
+    if (source == nullptr) return;
+    for (const BezierCurve& segment : curve.bezier_segments())
+        problem.cells.push_back(Cell{source, segment.homogeneous_points()});
+}
+
+}  // namespace
+
+Cubature::Cubature(double size, int power, bool quick) : problem_(std::make_unique<Problem>()) {
+    problem_->quick = quick;
+    // The tolerance and the rounding floor of kNoiseFactor in units of size^power and size^(power - 1).
+    if (power == 3) {
+        problem_->tolerance = kRelativeTolerance * size * size * size;
+        problem_->noise_scale = kNoiseFactor * size * size;
+    } else {
+        require(power == 2, "power", "an integral here is an area (2) or a volume (3)");
+        problem_->tolerance = kRelativeTolerance * size * size;
+        problem_->noise_scale = kNoiseFactor * size;
+    }
+}
+
+Cubature::Cubature(Cubature&&) noexcept = default;
+Cubature& Cubature::operator=(Cubature&&) noexcept = default;
+Cubature::~Cubature() = default;
+
+void Cubature::add_surface(const NurbsSurface& surface, Integrand integrand, int polynomial_factor) {
+    detail::add_surface(surface, std::move(integrand), polynomial_factor, *problem_);
+}
+
+void Cubature::add_surface_area(const NurbsSurface& surface) {
+    add_surface(surface, [](const SurfaceFirstDerivatives& d) { return norm(cross(d.su, d.sv)); }, 0);
+}
+
+void Cubature::add_green(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
+                         double factor) {
+    detail::add_green(curve, origin, x_axis, y_axis, factor, *problem_);
+}
+
+double Cubature::integrate(std::string_view argument, const Progress* progress) {
+    Budget budget{argument, problem_->quick, progress};
+    return detail::integrate(std::move(*problem_), budget);
+}
+
+double surface_area(const NurbsSurface& surface, std::string_view argument) {
+    Cubature area(surface.control_box().diagonal(), 2);
+    area.add_surface_area(surface);
+    return area.integrate(argument);
+}
+
+double green_area(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
+                  double absolute_tolerance, std::string_view argument) {
+    // The same two phases as the measurements: the weight certificate puts Gauss nodes where extreme
+    // weights crowd the curve (a fixed-depth rule misses a piece with weights 1e12 / 1e-12 entirely
+    // and calls the profile empty), then refinement to the caller's tolerance.
+    // The integrand x y' - y x' carries rounding noise of about ε · reach · |C'| (reach: how far the curve
+    // gets from `origin`), so the integral cannot be known better than about ε · reach · (polygon length).
+    // A tolerance below that would refine forever; it is raised to a few times that floor instead.
+    const Box box = curve.control_box();
+    const double reach = box.diagonal() + norm(box.min - origin);
+    double length = 0;
+    const std::vector<Vec4>& points = curve.homogeneous_points();
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) length += distance(project(points[i]), project(points[i + 1]));
+    Problem problem;
+    problem.noise_scale = kNoiseFactor * reach;
+    problem.tolerance = std::max(absolute_tolerance, 4 * problem.noise_scale * length);
+    add_green(curve, origin, x_axis, y_axis, 1.0, problem);
+    Budget budget{argument};
+    return integrate(std::move(problem), budget);
+}
+
+}  // namespace ratbez::detail

@@ -1,0 +1,64 @@
+#pragma once
+// Cubature: integrals over the rational Bézier pieces of NURBS surfaces and plane curves, by a globally
+// adaptive Gauss–Legendre engine (QUADPACK's QAG strategy in 2D) on pieces that first pass the weight
+// certificate (geometry/subdivision.hpp). The engine knows integrands, surfaces and curves, not faces:
+// brep/face_integrals.hpp walks a shell's faces onto it (volume and area of solids, a Solid's orientation
+// check). Not installed, not part of the public API.
+
+#include <functional>
+#include <memory>
+#include <string_view>
+
+#include "geometry/surface_evaluator.hpp"
+#include "ratbez/nurbs_curve.hpp"
+#include "ratbez/nurbs_surface.hpp"
+#include "ratbez/progress.hpp"
+#include "ratbez/vec.hpp"
+
+namespace ratbez::detail {
+
+// One integral, the sum of integrands over surfaces (in (u, v)) and curves (in u, S_v = 0).
+class Cubature {
+public:
+    using Integrand = std::function<double(const SurfaceFirstDerivatives&)>;
+
+    // An integral of something that scales as size^power (2: an area, 3: a volume; size is the box
+    // diagonal of the part), computed to about 1e-14 size^power. `quick` takes a fixed low-order rule
+    // instead of the adaptive one: enough for a sign (the orientation check of a new Solid).
+    Cubature(double size, int power, bool quick = false);
+    Cubature(Cubature&&) noexcept;
+    Cubature& operator=(Cubature&&) noexcept;
+    ~Cubature();
+
+    // The integrand over every Bézier patch of `surface` (A5.7). `polynomial_factor` k > 0 says that on a
+    // non-rational surface the integrand is a polynomial of degree k·p - 1 along a direction of degree p
+    // (3 for the volume flux (S - c) · (S_u x S_v)); 0 that it is not.
+    void add_surface(const NurbsSurface& surface, Integrand integrand, int polynomial_factor);
+    // |S_u x S_v| over `surface`.
+    void add_surface_area(const NurbsSurface& surface);
+    // `factor` times Green's area integral (1/2) ∮ (x dy - y dx) along `curve`, x = (C - origin)·x_axis,
+    // y = (C - origin)·y_axis, in the curve's own direction (the frame is copied).
+    void add_green(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis, double factor);
+
+    // The integral. Throws Error naming `argument` when the accuracy cannot be reached within the cell
+    // budget; `progress` (may be null or empty) is polled with 0 every few thousand cells, so that it can
+    // cancel (progress.hpp). Consumes the problem.
+    double integrate(std::string_view argument, const Progress* progress = nullptr);
+
+    struct Problem;  // the pieces and integrands: cubature.cpp's alone
+
+private:
+    std::unique_ptr<Problem> problem_;
+};
+
+// The area of an untrimmed surface, to about 1e-14 of its control box's diagonal squared; errors as above.
+double surface_area(const NurbsSurface& surface, std::string_view argument);
+
+// (1/2) ∮ (x dy - y dx) of a curve in a plane frame (x = (C - origin)·x_axis, y = (C - origin)·y_axis):
+// the signed area contribution of one loop piece (Green's theorem), to within `absolute_tolerance`.
+// By the adaptive engine (weight certificate, then refinement), so extreme rational weights cannot hide
+// part of the curve from the rule. Throws Error naming `argument` if a hostile curve exhausts the cell budget.
+double green_area(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis,
+                  double absolute_tolerance, std::string_view argument);
+
+}  // namespace ratbez::detail

@@ -1,0 +1,84 @@
+// Joining curves end to start into one NURBS curve; see join.hpp.
+#include "ratbez/join.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "geometry/clamping.hpp"
+#include "geometry/knot_removal.hpp"
+#include "math/numeric_internal.hpp"
+#include "ratbez/compatible_curves.hpp"
+#include "ratbez/error.hpp"
+
+namespace ratbez {
+
+namespace {
+
+using detail::to_size;
+
+// Relative joint tolerance, as Profile's: above the rounding of exact constructions, below any real gap.
+constexpr double kRelativeTolerance = 1e-9;
+
+}  // namespace
+
+NurbsCurve join(const std::vector<NurbsCurve>& input) {
+    require(!input.empty(), "curves", "must contain at least one curve");
+    int p = 0;
+    Box box;
+    for (std::size_t k = 0; k < input.size(); ++k) {
+        require(input[k].degree() >= 1, "curves", [&] { return "curve " + std::to_string(k) + " has degree 0 (a point)"; });
+        require(input[k].control_box().diagonal() > 0, "curves",
+                [&] { return "curve " + std::to_string(k) + " is a single point"; });
+        p = std::max(p, input[k].degree());
+        box.add(input[k].control_box());
+    }
+    const double tolerance = kRelativeTolerance * box.diagonal();
+
+    std::vector<double> knots;
+    std::vector<Vec4> points;
+    std::vector<double> joints;  // the parameters where curve k meets curve k + 1
+    bool rational = false;
+    for (std::size_t k = 0; k < input.size(); ++k) {
+        NurbsCurve curve = elevate_degree(detail::clamped_ends(input[k]), p - input[k].degree());
+        rational = rational || curve.is_rational();
+        if (k == 0) {
+            knots = curve.knots();
+            points = curve.homogeneous_points();
+            continue;
+        }
+        const Vec3 previous_end = project(points.back());
+        const double gap = distance(previous_end, curve.start_point());
+        require(gap <= tolerance, "curves", [&] {
+            return "curve " + std::to_string(k) + " starts at " + detail::format_point(curve.start_point()) + ", " +
+                   detail::number(gap) + " away from the end " + detail::format_point(previous_end) + " of curve " +
+                   std::to_string(k - 1) + " (curves must meet end to start)";
+        });
+        // Continue the domain: [end, end + width].
+        const Interval d = curve.domain();
+        const double start = knots.back();
+        curve = curve.reparameterized(start, start + d.width());
+        // One homogeneous polygon: scale the weights so that the shared point has the previous weight.
+        std::vector<Vec4> pw = curve.homogeneous_points();
+        const double scale = points.back().w / pw.front().w;
+        for (Vec4& q : pw) q *= scale;
+        joints.push_back(start);
+        knots.pop_back();  // the end knot of multiplicity p + 1 becomes an interior knot of multiplicity p
+        knots.insert(knots.end(), curve.knots().begin() + p + 1, curve.knots().end());
+        points.insert(points.end(), pw.begin() + 1, pw.end());
+    }
+    // The last knot written for the domain end must be exact: reparameterized() maps ends exactly.
+    // A5.8's tolerance is in homogeneous space: d w_min / (1 + |P|_max) keeps the Euclidean change below d.
+    double w_min = points.front().w, p_max = 0;
+    for (const Vec4& q : points) {
+        w_min = std::min(w_min, q.w);
+        p_max = std::max(p_max, norm(project(q)));
+    }
+    const double homogeneous_tolerance = tolerance * w_min / (1.0 + p_max);
+    for (const double u : joints) detail::remove_knot(p, knots, points, u, p, homogeneous_tolerance);
+    if (!rational)
+        for (Vec4& q : points) q.w = 1.0;
+    return NurbsCurve::from_homogeneous(p, std::move(knots), std::move(points), rational);
+}
+
+}  // namespace ratbez

@@ -1,0 +1,726 @@
+// Adaptive watertight tessellation (tessellate.hpp), the pipeline:
+//  1. planning (tessellate_plan.hpp): every surface face gets a tensor grid of parameter lines, chosen
+//     from its curvature, and offsets that move its vertices off the surface so that the mesh straddles
+//     it; then checked cell by cell on the real surface, with the vertices where the mesh will have them,
+//     and refined where a cell fails (tessellate_cells.hpp);
+//  2. edge sampling (here): edges are sampled once: an edge used by surface faces takes the union of
+//     their lines along it (tessellate_sides.hpp), an edge of planar faces only is sampled by its own
+//     chordal deviation; a sample, and a B-rep vertex, moves as all the faces using it wish
+//     (tessellate_offsets.hpp), a function of the plans alone (proposals_of), so that the checks of both
+//     faces and the mesh see the same point; a crease's polyline is split where it strays from its curve;
+//  3. assembly (here): the cells of each grid become triangles on the shared edge samples; cells along
+//     a boundary whose edge carries extra samples (from the neighbouring face) are closed with a zipper
+//     strip; degenerate sides collapse to their single vertex, so cells at a pole become fan triangles.
+//     Planar faces are triangulated from their boundary loops.
+
+#include "ratbez/tessellate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mesh/polygon_triangulation.hpp"
+#include "ratbez/bspline_basis.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/surface_grid.hpp"
+#include "mesh/tessellate_cells.hpp"
+#include "mesh/tessellate_offsets.hpp"
+#include "mesh/tessellate_plan.hpp"
+#include "mesh/tessellator.hpp"
+#include "mesh/tessellate_sides.hpp"
+#include "mesh/triangle_grid.hpp"
+
+namespace ratbez {
+namespace {
+
+using detail::CellTriangle;
+using detail::CellVertex;
+using detail::kSides;
+using detail::runs_along_u;
+using detail::side_slot;
+using detail::SideMap;
+using detail::SurfacePlan;
+using Id = detail::MeshVertexId;
+
+// ---------------------------------------------------------------------------------------------------------
+// Mesh assembly: one mesh vertex per B-rep vertex and per edge sample, so nothing needs welding.
+
+class MeshAssembler {
+public:
+    Id add_point(const Vec3& p) {
+        mesh_.vertices.push_back(p);
+        return static_cast<Id>(mesh_.vertices.size() - 1);
+    }
+    template <class MakePoint>
+    Id vertex_id(const Vertex* vertex, MakePoint&& make_point) {
+        const auto [it, inserted] = vertex_ids_.try_emplace(vertex, 0);
+        if (inserted) it->second = add_point(make_point());
+        return it->second;
+    }
+    void add_triangle(Id a, Id b, Id c) {
+        if (a == b || b == c || c == a) return;  // a collapsed side: no zero-area triangle
+        mesh_.triangles.push_back({a, b, c});
+    }
+    const Vec3& point(Id id) const { return mesh_.vertices[id]; }
+    Mesh take() { return std::move(mesh_); }
+
+private:
+    Mesh mesh_;
+    std::map<const Vertex*, Id> vertex_ids_;
+};
+
+// ---------------------------------------------------------------------------------------------------------
+// Edge samples: parameters on the edge's own curve and the mesh vertex of each.
+
+struct EdgeSamples {
+    std::vector<double> params;
+    std::vector<Id> ids;
+};
+
+// Chordal sampling of a curve on its own (edges of planar faces only): recursive bisection of each knot
+// span until the chord is within tolerance of the curve at five interior points.
+void sample_curve(const NurbsCurve& curve, double a, double b, const Vec3& pa, const Vec3& pb, double tolerance,
+                  int depth, std::vector<double>& out) {
+    double worst = 0;
+    const Vec3 chord = pb - pa;
+    const double chord_length2 = dot(chord, chord);
+    for (int k = 1; k <= 5; ++k) {
+        const Vec3 p = curve.point(a + (b - a) * k / 6.0);
+        double s = chord_length2 > 0 ? dot(p - pa, chord) / chord_length2 : 0;
+        s = std::clamp(s, 0.0, 1.0);
+        worst = std::max(worst, distance(p, pa + chord * s));
+    }
+    if (worst > tolerance && depth < 40) {
+        const double m = 0.5 * (a + b);
+        const Vec3 pm = curve.point(m);
+        sample_curve(curve, a, m, pa, pm, tolerance, depth + 1, out);
+        sample_curve(curve, m, b, pm, pb, tolerance, depth + 1, out);
+    } else {
+        out.push_back(b);
+    }
+}
+
+std::vector<double> sample_curve(const NurbsCurve& curve, double tolerance) {
+    const auto breaks = breakpoints(curve.degree(), curve.knots());
+    std::vector<double> params{breaks.front()};
+    for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
+        sample_curve(curve, breaks[k], breaks[k + 1], curve.point(breaks[k]), curve.point(breaks[k + 1]), tolerance, 0,
+                     params);
+    return params;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// The driver: plan every surface face, sample every edge once, then mesh the faces on those samples.
+
+class Tessellator {
+public:
+    Tessellator(std::span<const Face> faces, const detail::TessellationSettings& settings)
+        : faces_(faces), settings_(settings) {}
+
+    // Progress: planning reports up to kPlannedFraction, then each face meshed takes an equal share of
+    // the rest (rows of a surface face poll in between).
+    Mesh run() {
+        detail::plan_surfaces(
+            faces_, settings_, [this](const SurfacePlan& p, std::vector<Vec3>& out) { grid_points(p, out); }, plans_);
+        sample_edges();
+        const double step = (1 - detail::kPlannedFraction) / static_cast<double>(faces_.size());
+        double done = detail::kPlannedFraction;
+        for (const SurfacePlan& plan : plans_) {
+            settings_.report(done);
+            mesh_surface(plan);
+            done += step;
+        }
+        for (const Face& face : faces_)
+            if (face.kind() == Face::Kind::planar) {
+                settings_.report(done);
+                mesh_planar(face);
+                done += step;
+            }
+        settings_.report(1.0);
+        return assembler_.take();
+    }
+
+private:
+    // One use of an edge by a face: a side of a surface face (plan index) or a loop of a planar face.
+    struct EdgeUse {
+        const Face* face;
+        std::size_t plan = 0;  // surface faces
+        Side side = Side::v_min;
+    };
+    // Where a B-rep vertex sits on a surface face: a corner (u, v), or a whole collapsed side (a pole).
+    struct VertexUse {
+        const Face* face;
+        std::size_t plan = 0;
+        double u = 0, v = 0;
+        std::optional<Side> pole;  // the collapsed side, for a pole
+    };
+
+    // Who uses each edge and each vertex, from the plans (built once, the first time it is asked for).
+    void index_uses() {
+        if (!edge_uses_.empty()) return;
+        for (std::size_t k = 0; k < plans_.size(); ++k) {
+            const SurfacePlan& p = plans_[k];
+            const NurbsSurface& s = p.face->surface();
+            for (Side side : kSides) {
+                const SideMap& m = p.sides[side_slot(side)];
+                const Coedge& coedge = p.face->sides()[side_slot(side)];
+                edge_uses_[m.edge].push_back({p.face, k, side});
+                const double fixed = detail::side_parameter(s, side);
+                auto corner = [&](double q) { return runs_along_u(side) ? std::pair{q, fixed} : std::pair{fixed, q}; };
+                if (m.degenerate) {
+                    const auto [u, v] = corner(0.5 * (m.p0 + m.p1));
+                    vertex_uses_[coedge.edge->start.get()].push_back({p.face, k, u, v, side});
+                    continue;
+                }
+                const auto [u0, v0] = corner(m.p0);
+                const auto [u1, v1] = corner(m.p1);
+                vertex_uses_[(m.flipped ? coedge.edge->end : coedge.edge->start).get()].push_back({p.face, k, u0, v0, std::nullopt});
+                vertex_uses_[(m.flipped ? coedge.edge->start : coedge.edge->end).get()].push_back({p.face, k, u1, v1, std::nullopt});
+            }
+        }
+        for (const Face& face : faces_) {
+            if (face.kind() != Face::Kind::planar) continue;
+            for (const auto& loop : face.loops())
+                for (const Coedge& coedge : loop) {
+                    edge_uses_[coedge.edge.get()].push_back({&face, 0, Side::v_min});
+                    for (const Vertex* v : {coedge.edge->start.get(), coedge.edge->end.get()})
+                        vertex_uses_[v].push_back({&face, 0, 0, 0, std::nullopt});
+                }
+        }
+    }
+
+    // The face's unit normal at (u, v) (the surface's limit normal where its partials are parallel), or none
+    // where it has no tangent plane at all (a profile that meets the axis in a cusp): no offset there.
+    static std::optional<Vec3> face_normal(const SurfacePlan& p, double u, double v) {
+        const detail::SurfaceFirstDerivatives d = p.evaluator->first_derivatives(u, v);
+        const Vec3 n = cross(d.su, d.sv);
+        const double length = norm(n);
+        if (length > 1e-10 * (dot(d.su, d.su) + dot(d.sv, d.sv))) return n / length;
+        try {
+            return p.face->surface().normal(u, v);
+        } catch (const Error&) {
+            return std::nullopt;
+        }
+    }
+
+    static detail::OffsetWish planar_wish(const Face& face) {
+        return {face.plane().normal, 0.0, 0.0, 0.0, true, 0.0, &face};
+    }
+    static detail::OffsetWish surface_wish(const SurfacePlan& p, const Vec3& normal, double u, double v) {
+        if (!p.straddle) return {normal, 0.0, 0.0, 0.0, true, p.grid.cells(), p.face};
+        return {normal, p.offsets.at(u, v), p.offsets.lowest_at(u, v), p.offsets.highest_at(u, v), false, p.grid.cells(),
+                p.face};
+    }
+
+    // The (u, v) of the surface face of `use` at the edge's parameter t, on the side the edge is.
+    std::pair<double, double> side_point(const EdgeUse& use, double t) const {
+        const SurfacePlan& p = plans_[use.plan];
+        const double q = p.sides[side_slot(use.side)].to_face(t), fixed = detail::side_parameter(p.face->surface(), use.side);
+        return runs_along_u(use.side) ? std::pair{q, fixed} : std::pair{fixed, q};
+    }
+
+    // The move of the edge sample at parameter t, `gap` and `chord` away from its nearer and farther
+    // neighbours on the edge (proposals_of): what its faces wish (a planar face: to stay in its plane), at
+    // most the smallest max_offset of its surface faces, a quarter of the edge's radius of curvature there
+    // (longer moves towards the centre of curvature would fold the edge's polygon, and a cap with it) and the
+    // offset_room its neighbours leave; at a crease leaning towards centring the edge's polyline on its curve.
+    Vec3 edge_offset(const Edge* edge, double t, double gap, double chord) {
+        wishes_.clear();
+        double cap = std::numeric_limits<double>::infinity();
+        for (const EdgeUse& use : edge_uses_[edge]) {
+            if (use.face->kind() == Face::Kind::planar) {
+                wishes_.push_back(planar_wish(*use.face));
+                continue;
+            }
+            const SurfacePlan& p = plans_[use.plan];
+            cap = std::min(cap, p.max_offset());
+            const auto [u, v] = side_point(use, t);
+            const std::optional<Vec3> n = face_normal(p, u, v);
+            if (!n) return {};
+            wishes_.push_back(surface_wish(p, *n, u, v));
+        }
+        if (!std::isfinite(cap)) return {};  // planar faces only: the edge stays put
+        const Vec3 d1 = edge->curve.derivative(t, 1), d2 = edge->curve.derivative(t, 2);
+        const double speed = norm(d1);
+        const double curvature = speed > 0 ? norm(cross(d1, d2)) / (speed * speed * speed) : 0.0;
+        if (curvature > 0) cap = std::min(cap, 0.25 / curvature);
+        cap = detail::offset_room(gap, cap);
+        // The edge's own wish (used at a crease): its chords, `chord` long, sag by curvature chord^2 / 8.
+        detail::EdgeBend bend{};
+        if (curvature > 0 && std::isfinite(chord)) {
+            const Vec3 tangent = d1 / speed, towards_centre = d2 - tangent * dot(d2, tangent);
+            bend = {towards_centre / -norm(towards_centre), curvature * chord * chord / 16};
+        }
+        return detail::shared_offset(wishes_, cap, curvature > 0 && std::isfinite(chord) ? &bend : nullptr);
+    }
+
+    // True when the faces along the edge meet at an angle (their normals differ at its middle).
+    bool is_crease(const Edge* edge) {
+        const auto [it, inserted] = crease_.try_emplace(edge, false);
+        if (!inserted) return it->second;
+        const double t = 0.5 * (edge->curve.domain().min + edge->curve.domain().max);
+        std::vector<Vec3> normals;
+        for (const EdgeUse& use : edge_uses_[edge]) {
+            if (use.face->kind() == Face::Kind::planar) {
+                normals.push_back(use.face->plane().normal);
+                continue;
+            }
+            const auto [u, v] = side_point(use, t);
+            if (const std::optional<Vec3> n = face_normal(plans_[use.plan], u, v)) normals.push_back(*n);
+        }
+        for (std::size_t a = 0; a < normals.size(); ++a)
+            for (std::size_t b = a + 1; b < normals.size(); ++b)
+                if (dot(normals[a], normals[b]) < std::cos(1e-3)) it->second = true;
+        return it->second;
+    }
+
+    // The move of a B-rep vertex: as its faces wish (a planar face, an inscribed one: none), nothing at a
+    // corner of three or more faces or where a face has no normal, and at a pole only when the surface's
+    // limit normal is one direction around it (not at an apex).
+    Vec3 vertex_offset(const Vertex* vertex) {
+        wishes_.clear();
+        double cap = std::numeric_limits<double>::infinity();
+        for (const VertexUse& use : vertex_uses_[vertex]) {
+            if (use.face->kind() == Face::Kind::planar) {
+                wishes_.push_back(planar_wish(*use.face));
+                continue;
+            }
+            const SurfacePlan& p = plans_[use.plan];
+            cap = std::min(cap, p.max_offset());
+            if (use.pole) {
+                const SideMap& m = p.sides[side_slot(*use.pole)];
+                const double fixed = detail::side_parameter(p.face->surface(), *use.pole);
+                auto normal_at = [&](double q) {
+                    return runs_along_u(*use.pole) ? face_normal(p, q, fixed) : face_normal(p, fixed, q);
+                };
+                const std::optional<Vec3> n = normal_at(0.5 * (m.p0 + m.p1));
+                if (!n) return {};
+                for (double f : {0.0, 0.25, 0.75, 1.0}) {
+                    const std::optional<Vec3> other = normal_at(m.p0 + f * (m.p1 - m.p0));
+                    if (!other || distance(*other, *n) > 1e-6) return {};
+                }
+                wishes_.push_back(surface_wish(p, *n, use.u, use.v));
+                continue;
+            }
+            const std::optional<Vec3> n = face_normal(p, use.u, use.v);
+            if (!n) return {};
+            wishes_.push_back(surface_wish(p, *n, use.u, use.v));
+        }
+        if (!std::isfinite(cap)) return {};
+        return detail::shared_offset(wishes_, cap);
+    }
+
+    Id vertex_id(const VertexPtr& vertex) {
+        return assembler_.vertex_id(vertex.get(), [&] { return vertex->point + vertex_offset(vertex.get()); });
+    }
+
+    // Where the mesh puts the vertices of plan p's grid (detail::GridPoints): inside, the plan's own offsets;
+    // on its sides what the shared edge samples, poles and corners get.
+    void grid_points(const SurfacePlan& p, std::vector<Vec3>& out) {
+        index_uses();
+        detail::interior_grid_points(p, p.grid, out);
+        const std::size_t nu = p.grid.u.size(), nv = p.grid.v.size();
+        for (Side side : kSides) {
+            const SideMap& m = p.sides[side_slot(side)];
+            const Coedge& coedge = p.face->sides()[side_slot(side)];
+            const bool along_u = runs_along_u(side);
+            const std::vector<double>& lines = along_u ? p.grid.u : p.grid.v;
+            const std::size_t fixed = side == Side::v_min || side == Side::u_min ? 0 : (along_u ? nv : nu) - 1;
+            auto at = [&](std::size_t k) -> Vec3& { return along_u ? out[k * nv + fixed] : out[fixed * nv + k]; };
+            if (m.degenerate) {
+                const Vec3 pole = coedge.edge->start->point + vertex_offset(coedge.edge->start.get());
+                for (std::size_t k = 0; k < lines.size(); ++k) at(k) = pole;
+                continue;
+            }
+            const std::vector<Proposal> proposals = proposals_of(m.edge);
+            const Interval d = m.edge->curve.domain();
+            for (std::size_t k = 0; k < lines.size(); ++k) {
+                if (k == 0 || k + 1 == lines.size()) {
+                    const Vertex* v = (k == 0) != m.flipped ? coedge.edge->start.get() : coedge.edge->end.get();
+                    at(k) = v->point + vertex_offset(v);
+                } else {
+                    const double t = m.to_edge(lines[k]);
+                    const auto [gap, chord] = proposed_at(proposals, t, 1e-12 * (d.max - d.min));
+                    at(k) = m.edge->curve.point(t) + edge_offset(m.edge, t, gap, chord);
+                }
+            }
+        }
+        // A corner between a degenerate side and another: the pole wins (it is the same vertex).
+        for (Side side : kSides) {
+            const SideMap& m = p.sides[side_slot(side)];
+            if (!m.degenerate) continue;
+            const Vec3 pole = p.face->sides()[side_slot(side)].edge->start->point +
+                              vertex_offset(p.face->sides()[side_slot(side)].edge->start.get());
+            const bool along_u = runs_along_u(side);
+            const std::size_t fixed = side == Side::v_min || side == Side::u_min ? 0 : (along_u ? nv : nu) - 1;
+            for (std::size_t k = 0; k < (along_u ? nu : nv); ++k) (along_u ? out[k * nv + fixed] : out[fixed * nv + k]) = pole;
+        }
+    }
+
+    // Every edge's samples: the union of the lines of the surface faces along it (or its own chordal
+    // sampling for an edge of planar faces only), each moved by edge_offset as its proposals say: the very
+    // point the faces' checks saw. A face that did not propose it sees it as an extra sample of a boundary
+    // cell, as before the offsets.
+    void sample_edges() {
+        for (const EdgePtr& edge : distinct_edges(faces_)) {
+            EdgeSamples samples;
+            if (edge->degenerate) {
+                samples.ids = {vertex_id(edge->start)};
+                samples.params = {edge->curve.domain().min};
+                edge_samples_.emplace(edge.get(), std::move(samples));
+                continue;
+            }
+            const Interval d = edge->curve.domain();
+            const std::vector<Proposal> proposals = proposals_of(edge.get());
+            if (!proposals.empty()) {
+                std::vector<double> ts;
+                for (const Proposal& q : proposals) ts.push_back(q.t);
+                samples.params = detail::merge_params(std::move(ts), d.min, d.max);
+            } else {
+                samples.params = detail::merge_params(sample_curve(edge->curve, settings_.tolerance), d.min, d.max);
+            }
+            const double eps = 1e-12 * (d.max - d.min);  // merge_params' rounding
+            std::vector<Vec3> points;
+            auto place = [&] {
+                const std::size_t n = samples.params.size();
+                side_points_.resize(n);
+                for (std::size_t k = 0; k < n; ++k) side_points_[k] = edge->curve.point(samples.params[k]);
+                points.resize(n);
+                for (std::size_t k = 0; k < n; ++k) {
+                    if (k == 0 || k + 1 == n) {
+                        const Vertex* v = k == 0 ? edge->start.get() : edge->end.get();
+                        points[k] = v->point + vertex_offset(v);
+                        continue;
+                    }
+                    // As the faces' checks placed it (grid_points); a sample added below: from its neighbours.
+                    const double t = samples.params[k];
+                    auto [gap, chord] = proposed_at(proposals, t, eps);
+                    if (!std::isfinite(gap)) gap = neighbour_gap(side_points_, k), chord = neighbour_chord(side_points_, k);
+                    points[k] = side_points_[k] + edge_offset(edge.get(), t, gap, chord);
+                }
+            };
+            place();
+            // Along a crease the edge is the faces' boundary: the polyline must keep within the tolerance of
+            // the curve itself, which neither face's check sees. A chord that strays further is split (the
+            // faces close the cells along it with a zipper strip, as for another face's extra samples).
+            // The bound: the loosest target of the faces along the edge. Between faces inscribed in their
+            // surfaces the edge's samples lie on it and the meshes stay as they were before the offsets.
+            double bound = 0;
+            bool straddled = false;
+            for (const EdgeUse& use : edge_uses_[edge.get()])
+                if (use.face->kind() == Face::Kind::surface) {
+                    bound = std::max(bound, plans_[use.plan].target);
+                    straddled = straddled || plans_[use.plan].straddle;
+                }
+            if (straddled && is_crease(edge.get())) {
+                for (int round = 0; round < 8; ++round) {
+                    std::vector<double> added;
+                    for (std::size_t k = 0; k + 1 < samples.params.size(); ++k) {
+                        const double a = samples.params[k], b = samples.params[k + 1];
+                        double error = 0;
+                        for (double f : {0.25, 0.5, 0.75})
+                            error = std::max(error, detail::point_segment_distance(edge->curve.point(a + f * (b - a)), points[k],
+                                                                           points[k + 1]));
+                        if (error > bound) added.push_back(0.5 * (a + b));
+                    }
+                    if (added.empty()) break;
+                    added.insert(added.end(), samples.params.begin(), samples.params.end());
+                    samples.params = detail::merge_params(std::move(added), d.min, d.max);
+                    place();
+                }
+            }
+            const std::size_t n = samples.params.size();
+            samples.ids.reserve(n);
+            for (std::size_t k = 0; k < n; ++k) {
+                if (k == 0) samples.ids.push_back(vertex_id(edge->start));
+                else if (k + 1 == n) samples.ids.push_back(vertex_id(edge->end));
+                else samples.ids.push_back(assembler_.add_point(points[k]));
+            }
+            edge_samples_.emplace(edge.get(), std::move(samples));
+        }
+    }
+
+    // A sample a surface face proposes for an edge: one of its lines along it, with the distances to the
+    // nearer (gap) and farther (chord) of its neighbouring lines there, measured on the edge's curve.
+    struct Proposal {
+        double t, gap, chord;
+    };
+
+    // The proposals of every surface face along `edge` from the plans as they are now, sorted by t: what
+    // the checks and the mesh both place the edge's samples from (a function of the plans alone).
+    std::vector<Proposal> proposals_of(const Edge* edge) {
+        std::vector<Proposal> proposals;
+        for (const EdgeUse& use : edge_uses_[edge]) {
+            if (use.face->kind() == Face::Kind::planar) continue;
+            const SurfacePlan& plan = plans_[use.plan];
+            const SideMap& m = plan.sides[side_slot(use.side)];
+            if (m.degenerate) continue;
+            const std::vector<double>& lines = runs_along_u(use.side) ? plan.grid.u : plan.grid.v;
+            side_points_.resize(lines.size());
+            for (std::size_t k = 0; k < lines.size(); ++k) side_points_[k] = edge->curve.point(m.to_edge(lines[k]));
+            for (std::size_t k = 0; k < lines.size(); ++k)
+                proposals.push_back({m.to_edge(lines[k]), neighbour_gap(side_points_, k), neighbour_chord(side_points_, k)});
+        }
+        std::sort(proposals.begin(), proposals.end(), [](const Proposal& a, const Proposal& b) { return a.t < b.t; });
+        return proposals;
+    }
+
+    // The smallest gap and chord the proposals at t hold (infinity for none).
+    static std::pair<double, double> proposed_at(const std::vector<Proposal>& proposals, double t, double eps) {
+        const auto lower = std::lower_bound(proposals.begin(), proposals.end(), t - eps,
+                                            [](const Proposal& q, double x) { return q.t < x; });
+        double gap = std::numeric_limits<double>::infinity(), chord = gap;
+        for (auto q = lower; q != proposals.end() && q->t <= t + eps; ++q) gap = std::min(gap, q->gap), chord = std::min(chord, q->chord);
+        return {gap, chord};
+    }
+
+    // The distance from points[k] to the farther of its neighbours in the list.
+    static double neighbour_chord(const std::vector<Vec3>& points, std::size_t k) {
+        double chord = 0;
+        if (k > 0) chord = std::max(chord, distance(points[k], points[k - 1]));
+        if (k + 1 < points.size()) chord = std::max(chord, distance(points[k], points[k + 1]));
+        return chord;
+    }
+
+    // The distance from points[k] to the nearer of its neighbours in the list.
+    static double neighbour_gap(const std::vector<Vec3>& points, std::size_t k) {
+        double gap = std::numeric_limits<double>::infinity();
+        if (k > 0) gap = std::min(gap, distance(points[k], points[k - 1]));
+        if (k + 1 < points.size()) gap = std::min(gap, distance(points[k], points[k + 1]));
+        return gap;
+    }
+
+    const EdgeSamples& samples_of(const Edge* edge) const {
+        const auto it = edge_samples_.find(edge);
+        require(it != edge_samples_.end(), "solid", "a face uses an edge the faces do not list");
+        return it->second;
+    }
+
+    void mesh_surface(const SurfacePlan& plan) {
+        const detail::SurfaceEvaluator& s = *plan.evaluator;
+        const detail::ParameterGrid& g = plan.grid;
+        const std::size_t nu = g.u.size(), nv = g.v.size();
+
+        // Per side: (face parameter, id) of every edge sample, ascending in the face parameter.
+        std::array<std::vector<std::pair<double, Id>>, 4> side_samples;
+        for (Side side : kSides) {
+            const SideMap& m = plan.sides[side_slot(side)];
+            const EdgeSamples& e = samples_of(m.edge);
+            auto& list = side_samples[side_slot(side)];
+            if (m.degenerate) continue;
+            for (std::size_t k = 0; k < e.params.size(); ++k) list.emplace_back(m.to_face(e.params[k]), e.ids[k]);
+            std::sort(list.begin(), list.end());
+        }
+        // The sample a grid line lands on: the nearest one (the samples are the union of the grid lines of
+        // both faces, up to the rounding of the parameter maps). Cells take their corners AND their extra
+        // samples by this index, so every sample of the edge is used exactly once along the side, however
+        // close two samples are (two faces' lines a rounding apart give two distinct samples; matching
+        // extras by a parameter epsilon instead dropped the one not chosen as the corner: a hole).
+        auto side_index = [&](Side side, double p) -> std::size_t {
+            const auto& list = side_samples[side_slot(side)];
+            auto it = std::lower_bound(list.begin(), list.end(), std::make_pair(p, Id{0}),
+                                       [](const auto& a, const auto& b) { return a.first < b.first; });
+            if (it == list.end() || (it != list.begin() && std::abs(std::prev(it)->first - p) < std::abs(it->first - p))) --it;
+            return static_cast<std::size_t>(it - list.begin());
+        };
+        auto side_id = [&](Side side, double p) -> std::pair<bool, Id> {
+            const SideMap& m = plan.sides[side_slot(side)];
+            if (m.degenerate) return {true, samples_of(m.edge).ids[0]};
+            return {false, side_samples[side_slot(side)][side_index(side, p)].second};
+        };
+
+        // The interior grid points in one batch (surface_grid.hpp), moved by the plan's offsets; boundary
+        // points are edge samples.
+        detail::interior_grid_points(plan, g, grid_points_);
+        std::vector<Id> ids(nu * nv);
+        for (std::size_t i = 0; i < nu; ++i)
+            for (std::size_t j = 0; j < nv; ++j) {
+                // (degenerate, id) from the sides through the point: the least, a non-degenerate side first.
+                std::optional<std::pair<bool, Id>> chosen;
+                auto consider = [&](std::pair<bool, Id> candidate) {
+                    if (!chosen || candidate < *chosen) chosen = candidate;
+                };
+                if (j == 0) consider(side_id(Side::v_min, g.u[i]));
+                if (i == nu - 1) consider(side_id(Side::u_max, g.v[j]));
+                if (j == nv - 1) consider(side_id(Side::v_max, g.u[i]));
+                if (i == 0) consider(side_id(Side::u_min, g.v[j]));
+                ids[i * nv + j] = chosen ? chosen->second : assembler_.add_point(grid_points_[i * nv + j]);
+            }
+
+        auto vertex = [&](std::size_t i, std::size_t j) {
+            const Id id = ids[i * nv + j];
+            return CellVertex{g.u[i], g.v[j], assembler_.point(id), id};
+        };
+        // Extra samples on a side strictly between the samples of the grid lines p0 < p1, ascending.
+        auto extras = [&](Side side, double p0, double p1, double fixed, std::vector<CellVertex>& chain) {
+            const SideMap& m = plan.sides[side_slot(side)];
+            if (m.degenerate) return;
+            const auto& list = side_samples[side_slot(side)];
+            const bool along_u = runs_along_u(side);
+            for (std::size_t k = side_index(side, p0) + 1, end = side_index(side, p1); k < end; ++k) {
+                const auto& [p, id] = list[k];
+                chain.push_back(CellVertex{along_u ? p : fixed, along_u ? fixed : p, assembler_.point(id), id});
+            }
+        };
+
+        std::vector<CellVertex> bottom, right, top, left, lower, upper;
+        CellVertex center;
+        std::vector<CellTriangle> triangles;
+        for (std::size_t i = 0; i + 1 < nu; ++i) {
+            if (i % 64 == 63) settings_.poll();
+            for (std::size_t j = 0; j + 1 < nv; ++j) {
+                const CellVertex c00 = vertex(i, j), c10 = vertex(i + 1, j), c11 = vertex(i + 1, j + 1), c01 = vertex(i, j + 1);
+                bottom = {c00};
+                if (j == 0) extras(Side::v_min, g.u[i], g.u[i + 1], g.v[0], bottom);
+                bottom.push_back(c10);
+                right = {c10};
+                if (i + 2 == nu) extras(Side::u_max, g.v[j], g.v[j + 1], g.u[nu - 1], right);
+                right.push_back(c11);
+                top = {c01};
+                if (j + 2 == nv) extras(Side::v_max, g.u[i], g.u[i + 1], g.v[nv - 1], top);
+                top.push_back(c11);
+                left = {c00};
+                if (i == 0) extras(Side::u_min, g.v[j], g.v[j + 1], g.u[0], left);
+                left.push_back(c01);
+                triangles.clear();
+                if (detail::triangulate_cell(s, bottom, right, top, left, lower, upper, center, triangles)) {
+                    const double u = 0.5 * (g.u[i] + g.u[i + 1]), v = 0.5 * (g.v[j] + g.v[j + 1]);
+                    const std::optional<Vec3> n = face_normal(plan, u, v);
+                    const Vec3 p = s.point(u, v) + (n ? *n * plan.offsets.at(u, v) : Vec3{});
+                    center = CellVertex{u, v, p, assembler_.add_point(p)};
+                }
+                for (const auto& t : triangles) assembler_.add_triangle(t[0]->id, t[1]->id, t[2]->id);
+            }
+        }
+    }
+
+    void mesh_planar(const Face& face) {
+        const Plane& plane = face.plane();
+        std::vector<std::vector<detail::Point2>> loops;
+        std::vector<Id> flat_ids;
+        for (const auto& loop : face.loops()) {
+            std::vector<Id> ids;
+            for (const Coedge& coedge : loop) {
+                const EdgeSamples& e = samples_of(coedge.edge.get());
+                if (coedge.edge->degenerate) continue;
+                const std::size_t n = e.ids.size();
+                for (std::size_t k = 0; k + 1 < n; ++k) ids.push_back(coedge.reversed ? e.ids[n - 1 - k] : e.ids[k]);
+            }
+            std::vector<Id> cleaned;
+            for (Id id : ids)
+                if (cleaned.empty() || cleaned.back() != id) cleaned.push_back(id);
+            while (cleaned.size() > 1 && cleaned.back() == cleaned.front()) cleaned.pop_back();
+            require(cleaned.size() >= 3, "solid", "a planar face has a loop with fewer than three distinct points");
+            std::vector<detail::Point2> points;
+            for (Id id : cleaned) {
+                const Vec3 d = assembler_.point(id) - plane.origin;
+                points.push_back({dot(d, plane.x_axis), dot(d, plane.y_axis)});
+            }
+            loops.push_back(std::move(points));
+            flat_ids.insert(flat_ids.end(), cleaned.begin(), cleaned.end());
+        }
+        // Counterclockwise in the (x, y) frame is along x × y; flip if the frame is left-handed to the normal.
+        const bool flip = dot(cross(plane.x_axis, plane.y_axis), plane.normal) < 0;
+        for (const auto& t : detail::triangulate_polygon(loops)) {
+            if (flip) assembler_.add_triangle(flat_ids[t[0]], flat_ids[t[2]], flat_ids[t[1]]);
+            else assembler_.add_triangle(flat_ids[t[0]], flat_ids[t[1]], flat_ids[t[2]]);
+        }
+    }
+
+    std::span<const Face> faces_;
+    detail::TessellationSettings settings_;
+    std::vector<SurfacePlan> plans_;
+    std::map<const Edge*, EdgeSamples> edge_samples_;
+    MeshAssembler assembler_;
+    std::vector<Vec3> grid_points_;  // mesh_surface's batch, kept to reuse its storage from face to face
+    std::map<const Edge*, std::vector<EdgeUse>> edge_uses_;
+    std::map<const Vertex*, std::vector<VertexUse>> vertex_uses_;
+    std::vector<detail::OffsetWish> wishes_;
+    std::map<const Edge*, bool> crease_;
+    std::vector<Vec3> side_points_;
+};
+
+}  // namespace
+
+namespace {
+
+// The planner's estimate covers the face it stopped at, so it is a lower bound for the whole. A coarser
+// tessellation of all faces that fits (tolerance x4 each step, at most 20,000 triangles: about a second)
+// scaled by the tolerance ratio gives the estimate: a curved face's triangles grow as 1 / tolerance, flat
+// ones not at all (so it errs high).
+double estimate_triangles(std::span<const Face> faces, detail::TessellationSettings settings, double lower_bound) {
+    const double requested = settings.tolerance;
+    settings.max_triangles = std::min<std::size_t>(settings.max_triangles, 20'000);
+    for (int step = 0; step < 24; ++step) {
+        settings.tolerance *= 4;
+        try {
+            const Mesh coarse = Tessellator(faces, settings).run();
+            return std::max(lower_bound, static_cast<double>(coarse.triangles.size()) * settings.tolerance / requested);
+        } catch (const TooFine&) {
+        }
+    }
+    return lower_bound;
+}
+
+}  // namespace
+
+double default_tolerance(const Solid& solid) { return 1e-3 * solid.bounding_box().diagonal(); }
+
+namespace {
+
+detail::TessellationSettings settings_of(const TessellationOptions& options) {
+    require(std::isfinite(options.tolerance) && options.tolerance > 0, "tolerance",
+            "must be a finite number > 0 (got " + std::to_string(options.tolerance) + ")");
+    detail::TessellationSettings settings;
+    settings.tolerance = options.tolerance;
+    if (options.angle_deg) {
+        require(std::isfinite(*options.angle_deg) && *options.angle_deg > 0 && *options.angle_deg < 180, "angle_deg",
+                "must be in (0, 180) degrees (got " + std::to_string(*options.angle_deg) + ")");
+        settings.angle_rad = *options.angle_deg * std::numbers::pi / 180.0;
+    }
+    require(options.max_triangles > 0, "max_triangles", "must be positive");
+    settings.max_triangles = options.max_triangles;
+    settings.progress = &options.progress;
+    return settings;
+}
+
+// Tessellates the faces; a request over the budget is reported with the estimate for all of them.
+Mesh run_within_budget(std::span<const Face> faces, const detail::TessellationSettings& settings) {
+    try {
+        return Tessellator(faces, settings).run();
+    } catch (const TooFine& e) {
+        throw TooFine(estimate_triangles(faces, settings, e.estimated_triangles()), settings.max_triangles);
+    }
+}
+
+}  // namespace
+
+Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
+    Mesh mesh = run_within_budget(solid.faces(), settings_of(options));
+    // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
+    // solid whose faces fold onto each other — a profile that runs back over itself, found by
+    // fuzz_geometry — from handing out an open mesh.
+    require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
+                                       "back on each other, e.g. a profile that runs back over itself)");
+    return mesh;
+}
+
+Mesh tessellate(const Face& face, const TessellationOptions& options) {
+    return run_within_budget(std::span<const Face>(&face, 1), settings_of(options));
+}
+
+Mesh tessellate(const NurbsSurface& surface, const TessellationOptions& options) {
+    const detail::TessellationSettings settings = settings_of(options);  // the options first, then the surface
+    const Face face = Face::from_surface(surface);
+    return run_within_budget(std::span<const Face>(&face, 1), settings);
+}
+
+}  // namespace ratbez

@@ -1,0 +1,46 @@
+#pragma once
+// The Tessellator behind tessellate.hpp, and the settings every stage of it reads. Which file does what:
+//
+//   stage                          file                       main entry points
+//   the driver, edge sampling,     tessellate.cpp             Tessellator::run, sample_edges, mesh_surface,
+//   mesh assembly                                             mesh_planar; TooFine's estimate
+//   grid planning and refinement   tessellate_plan.hpp/.cpp   plan_surfaces, plan_face, choose_grid,
+//                                                             refine_grid, match_lines_at_creases
+//   the cells: triangles, checks   tessellate_cells.hpp/.cpp  triangulate_cell, check_grid
+//   a face's sides on its edges    tessellate_sides.hpp/.cpp  map_side, merge_params
+//   vertex and sample offsets      tessellate_offsets.hpp/.cpp shared_offset (OffsetWish, EdgeBend)
+//   triangle distances             triangle_grid.hpp/.cpp     point_segment_distance, point_triangle_distance
+//   strips between two rails       strip_zipper.hpp           zip_rails
+//   planar faces                   polygon_triangulation.hpp  triangulate_polygon
+//   the mesh measured afterwards   deviation.cpp              max_deviation (deviation.hpp)
+//
+// Not installed, not part of the public API.
+
+#include <cstddef>
+
+#include "ratbez/progress.hpp"
+
+namespace ratbez::detail {
+
+// What the caller of tessellate() asked for.
+struct TessellationSettings {
+    double tolerance = 0;  // the distance allowed between mesh and surface, either way
+    double angle_rad = 0;  // 0: no angle limit
+    std::size_t max_triangles = 0;
+    const Progress* progress = nullptr;  // TessellationOptions::progress, or none
+
+    // Reports `fraction` of the whole tessellation done (the caller's callback may throw to cancel).
+    void report(double fraction) const {
+        reported = fraction;
+        if (progress != nullptr && *progress) (*progress)(fraction);
+    }
+    // Reports the last fraction again: a chance to cancel inside a long stage.
+    void poll() const { report(reported); }
+    mutable double reported = 0;
+
+    // The bound every cell is checked against: a little below the tolerance, which leaves room for the error
+    // between the checked samples and for writing the coordinates with few digits.
+    double check_tolerance() const { return 0.98 * tolerance; }
+};
+
+}  // namespace ratbez::detail

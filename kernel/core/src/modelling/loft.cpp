@@ -1,0 +1,166 @@
+// Skinning (The NURBS Book §10.3) and lofted solids; see loft.hpp.
+#include "ratbez/loft.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "geometry/interpolation.hpp"
+#include "math/numeric_internal.hpp"
+#include "modelling/planar_profile.hpp"
+#include "ratbez/compatible_curves.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/join.hpp"
+#include "modelling/tube_shell.hpp"
+
+namespace ratbez {
+
+namespace {
+
+using detail::to_size;
+
+// Averaged chord-length parameters across the sections (Eq. 9.5 per column, averaged as Eq. 10.8). Columns
+// whose points do not move (a point shared by every section) carry no information and are left out.
+std::vector<double> section_parameters(const std::vector<NurbsCurve>& sections, const std::string& argument) {
+    const std::size_t count = sections.size(), columns = sections.front().homogeneous_points().size();
+    std::vector<double> v(count, 0.0);
+    std::vector<double> chord(count);
+    std::vector<double> largest_step(count, 0.0);
+    int used = 0;
+    double size = 0;
+    for (const NurbsCurve& c : sections) size = std::max(size, c.control_box().diagonal());
+    for (std::size_t i = 0; i < columns; ++i) {
+        double total = 0;
+        chord[0] = 0;
+        for (std::size_t k = 1; k < count; ++k) {
+            const double step = distance(project(sections[k].homogeneous_points()[i]),
+                                         project(sections[k - 1].homogeneous_points()[i]));
+            largest_step[k] = std::max(largest_step[k], step);
+            total += step;
+            chord[k] = total;
+        }
+        if (total <= 0) continue;
+        ++used;
+        for (std::size_t k = 1; k < count; ++k) v[k] += chord[k] / total;
+    }
+    for (std::size_t k = 1; k < count; ++k)
+        require(largest_step[k] > 1e-12 * size, argument, [&] {
+            return "section " + std::to_string(k) + " coincides with section " + std::to_string(k - 1) +
+                   " (a loft needs distinct consecutive sections)";
+        });
+    for (std::size_t k = 1; k + 1 < count; ++k) v[k] /= used;
+    v.back() = 1.0;
+    // Averaging keeps the v_k increasing (each column's are non-decreasing and one moves at every step);
+    // make sure rounding did not merge two.
+    for (std::size_t k = 1; k < count; ++k)
+        require(v[k] > v[k - 1], argument, [&] {
+            return "sections " + std::to_string(k - 1) + " and " + std::to_string(k) + " are too close to loft between";
+        });
+    return v;
+}
+
+Vec3 control_centre(const Profile& profile) {
+    Vec3 sum{};
+    double count = 0;
+    for (const NurbsCurve& piece : profile.pieces())
+        for (const Vec4& pw : piece.homogeneous_points()) {
+            sum += project(pw);
+            count += 1;
+        }
+    return sum / count;
+}
+
+}  // namespace
+
+Skin skin(const std::vector<NurbsCurve>& curves, int degree) {
+    require(curves.size() >= 2, "curves", [&] { return "a loft needs at least 2 sections, got " + std::to_string(curves.size()); });
+    require(degree >= 1, "degree", [&] { return "must be >= 1, got " + std::to_string(degree); });
+    std::vector<NurbsCurve> sections = make_compatible(curves, "curves");
+    // Each section's weights scaled so that its first is 1: the loft then does not depend on the
+    // arbitrary common factor of a curve's weights.
+    bool rational = false;
+    for (NurbsCurve& c : sections) {
+        rational = rational || c.is_rational();
+        if (!c.is_rational()) continue;
+        std::vector<Vec4> pw = c.homogeneous_points();
+        const double scale = 1.0 / pw.front().w;
+        for (Vec4& q : pw) q *= scale;
+        c = NurbsCurve::from_homogeneous(c.degree(), c.knots(), std::move(pw), true);
+    }
+    const std::vector<double> v = section_parameters(sections, "curves");
+    const int q = std::min(degree, static_cast<int>(sections.size()) - 1);
+    const std::vector<double> knots_v = detail::averaged_knots(v, q);
+
+    const std::size_t rows = sections.front().homogeneous_points().size(), columns = sections.size();
+    std::vector<Vec4> net(rows * columns);
+    std::vector<Vec4> column(columns);
+    for (std::size_t i = 0; i < rows; ++i) {
+        for (std::size_t k = 0; k < columns; ++k) column[k] = sections[k].homogeneous_points()[i];
+        const std::vector<Vec4> solved = detail::interpolate(q, knots_v, v, column);
+        for (std::size_t j = 0; j < columns; ++j) {
+            Vec4 point = solved[j];
+            if (!rational) point.w = 1.0;  // interpolating weights 1 gives 1 up to rounding
+            require(point.w > 0 && std::isfinite(point.w), "curves", [&] {
+                return "the sections' weights differ too much between neighbours: interpolating them gives the weight " +
+                       detail::number(point.w) + " (weights must stay > 0); use sections with similar weights or a lower degree across (1 always works)";
+            });
+            net[i * columns + j] = point;
+        }
+    }
+    NurbsSurface surface = NurbsSurface::from_homogeneous(sections.front().degree(), q, sections.front().knots(),
+                                                          knots_v, std::move(net), rational);
+    return Skin{std::move(surface), v};
+}
+
+Solid loft(const std::vector<Profile>& profiles, int degree, bool ruled) {
+    const std::size_t count = profiles.size();
+    require(count >= 2, "profiles", [&] { return "a loft needs at least 2 profiles, got " + std::to_string(count); });
+    require(degree >= 1, "degree", [&] { return "must be >= 1, got " + std::to_string(degree); });
+    auto name = [](std::size_t k) { return "profiles[" + std::to_string(k) + "]"; };
+
+    std::vector<detail::PlanarProfile> planes;
+    std::vector<Vec3> centres;
+    for (std::size_t k = 0; k < count; ++k) {
+        planes.push_back(detail::analyse_planar_profile(profiles[k], name(k)));
+        centres.push_back(control_centre(profiles[k]));
+    }
+    // Orient every profile counterclockwise about the direction the loft travels through it.
+    std::vector<Profile> oriented;
+    std::vector<Vec3> normals;
+    for (std::size_t k = 0; k < count; ++k) {
+        const Vec3 travel = k + 1 < count ? centres[k + 1] - centres[k] : centres[k] - centres[k - 1];
+        const double along = dot(planes[k].normal, travel);
+        const bool forward = along > 0;
+        oriented.push_back(forward ? profiles[k] : profiles[k].reversed());
+        normals.push_back(forward ? planes[k].normal : -planes[k].normal);
+    }
+    // Consecutive sections strictly separated by each other's planes, so they cannot cut through each other.
+    for (std::size_t k = 0; k + 1 < count; ++k) {
+        const double tol = std::max(profiles[k].tolerance(), profiles[k + 1].tolerance());
+        for (const NurbsCurve& piece : oriented[k + 1].pieces())
+            for (const Vec4& pw : piece.homogeneous_points())
+                require(dot(project(pw) - planes[k].reference, normals[k]) > tol, name(k + 1), [&] {
+                    return "must lie entirely in front of the plane of " + name(k) +
+                           " (the side the loft travels to); sections that cross each other's planes give no solid";
+                });
+        for (const NurbsCurve& piece : oriented[k].pieces())
+            for (const Vec4& pw : piece.homogeneous_points())
+                require(dot(project(pw) - planes[k + 1].reference, normals[k + 1]) < -tol, name(k), [&] {
+                    return "must lie entirely behind the plane of " + name(k + 1) +
+                           "; sections that cross each other's planes give no solid";
+                });
+    }
+    std::vector<NurbsCurve> sections;
+    for (const Profile& p : oriented) sections.push_back(join(p.pieces()));
+    const NurbsSurface lateral = [&] {
+        try {
+            return skin(sections, ruled ? 1 : degree).surface;
+        } catch (const Error& e) {
+            // skin() names its sections "curves"; here they are the profiles.
+            throw e.renamed("curves", "profiles");
+        }
+    }();
+    return detail::tube_solid({{lateral}}, detail::CapNormals{-normals.front(), normals.back()});
+}
+
+}  // namespace ratbez
