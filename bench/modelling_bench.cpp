@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "modelling_test_support.hpp"
 #include "bench_shapes.hpp"
+#include "modelling_test_support.hpp"
 #include "ratbez/closest_point.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/loft.hpp"

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "modelling/profile_crossings.hpp"
 #include "bench_shapes.hpp"
+#include "modelling/profile_crossings.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/extrude.hpp"
 #include "ratbez/occt/topology.hpp"

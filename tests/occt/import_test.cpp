@@ -152,6 +152,22 @@ TEST_F(Import, BrepAndStepRoundTripsGiveTheSameSolid) {
     }
 }
 
+// A solid read back from STEP carries the knot vectors OpenCASCADE gives it, unclamped for a sphere's
+// circles ([-0.25, 0, 0, ..., 1, 1.25]); converting it again with one face per Bézier patch indexed
+// patches past the domain and crashed (issues 25, 29). Now it gives the same solid.
+TEST_F(Import, ReadBackSolidsConvertAgainWithOneFacePerPatch) {
+    for (const auto& [name, solid] : solids()) {
+        write_step(solid, path(name + ".step"));
+        const Solid read = read_step(path(name + ".step"));
+        write_brep(read, path(name + "_again.brep"), ConvertOptions{true});
+        write_step(read, path(name + "_again.step"), ConvertOptions{true});
+        for (const Solid& again : {read_brep(path(name + "_again.brep")), read_step(path(name + "_again.step"))}) {
+            EXPECT_NEAR(again.volume(), solid.volume(), 1e-12 * solid.volume()) << name;
+            EXPECT_GE(again.faces().size(), solid.faces().size()) << name;
+        }
+    }
+}
+
 // OpenCASCADE's own solids: planes with loops, and analytic faces converted exactly (the closed-form volume).
 TEST(ImportShapes, OcctPrimitivesConvertExactly) {
     const gp_Ax2 frame(gp_Pnt(1, 2, 3), gp_Dir(0, 1, 1));

@@ -39,6 +39,21 @@ def test_round_trip_gives_the_same_solid(tmp_path, reader, writer, suffix):
 
 
 @needs_occt
+def test_read_back_solids_convert_again_with_one_face_per_patch(tmp_path):
+    # The workbench's path: a STEP sphere read back has unclamped knots ([-0.25, 0, 0, ..., 1, 1.25]), and
+    # one face per Bézier patch of it crashed the interpreter; pickling on the way must not matter either.
+    import pickle
+    for solid in (ratbez.sphere(3), ratbez.cylinder(2, 5)):
+        path = tmp_path / "solid.step"
+        ratbez.write_step(solid, str(path))
+        read = pickle.loads(pickle.dumps(ratbez.read_step(str(path))))
+        assert len(ratbez.brep_string(read, bezier_faces=True)) > 0
+        again = tmp_path / "again.step"
+        ratbez.write_step(read, str(again), bezier_faces=True)
+        assert ratbez.read_step(str(again)).volume() == pytest.approx(solid.volume(), rel=1e-12)
+
+
+@needs_occt
 def test_bad_files_name_the_path(tmp_path):
     raises_naming("path", ratbez.read_step, tmp_path / "missing.step")
     raises_naming("path", ratbez.read_brep, str(tmp_path / "missing.brep"))

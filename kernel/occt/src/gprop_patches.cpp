@@ -31,9 +31,13 @@ constexpr int kMaxCertificateHalvings = 24;
 // Subdivisions of a patch in v tried in turn (the rule grows with them until the cap).
 constexpr int kVSpans[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32};
 
-std::vector<double> distinct(const std::vector<double>& knots) {
-    std::vector<double> values(knots);
-    values.erase(std::unique(values.begin(), values.end()), values.end());
+// The distinct knots within the domain: the lines between the surface's Bézier patches. The knots
+// outside it (an unclamped knot vector, as OpenCASCADE reads back a periodic or extended surface: -0.25,
+// 0, 0, ..., 1, 1.25) bound no patch.
+std::vector<double> patch_lines(const std::vector<double>& knots, Interval domain) {
+    std::vector<double> values;
+    for (const double knot : knots)
+        if (knot >= domain.min && knot <= domain.max && (values.empty() || knot != values.back())) values.push_back(knot);
     return values;
 }
 
@@ -126,8 +130,8 @@ int gprop_integration_order(int degree, int spans) { return std::max(8, 2 * std:
 
 PatchGrid gprop_patch_grid(const NurbsSurface& surface, double relative_tolerance) {
     PatchGrid grid;
-    grid.u = distinct(surface.knots_u());
-    grid.v = distinct(surface.knots_v());
+    grid.u = patch_lines(surface.knots_u(), surface.domain_u());
+    grid.v = patch_lines(surface.knots_v(), surface.domain_v());
     // First the certificate: halve the columns / rows of cells whose weights spread too far along u / v.
     for (int round = 0; round < kMaxCertificateHalvings; ++round) {
         const auto patches = on_grid(surface, grid.u, grid.v).bezier_patches();

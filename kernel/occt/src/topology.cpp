@@ -62,11 +62,14 @@ Handle(Geom2d_Curve) side_pcurve(int side, double fixed, double a, double b, boo
 using detail::along_u;
 using detail::traversal_increasing;
 
-// The distinct interior knots of a knot vector.
-std::vector<double> interior_knots(const std::vector<double>& knots) {
+// The distinct knots of a curve strictly inside its domain.
+std::vector<double> interior_knots(const NurbsCurve& curve) {
+    // Strictly inside the domain: an unclamped knot vector (as OpenCASCADE reads a full circle back:
+    // -0.25, 0, 0, ..., 1, 1.25) has knots at and beyond its domain's ends, where no piece may be cut.
+    const Interval domain = curve.domain();
     std::vector<double> values;
-    for (double k : knots)
-        if (k != knots.front() && k != knots.back() && (values.empty() || values.back() != k)) values.push_back(k);
+    for (double k : curve.knots())
+        if (k > domain.min && k < domain.max && (values.empty() || values.back() != k)) values.push_back(k);
     return values;
 }
 
@@ -323,7 +326,7 @@ private:
         }
         for (const EdgePtr& edge : solid_.edges())
             if (!edge->degenerate)
-                for (double knot : interior_knots(edge->curve.knots())) cuts_[edge.get()].insert(knot);
+                for (double knot : interior_knots(edge->curve)) cuts_[edge.get()].insert(knot);
     }
 
     // The vertex at grid point (i, j) of a face's patch grid: inside, a new one; on the boundary, the

@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/point_inversion.hpp"
+#include "geometry/surface_evaluator.hpp"
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/bezier_surface.hpp"
 #include "ratbez/bspline_basis.hpp"
@@ -33,8 +35,6 @@
 #include "ratbez/profile.hpp"
 #include "ratbez/revolve.hpp"
 #include "test_support.hpp"
-#include "analysis/point_inversion.hpp"
-#include "geometry/surface_evaluator.hpp"
 
 namespace ratbez {
 namespace {

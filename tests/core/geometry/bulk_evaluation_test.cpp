@@ -9,8 +9,8 @@
 #include <cmath>
 #include <vector>
 
-#include "ratbez/error.hpp"
 #include "ratbez/curves.hpp"
+#include "ratbez/error.hpp"
 #include "ratbez/primitives.hpp"
 
 namespace ratbez {

@@ -11,6 +11,7 @@
 #include <numbers>
 #include <random>
 
+#include "modelling_test_support.hpp"
 #include "ratbez/closest_point.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/deviation.hpp"
@@ -18,7 +19,6 @@
 #include "ratbez/properties.hpp"
 #include "ratbez/rotation_minimizing_frame.hpp"
 #include "ratbez/tessellate.hpp"
-#include "modelling_test_support.hpp"
 #include "test_support.hpp"
 
 namespace ratbez {

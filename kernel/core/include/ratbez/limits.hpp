@@ -73,4 +73,12 @@ inline void require_derivative_order(int order, std::string_view argument) {
     });
 }
 
+// The orders of a surface's partial d^(du+dv) S / du^du dv^dv: each and their sum as above, named "du", "dv"
+// and "du + dv".
+inline void require_partial_orders(int du, int dv) {
+    require_derivative_order(du, "du");
+    require_derivative_order(dv, "dv");
+    require_derivative_order(du + dv, "du + dv");
+}
+
 }  // namespace ratbez::limits

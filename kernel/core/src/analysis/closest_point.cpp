@@ -15,12 +15,12 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/subdivision.hpp"
 #include "analysis/point_inversion.hpp"
+#include "geometry/subdivision.hpp"
+#include "geometry/surface_evaluator.hpp"
 #include "ratbez/box.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
-#include "geometry/surface_evaluator.hpp"
 
 namespace ratbez {
 namespace {

@@ -7,10 +7,10 @@
 #include <limits>
 
 #include "geometry/curve_shape.hpp"
+#include "math/vector_angle.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/closest_point.hpp"
 #include "ratbez/curvature.hpp"
-#include "math/vector_angle.hpp"
 
 namespace ratbez {
 

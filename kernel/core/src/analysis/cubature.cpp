@@ -45,12 +45,12 @@
 #include <string>
 #include <utility>
 
-#include "math/numeric_internal.hpp"
-#include "ratbez/bspline_basis.hpp"
 #include "analysis/span_rule.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/surface_evaluator.hpp"
 #include "math/gauss_legendre.hpp"
+#include "math/numeric_internal.hpp"
+#include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
 
 namespace ratbez::detail {

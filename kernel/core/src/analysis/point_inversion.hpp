@@ -12,11 +12,11 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/surface_evaluator.hpp"
 #include "ratbez/bezier_surface.hpp"
 #include "ratbez/interval.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/vec.hpp"
-#include "geometry/surface_evaluator.hpp"
 
 namespace ratbez::detail {
 

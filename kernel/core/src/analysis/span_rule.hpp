@@ -17,10 +17,10 @@
 #include <functional>
 #include <span>
 
+#include "geometry/surface_evaluator.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/nurbs_surface.hpp"
 #include "ratbez/vec.hpp"
-#include "geometry/surface_evaluator.hpp"
 
 namespace ratbez::detail {
 

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <string>
 
+#include "math/rational_derivatives.hpp"
+#include "math/weights_internal.hpp"
 #include "ratbez/bernstein.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/limits.hpp"
-#include "math/rational_derivatives.hpp"
-#include "math/weights_internal.hpp"
 
 namespace ratbez {
 

@@ -12,11 +12,11 @@
 
 #include "geometry/limit_normal.hpp"
 #include "math/numeric_internal.hpp"
+#include "math/rational_derivatives.hpp"
+#include "math/weights_internal.hpp"
 #include "ratbez/bernstein.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/limits.hpp"
-#include "math/rational_derivatives.hpp"
-#include "math/weights_internal.hpp"
 
 namespace ratbez {
 
@@ -257,9 +257,7 @@ std::vector<std::vector<Vec3>> BezierSurface::derivatives(double u, double v, in
 }
 
 Vec3 BezierSurface::derivative(double u, double v, int du, int dv) const {
-    limits::require_derivative_order(du, "du");
-    limits::require_derivative_order(dv, "dv");
-    limits::require_derivative_order(du + dv, "du + dv");
+    limits::require_partial_orders(du, dv);
     return derivatives(u, v, du + dv)[to_size(du)][to_size(dv)];
 }
 

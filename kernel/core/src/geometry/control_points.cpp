@@ -5,6 +5,20 @@
 #include <utility>
 
 namespace ratbez {
+namespace {
+
+// A row-major table as nested rows, net[i][j] = entry(i * columns + j).
+template <class Entry>
+auto nested(int rows, int columns, const Entry& entry) {
+    using T = decltype(entry(std::size_t{0}));
+    const auto r = static_cast<std::size_t>(rows), c = static_cast<std::size_t>(columns);
+    std::vector<std::vector<T>> net(r, std::vector<T>(c));
+    for (std::size_t i = 0; i < r; ++i)
+        for (std::size_t j = 0; j < c; ++j) net[i][j] = entry(i * c + j);
+    return net;
+}
+
+}  // namespace
 
 HomogeneousPoints::HomogeneousPoints(std::vector<Vec4> pw, bool rational, int weight_exponent)
     : pw_(std::move(pw)), rational_(rational), weight_exponent_(weight_exponent) {}
@@ -28,19 +42,11 @@ ControlNet::ControlNet(int rows, int columns, std::vector<Vec4> pw, bool rationa
     : HomogeneousPoints(std::move(pw), rational, weight_exponent), rows_(rows), columns_(columns) {}
 
 std::vector<std::vector<Vec3>> ControlNet::points() const {
-    const auto rows = static_cast<std::size_t>(rows_), columns = static_cast<std::size_t>(columns_);
-    std::vector<std::vector<Vec3>> net(rows, std::vector<Vec3>(columns));
-    for (std::size_t i = 0; i < rows; ++i)
-        for (std::size_t j = 0; j < columns; ++j) net[i][j] = point_at(i * columns + j);
-    return net;
+    return nested(rows_, columns_, [this](std::size_t k) { return point_at(k); });
 }
 
 std::vector<std::vector<double>> ControlNet::weights() const {
-    const auto rows = static_cast<std::size_t>(rows_), columns = static_cast<std::size_t>(columns_);
-    std::vector<std::vector<double>> net(rows, std::vector<double>(columns));
-    for (std::size_t i = 0; i < rows; ++i)
-        for (std::size_t j = 0; j < columns; ++j) net[i][j] = weight_at(i * columns + j);
-    return net;
+    return nested(rows_, columns_, [this](std::size_t k) { return weight_at(k); });
 }
 
 }  // namespace ratbez

@@ -10,10 +10,10 @@
 #include <cstddef>
 
 #include "math/numeric_internal.hpp"
-#include "ratbez/error.hpp"
-#include "ratbez/limits.hpp"
 #include "math/rational_derivatives.hpp"
 #include "math/weights_internal.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/limits.hpp"
 
 namespace ratbez {
 namespace {

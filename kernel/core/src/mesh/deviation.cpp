@@ -30,17 +30,17 @@
 #include <unordered_map>
 #include <vector>
 
-#include "geometry/subdivision.hpp"
 #include "analysis/point_inversion.hpp"
+#include "geometry/subdivision.hpp"
+#include "geometry/surface_evaluator.hpp"
 #include "mesh/polygon_triangulation.hpp"
+#include "mesh/triangle_grid.hpp"
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/bezier_surface.hpp"
 #include "ratbez/box.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/surface_grid.hpp"
-#include "geometry/surface_evaluator.hpp"
-#include "mesh/triangle_grid.hpp"
 
 namespace ratbez {
 namespace {

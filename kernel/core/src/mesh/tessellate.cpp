@@ -28,15 +28,15 @@
 #include <vector>
 
 #include "mesh/polygon_triangulation.hpp"
-#include "ratbez/bspline_basis.hpp"
-#include "ratbez/error.hpp"
-#include "ratbez/surface_grid.hpp"
 #include "mesh/tessellate_cells.hpp"
 #include "mesh/tessellate_offsets.hpp"
 #include "mesh/tessellate_plan.hpp"
-#include "mesh/tessellator.hpp"
 #include "mesh/tessellate_sides.hpp"
+#include "mesh/tessellator.hpp"
 #include "mesh/triangle_grid.hpp"
+#include "ratbez/bspline_basis.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/surface_grid.hpp"
 
 namespace ratbez {
 namespace {

@@ -9,9 +9,9 @@
 #include <utility>
 
 #include "analysis/point_inversion.hpp"
-#include "ratbez/surface_grid.hpp"
-#include "mesh/strip_zipper.hpp"
 #include "math/vector_angle.hpp"
+#include "mesh/strip_zipper.hpp"
+#include "ratbez/surface_grid.hpp"
 
 namespace ratbez::detail {
 namespace {

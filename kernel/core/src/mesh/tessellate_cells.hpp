@@ -9,9 +9,9 @@
 #include <functional>
 #include <vector>
 
+#include "geometry/surface_evaluator.hpp"
 #include "ratbez/nurbs_surface.hpp"
 #include "ratbez/vec.hpp"
-#include "geometry/surface_evaluator.hpp"
 
 namespace ratbez::detail {
 

@@ -11,11 +11,11 @@
 #include <string>
 #include <utility>
 
+#include "mesh/triangle_grid.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
-#include "ratbez/tessellate.hpp"
 #include "ratbez/surface_grid.hpp"
-#include "mesh/triangle_grid.hpp"
+#include "ratbez/tessellate.hpp"
 
 namespace ratbez::detail {
 namespace {

@@ -32,12 +32,12 @@
 #include <span>
 #include <vector>
 
-#include "ratbez/brep.hpp"
-#include "ratbez/progress.hpp"
 #include "geometry/surface_evaluator.hpp"
 #include "mesh/tessellate_cells.hpp"
 #include "mesh/tessellate_sides.hpp"
 #include "mesh/tessellator.hpp"
+#include "ratbez/brep.hpp"
+#include "ratbez/progress.hpp"
 
 namespace ratbez::detail {
 

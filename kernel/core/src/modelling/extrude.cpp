@@ -11,9 +11,9 @@
 #include "math/solid_scale.hpp"
 #include "modelling/planar_profile.hpp"
 #include "modelling/profile_crossings.hpp"
+#include "modelling/tube_shell.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/frame.hpp"
-#include "modelling/tube_shell.hpp"
 
 namespace ratbez {
 

@@ -8,10 +8,10 @@
 #include "geometry/interpolation.hpp"
 #include "math/numeric_internal.hpp"
 #include "modelling/planar_profile.hpp"
+#include "modelling/tube_shell.hpp"
 #include "ratbez/compatible_curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/join.hpp"
-#include "modelling/tube_shell.hpp"
 
 namespace ratbez {
 

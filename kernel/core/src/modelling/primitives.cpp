@@ -11,10 +11,10 @@
 #include "geometry/arcs.hpp"
 #include "math/degrees.hpp"
 #include "math/solid_scale.hpp"
+#include "modelling/revolve_internal.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/frame.hpp"
-#include "modelling/revolve_internal.hpp"
 
 namespace ratbez {
 

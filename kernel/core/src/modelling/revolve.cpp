@@ -19,18 +19,18 @@
 #include <vector>
 
 #include "analysis/cubature.hpp"
-#include "geometry/subdivision.hpp"
 #include "brep/brep_build.hpp"
 #include "geometry/arcs.hpp"
 #include "geometry/clamping.hpp"
+#include "geometry/subdivision.hpp"
 #include "math/degrees.hpp"
-#include "math/solid_scale.hpp"
 #include "math/numeric_internal.hpp"
+#include "math/solid_scale.hpp"
 #include "modelling/profile_crossings.hpp"
+#include "modelling/revolve_internal.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/frame.hpp"
-#include "modelling/revolve_internal.hpp"
 
 namespace ratbez {
 

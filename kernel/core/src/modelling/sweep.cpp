@@ -13,18 +13,18 @@
 #include <utility>
 
 #include "geometry/clamping.hpp"
-#include "math/degrees.hpp"
-#include "ratbez/frame.hpp"
 #include "geometry/knot_removal.hpp"
+#include "math/degrees.hpp"
 #include "math/numeric_internal.hpp"
+#include "math/vector_angle.hpp"
 #include "modelling/planar_profile.hpp"
+#include "modelling/tube_shell.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/extrude.hpp"
+#include "ratbez/frame.hpp"
 #include "ratbez/revolve.hpp"
 #include "ratbez/rotation_minimizing_frame.hpp"
-#include "modelling/tube_shell.hpp"
-#include "math/vector_angle.hpp"
 
 namespace ratbez {
 
