@@ -32,9 +32,7 @@ Format format_from_path(const std::string& path) {
 // The format, with the options it needs checked before any heavy work.
 Format checked_format(const std::string& path, const ExportOptions& options) {
     const Format format = format_from_path(path);
-    if (format == Format::openscad)
-        require(is_openscad_identifier(options.openscad.module_name), "module_name",
-                [&] { return std::string(1, '\'') + comment_text(options.openscad.module_name) + "' is not an OpenSCAD identifier"; });
+    if (format == Format::openscad) require_module_name(options.openscad.module_name);
     return format;
 }
 

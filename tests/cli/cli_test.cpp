@@ -272,7 +272,7 @@ TEST_F(Cli, ExportsEveryFormat) {
     run = ratbez({"export", sphere, "-o", path("i.scad"), "--import-stl", "--tolerance", "0.05"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_EQ(run.out.rfind("wrote " + path("i.scad") + " and " + path("i.stl") + " (", 0), 0u) << run.out;
-    EXPECT_NE(read_file(path("i.scad")).find("module sphere() {\nimport(\"i.stl\", convexity=10);\n}\nsphere();\n"),
+    EXPECT_NE(read_file(path("i.scad")).find("module ball() {\nimport(\"i.stl\", convexity=10);\n}\nball();\n"),
               std::string::npos)
         << read_file(path("i.scad"));
     EXPECT_GE(read_file(path("i.stl")).size(), 84u);

@@ -80,15 +80,13 @@ namespace {
     throw Error("solid_or_mesh", "expected a ratbez.Solid or a ratbez.Mesh");
 }
 
-// The module name: `module` when given (it must be an OpenSCAD identifier), else the file's stem made one.
+// The module name: `module` when given (an OpenSCAD identifier that shadows no built-in), else the file's
+// stem made one (a built-in stem gets exporter::builtin_suffix).
 [[maybe_unused]] std::string module_for(const py::object& module, const std::string& file) {
     if (module.is_none()) return exporter::openscad_identifier(std::filesystem::path(file).stem().string());
     if (!py::isinstance<py::str>(module)) throw Error("module", "must be a str or None");
     const std::string name = module.cast<std::string>();
-    if (!exporter::is_openscad_identifier(name))
-        throw Error("module", "'" + exporter::comment_text(name) +
-                                  "' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit; "
-                                  "not a keyword)");
+    exporter::require_module_name(name, "module");
     return name;
 }
 

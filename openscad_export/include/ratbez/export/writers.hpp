@@ -19,11 +19,23 @@ struct OpenScadOptions {
     std::vector<std::string> header;    // comment lines above the module, escaped by comment_text
 };
 
+// True for a name OpenSCAD 2021.01 already gives a meaning: a keyword (module, for, true, ...), a built-in
+// module (sphere, cylinder, polyhedron, import, union, color, children, ...) or a built-in function (abs,
+// len, str, ...). A library module of such a name shadows OpenSCAD's own in every file that `use`s the
+// library (the user's `cylinder(r=2, h=12)` becomes ours), or calls itself (`polyhedron`, `import`).
+bool is_openscad_builtin(std::string_view name);
+// The suffix a derived module name that is a built-in gets ("sphere" gives "sphere_solid").
+inline constexpr std::string_view builtin_suffix = "_solid";
 // `text` made an OpenSCAD identifier: characters other than letters, digits and _ become _, a leading
-// digit gets a _ in front, a keyword (module, for, true, ...) a _ behind; empty text gives "shape".
+// digit gets a _ in front, a built-in or keyword gets builtin_suffix behind; empty text gives "shape".
 std::string openscad_identifier(std::string_view text);
 // True when `name` is already an identifier openscad_identifier leaves as it is.
 bool is_openscad_identifier(std::string_view name);
+// Why `name` cannot be an explicitly chosen module name (not an identifier, or a built-in it would
+// shadow), or "" when it can. One wording for the exporter, the CLI's --module and Python's module=.
+std::string module_name_problem(std::string_view name);
+// Throws ratbez::Error(argument, module_name_problem(name)) unless that is "".
+void require_module_name(std::string_view name, std::string_view argument = "module_name");
 // `text` fit for one comment line: backslash and control characters (a newline would end the comment
 // and let the rest run as code) are written as C escapes (\\, \n, \r, \t, \xNN).
 std::string comment_text(std::string_view text);
