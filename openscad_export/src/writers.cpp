@@ -201,16 +201,43 @@ std::string library_preamble(const OpenScadOptions& options, std::string_view no
 
 }  // namespace
 
-void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& options) {
-    validate_mesh(mesh);
-    require_module_name(options.module_name);
-    require(options.convexity >= 1, "convexity", "must be at least 1");
+Color parse_color(std::string_view text, std::string_view argument) {
+    const auto bad = [&] {
+        return Error(argument, "'" + comment_text(text) + "' is not a colour (expected \"#rrggbb\" or \"#rrggbbaa\", hexadecimal)");
+    };
+    if ((text.size() != 7 && text.size() != 9) || text.front() != '#') throw bad();
+    double channels[4] = {1, 1, 1, 1};
+    for (std::size_t i = 0; 1 + 2 * i < text.size(); ++i) {
+        unsigned value = 0;
+        const char* begin = text.data() + 1 + 2 * i;
+        const auto result = std::from_chars(begin, begin + 2, value, 16);
+        if (result.ec != std::errc() || result.ptr != begin + 2) throw bad();
+        channels[i] = value / 255.0;
+    }
+    return {channels[0], channels[1], channels[2], channels[3]};
+}
 
-    BufferedOutput buffer(out);
-    buffer.text(library_preamble(options, " Faces are clockwise seen from outside (OpenSCAD's order)."));
+namespace {
+
+// `module NAME() { [color([r, g, b, a])] polyhedron(...); }`.
+void write_polyhedron_module(BufferedOutput& buffer, const Mesh& mesh, const std::string& name,
+                             const std::optional<Color>& color, int convexity) {
+    validate_mesh(mesh);
+    require_module_name(name);
     buffer.text("module ");
-    buffer.text(options.module_name);
-    buffer.text("() {\npolyhedron(points=[\n");
+    buffer.text(name);
+    buffer.text("() {\n");
+    if (color) {
+        buffer.text("color([");
+        const std::array<double, 4> channels = {color->red, color->green, color->blue, color->alpha};
+        for (std::size_t i = 0; i < channels.size(); ++i) {
+            require(channels[i] >= 0 && channels[i] <= 1, "color", "channels must lie in [0, 1]");
+            buffer.number(channels[i]);
+            buffer.character(i + 1 < channels.size() ? ',' : ']');
+        }
+        buffer.text(")\n");
+    }
+    buffer.text("polyhedron(points=[\n");
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
         buffer.character('[');
         vertex_triple(buffer, mesh.vertices[i], ',');
@@ -232,8 +259,52 @@ void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& 
         buffer.text(t + 1 < mesh.triangles.size() ? "],\n" : "]");
     }
     buffer.text("],\nconvexity=");
-    buffer.index(static_cast<std::uint64_t>(options.convexity));
+    buffer.index(static_cast<std::uint64_t>(convexity));
     buffer.text(");\n}\n");
+}
+
+}  // namespace
+
+void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& options) {
+    validate_mesh(mesh);
+    require_module_name(options.module_name);
+    require(options.convexity >= 1, "convexity", "must be at least 1");
+
+    BufferedOutput buffer(out);
+    buffer.text(library_preamble(options, " Faces are clockwise seen from outside (OpenSCAD's order)."));
+    write_polyhedron_module(buffer, mesh, options.module_name, options.color, options.convexity);
+    buffer.text(options.module_name);
+    buffer.text("();\n");
+    buffer.flush();
+}
+
+void write_openscad_library(const std::vector<LibraryModule>& modules, std::ostream& out, const OpenScadOptions& options) {
+    require(!modules.empty(), "solids", "is empty");
+    require_module_name(options.module_name);
+    require(options.convexity >= 1, "convexity", "must be at least 1");
+    for (std::size_t i = 0; i < modules.size(); ++i) {
+        require(modules[i].mesh != nullptr, "solids", "a module has no mesh");
+        require(modules[i].module_name != options.module_name, "module_name", [&] {
+            return "'" + options.module_name + "' is also the name of a solid: the module placing them all needs its own";
+        });
+        for (std::size_t j = 0; j < i; ++j)
+            require(modules[j].module_name != modules[i].module_name, "solids",
+                    [&] { return "two solids are named '" + modules[i].module_name + "'"; });
+    }
+    BufferedOutput buffer(out);
+    std::string names;
+    for (const LibraryModule& m : modules) names += (names.empty() ? "" : ", ") + m.module_name + "()";
+    buffer.text(library_preamble(options, " It also has one module per solid: " + names +
+                                              ". Faces are clockwise seen from outside (OpenSCAD's order)."));
+    for (const LibraryModule& m : modules) write_polyhedron_module(buffer, *m.mesh, m.module_name, m.color, options.convexity);
+    buffer.text("module ");
+    buffer.text(options.module_name);
+    buffer.text("() {\n");
+    for (const LibraryModule& m : modules) {
+        buffer.text(m.module_name);
+        buffer.text("();\n");
+    }
+    buffer.text("}\n");
     buffer.text(options.module_name);
     buffer.text("();\n");
     buffer.flush();
