@@ -315,6 +315,13 @@ int command_export(const std::vector<std::string>& raw) {
                      : derived_module_name(fs::path(*output).stem().string(), "the file name");
     options.binary_stl = !args.flag("--ascii");
     options.import_stl = args.flag("--import-stl");
+    if (spec.color) {
+        try {
+            options.openscad.color = ratbez::exporter::parse_color(*spec.color, "color");
+        } catch (const ratbez::Error& e) {
+            throw ratbez::spec::SpecError(e);
+        }
+    }
     options.source = "spec " + spec_path;
     options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, used_tolerance);
     // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but

@@ -128,7 +128,7 @@ TEST_F(Cli, UnknownTypeAndUnknownFields) {
     expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "sphere", "radius": 1, "centre": [0, 0, 0]}})")}),
                      "spec error: shape.centre: unknown field (expected one of: type, radius, center)");
     expect_bad_input(ratbez({"info", spec_file(R"({"tolerence": 0.1, "shape": {"type": "sphere", "radius": 1}})")}),
-                     "spec error: tolerence: unknown field (expected one of: name, description, tolerance, tessellation_angle, shape)");
+                     "spec error: tolerence: unknown field (expected one of: name, description, tolerance, tessellation_angle, color, shape)");
     expect_bad_input(
         ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "profile": [{"type": "spline", "points": []}]}})")}),
         "spec error: shape.profile[0].type: unknown curve type 'spline' (expected bezier, nurbs, line, arc or circle)");
@@ -500,4 +500,17 @@ TEST_F(Cli, Version) {
     EXPECT_EQ(run.out, "ratbez " RATBEZ_VERSION "\n");
     EXPECT_EQ(run.err, "");
     expect_bad_input(ratbez({"--version", "x"}), "usage error: x: unexpected argument for '--version'");
+}
+
+TEST_F(Cli, SpecColourWrapsTheModuleBody) {
+    const std::string spec = spec_file(R"({"name": "red_ball", "color": "#FF000080", "shape": {"type": "sphere", "radius": 1}})");
+    const CommandResult run = ratbez({"export", spec, "-o", path("r.scad"), "--tolerance", "0.05"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(read_file(path("r.scad")).find("module red_ball() {\ncolor([1,0,0,0.5019607843137255])\npolyhedron("),
+              std::string::npos);
+    expect_bad_input(ratbez({"export", spec_file(R"({"color": "red", "shape": {"type": "sphere", "radius": 1}})"), "-o",
+                             path("b.scad")}),
+                     "spec error: color: 'red' is not a colour (expected \"#rrggbb\" or \"#rrggbbaa\", hexadecimal)");
+    expect_bad_input(ratbez({"info", spec_file(R"({"color": 3, "shape": {"type": "sphere", "radius": 1}})")}),
+                     "spec error: color: must be a string");
 }
