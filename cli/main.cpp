@@ -6,6 +6,7 @@
 //   ratbez check SPEC.json [--json]
 //   ratbez info SPEC.json [--json]
 //   ratbez demo [DIR] [--examples DIR] [--no-render]
+//   ratbez --version
 //
 // Exit codes: 0 success; 1 a check failed (or an internal error); 2 bad input (spec, arguments, paths).
 // Every error is ONE line on stderr that names the field or argument at fault.
@@ -65,6 +66,7 @@ constexpr const char* usage_text =
     "  ratbez info SPEC.json [--json]       faces, edges, vertices, Euler characteristic, area, volume, box\n"
     "  ratbez demo [DIR] [--examples DIR] [--no-render]\n"
     "                                       build, export and check every example into DIR (default ratbez-demo)\n"
+    "  ratbez --version                     the version of ratbez\n"
     "The JSON spec is documented in examples/README.md.\n";
 
 // Bad command-line arguments: exit 2, reported as "usage error: <argument>: <reason>".
@@ -202,6 +204,19 @@ std::size_t parse_count(const std::string& option, const std::string& text) {
 
 // ---- export ----------------------------------------------------------------------------------------
 
+// `text` made a module name. A built-in gets a suffix, and stderr says so: the user then calls a name they
+// did not write (other characters made _ are what they would expect, and pass silently).
+std::string derived_module_name(const std::string& text, const std::string& from) {
+    const std::string name = ratbez::exporter::openscad_identifier(text);
+    const std::string base = name.ends_with(ratbez::exporter::builtin_suffix)
+                                 ? name.substr(0, name.size() - ratbez::exporter::builtin_suffix.size())
+                                 : name;
+    if (name != text && ratbez::exporter::is_openscad_builtin(base))
+        std::cerr << "note: module " << name << "() (" << from << " '" << base
+                  << "' is an OpenSCAD built-in, which the library must not shadow)\n";
+    return name;
+}
+
 // One line on stderr, rewritten in place ("\r"), once an export has run for more than a second
 // (RATBEZ_PROGRESS_AFTER seconds when set: tests use 0): percent done and the time left at the rate so
 // far. finish() (or the destructor) ends the line if one was printed.
@@ -270,9 +285,9 @@ int command_export(const std::vector<std::string>& raw) {
         if (*angle >= 180) throw UsageError("--angle", "must be less than 180 degrees");
     }
     std::optional<std::string> module_name = args.value("--module");
-    if (module_name && !ratbez::exporter::is_openscad_identifier(*module_name))
-        throw UsageError("--module", "'" + ratbez::exporter::comment_text(*module_name) +
-                                         "' is not an OpenSCAD identifier (letters, digits, _; not a keyword)");
+    if (module_name)
+        if (const std::string problem = ratbez::exporter::module_name_problem(*module_name); !problem.empty())
+            throw UsageError("--module", problem);
 
     const ShapeSpec spec = ratbez::spec::load_spec(spec_path);
 
@@ -294,11 +309,19 @@ int command_export(const std::vector<std::string>& raw) {
                                          ratbez::progress_part(line, 0, kTessellationShare)});
     ratbez::exporter::ExportOptions options;
     // The module is named by --module, else by the spec's `name`, else after the file written.
-    options.openscad.module_name = module_name  ? *module_name
-                                   : spec.named ? ratbez::exporter::openscad_identifier(spec.name)
-                                                : ratbez::exporter::openscad_identifier(fs::path(*output).stem().string());
+    options.openscad.module_name =
+        module_name  ? *module_name
+        : spec.named ? derived_module_name(spec.name, "the spec's name")
+                     : derived_module_name(fs::path(*output).stem().string(), "the file name");
     options.binary_stl = !args.flag("--ascii");
     options.import_stl = args.flag("--import-stl");
+    if (spec.color) {
+        try {
+            options.openscad.color = ratbez::exporter::parse_color(*spec.color, "color");
+        } catch (const ratbez::Error& e) {
+            throw ratbez::spec::SpecError(e);
+        }
+    }
     options.source = "spec " + spec_path;
     options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, used_tolerance);
     // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but
@@ -499,7 +522,7 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
 
         const fs::path scad = out_dir / (spec.name + ".scad");
         ratbez::exporter::ExportOptions scad_options;
-        scad_options.openscad.module_name = ratbez::exporter::openscad_identifier(spec.name);
+        scad_options.openscad.module_name = ratbez::exporter::openscad_identifier(spec.name);  // examples' names are safe
         scad_options.source = "spec " + spec_path.string();
         scad_options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, row.tolerance);
         ratbez::exporter::export_tessellation(spec.solid, mesh, row.tolerance, scad.string(), scad_options);
@@ -613,6 +636,11 @@ int run(int argc, char** argv) {
     args.erase(args.begin());
     if (command == "--help" || command == "-h" || command == "help") {
         std::cout << usage_text;
+        return 0;
+    }
+    if (command == "--version" || command == "version") {
+        if (!args.empty()) throw UsageError(args.front(), "unexpected argument for '" + command + "'");
+        std::cout << "ratbez " RATBEZ_VERSION "\n";
         return 0;
     }
     if (command == "export") return command_export(args);

@@ -462,7 +462,7 @@ ShapeSpec parse_spec(std::string_view json_text, const std::string& fallback_nam
     }
     try {
         if (!document.is_object()) throw SpecError("document", "must be a JSON object with a \"shape\"");
-        const ObjectReader top(document, "", {"name", "description", "tolerance", "tessellation_angle", "shape"});
+        const ObjectReader top(document, "", {"name", "description", "tolerance", "tessellation_angle", "color", "shape"});
         std::string name = is_valid_name(fallback_name) ? fallback_name : "shape";
         if (const json* n = top.optional("name")) {
             name = text(*n, "name");
@@ -478,11 +478,13 @@ ShapeSpec parse_spec(std::string_view json_text, const std::string& fallback_nam
             angle = number(*a, "tessellation_angle");
             if (!(*angle > 0 && *angle < 180)) throw SpecError("tessellation_angle", "must be in (0, 180) degrees");
         }
+        std::optional<std::string> color;  // its form ("#rrggbb") is checked where it is used (exporter::parse_color)
+        if (const json* c = top.optional("color")) color = text(*c, "color");
         const json* shape = top.optional("shape");
         if (!shape) throw SpecError("shape", "is required");
         BuiltShape built = parse_shape(*shape, "shape");
         return ShapeSpec{std::move(name), std::move(description), std::move(built.type), tolerance, angle,
-                         std::move(built.solid), top.optional("name") != nullptr};
+                         std::move(built.solid), top.optional("name") != nullptr, std::move(color)};
     } catch (const json::exception& e) {
         // Unreachable for a well-typed reader; kept so that no JSON library error escapes as another type.
         throw SpecError("document", json_message(e));

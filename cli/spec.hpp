@@ -39,6 +39,7 @@ struct ShapeSpec {
     std::optional<double> tessellation_angle; // degrees
     Solid solid;                              // solid.construction(): what it was built as
     bool named = false;                       // the document gave `name` (else it is the fallback)
+    std::optional<std::string> color;         // `color`, "#rrggbb" or "#rrggbbaa": .scad output wraps the body in color()
 };
 
 // Parses and builds. `fallback_name` is used when the document has no `name`; it must itself be a

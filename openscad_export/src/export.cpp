@@ -32,9 +32,7 @@ Format format_from_path(const std::string& path) {
 // The format, with the options it needs checked before any heavy work.
 Format checked_format(const std::string& path, const ExportOptions& options) {
     const Format format = format_from_path(path);
-    if (format == Format::openscad)
-        require(is_openscad_identifier(options.openscad.module_name), "module_name",
-                [&] { return std::string(1, '\'') + comment_text(options.openscad.module_name) + "' is not an OpenSCAD identifier"; });
+    if (format == Format::openscad) require_module_name(options.openscad.module_name);
     return format;
 }
 
@@ -191,11 +189,13 @@ void export_mesh(const Mesh& given, const std::string& path, const ExportOptions
     if (options.progress) options.progress(1.0);
 }
 
-WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tolerance, const std::string& path,
-                                const ExportOptions& options) {
-    const Format format = checked_format(path, options);
+namespace {
+
+// The mesh of `solid` as it will be written (float32, or the fewest decimals that pass, or exact) with its
+// measured deviation, checked: the work of export_tessellation before the writing. `progress` runs to 0.95.
+WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance, bool float32,
+                          const MeshCheckOptions& base_checks, const Progress& progress) {
     require(std::isfinite(tolerance) && tolerance > 0, "tolerance", "must be a positive number");
-    const bool float32 = writes_float32(format, options);
     const bool text = !float32;
     WrittenMesh result{float32 ? float32_mesh(mesh) : mesh, 0, std::nullopt};
     bool chosen = false;
@@ -205,12 +205,12 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
     constexpr double kFirstDeviation = 0.15, kCandidatesEnd = 0.9;
     const auto measured = [&](const Mesh& m, double from, double to) {
         DeviationOptions deviation;
-        deviation.progress = progress_part(options.progress, from, to);
+        deviation.progress = progress_part(progress, from, to);
         return max_deviation(solid, m, deviation);
     };
     const auto checked = [&](const Mesh& m, double from, double to) {
-        MeshCheckOptions checks = options.checks;
-        if (options.progress) checks.progress = progress_part(options.progress, from, to);
+        MeshCheckOptions checks = base_checks;
+        if (progress) checks.progress = progress_part(progress, from, to);
         return check_mesh(m, checks);
     };
     if (text) {
@@ -244,13 +244,57 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
             throw Error("mesh", "refusing to export a mesh " + number_text(result.max_deviation, 4) +
                                     " from the surface, beyond the tolerance " + number_text(tolerance, 4));
     }
-    if (options.progress) options.progress(0.95);
+    if (progress) progress(0.95);
+    return result;
+}
+
+}  // namespace
+
+WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tolerance, const std::string& path,
+                                const ExportOptions& options) {
+    const Format format = checked_format(path, options);
+    const bool float32 = writes_float32(format, options);
+    const WrittenMesh result = prepared_mesh(solid, mesh, tolerance, float32, options.checks, options.progress);
     ExportOptions written = options;
     written.openscad.header = header_lines(result.mesh, options.source,
                                            Measured{tolerance, result.max_deviation, solid.volume(), result.decimals, float32});
     write_files(result.mesh, path, format, written);
     if (options.progress) options.progress(1.0);
     return result;
+}
+
+std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, const std::string& path,
+                                        const ExportOptions& options) {
+    const Format format = checked_format(path, options);
+    require(format == Format::openscad, "path", "a library of several solids is a .scad file");
+    require(!options.import_stl, "import_stl", "applies to one solid, not a library of several");
+    require(!parts.empty(), "solids", "is empty");
+    std::vector<WrittenMesh> written;
+    std::vector<LibraryModule> modules;
+    ExportOptions file = options;
+    file.openscad.header = {"ratbez " RATBEZ_VERSION ", an OpenSCAD library file of " + std::to_string(parts.size()) + " solids",
+                            "source: " + options.source};
+    written.reserve(parts.size());  // modules point into it
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const LibraryPart& part = parts[i];
+        require(part.solid != nullptr && part.mesh != nullptr, "solids", "a part has no solid or mesh");
+        require_module_name(part.module_name);
+        const double share = 0.95 / static_cast<double>(parts.size());
+        written.push_back(prepared_mesh(*part.solid, *part.mesh, part.tolerance, false, part.checks,
+                                        progress_part(options.progress, share * static_cast<double>(i),
+                                                      share * static_cast<double>(i + 1))));
+        const WrittenMesh& mesh = written.back();
+        // The module's lines are export_tessellation's header without its first two (version, source).
+        const std::vector<std::string> lines =
+            header_lines(mesh.mesh, options.source,
+                         Measured{part.tolerance, mesh.max_deviation, part.solid->volume(), mesh.decimals, false});
+        file.openscad.header.push_back("module " + part.module_name + "():");
+        for (std::size_t k = 2; k < lines.size(); ++k) file.openscad.header.push_back("  " + lines[k]);
+    }
+    for (std::size_t i = 0; i < parts.size(); ++i) modules.push_back({&written[i].mesh, parts[i].module_name, parts[i].color});
+    output::write_file(path, [&](std::ostream& out) { write_openscad_library(modules, out, file.openscad); });
+    if (options.progress) options.progress(1.0);
+    return written;
 }
 
 }  // namespace ratbez::exporter

@@ -1,5 +1,6 @@
 #include "ratbez/export/writers.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <charconv>
@@ -118,6 +119,29 @@ void vertex_triple(BufferedOutput& out, const Vec3& p, char separator) {
 
 }  // namespace
 
+bool is_openscad_builtin(std::string_view name) {
+    // OpenSCAD 2021.01's keywords, built-in modules (with the deprecated ones it still accepts) and
+    // built-in functions; a few names of later releases (roof, fill, textmetrics, ...) too, so a library
+    // written today does not start shadowing them after an upgrade.
+    static constexpr auto builtins = std::to_array<std::string_view>({
+        // keywords and constants of the grammar
+        "module", "function", "include", "use", "if", "else", "for", "let", "each", "assert", "echo", "true",
+        "false", "undef",
+        // modules: 3D and 2D primitives, import, transforms, booleans, control
+        "cube", "sphere", "cylinder", "polyhedron", "square", "circle", "polygon", "text", "import", "surface",
+        "linear_extrude", "rotate_extrude", "projection", "union", "difference", "intersection", "intersection_for",
+        "hull", "minkowski", "render", "translate", "rotate", "scale", "mirror", "multmatrix", "color", "offset",
+        "resize", "group", "children", "child", "parent_module", "assign", "dxf_linear_extrude",
+        "dxf_rotate_extrude", "import_stl", "import_off", "import_dxf", "roof", "fill",
+        // functions
+        "abs", "sign", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "floor", "round", "ceil", "ln", "log",
+        "pow", "sqrt", "exp", "rands", "min", "max", "norm", "cross", "len", "concat", "lookup", "str", "chr",
+        "ord", "search", "version", "version_num", "is_undef", "is_bool", "is_num", "is_string", "is_list",
+        "is_function", "is_object", "dxf_dim", "dxf_cross", "textmetrics", "fontmetrics", "object", "import_obj",
+        "import_amf", "import_3mf"});
+    return std::find(builtins.begin(), builtins.end(), name) != builtins.end();
+}
+
 bool is_openscad_identifier(std::string_view name) { return !name.empty() && openscad_identifier(name) == name; }
 
 std::string openscad_identifier(std::string_view text) {
@@ -129,13 +153,20 @@ std::string openscad_identifier(std::string_view text) {
         const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
         name += letter || digit(c) ? c : '_';
     }
-    // Words the OpenSCAD 2021.01 grammar reserves: `module for() {}` does not parse.
-    static constexpr std::array<std::string_view, 13> keywords = {
-        "module", "function", "if", "else", "for", "let", "assert", "echo", "each", "true", "false", "undef", "include"};
-    for (std::string_view keyword : keywords)
-        if (name == keyword) return name + '_';
-    if (name == "use") return "use_";
+    // `module for() {}` does not parse, and `module sphere()` shadows OpenSCAD's sphere() for the user.
+    if (is_openscad_builtin(name)) name += builtin_suffix;
     return name;
+}
+
+std::string module_name_problem(std::string_view name) {
+    if (is_openscad_builtin(name))
+        return "'" + std::string(name) + "' is an OpenSCAD built-in or keyword: a module of that name would shadow " +
+               "OpenSCAD's own in every file that uses the library (try '" + std::string(name) +
+               std::string(builtin_suffix) + "')";
+    if (!is_openscad_identifier(name))
+        return "'" + comment_text(name) +
+               "' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit)";
+    return {};
 }
 
 std::string comment_text(std::string_view text) {
@@ -154,15 +185,11 @@ std::string comment_text(std::string_view text) {
     return escaped;
 }
 
-namespace {
-
-void require_module_name(const OpenScadOptions& options) {
-    require(is_openscad_identifier(options.module_name), "module_name", [&] {
-        std::string reason = "'";
-        reason += comment_text(options.module_name);
-        return reason + "' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit; not a keyword)";
-    });
+void require_module_name(std::string_view name, std::string_view argument) {
+    if (const std::string problem = module_name_problem(name); !problem.empty()) throw Error(argument, problem);
 }
+
+namespace {
 
 // The header comment lines and the line that says how the file is used (then `note`).
 std::string library_preamble(const OpenScadOptions& options, std::string_view note) {
@@ -174,16 +201,43 @@ std::string library_preamble(const OpenScadOptions& options, std::string_view no
 
 }  // namespace
 
-void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& options) {
-    validate_mesh(mesh);
-    require_module_name(options);
-    require(options.convexity >= 1, "convexity", "must be at least 1");
+Color parse_color(std::string_view text, std::string_view argument) {
+    const auto bad = [&] {
+        return Error(argument, "'" + comment_text(text) + "' is not a colour (expected \"#rrggbb\" or \"#rrggbbaa\", hexadecimal)");
+    };
+    if ((text.size() != 7 && text.size() != 9) || text.front() != '#') throw bad();
+    double channels[4] = {1, 1, 1, 1};
+    for (std::size_t i = 0; 1 + 2 * i < text.size(); ++i) {
+        unsigned value = 0;
+        const char* begin = text.data() + 1 + 2 * i;
+        const auto result = std::from_chars(begin, begin + 2, value, 16);
+        if (result.ec != std::errc() || result.ptr != begin + 2) throw bad();
+        channels[i] = value / 255.0;
+    }
+    return {channels[0], channels[1], channels[2], channels[3]};
+}
 
-    BufferedOutput buffer(out);
-    buffer.text(library_preamble(options, " Faces are clockwise seen from outside (OpenSCAD's order)."));
+namespace {
+
+// `module NAME() { [color([r, g, b, a])] polyhedron(...); }`.
+void write_polyhedron_module(BufferedOutput& buffer, const Mesh& mesh, const std::string& name,
+                             const std::optional<Color>& color, int convexity) {
+    validate_mesh(mesh);
+    require_module_name(name);
     buffer.text("module ");
-    buffer.text(options.module_name);
-    buffer.text("() {\npolyhedron(points=[\n");
+    buffer.text(name);
+    buffer.text("() {\n");
+    if (color) {
+        buffer.text("color([");
+        const std::array<double, 4> channels = {color->red, color->green, color->blue, color->alpha};
+        for (std::size_t i = 0; i < channels.size(); ++i) {
+            require(channels[i] >= 0 && channels[i] <= 1, "color", "channels must lie in [0, 1]");
+            buffer.number(channels[i]);
+            buffer.character(i + 1 < channels.size() ? ',' : ']');
+        }
+        buffer.text(")\n");
+    }
+    buffer.text("polyhedron(points=[\n");
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
         buffer.character('[');
         vertex_triple(buffer, mesh.vertices[i], ',');
@@ -205,15 +259,59 @@ void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& 
         buffer.text(t + 1 < mesh.triangles.size() ? "],\n" : "]");
     }
     buffer.text("],\nconvexity=");
-    buffer.index(static_cast<std::uint64_t>(options.convexity));
+    buffer.index(static_cast<std::uint64_t>(convexity));
     buffer.text(");\n}\n");
+}
+
+}  // namespace
+
+void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& options) {
+    validate_mesh(mesh);
+    require_module_name(options.module_name);
+    require(options.convexity >= 1, "convexity", "must be at least 1");
+
+    BufferedOutput buffer(out);
+    buffer.text(library_preamble(options, " Faces are clockwise seen from outside (OpenSCAD's order)."));
+    write_polyhedron_module(buffer, mesh, options.module_name, options.color, options.convexity);
+    buffer.text(options.module_name);
+    buffer.text("();\n");
+    buffer.flush();
+}
+
+void write_openscad_library(const std::vector<LibraryModule>& modules, std::ostream& out, const OpenScadOptions& options) {
+    require(!modules.empty(), "solids", "is empty");
+    require_module_name(options.module_name);
+    require(options.convexity >= 1, "convexity", "must be at least 1");
+    for (std::size_t i = 0; i < modules.size(); ++i) {
+        require(modules[i].mesh != nullptr, "solids", "a module has no mesh");
+        require(modules[i].module_name != options.module_name, "module_name", [&] {
+            return "'" + options.module_name + "' is also the name of a solid: the module placing them all needs its own";
+        });
+        for (std::size_t j = 0; j < i; ++j)
+            require(modules[j].module_name != modules[i].module_name, "solids",
+                    [&] { return "two solids are named '" + modules[i].module_name + "'"; });
+    }
+    BufferedOutput buffer(out);
+    std::string names;
+    for (const LibraryModule& m : modules) names += (names.empty() ? "" : ", ") + m.module_name + "()";
+    buffer.text(library_preamble(options, " It also has one module per solid: " + names +
+                                              ". Faces are clockwise seen from outside (OpenSCAD's order)."));
+    for (const LibraryModule& m : modules) write_polyhedron_module(buffer, *m.mesh, m.module_name, m.color, options.convexity);
+    buffer.text("module ");
+    buffer.text(options.module_name);
+    buffer.text("() {\n");
+    for (const LibraryModule& m : modules) {
+        buffer.text(m.module_name);
+        buffer.text("();\n");
+    }
+    buffer.text("}\n");
     buffer.text(options.module_name);
     buffer.text("();\n");
     buffer.flush();
 }
 
 void write_openscad_import(const std::string& stl_file, std::ostream& out, const OpenScadOptions& options) {
-    require_module_name(options);
+    require_module_name(options.module_name);
     require(!stl_file.empty(), "stl_file", "is empty");
     require(options.convexity >= 1, "convexity", "must be at least 1");
     // An OpenSCAD string literal: \\ and \" escaped; control characters cannot be written in one.

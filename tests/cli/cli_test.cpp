@@ -128,7 +128,7 @@ TEST_F(Cli, UnknownTypeAndUnknownFields) {
     expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "sphere", "radius": 1, "centre": [0, 0, 0]}})")}),
                      "spec error: shape.centre: unknown field (expected one of: type, radius, center)");
     expect_bad_input(ratbez({"info", spec_file(R"({"tolerence": 0.1, "shape": {"type": "sphere", "radius": 1}})")}),
-                     "spec error: tolerence: unknown field (expected one of: name, description, tolerance, tessellation_angle, shape)");
+                     "spec error: tolerence: unknown field (expected one of: name, description, tolerance, tessellation_angle, color, shape)");
     expect_bad_input(
         ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "profile": [{"type": "spline", "points": []}]}})")}),
         "spec error: shape.profile[0].type: unknown curve type 'spline' (expected bezier, nurbs, line, arc or circle)");
@@ -224,7 +224,14 @@ TEST_F(Cli, UsageErrors) {
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.stl"), "--module", "m"}),
                      "usage error: --module: applies only to .scad output");
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--module", "9lives"}),
-                     "usage error: --module: '9lives' is not an OpenSCAD identifier (letters, digits, _; not a keyword)");
+                     "usage error: --module: '9lives' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit)");
+    // A built-in would shadow OpenSCAD's own cylinder() in every file that uses the library (issue 27).
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--module", "cylinder"}),
+                     "usage error: --module: 'cylinder' is an OpenSCAD built-in or keyword: a module of that name would "
+                     "shadow OpenSCAD's own in every file that uses the library (try 'cylinder_solid')");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--module", "polyhedron"}),
+                     "usage error: --module: 'polyhedron' is an OpenSCAD built-in or keyword: a module of that name would "
+                     "shadow OpenSCAD's own in every file that uses the library (try 'polyhedron_solid')");
     expect_bad_input(ratbez({"info"}), "usage error: SPEC.json: missing (usage: ratbez info SPEC.json ...)");
     expect_bad_input(ratbez({"info", sphere, "other.json"}), "usage error: other.json: unexpected argument for 'info'");
     EXPECT_FALSE(fs::exists(path("a.scad")));
@@ -272,7 +279,7 @@ TEST_F(Cli, ExportsEveryFormat) {
     run = ratbez({"export", sphere, "-o", path("i.scad"), "--import-stl", "--tolerance", "0.05"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_EQ(run.out.rfind("wrote " + path("i.scad") + " and " + path("i.stl") + " (", 0), 0u) << run.out;
-    EXPECT_NE(read_file(path("i.scad")).find("module sphere() {\nimport(\"i.stl\", convexity=10);\n}\nsphere();\n"),
+    EXPECT_NE(read_file(path("i.scad")).find("module ball() {\nimport(\"i.stl\", convexity=10);\n}\nball();\n"),
               std::string::npos)
         << read_file(path("i.scad"));
     EXPECT_GE(read_file(path("i.stl")).size(), 84u);
@@ -293,7 +300,7 @@ TEST_F(Cli, ExportsEveryFormat) {
 
     run = ratbez({"export", sphere, "-o", path("s_ascii.stl"), "--ascii", "--tolerance=0.5"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_EQ(read_file(path("s_ascii.stl")).rfind("solid sphere\nfacet normal ", 0), 0u);
+    EXPECT_EQ(read_file(path("s_ascii.stl")).rfind("solid ball\nfacet normal ", 0), 0u);
 
     run = ratbez({"export", sphere, "-o", path("s.off"), "--angle", "20"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -374,7 +381,7 @@ TEST_F(Cli, ModuleNameFromSpecNameElseOutputStem) {
 TEST_F(Cli, InfoOfSphereAndTorus) {
     CommandResult run = ratbez({"info", example("sphere.json")});
     ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_NE(run.out.find("name:                 sphere\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("name:                 ball\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("faces:                1\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("euler characteristic: 2\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("bounding box:         ("), std::string::npos) << run.out;
@@ -473,3 +480,37 @@ TEST_F(CliEconomy, ExamplesNeedNoMoreTrianglesThanInscribedMeshes) {
 }
 
 }  // namespace
+
+TEST_F(Cli, DerivedModuleNamesThatAreBuiltinsGetASuffixAndSaySo) {
+    // A spec without a name exported to cylinder.scad: the module is named after the file, which would be
+    // OpenSCAD's own cylinder (issue 27).
+    const std::string spec = spec_file(R"({"shape": {"type": "cylinder", "radius": 1, "height": 2}})", "unnamed.json");
+    const CommandResult run = ratbez({"export", spec, "-o", path("cylinder.scad"), "--tolerance", "0.05"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err, "note: module cylinder_solid() (the file name 'cylinder' is an OpenSCAD built-in, which the "
+                       "library must not shadow)\n");
+    const std::string scad = read_file(path("cylinder.scad"));
+    EXPECT_NE(scad.find("module cylinder_solid() {\n"), std::string::npos);
+    EXPECT_EQ(scad.find("module cylinder()"), std::string::npos);
+}
+
+TEST_F(Cli, Version) {
+    const CommandResult run = ratbez({"--version"});
+    EXPECT_EQ(run.exit_code, 0);
+    EXPECT_EQ(run.out, "ratbez " RATBEZ_VERSION "\n");
+    EXPECT_EQ(run.err, "");
+    expect_bad_input(ratbez({"--version", "x"}), "usage error: x: unexpected argument for '--version'");
+}
+
+TEST_F(Cli, SpecColourWrapsTheModuleBody) {
+    const std::string spec = spec_file(R"({"name": "red_ball", "color": "#FF000080", "shape": {"type": "sphere", "radius": 1}})");
+    const CommandResult run = ratbez({"export", spec, "-o", path("r.scad"), "--tolerance", "0.05"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(read_file(path("r.scad")).find("module red_ball() {\ncolor([1,0,0,0.5019607843137255])\npolyhedron("),
+              std::string::npos);
+    expect_bad_input(ratbez({"export", spec_file(R"({"color": "red", "shape": {"type": "sphere", "radius": 1}})"), "-o",
+                             path("b.scad")}),
+                     "spec error: color: 'red' is not a colour (expected \"#rrggbb\" or \"#rrggbbaa\", hexadecimal)");
+    expect_bad_input(ratbez({"info", spec_file(R"({"color": 3, "shape": {"type": "sphere", "radius": 1}})")}),
+                     "spec error: color: must be a string");
+}

@@ -127,7 +127,17 @@ TEST_F(ExportTessellation, BadModuleNameIsRefusedBeforeAnyWork) {
         export_tessellation(ball, mesh, 0.01, path("x.scad"), options);
         FAIL() << "expected ratbez::Error";
     } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()), "module_name: 'x\\ncube(1);' is not an OpenSCAD identifier");
+        EXPECT_EQ(std::string(e.what()),
+                  "module_name: 'x\\ncube(1);' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit)");
+    }
+    EXPECT_FALSE(fs::exists(path("x.scad")));
+    // A built-in would shadow OpenSCAD's own module for every user of the library (issue 27).
+    options.openscad.module_name = "cylinder";
+    try {
+        export_tessellation(ball, mesh, 0.01, path("x.scad"), options);
+        FAIL() << "expected ratbez::Error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("module_name: 'cylinder' is an OpenSCAD built-in or keyword", 0), 0u) << e.what();
     }
     EXPECT_FALSE(fs::exists(path("x.scad")));
 }

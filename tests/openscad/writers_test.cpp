@@ -65,9 +65,13 @@ TEST(OpenScadIdentifier, MakesAnyTextAnIdentifier) {
     EXPECT_EQ(openscad_identifier("my vase-2.final"), "my_vase_2_final");
     EXPECT_EQ(openscad_identifier("9lives"), "_9lives");
     EXPECT_EQ(openscad_identifier(""), "shape");
-    EXPECT_EQ(openscad_identifier("for"), "for_");
-    EXPECT_EQ(openscad_identifier("module"), "module_");
-    EXPECT_EQ(openscad_identifier("use"), "use_");
+    EXPECT_EQ(openscad_identifier("for"), "for_solid");
+    EXPECT_EQ(openscad_identifier("sphere"), "sphere_solid");
+    EXPECT_EQ(openscad_identifier("polyhedron"), "polyhedron_solid");
+    EXPECT_FALSE(is_openscad_identifier("cylinder"));
+    EXPECT_TRUE(is_openscad_builtin("len"));
+    EXPECT_EQ(openscad_identifier("module"), "module_solid");
+    EXPECT_EQ(openscad_identifier("use"), "use_solid");
     EXPECT_EQ(openscad_identifier("caf\xc3\xa9"), "caf__");
     EXPECT_TRUE(is_openscad_identifier("_9lives"));
     EXPECT_FALSE(is_openscad_identifier("9lives"));

@@ -60,7 +60,7 @@ def test_keyword_names():
         # module, binary, max_triangles, progress and write_off: the contract additions (DESIGN.md; long calls
         # take progress=callable)
         expected.append((ratbez.export_openscad,
-                         ["solid_or_mesh", "path", "tolerance", "module", "max_triangles", "import_stl", "progress"]))
+                         ["solid_or_mesh", "path", "tolerance", "module", "max_triangles", "import_stl", "progress", "color"]))
         expected.append((ratbez.write_stl, ["solid_or_mesh", "path", "tolerance", "binary", "max_triangles", "progress"]))
         expected.append((ratbez.write_off, ["solid_or_mesh", "path", "tolerance", "max_triangles", "progress"]))
         expected.append((ratbez.check_mesh, ["mesh", "check_self_intersections", "progress"]))

@@ -588,7 +588,7 @@ def default_tolerance(solid: Solid) -> float:
 def ellipse_arc(a: float, b: float, start_deg: float, end_deg: float, center: Point = ..., normal: Point = ...) -> NurbsCurve:
     """An elliptical arc with semi-axes a and b as an exact NurbsCurve."""
 
-def export_openscad(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., module: Any = ..., max_triangles: Optional[int] = ..., import_stl: bool = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
+def export_openscad(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., module: Any = ..., max_triangles: Optional[int] = ..., import_stl: bool = ..., progress: Optional[Callable[[float], object]] = ..., color: Any = ...) -> None:
     """Write an OpenSCAD library file, `module NAME() { polyhedron(...); }` then `NAME();` (NAME: module, else
     the file's stem made an identifier), after the CGAL mesh checks. A Solid is tessellated at tolerance
     first and written with the fewest decimals that keep the written mesh within tolerance; the header
@@ -596,6 +596,10 @@ def export_openscad(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Op
     import_stl=True: the mesh goes to a binary STL beside the file (same name, .stl; float32 coordinates,
     checked as written) and the module is `import("NAME.stl")`, which OpenSCAD loads several times
     faster for large meshes.
+    A dict {name: Solid} writes one module per name (each a safe module name) and the module NAME placing
+    them all; the header lists each module with its triangles, deviation and volumes.
+    color: "#rrggbb" or "#rrggbbaa" (for a dict: a dict of them by name) wraps the module's body in
+    color([r, g, b, a]).
     
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt

@@ -80,15 +80,13 @@ namespace {
     throw Error("solid_or_mesh", "expected a ratbez.Solid or a ratbez.Mesh");
 }
 
-// The module name: `module` when given (it must be an OpenSCAD identifier), else the file's stem made one.
+// The module name: `module` when given (an OpenSCAD identifier that shadows no built-in), else the file's
+// stem made one (a built-in stem gets exporter::builtin_suffix).
 [[maybe_unused]] std::string module_for(const py::object& module, const std::string& file) {
     if (module.is_none()) return exporter::openscad_identifier(std::filesystem::path(file).stem().string());
     if (!py::isinstance<py::str>(module)) throw Error("module", "must be a str or None");
     const std::string name = module.cast<std::string>();
-    if (!exporter::is_openscad_identifier(name))
-        throw Error("module", "'" + exporter::comment_text(name) +
-                                  "' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit; "
-                                  "not a keyword)");
+    exporter::require_module_name(name, "module");
     return name;
 }
 
@@ -107,6 +105,50 @@ Solid read_released(const py::object& path, const py::object& progress, Read rea
     const Progress polled = python_progress(progress);
     py::gil_scoped_release release;
     return read(file, polled);
+}
+#endif
+
+#if RATBEZ_PYTHON_WITH_EXPORT
+// `color=`: None, or "#rrggbb" / "#rrggbbaa" for one solid; for a dict of solids a dict of such strings by name.
+std::optional<exporter::Color> color_for(const py::object& color, const std::string& argument) {
+    if (color.is_none()) return std::nullopt;
+    if (!py::isinstance<py::str>(color)) throw Error(argument, "must be a str \"#rrggbb\" or \"#rrggbbaa\", or None");
+    return exporter::parse_color(color.cast<std::string>(), argument);
+}
+
+// export_openscad of a dict {name: Solid}: one module per name (each must be a safe module name), one module
+// after the file (or `module`) placing them all.
+void export_library(const py::dict& solids, const std::string& file, const py::object& tolerance, const py::object& color,
+                    exporter::ExportOptions options) {
+    if (solids.empty()) throw Error("solids", "is empty");
+    if (!color.is_none() && !py::isinstance<py::dict>(color))
+        throw Error("color", "for a dict of solids must be a dict {name: \"#rrggbb\"}");
+    const py::dict colors = color.is_none() ? py::dict() : color.cast<py::dict>();
+    for (const auto& [key, value] : colors)
+        if (!solids.contains(key)) throw Error("color", "names '" + py::str(key).cast<std::string>() + "', which is not one of the solids");
+    std::vector<Mesh> meshes;
+    std::vector<exporter::LibraryPart> parts;
+    meshes.reserve(solids.size());
+    for (const auto& [key, value] : solids) {
+        if (!py::isinstance<py::str>(key)) throw Error("solids", "keys must be module names (str)");
+        const std::string name = key.cast<std::string>();
+        exporter::require_module_name(name, "solids['" + exporter::comment_text(name) + "']");
+        if (!py::isinstance<Solid>(value)) throw Error("solids['" + name + "']", "expected a ratbez.Solid");
+        exporter::LibraryPart part;
+        part.module_name = name;
+        part.solid = &value.cast<const Solid&>();
+        part.tolerance = tolerance.is_none() ? default_tolerance(*part.solid) : to_double(tolerance, "tolerance");
+        part.color = color_for(colors.contains(key) ? py::object(colors[key]) : py::object(py::none()), "color['" + name + "']");
+        parts.push_back(std::move(part));
+    }
+    options.source = "Python";
+    py::gil_scoped_release release;
+    for (auto& part : parts) {
+        meshes.push_back(tessellate(*part.solid, part.tolerance));
+        part.mesh = &meshes.back();
+        part.checks = exporter::tessellation_checks(*part.solid, *part.mesh, part.tolerance);
+    }
+    exporter::export_library(parts, file, options);
 }
 #endif
 
@@ -133,16 +175,24 @@ void bind_io(py::module_& m) {
     m.def(
         "export_openscad",
         [](const py::object& solid_or_mesh, const py::object& path, const py::object& tolerance,
-           const py::object& module, const py::object& max_triangles, bool import_stl, const py::object& progress) {
+           const py::object& module, const py::object& max_triangles, bool import_stl, const py::object& progress,
+           const py::object& color) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".scad")) throw Error("path", "an OpenSCAD file name must end in .scad");
             exporter::ExportOptions options;
             options.openscad.module_name = module_for(module, file);
             options.import_stl = import_stl;
+            if (py::isinstance<py::dict>(solid_or_mesh)) {
+                if (!max_triangles.is_none()) throw Error("max_triangles", "applies to one solid, not a dict of solids");
+                options.progress = python_progress(progress);
+                return export_library(solid_or_mesh.cast<py::dict>(), file, tolerance, color, options);
+            }
+            options.openscad.color = color_for(color, "color");
             export_shape(solid_or_mesh, file, tolerance, max_triangles, progress, options);
         },
         py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("module") = py::none(),
         py::arg("max_triangles") = py::none(), py::arg("import_stl") = false, py::arg("progress") = py::none(),
+        py::arg("color") = py::none(),
         (std::string(
             "Write an OpenSCAD library file, `module NAME() { polyhedron(...); }` then `NAME();` (NAME: module, else\n"
             "the file's stem made an identifier), after the CGAL mesh checks. A Solid is tessellated at tolerance\n"
@@ -150,7 +200,11 @@ void bind_io(py::module_& m) {
             "states the tolerance, the measured deviation, counts, bounding box and volumes.\n"
             "import_stl=True: the mesh goes to a binary STL beside the file (same name, .stl; float32 coordinates,\n"
             "checked as written) and the module is `import(\"NAME.stl\")`, which OpenSCAD loads several times\n"
-            "faster for large meshes.") +
+            "faster for large meshes.\n"
+            "A dict {name: Solid} writes one module per name (each a safe module name) and the module NAME placing\n"
+            "them all; the header lists each module with its triangles, deviation and volumes.\n"
+            "color: \"#rrggbb\" or \"#rrggbbaa\" (for a dict: a dict of them by name) wraps the module's body in\n"
+            "color([r, g, b, a]).") +
          "\n\n" + progress_doc).c_str());
     m.def(
         "write_stl",

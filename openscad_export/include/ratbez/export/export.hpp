@@ -45,6 +45,23 @@ struct WrittenMesh {
 WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tolerance, const std::string& path,
                                 const ExportOptions& options = {});
 
+// One solid of a library: its module name, the solid, its tessellation at `tolerance` and its colour.
+struct LibraryPart {
+    std::string module_name;
+    const Solid* solid = nullptr;
+    const Mesh* mesh = nullptr;
+    double tolerance = 0;
+    MeshCheckOptions checks{};  // tessellation_checks(solid, mesh, tolerance), or stricter
+    std::optional<Color> color;
+};
+
+// Several solids in one .scad library: each mesh made and checked as export_tessellation does (the fewest
+// decimals that keep it within its tolerance and CGAL-clean), one module per part, and the module
+// options.openscad.module_name placing them all. The header lists every module with its triangles, its
+// measured deviation and volumes. import_stl is refused (Error "import_stl"). Returns each part's mesh as written.
+std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, const std::string& path,
+                                        const ExportOptions& options = {});
+
 // The mesh checks for a tessellation of `solid` at `tolerance`: the volume lies within tolerance times
 // the area of the exact one (the mesh stays within tolerance of the surface everywhere).
 MeshCheckOptions tessellation_checks(const Solid& solid, const Mesh& mesh, double tolerance);
