@@ -219,11 +219,16 @@ Color parse_color(std::string_view text, std::string_view argument) {
 
 namespace {
 
-// `module NAME() { [color([r, g, b, a])] polyhedron(...); }`.
+void require_color(const std::optional<Color>& color) {
+    if (!color) return;
+    for (const double channel : {color->red, color->green, color->blue, color->alpha})
+        require(channel >= 0 && channel <= 1, "color", "channels must lie in [0, 1]");
+}
+
+// `module NAME() { [color([r, g, b, a])] polyhedron(...); }`. The callers validate the mesh, the name and
+// the colour before anything is written.
 void write_polyhedron_module(BufferedOutput& buffer, const Mesh& mesh, const std::string& name,
                              const std::optional<Color>& color, int convexity) {
-    validate_mesh(mesh);
-    require_module_name(name);
     buffer.text("module ");
     buffer.text(name);
     buffer.text("() {\n");
@@ -231,7 +236,6 @@ void write_polyhedron_module(BufferedOutput& buffer, const Mesh& mesh, const std
         buffer.text("color([");
         const std::array<double, 4> channels = {color->red, color->green, color->blue, color->alpha};
         for (std::size_t i = 0; i < channels.size(); ++i) {
-            require(channels[i] >= 0 && channels[i] <= 1, "color", "channels must lie in [0, 1]");
             buffer.number(channels[i]);
             buffer.character(i + 1 < channels.size() ? ',' : ']');
         }
@@ -268,6 +272,7 @@ void write_polyhedron_module(BufferedOutput& buffer, const Mesh& mesh, const std
 void write_openscad(const Mesh& mesh, std::ostream& out, const OpenScadOptions& options) {
     validate_mesh(mesh);
     require_module_name(options.module_name);
+    require_color(options.color);
     require(options.convexity >= 1, "convexity", "must be at least 1");
 
     BufferedOutput buffer(out);
@@ -284,6 +289,9 @@ void write_openscad_library(const std::vector<LibraryModule>& modules, std::ostr
     require(options.convexity >= 1, "convexity", "must be at least 1");
     for (std::size_t i = 0; i < modules.size(); ++i) {
         require(modules[i].mesh != nullptr, "solids", "a module has no mesh");
+        validate_mesh(*modules[i].mesh);
+        require_module_name(modules[i].module_name);
+        require_color(modules[i].color);
         require(modules[i].module_name != options.module_name, "module_name", [&] {
             return "'" + options.module_name + "' is also the name of a solid: the module placing them all needs its own";
         });

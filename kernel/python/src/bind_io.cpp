@@ -142,12 +142,21 @@ void export_library(const py::dict& solids, const std::string& file, const py::o
         parts.push_back(std::move(part));
     }
     options.source = "Python";
+    // As export_shape: the tessellations take the first kTessellationShare of the progress (each part its
+    // share, so Ctrl-C lands inside a long one), the checks and the writing the rest.
+    const Progress poll = options.progress;
+    const double share = kTessellationShare / static_cast<double>(parts.size());
     py::gil_scoped_release release;
-    for (auto& part : parts) {
-        meshes.push_back(tessellate(*part.solid, part.tolerance));
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        exporter::LibraryPart& part = parts[i];
+        TessellationOptions tessellation;
+        tessellation.tolerance = part.tolerance;
+        tessellation.progress = progress_part(poll, share * static_cast<double>(i), share * static_cast<double>(i + 1));
+        meshes.push_back(tessellate(*part.solid, tessellation));
         part.mesh = &meshes.back();
         part.checks = exporter::tessellation_checks(*part.solid, *part.mesh, part.tolerance);
     }
+    options.progress = progress_part(poll, kTessellationShare, 1);
     exporter::export_library(parts, file, options);
 }
 #endif
