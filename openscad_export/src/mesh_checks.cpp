@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
+#include <numbers>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -95,15 +96,34 @@ std::vector<std::vector<std::size_t>> triangle_components(const Mesh& mesh) {
     return components;
 }
 
+// The winding number of a closed component about p: the solid angle its triangles subtend, over 4 pi (Van
+// Oosterom and Strackee's formula per triangle): 1 inside an outward surface, -1 inside an inward one, 0 outside.
+double winding_number(const Mesh& mesh, const std::vector<std::size_t>& component, const Vec3& p) {
+    double total = 0;
+    for (const std::size_t t : component) {
+        const auto& tri = mesh.triangles[t];
+        const Vec3 a = mesh.vertices[tri[0]] - p, b = mesh.vertices[tri[1]] - p, c = mesh.vertices[tri[2]] - p;
+        const double la = norm(a), lb = norm(b), lc = norm(c);
+        total += 2 * std::atan2(dot(a, cross(b, c)), la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb);
+    }
+    return total / (4 * std::numbers::pi);
+}
+
 // Outward orientation of a closed, consistently oriented, 2-manifold mesh: every connected component
 // must enclose positive signed volume (divergence theorem, taken about the component's first vertex so
-// that far-off meshes keep their digits). Unlike CGAL's is_outward_oriented, which inspects the extreme
-// vertex only and asserts a non-degenerate neighbourhood there, this has no preconditions beyond valid
-// indices and also refuses a closed surface folded flat onto itself (found by fuzz_mesh). "No volume" is
-// measured against the component's bounding box, so that rounding on a flat mesh does not count.
-// Returns the problem, or an empty string.
+// that far-off meshes keep their digits), except a void: a component inside another, whose triangles face
+// into the void, out of the material around it, and so enclose negative volume. Which components are voids
+// is decided by nesting: at a vertex of a component, the winding numbers of all the others add up to 1 where
+// it lies in material (a void's surface) and to 0 where it lies outside (an outer surface, or an island in a
+// void). Unlike CGAL's is_outward_oriented, which inspects the extreme vertex only and asserts a
+// non-degenerate neighbourhood there, this has no preconditions beyond valid indices and also refuses a
+// closed surface folded flat onto itself (found by fuzz_mesh). "No volume" is measured against the
+// component's bounding box, so that rounding on a flat mesh does not count. Returns the problem, or an empty
+// string.
 std::string orientation_problem(const Mesh& mesh) {
-    for (const auto& component : triangle_components(mesh)) {
+    const auto components = triangle_components(mesh);
+    std::vector<double> volumes;
+    for (const auto& component : components) {
         const Vec3 origin = mesh.vertices[mesh.triangles[component.front()][0]];
         double six_volume = 0;
         std::vector<std::uint32_t> corners;
@@ -116,13 +136,25 @@ std::string orientation_problem(const Mesh& mesh) {
             corners.insert(corners.end(), tri.begin(), tri.end());
         }
         const double volume = six_volume / 6;
-        if (volume > 1e-12 * bounding_box_volume(mesh.vertices, corners)) continue;
         const std::string which = component.size() == mesh.triangles.size()
                                       ? std::string()
                                       : " in a part of " + count_of(component.size(), "triangle", "triangles");
-        if (volume < 0) return "triangles face inward (the orientation is reversed" + which + ")";
-        return "the closed surface encloses no volume (" + format_number(volume) + which +
-               "): it is flat or folded onto itself";
+        if (std::abs(volume) <= 1e-12 * bounding_box_volume(mesh.vertices, corners))
+            return "the closed surface encloses no volume (" + format_number(volume) + which +
+                   "): it is flat or folded onto itself";
+        volumes.push_back(volume);
+    }
+    if (std::all_of(volumes.begin(), volumes.end(), [](double v) { return v > 0; })) return {};
+    for (std::size_t k = 0; k < components.size(); ++k) {
+        if (volumes[k] > 0) continue;
+        const Vec3 p = mesh.vertices[mesh.triangles[components[k].front()][0]];
+        double nesting = 0;
+        for (std::size_t other = 0; other < components.size(); ++other)
+            if (other != k) nesting += winding_number(mesh, components[other], p);
+        if (std::abs(nesting - 1) < 0.5) continue;  // a void in material: inward is right
+        const std::string which = components.size() == 1 ? std::string()
+                                                         : " in a part of " + count_of(components[k].size(), "triangle", "triangles");
+        return "triangles face inward (the orientation is reversed" + which + ")";
     }
     return {};
 }

@@ -5,6 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <Geom_BezierSurface.hxx>
+#include <Geom_OffsetSurface.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -55,6 +61,9 @@
 #include "ratbez/occt/files.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/shape_import.hpp"
+#include "ratbez/occt/topology.hpp"
+#include "ratbez/deviation.hpp"
+#include "ratbez/tessellate.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
 #include "ratbez/properties.hpp"
@@ -260,20 +269,70 @@ TEST(ImportShapes, SeveralSolidsAreRefused) {
     EXPECT_NE(reason.find("holds 2 solids"), std::string::npos) << reason;
 }
 
-TEST(ImportShapes, TrimmedFacesAreRefusedNamingTheFace) {
-    // A box with a cylindrical hole: the box's faces keep their loops, the hole's face is a full cylinder; a
-    // box cut by a sphere reaching out of its sides leaves a spherical face bounded by circles that are not
-    // isocurves of the sphere.
+// The volume OpenCASCADE computes for its own shape, at an epsilon that makes it accurate on analytic faces.
+double occt_volume(const TopoDS_Shape& shape) {
+    GProp_GProps properties;
+    BRepGProp::VolumeProperties(shape, properties, 1e-11);
+    return properties.Mass();
+}
+
+TEST(ImportShapes, TrimmedFacesImportExactly) {
+    // A box with a cylindrical hole: planar faces with a hole loop, the hole a full cylinder (a surface face). A
+    // box scooped by a sphere reaching out of its sides: a spherical face bounded by circles that are not
+    // isocurves of the sphere (trimmed), planar faces with arcs. Two crossing cylinders fused: trimmed cylinders
+    // meeting along B-spline intersection curves.
     const TopoDS_Shape drilled =
         BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(-2, -2, 0), 4, 4, 1).Shape(), BRepPrimAPI_MakeCylinder(1, 1).Shape()).Shape();
-    const Solid solid = from_occt(drilled);
-    EXPECT_NEAR(solid.volume(), 16 - pi, 1e-12 * 16);
     const TopoDS_Shape scooped =
         BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 0), 2, 2, 2).Shape(), BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 2), 1.2).Shape())
             .Shape();
-    const std::string reason = refusal(scooped);
+    const TopoDS_Shape crossed =
+        BRepAlgoAPI_Fuse(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -3), gp_Dir(0, 0, 1)), 1, 6).Shape(),
+                         BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-3, 0, 0), gp_Dir(1, 0, 0)), 0.7, 6).Shape())
+            .Shape();
+    for (const auto& [name, shape] : {std::pair{"drilled", drilled}, std::pair{"scooped", scooped}, std::pair{"crossed", crossed}}) {
+        const Solid solid = from_occt(shape);
+        const double expected = occt_volume(shape);
+        EXPECT_NEAR(solid.volume(), expected, 1e-9 * expected) << name;
+        const Mesh mesh = tessellate(solid, 1e-3 * solid.bounding_box().diagonal());
+        EXPECT_TRUE(mesh.is_closed()) << name;
+        EXPECT_LE(max_deviation(solid, mesh), 1e-3 * solid.bounding_box().diagonal()) << name;
+        // Out again: OpenCASCADE accepts what we hand back, and it is the same volume.
+        EXPECT_TRUE(BRepCheck_Analyzer(to_occt(solid)).IsValid()) << name;
+        EXPECT_NEAR(from_occt(to_occt(solid)).volume(), expected, 1e-9 * expected) << name;
+    }
+    EXPECT_NEAR(from_occt(drilled).volume(), 16 - pi, 1e-12 * 16);
+    std::size_t trimmed = 0;
+    for (const Face& face : from_occt(scooped).faces()) trimmed += face.kind() == Face::Kind::trimmed;
+    EXPECT_EQ(trimmed, 1u);
+}
+
+TEST(ImportShapes, SurfacesWithoutAnExactFormAreRefusedNamingTheFace) {
+    // An offset of a B-spline face has no exact NURBS form.
+    TColgp_Array2OfPnt poles(1, 3, 1, 3);
+    for (int i = 1; i <= 3; ++i)
+        for (int j = 1; j <= 3; ++j) poles(i, j) = gp_Pnt(i, j, (i == 2 && j == 2) ? 1.0 : 0.0);
+    const Handle(Geom_BezierSurface) bump = new Geom_BezierSurface(poles);
+    const TopoDS_Face face = BRepBuilderAPI_MakeFace(Handle(Geom_Surface)(new Geom_OffsetSurface(bump, 0.5)), 1e-7).Face();
+    const TopoDS_Shape slab = BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, -1)).Shape();
+    const std::string reason = refusal(slab);
     EXPECT_EQ(reason.rfind("face ", 0), 0u) << reason;
-    EXPECT_NE(reason.find("a trimmed Geom_SphericalSurface face is not supported"), std::string::npos) << reason;
+    EXPECT_NE(reason.find("Geom_OffsetSurface face has no exact NURBS form"), std::string::npos) << reason;
+}
+
+TEST(ImportShapes, ASolidWithAVoidHasTwoShells) {
+    const TopoDS_Shape hollow =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 4, 4, 4).Shape(), BRepPrimAPI_MakeSphere(gp_Pnt(2, 2, 2), 1).Shape()).Shape();
+    const Solid solid = from_occt(hollow);
+    ASSERT_EQ(solid.shells().size(), 2u);
+    EXPECT_NEAR(solid.volume(), 64 - 4.0 / 3 * pi, 1e-11 * 64);
+    const Mesh mesh = tessellate(solid, 1e-3);
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_NEAR(mesh.volume(), solid.volume(), 1e-3 * solid.area());
+    // The conversion back holds the void as an inner shell, and OpenCASCADE measures the same volume.
+    const TopoDS_Solid back = to_occt(solid);
+    EXPECT_TRUE(BRepCheck_Analyzer(back).IsValid());
+    EXPECT_NEAR(occt_volume(back), solid.volume(), 1e-6 * solid.volume());
 }
 
 TEST_F(Import, BadFilesAreRefusedNamingThePath) {
@@ -296,7 +355,7 @@ TEST_F(Import, BadFilesAreRefusedNamingThePath) {
     // A .brep of two solids names the file and the count.
     const TopoDS_Compound two = two_boxes();
     ASSERT_TRUE(BRepTools::Write(two, path("two.brep").c_str()));
-    expect_path_error([&] { read_brep(path("two.brep")); }, "two.brep': holds 2 solids");
+    expect_path_error([&] { read_brep(path("two.brep")); }, "two.brep' holds 2 solids; read them all with read_brep_all");
 }
 
 TEST_F(Import, ProgressReachesOneAndCancels) {

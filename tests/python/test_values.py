@@ -107,7 +107,9 @@ def test_shapes_travel_through_multiprocessing():
 def test_corrupted_pickles_are_refused():
     kind, state = ratbez.sphere(1).__reduce__()[1]
     assert kind == "Solid"
-    tables, construction = state
+    tables, construction, name = state
+    assert name == ""
+    assert ratbez._restore("Solid", (tables, construction)).volume() == ratbez.sphere(1).volume()  # older pickles
     vertices, edges, faces = tables
     surface_face = faces[0]
     bad_sides = tuple((99, False) for _ in range(4))

@@ -4,13 +4,24 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
 #include <Message_ProgressIndicator.hxx>
+#include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
+#include <TDF_Label.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopLoc_Location.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <STEPControl_StepModelType.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
@@ -139,16 +150,163 @@ void require_readable(const std::string& path) {
     require(std::ifstream(path).good(), "path", "cannot read '" + path + "'");
 }
 
-// The one solid of the shape read from `path`, conversion errors blamed on the file.
-Solid solid_from_file(const TopoDS_Shape& shape, const std::string& path, const Progress& progress) {
-    const Progress second_half = [&](double fraction) {
-        if (progress) progress(0.5 + 0.5 * fraction);
-    };
+// A solid of a file with the name the file gives it.
+struct NamedShape {
+    TopoDS_Shape shape;
+    std::string name;
+};
+
+// Conversion errors blamed on the file: "path: 'a.step': face 7: ...".
+template <class Convert>
+auto blamed_on(const std::string& path, Convert&& convert) {
     try {
-        return from_occt(shape, second_half);
+        return convert();
     } catch (const Error& e) {
         throw Error("path", "'" + path + "': " + std::string(e.reason()));
     }
+}
+
+// The second half of the progress: the conversion of the shapes read.
+Progress second_half(const Progress& progress) {
+    return [&progress](double fraction) {
+        if (progress) progress(0.5 + 0.5 * fraction);
+    };
+}
+
+// The solids of the named shapes, in order, each named; conversion errors blamed on the file.
+std::vector<Solid> solids_from_file(const std::vector<NamedShape>& shapes, const std::string& path, const Progress& progress) {
+    TopoDS_Compound all;
+    BRep_Builder builder;
+    builder.MakeCompound(all);
+    for (const NamedShape& s : shapes) builder.Add(all, s.shape);
+    std::vector<Solid> solids = blamed_on(path, [&] { return from_occt_all(all, second_half(progress)); });
+    // from_occt_all meets the solids in the compound's order: the shapes', each one's own in turn.
+    std::size_t k = 0;
+    for (const NamedShape& s : shapes)
+        for (TopExp_Explorer it(s.shape, TopAbs_SOLID); it.More() && k < solids.size(); it.Next()) solids[k++].set_name(s.name);
+    return solids;
+}
+
+// The file's one solid (exactly one, else the error says to read them all).
+Solid one_solid(std::vector<NamedShape> shapes, const std::string& path, const Progress& progress, const char* all) {
+    std::size_t count = 0;
+    for (const NamedShape& s : shapes)
+        for (TopExp_Explorer it(s.shape, TopAbs_SOLID); it.More(); it.Next()) ++count;
+    require(count <= 1, "path", "'" + path + "' holds " + std::to_string(count) + " solids; read them all with " + all);
+    TopoDS_Compound compound;
+    BRep_Builder builder;
+    builder.MakeCompound(compound);
+    for (const NamedShape& s : shapes) builder.Add(compound, s.shape);
+    Solid solid = blamed_on(path, [&] { return from_occt(compound, second_half(progress)); });
+    for (const NamedShape& s : shapes)
+        if (TopExp_Explorer(s.shape, TopAbs_SOLID).More()) solid.set_name(s.name);
+    return solid;
+}
+
+// The name XCAF keeps on a label (a STEP product's name), or "".
+std::string label_name(const TDF_Label& label) {
+    Handle(TDataStd_Name) name;
+    if (!label.FindAttribute(TDataStd_Name::GetID(), name)) return "";
+    const TCollection_ExtendedString& text = name->Get();
+    std::string out;
+    for (int i = 1; i <= text.Length(); ++i) {
+        const char16_t c = static_cast<char16_t>(text.Value(i));
+        // UTF-8 of the Basic Multilingual Plane: a name is a label, not text to round-trip exactly.
+        if (c < 0x80) {
+            out += static_cast<char>(c);
+        } else if (c < 0x800) {
+            out += static_cast<char>(0xC0 | (c >> 6));
+            out += static_cast<char>(0x80 | (c & 0x3F));
+        } else {
+            out += static_cast<char>(0xE0 | (c >> 12));
+            out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+            out += static_cast<char>(0x80 | (c & 0x3F));
+        }
+    }
+    return out;
+}
+
+// The leaves of an XCAF product structure, each placed where its instances put it: an assembly's components
+// in order, a component by the product it refers to under the component's location (composed from the root).
+void flatten(const Handle(XCAFDoc_ShapeTool)& tool, const TDF_Label& label, const TopLoc_Location& placement,
+             std::vector<NamedShape>& out, int depth = 0) {
+    // Product structures nest a few levels; a cycle (a hostile file) must not recurse without end.
+    require(depth < 64, "path", "the file's assembly structure nests deeper than 64 levels (a cycle?)");
+    if (tool->IsAssembly(label)) {
+        TDF_LabelSequence components;
+        tool->GetComponents(label, components);
+        for (int i = 1; i <= components.Length(); ++i) {
+            const TDF_Label component = components.Value(i);
+            TDF_Label product;
+            if (!tool->GetReferredShape(component, product)) continue;
+            flatten(tool, product, placement * tool->GetLocation(component), out, depth + 1);
+        }
+        return;
+    }
+    const TopoDS_Shape shape = tool->GetShape(label);
+    if (shape.IsNull()) return;
+    out.push_back({placement.IsIdentity() ? shape : shape.Moved(placement), label_name(label)});
+}
+
+// The shapes of a STEP file with their product names: XCAF's free shapes, assemblies flattened.
+std::vector<NamedShape> read_step_shapes(const std::string& path, const Progress& progress) {
+    require_readable(path);
+    QuietMessenger quiet;
+    try {
+        // The parse is the first quarter of the progress, the translation the second (the conversion the second half).
+        CapturedProgress captured(progress);
+        STEPCAFControl_Reader reader;
+        reader.SetNameMode(true);
+        PolledFileBuffer buffer(path, captured, 0.25);
+        std::istream stream(&buffer);
+        const IFSelect_ReturnStatus parsed = reader.ChangeReader().ReadStream(path.c_str(), stream);
+        captured.rethrow_if_stopped();
+        require(parsed == IFSelect_RetDone, "path", "'" + path + "' is not a readable STEP file");
+        const Handle(XCAFApp_Application) application = XCAFApp_Application::GetApplication();
+        Handle(TDocStd_Document) document;
+        application->NewDocument("MDTV-XCAF", document);
+        Handle(PolledIndicator) indicator = new PolledIndicator(captured, 0.25, 0.5);
+        const bool transferred = reader.Transfer(document, indicator->Start());
+        captured.rethrow_if_stopped();
+        require(transferred, "path", "'" + path + "' holds no shape OpenCASCADE can translate");
+        const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
+        TDF_LabelSequence roots;
+        tool->GetFreeShapes(roots);
+        std::vector<NamedShape> shapes;
+        for (int i = 1; i <= roots.Length(); ++i) flatten(tool, roots.Value(i), TopLoc_Location(), shapes);
+        application->Close(document);
+        require(!shapes.empty(), "path", "'" + path + "' holds no shape OpenCASCADE can translate");
+        return shapes;
+    } catch (const Standard_Failure& failure) {
+        throw Error("path", "reading STEP from '" + path + "' failed: " + failure.GetMessageString());
+    }
+}
+
+// The shape of a .brep file (one, possibly a compound of several solids).
+std::vector<NamedShape> read_brep_shapes(const std::string& path, const Progress& progress) {
+    require_readable(path);
+    {
+        // BRepTools::Read prints to stdout when a file is not .brep: look at its first non-blank line first. A
+        // .brep file starts with OCCT's "CASCADE Topology V<n>" or with BRepTools::Write's Draw tag line before it.
+        std::ifstream in(path);
+        std::string first;
+        while (std::getline(in, first) && first.find_first_not_of(" \t\r") == std::string::npos) {
+        }
+        first.erase(0, first.find_first_not_of(" \t"));
+        require(first.rfind("DBRep_DrawableShape", 0) == 0 || first.rfind("CASCADE Topology V", 0) == 0, "path",
+                "'" + path + "' is not a readable .brep file (it does not start with OpenCASCADE's header)");
+    }
+    TopoDS_Shape shape;
+    try {
+        CapturedProgress captured(progress);
+        Handle(PolledIndicator) indicator = new PolledIndicator(captured, 0, 0.5);
+        const bool read = BRepTools::Read(shape, path.c_str(), BRep_Builder(), indicator->Start());
+        captured.rethrow_if_stopped();
+        require(read && !shape.IsNull(), "path", "'" + path + "' is not a readable .brep file");
+    } catch (const Standard_Failure& failure) {
+        throw Error("path", "reading .brep from '" + path + "' failed: " + failure.GetMessageString());
+    }
+    return {NamedShape{shape, ""}};
 }
 
 }  // namespace
@@ -187,54 +345,19 @@ std::string brep_string(const Solid& solid, const ConvertOptions& options) {
 }
 
 Solid read_step(const std::string& path, const Progress& progress) {
-    require_readable(path);
-    TopoDS_Shape shape;
-    {
-        QuietMessenger quiet;
-        try {
-            // The parse is the first quarter of the progress, the translation the second (solid_from_file
-            // the second half).
-            CapturedProgress captured(progress);
-            STEPControl_Reader reader;
-            PolledFileBuffer buffer(path, captured, 0.25);
-            std::istream stream(&buffer);
-            const IFSelect_ReturnStatus parsed = reader.ReadStream(path.c_str(), stream);
-            captured.rethrow_if_stopped();
-            require(parsed == IFSelect_RetDone, "path", "'" + path + "' is not a readable STEP file");
-            Handle(PolledIndicator) indicator = new PolledIndicator(captured, 0.25, 0.5);
-            const int transferred = reader.TransferRoots(indicator->Start());
-            captured.rethrow_if_stopped();
-            require(transferred > 0, "path", "'" + path + "' holds no shape OpenCASCADE can translate");
-            shape = reader.OneShape();
-        } catch (const Standard_Failure& failure) {
-            throw Error("path", "reading STEP from '" + path + "' failed: " + failure.GetMessageString());
-        }
-    }
-    return solid_from_file(shape, path, progress);
+    return one_solid(read_step_shapes(path, progress), path, progress, "read_step_all");
 }
 
 Solid read_brep(const std::string& path, const Progress& progress) {
-    require_readable(path);
-    {
-        // BRepTools::Read prints to stdout when a file is not .brep: look at its first line first. A .brep file
-        // starts with OCCT's "CASCADE Topology V<n>" or with BRepTools::Write's Draw tag line before it.
-        std::ifstream in(path);
-        std::string first;
-        std::getline(in, first);
-        require(first.rfind("DBRep_DrawableShape", 0) == 0 || first.rfind("CASCADE Topology V", 0) == 0, "path",
-                "'" + path + "' is not a readable .brep file (it does not start with OpenCASCADE's header)");
-    }
-    TopoDS_Shape shape;
-    try {
-        CapturedProgress captured(progress);
-        Handle(PolledIndicator) indicator = new PolledIndicator(captured, 0, 0.5);
-        const bool read = BRepTools::Read(shape, path.c_str(), BRep_Builder(), indicator->Start());
-        captured.rethrow_if_stopped();
-        require(read && !shape.IsNull(), "path", "'" + path + "' is not a readable .brep file");
-    } catch (const Standard_Failure& failure) {
-        throw Error("path", "reading .brep from '" + path + "' failed: " + failure.GetMessageString());
-    }
-    return solid_from_file(shape, path, progress);
+    return one_solid(read_brep_shapes(path, progress), path, progress, "read_brep_all");
+}
+
+std::vector<Solid> read_step_all(const std::string& path, const Progress& progress) {
+    return solids_from_file(read_step_shapes(path, progress), path, progress);
+}
+
+std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress) {
+    return solids_from_file(read_brep_shapes(path, progress), path, progress);
 }
 
 }  // namespace ratbez::occt

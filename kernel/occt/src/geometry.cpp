@@ -15,6 +15,7 @@
 #include <TColgp_Array1OfPnt2d.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,19 @@ std::vector<double> to_vector(const TColStd_Array1OfReal& array) {
     out.reserve(static_cast<std::size_t>(array.Length()));
     for (int i = array.Lower(); i <= array.Upper(); ++i) out.push_back(array.Value(i));
     return out;
+}
+
+// OCCT's flat knot sequence, made non-decreasing where rounding made a knot dip below its predecessor:
+// OCCT keeps distinct knots apart only by its own Epsilon, and files written with 12 digits (STEP) or
+// SetNotPeriodic's arithmetic leave a knot 1e-15 below the one before it, which OCCT tolerates and our
+// validation (rightly, for user input) does not. A dip larger than 1e-12 of the knot vector's span is
+// left for the validation to report.
+std::vector<double> knot_sequence(const TColStd_Array1OfReal& array) {
+    std::vector<double> knots = to_vector(array);
+    const double span = knots.empty() ? 0 : std::abs(knots.back() - knots.front());
+    for (std::size_t k = 1; k < knots.size(); ++k)
+        if (knots[k] < knots[k - 1] && knots[k - 1] - knots[k] <= 1e-12 * span) knots[k] = knots[k - 1];
+    return knots;
 }
 
 void require_degree(int degree, int max_degree, const std::string& argument) {
@@ -202,7 +216,7 @@ NurbsCurve from_occt(const Handle(Geom_BSplineCurve)& curve) {
         source->SetNotPeriodic();
     }
     std::vector<Vec3> points = points_of(source->Poles());
-    std::vector<double> knots = to_vector(source->KnotSequence());
+    std::vector<double> knots = knot_sequence(source->KnotSequence());
     if (!source->IsRational()) return NurbsCurve(source->Degree(), std::move(knots), std::move(points));
     TColStd_Array1OfReal weights(1, source->NbPoles());
     source->Weights(weights);
@@ -229,8 +243,8 @@ NurbsSurface from_occt(const Handle(Geom_BSplineSurface)& surface) {
         if (source->IsVPeriodic()) source->SetVNotPeriodic();
     }
     std::vector<std::vector<Vec3>> net = net_of(source->Poles());
-    std::vector<double> knots_u = to_vector(source->UKnotSequence());
-    std::vector<double> knots_v = to_vector(source->VKnotSequence());
+    std::vector<double> knots_u = knot_sequence(source->UKnotSequence());
+    std::vector<double> knots_v = knot_sequence(source->VKnotSequence());
     if (!source->IsURational() && !source->IsVRational())
         return NurbsSurface(source->UDegree(), source->VDegree(), std::move(knots_u), std::move(knots_v),
                             std::move(net));
@@ -238,6 +252,22 @@ NurbsSurface from_occt(const Handle(Geom_BSplineSurface)& surface) {
     source->Weights(weights);
     return NurbsSurface(source->UDegree(), source->VDegree(), std::move(knots_u), std::move(knots_v),
                         std::move(net), weights_of(weights));
+}
+
+NurbsCurve from_occt_2d(const Handle(Geom2d_BSplineCurve)& curve) {
+    require(!curve.IsNull(), "curve", "is a null handle");
+    Handle(Geom2d_BSplineCurve) source = curve;
+    if (curve->IsPeriodic()) {
+        source = Handle(Geom2d_BSplineCurve)::DownCast(curve->Copy());
+        source->SetNotPeriodic();
+    }
+    std::vector<Vec3> points;
+    for (int i = 1; i <= source->NbPoles(); ++i) points.push_back({source->Pole(i).X(), source->Pole(i).Y(), 0.0});
+    std::vector<double> knots = knot_sequence(source->KnotSequence());
+    if (!source->IsRational()) return NurbsCurve(source->Degree(), std::move(knots), std::move(points));
+    std::vector<double> weights;
+    for (int i = 1; i <= source->NbPoles(); ++i) weights.push_back(source->Weight(i));
+    return NurbsCurve(source->Degree(), std::move(knots), std::move(points), std::move(weights));
 }
 
 Handle(Geom2d_BSplineCurve) to_occt_2d(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis,

@@ -2,7 +2,17 @@
 
 #include "ratbez/occt/shape_import.hpp"
 
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <ShapeFix_Solid.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
 #include <BRepTools.hxx>
+#include <Bnd_Box.hxx>
+#include <Precision.hxx>
+#include <Geom2dConvert.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <Convert_ConeToBSplineSurface.hxx>
@@ -49,21 +59,19 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "face_sides.hpp"
+#include "pcurve_fit.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 
 namespace ratbez::occt {
 namespace {
 
-const char* side_name(int side) {
-    static const char* names[] = {"v_min", "u_max", "v_max", "u_min"};
-    return names[side];
-}
 using detail::along_u;
 using detail::traversal_increasing;
 
@@ -135,6 +143,75 @@ struct NaturalRectangle {
     std::array<std::optional<TopoDS_Edge>, 4> sides;  // oriented as the face uses them; OCCT's parameters
 };
 
+// A rectangle of OCCT parameters made to fit the surface: a direction that closes with a period (a full turn)
+// spans at most that period, and a bounded direction (a sphere's latitude, a B-spline's domain) stays inside
+// its bounds. Files overshoot both by rounding: FreeCAD writes a full turn as 6.28318530717959 (one ulp above
+// 2 pi in .brep; STEP's 12 digits overshoot by 4e-13) and a sphere's latitude past pi/2 by as much, which
+// OpenCASCADE's own conversions then refuse (Standard_DomainError). A rectangle wider than the period by
+// more than 1e-9 of it is left alone (the conversion reports it).
+std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<double, 4> r) {
+    double a = 0, b = 0, c = 0, d = 0;
+    basis->Bounds(a, b, c, d);
+    const auto snap = [](double& lo, double& hi, bool periodic, double period, double min, double max) {
+        if (periodic) {
+            if (hi - lo > period && hi - lo <= period * (1 + 1e-9)) hi = lo + period;
+            return;
+        }
+        if (!Precision::IsInfinite(min) && lo < min && min - lo <= 1e-9 * std::max(1.0, max - min)) lo = min;
+        if (!Precision::IsInfinite(max) && hi > max && hi - max <= 1e-9 * std::max(1.0, max - min)) hi = max;
+    };
+    snap(r[0], r[1], basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b);
+    snap(r[2], r[3], basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d);
+    return r;
+}
+
+// The rectangle of OCCT parameters a trimmed face's NURBS spans: the box of its p-curves (sampled), widened
+// by 1 % where the surface allows (a box from samples can miss a bulge of the curve between them) and fitted
+// to the surface (snapped). A face that goes all the way round a periodic direction spans exactly the period.
+std::array<double, 4> trimmed_rectangle(const TopoDS_Face& face, const Handle(Geom_Surface)& basis) {
+    double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+        double first = 0, last = 0;
+        const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(it.Current()), face, first, last);
+        require(!pcurve.IsNull(), "shape", "an edge has no curve on the face's surface");
+        for (int k = 0; k <= 64; ++k) {
+            const gp_Pnt2d p = pcurve->Value(first + (last - first) * k / 64.0);
+            u0 = std::min(u0, p.X()), u1 = std::max(u1, p.X()), v0 = std::min(v0, p.Y()), v1 = std::max(v1, p.Y());
+        }
+    }
+    require(u1 > u0 && v1 > v0, "shape", "the face's curves on its surface span no area");
+    double a = 0, b = 0, c = 0, d = 0;
+    basis->Bounds(a, b, c, d);
+    const auto widen = [](double& lo, double& hi, bool periodic, double period, double min, double max) {
+        const double margin = 0.01 * (hi - lo);
+        if (periodic) {
+            if (hi - lo >= period * (1 - 1e-9)) {
+                hi = lo + period;
+                return;
+            }
+            const double room = std::min(margin, 0.5 * (period - (hi - lo)));
+            lo -= room, hi += room;
+            return;
+        }
+        lo = Precision::IsInfinite(min) ? lo - margin : std::max(min, lo - margin);
+        hi = Precision::IsInfinite(max) ? hi + margin : std::min(max, hi + margin);
+    };
+    widen(u0, u1, basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b);
+    widen(v0, v1, basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d);
+    return snapped(basis, {u0, u1, v0, v1});
+}
+
+// The largest tolerance OpenCASCADE gives the face, its edges and its vertices: how far the file lets its
+// boundary curves keep from the surface and from each other.
+double file_tolerance(const TopoDS_Face& face) {
+    double tolerance = BRep_Tool::Tolerance(face);
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next())
+        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Edge(it.Current())));
+    for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next())
+        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())));
+    return tolerance;
+}
+
 class Importer {
 public:
     explicit Importer(const TopoDS_Shape& solid) : solid_(solid) {
@@ -142,21 +219,40 @@ public:
         TopExp::MapShapes(solid, TopAbs_EDGE, edge_index_);
         vertices_.resize(static_cast<std::size_t>(vertex_index_.Extent()));
         edges_.resize(static_cast<std::size_t>(edge_index_.Extent()));
+        Bnd_Box box;
+        BRepBndLib::Add(solid, box);
+        if (!box.IsVoid()) size_ = std::sqrt(box.SquareExtent());
     }
 
     Solid run(const Progress& progress) {
         std::vector<TopoDS_Face> faces;
         for (TopExp_Explorer it(solid_, TopAbs_FACE); it.More(); it.Next()) faces.push_back(TopoDS::Face(it.Current()));
         require(!faces.empty(), "shape", "the solid has no faces");
-        // Surface faces first: their boundary isocurves become the shared edges that planar faces then take
-        // as they are (a plane accepts any parameterisation of its edges, a surface face only its own).
+        // Surface faces first: their boundary isocurves become the shared edges that trimmed and planar faces
+        // then take as they are (a trimmed face fits its p-curves to any edge, a plane accepts any
+        // parameterisation of its edges, a surface face only its own isocurves). A face that is not its
+        // surface's natural rectangle, or whose sides another surface face already parameterised otherwise,
+        // is a trimmed face.
+        enum class Pass { surface, trimmed, planar };
         std::vector<std::optional<Face>> made(faces.size());
+        std::vector<Pass> pass(faces.size());
+        for (std::size_t i = 0; i < faces.size(); ++i) pass[i] = is_planar(faces[i]) ? Pass::planar : Pass::surface;
         std::size_t done = 0;
-        for (const bool planar_pass : {false, true})
+        for (const Pass current : {Pass::surface, Pass::trimmed, Pass::planar})
             for (std::size_t i = 0; i < faces.size(); ++i) {
-                if (is_planar(faces[i]) != planar_pass) continue;
+                if (pass[i] != current) continue;
                 try {
-                    made[i] = planar_pass ? planar_face(faces[i]) : surface_face(faces[i]);
+                    switch (current) {
+                        case Pass::surface:
+                            made[i] = surface_face(faces[i]);
+                            if (!made[i]) {
+                                pass[i] = Pass::trimmed;
+                                continue;
+                            }
+                            break;
+                        case Pass::trimmed: made[i] = trimmed_face(faces[i]); break;
+                        case Pass::planar: made[i] = planar_face(faces[i]); break;
+                    }
                 } catch (const Standard_Failure& failure) {
                     throw Error("shape", "face " + std::to_string(i) + ": OpenCASCADE failed converting it (" +
                                              failure.DynamicType()->Name() + ": " + failure.GetMessageString() + ")");
@@ -197,6 +293,7 @@ private:
     struct SharedEdge {
         EdgePtr edge;
         bool flipped = false;
+        bool same_parameter = false;  // our curve has OCCT's parameter (the 3D curve converted as it is)
     };
     SharedEdge& shared(const TopoDS_Edge& e) { return edges_[static_cast<std::size_t>(edge_index_.FindIndex(e) - 1)]; }
 
@@ -208,20 +305,42 @@ private:
         return {first, last};
     }
 
-    // An edge met first by a planar face: its 3D curve converted exactly, running as the OCCT edge does.
+    // An edge met first by a trimmed or planar face: its 3D curve converted exactly, running as the OCCT edge
+    // does. Its ends must lie on its vertices, to the tolerances the file gives them: a vertex moved away
+    // from its edges would give a mesh of another solid than the curves bound.
     SharedEdge& edge_from_curve(const TopoDS_Edge& e) {
         SharedEdge& entry = shared(e);
         if (entry.edge) return entry;
         double first = 0, last = 0;
         const Handle(Geom_Curve) curve = BRep_Tool::Curve(e, first, last);
-        require(!curve.IsNull(), "shape", "an edge of a plane has no 3D curve");
+        require(!curve.IsNull(), "shape", "an edge has no 3D curve");
         const Handle(Geom_Curve) basis = exact_basis(curve);
         if (basis.IsNull()) fail("shape", "an edge's " + type_name(curve) + " has no exact NURBS form");
         const Handle(Geom_BSplineCurve) nurbs =
             GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(basis, first, last));
         const auto [start, end] = ends(e);
-        entry.edge = std::make_shared<const Edge>(Edge{from_occt(nurbs), vertex(start), vertex(end), false});
+        NurbsCurve converted = from_occt(nurbs);
+        const double gap_start = distance(converted.start_point(), from_occt(BRep_Tool::Pnt(start)));
+        const double gap_end = distance(converted.end_point(), from_occt(BRep_Tool::Pnt(end)));
+        const double allowed = BRep_Tool::Tolerance(e) + std::max(BRep_Tool::Tolerance(start), BRep_Tool::Tolerance(end)) +
+                               1e-9 * size_;
+        require(std::max(gap_start, gap_end) <= allowed, "shape", [&] {
+            return "an edge's " + std::string(gap_start >= gap_end ? "start" : "end") + " vertex " +
+                   detail_point(BRep_Tool::Pnt(gap_start >= gap_end ? start : end)) + " is " +
+                   std::to_string(std::max(gap_start, gap_end)) + " away from the edge's curve, more than the file's tolerance " +
+                   std::to_string(allowed);
+        });
+        // GeomConvert keeps the parameter of lines, B-splines and Béziers; conics come back at the rational pace.
+        const bool same_parameter = basis->IsKind(STANDARD_TYPE(Geom_Line)) || basis->IsKind(STANDARD_TYPE(Geom_BSplineCurve)) ||
+                                    basis->IsKind(STANDARD_TYPE(Geom_BezierCurve));
+        entry.edge = std::make_shared<const Edge>(Edge{std::move(converted), vertex(start), vertex(end), false});
+        entry.same_parameter = same_parameter && std::abs(entry.edge->curve.domain().min - first) <= 1e-12 * (last - first) &&
+                               std::abs(entry.edge->curve.domain().max - last) <= 1e-12 * (last - first);
         return entry;
+    }
+
+    static std::string detail_point(const gp_Pnt& p) {
+        return "(" + std::to_string(p.X()) + ", " + std::to_string(p.Y()) + ", " + std::to_string(p.Z()) + ")";
     }
 
     // An edge met first by a surface face on side s: that side's isocurve of our surface, with the surface's
@@ -246,34 +365,35 @@ private:
         const VertexPtr start = vertex(flipped ? last : first), end = vertex(flipped ? first : last);
         entry.edge = std::make_shared<const Edge>(Edge{std::move(isocurve), start, end, false});
         entry.flipped = flipped;
+        entry.same_parameter = false;
         return entry;
     }
 
-    // The natural rectangle of a non-planar face, or an Error saying why the face is trimmed.
-    static NaturalRectangle natural_rectangle(const TopoDS_Face& face, const std::string& surface_type) {
-        const std::string trimmed = "a trimmed " + surface_type + " face is not supported (ratbez faces are ";
+    // The natural rectangle of a non-planar face, or none when the face is trimmed otherwise.
+    static std::optional<NaturalRectangle> natural_rectangle(const TopoDS_Face& face, const Handle(Geom_Surface)& basis) {
         int wires = 0;
         for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next()) ++wires;
-        require(wires == 1, "shape", trimmed + "untrimmed surfaces; this one has " + std::to_string(wires) +
-                                         " boundary loops)");
-        // Each edge's pcurve at its ends and middle.
-        std::vector<std::pair<TopoDS_Edge, std::array<gp_Pnt2d, 3>>> uses;
+        if (wires != 1) return std::nullopt;
+        // Each edge's pcurve at 17 parameters: a side is a straight line, and a curve that only meets the side's
+        // line at a few points (a slanted hole's ellipse, whose pcurve on the cylinder is a sine) must not pass.
+        constexpr int kSamples = 17;
+        std::vector<std::pair<TopoDS_Edge, std::array<gp_Pnt2d, kSamples>>> uses;
         double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
         for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
             const TopoDS_Edge e = TopoDS::Edge(it.Current());
             double first = 0, last = 0;
             const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(e, face, first, last);
             require(!pcurve.IsNull(), "shape", "an edge has no curve on the face's surface");
-            const std::array<gp_Pnt2d, 3> samples{pcurve->Value(first), pcurve->Value(0.5 * (first + last)),
-                                                   pcurve->Value(last)};
+            std::array<gp_Pnt2d, kSamples> samples;
+            for (int k = 0; k < kSamples; ++k) samples[static_cast<std::size_t>(k)] = pcurve->Value(first + (last - first) * k / (kSamples - 1.0));
             for (const gp_Pnt2d& p : samples) {
                 u0 = std::min(u0, p.X()), u1 = std::max(u1, p.X());
                 v0 = std::min(v0, p.Y()), v1 = std::max(v1, p.Y());
             }
             uses.emplace_back(e, samples);
         }
-        require(u1 > u0 && v1 > v0, "shape", "the face's curves on its surface span no area");
-        NaturalRectangle out{{u0, u1, v0, v1}, {}};
+        if (!(u1 > u0 && v1 > v0)) return std::nullopt;
+        NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}), {}};
         // Pcurves made by projection (STEP files without them) sit on the sides to about 1e-7 of the rectangle.
         const double tol_u = 1e-6 * (u1 - u0), tol_v = 1e-6 * (v1 - v0);
         for (const auto& [e, samples] : uses) {
@@ -290,19 +410,18 @@ private:
             int side = -1;
             for (int s = 0; s < 4; ++s)
                 if (on(s)) side = s;
-            if (side < 0) fail("shape", trimmed + "untrimmed surfaces; an edge runs inside its parameter rectangle)");
+            if (side < 0) return std::nullopt;  // an edge inside the rectangle
             auto& slot = out.sides[static_cast<std::size_t>(side)];
-            if (slot) fail("shape", trimmed + "bounded by one edge per side; side " + side_name(side) + " has several)");
+            if (slot) return std::nullopt;  // a side of several edges
             slot = e;
         }
         for (int s = 0; s < 4; ++s)
-            require(out.sides[static_cast<std::size_t>(s)].has_value(), "shape",
-                    trimmed + "bounded by four sides; side " + side_name(s) + " has no edge)");
+            if (!out.sides[static_cast<std::size_t>(s)].has_value()) return std::nullopt;
         return out;
     }
 
     // The exact NURBS of a face's surface over the rectangle [u0, u1] x [v0, v1] of its parameters.
-    static NurbsSurface exact_surface(const Handle(Geom_Surface)& basis, const std::array<double, 4>& r) {
+    static Handle(Geom_BSplineSurface) exact_surface(const Handle(Geom_Surface)& basis, const std::array<double, 4>& r) {
         // B-splines as they are (a Bézier patch over [0, 1]^2); the quadrics and tori through the Convert_* class
         // over the rectangle; revolutions and extrusions in GeomConvert's rational form over the rectangle.
         Handle(Geom_BSplineSurface) nurbs = elementary_bspline(basis, r);
@@ -310,23 +429,42 @@ private:
         if (nurbs.IsNull())
             nurbs = GeomConvert::SurfaceToBSplineSurface(
                 spline ? basis : Handle(Geom_Surface)(new Geom_RectangularTrimmedSurface(basis, r[0], r[1], r[2], r[3])));
+        if (spline) nurbs = Handle(Geom_BSplineSurface)::DownCast(nurbs->Copy());
         double a = 0, b = 0, c = 0, d = 0;
         nurbs->Bounds(a, b, c, d);
         const double tol_u = 1e-9 * (r[1] - r[0]), tol_v = 1e-9 * (r[3] - r[2]);
-        const bool u_fits = std::abs(r[0] - a) <= tol_u && std::abs(r[1] - b) <= tol_u;
-        const bool v_fits = std::abs(r[2] - c) <= tol_v && std::abs(r[3] - d) <= tol_v;
+        // A conversion may return a periodic direction a whole period away (GeomConvert puts a revolution's
+        // angle into [0, 2 pi)): the same rectangle of the surface, shifted back by period_shifted.
+        const auto fits = [](double lo, double hi, double want_lo, double want_hi, double tol, bool periodic, double period) {
+            const double shift = periodic && period > 0 ? period * std::round((lo - want_lo) / period) : 0.0;
+            return std::abs(want_lo - (lo - shift)) <= tol && std::abs(want_hi - (hi - shift)) <= tol;
+        };
+        const bool u_fits = fits(a, b, r[0], r[1], tol_u, basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0);
+        const bool v_fits = fits(c, d, r[2], r[3], tol_v, basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0);
         if (!u_fits || !v_fits) {
             // A part of a B-spline surface (or a period of a periodic one starting elsewhere): segment it there
             // (knot insertion, exact to rounding).
             require((nurbs->IsUPeriodic() || (r[0] >= a - tol_u && r[1] <= b + tol_u)) &&
                         (nurbs->IsVPeriodic() || (r[2] >= c - tol_v && r[3] <= d + tol_v)),
-                    "shape", "its parameter rectangle leaves its " + type_name(basis) + "'s domain");
+                    "shape", [&] {
+                        return "its parameter rectangle [" + std::to_string(r[0]) + ", " + std::to_string(r[1]) + "] x [" +
+                               std::to_string(r[2]) + ", " + std::to_string(r[3]) + "] leaves its " + type_name(basis) +
+                               "'s exact form's domain [" + std::to_string(a) + ", " + std::to_string(b) + "] x [" +
+                               std::to_string(c) + ", " + std::to_string(d) + "]";
+                    });
             const auto clamp = [](double x, double lo, double hi, bool periodic) { return periodic ? x : std::clamp(x, lo, hi); };
             nurbs->Segment(u_fits ? a : clamp(r[0], a, b, nurbs->IsUPeriodic()), u_fits ? b : clamp(r[1], a, b, nurbs->IsUPeriodic()),
                            v_fits ? c : clamp(r[2], c, d, nurbs->IsVPeriodic()), v_fits ? d : clamp(r[3], c, d, nurbs->IsVPeriodic()));
         }
-        NurbsSurface surface = from_occt(nurbs);
+        return nurbs;
+    }
+
+    // Our NURBS of `nurbs`, checked to span the rectangle r and to meet the basis surface at its corners.
+    static NurbsSurface checked_surface(const Handle(Geom_BSplineSurface)& nurbs, const Handle(Geom_Surface)& basis,
+                                        const std::array<double, 4>& r) {
+        NurbsSurface surface = period_shifted(from_occt(nurbs), basis, r);
         const Interval du = surface.domain_u(), dv = surface.domain_v();
+        const double tol_u = 1e-9 * (r[1] - r[0]), tol_v = 1e-9 * (r[3] - r[2]);
         require(std::abs(du.min - r[0]) <= tol_u && std::abs(du.max - r[1]) <= tol_u && std::abs(dv.min - r[2]) <= tol_v &&
                     std::abs(dv.max - r[3]) <= tol_v,
                 "shape", "the exact form of its " + type_name(basis) + " is not parameterised over the face's rectangle");
@@ -340,13 +478,35 @@ private:
         return surface;
     }
 
+    // Segment() of a periodic B-spline may return the segment a whole period away from the rectangle asked for
+    // (a face at v in [-0.05, 6.24] came back over [6.24, 12.52]): the same surface, since it is periodic, with
+    // its knots a period off from the parameters of the face's p-curves. Shift them back (exact: S(u + P) = S(u)).
+    static NurbsSurface period_shifted(const NurbsSurface& surface, const Handle(Geom_Surface)& basis, const std::array<double, 4>& r) {
+        const auto shift = [](const Interval& d, double lo, bool periodic, double period) {
+            if (!periodic || !(period > 0)) return 0.0;
+            const double turns = std::round((lo - d.min) / period);
+            return std::abs(d.min + turns * period - lo) <= 1e-9 * std::max(1.0, period) ? turns * period : 0.0;
+        };
+        const double su = shift(surface.domain_u(), r[0], basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0);
+        const double sv = shift(surface.domain_v(), r[2], basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0);
+        if (su == 0 && sv == 0) return surface;
+        std::vector<double> ku = surface.knots_u(), kv = surface.knots_v();
+        for (double& k : ku) k += su;
+        for (double& k : kv) k += sv;
+        return NurbsSurface::from_homogeneous(surface.degree_u(), surface.degree_v(), std::move(ku), std::move(kv),
+                                              surface.homogeneous_points(), surface.is_rational());
+    }
+
     // `surface` with u running backwards: S'(u, v) = S(a + b - u, v), so S'_u x S'_v = -(S_u x S_v).
     static NurbsSurface reversed_in_u(const NurbsSurface& surface) {
         std::vector<double> knots = surface.knots_u();
         const double a = knots.front(), b = knots.back();
         std::reverse(knots.begin(), knots.end());
         for (double& k : knots) k = a + b - k;
-        knots.front() = a, knots.back() = b;
+        // a + b - k rounds: keep the ends exact and the sequence non-decreasing (a clamped end's repeated
+        // knots would otherwise differ in the last bit and dip).
+        for (double& k : knots) k = std::clamp(k, a, b);
+        for (std::size_t i = 1; i < knots.size(); ++i) knots[i] = std::max(knots[i], knots[i - 1]);
         std::vector<Vec4> points;
         points.reserve(surface.homogeneous_points().size());
         for (int i = surface.rows() - 1; i >= 0; --i)
@@ -355,26 +515,44 @@ private:
                                               std::move(points), surface.is_rational());
     }
 
-    Face surface_face(const TopoDS_Face& face) {
+    static Handle(Geom_Surface) required_basis(const TopoDS_Face& face) {
         const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+        require(!surface.IsNull(), "shape", "the face has no surface");
         const Handle(Geom_Surface) basis = exact_basis(surface);
         if (basis.IsNull())
             fail("shape", "a " + type_name(surface) + " face has no exact NURBS form (supported: B-spline, Bezier, plane, "
                           "cylinder, cone, sphere, torus, revolution and extrusion of lines, conics and B-splines)");
-        const NaturalRectangle rectangle = natural_rectangle(face, type_name(basis));
-        NurbsSurface nurbs = exact_surface(basis, rectangle.bounds);
+        return basis;
+    }
+
+    // A surface face, or none when the face is trimmed (not its surface's natural rectangle, or a side that
+    // another surface face already made an edge of with another parameterisation).
+    std::optional<Face> surface_face(const TopoDS_Face& face) {
+        const Handle(Geom_Surface) basis = required_basis(face);
+        const std::optional<NaturalRectangle> rectangle = natural_rectangle(face, basis);
+        if (!rectangle) return std::nullopt;
+        NurbsSurface nurbs = checked_surface(exact_surface(basis, rectangle->bounds), basis, rectangle->bounds);
         // A REVERSED face's outward normal is -(S_u x S_v): run u backwards, which swaps the u sides.
         const bool reversed = face.Orientation() == TopAbs_REVERSED;
         if (reversed) nurbs = reversed_in_u(nurbs);
         const Interval du = nurbs.domain_u(), dv = nurbs.domain_v();
+        // The sides' edges, checked against what other surface faces made of them before anything is made.
+        std::array<NurbsCurve, 4> isocurves{nurbs.isocurve_v(dv.min), nurbs.isocurve_u(du.max), nurbs.isocurve_v(dv.max),
+                                            nurbs.isocurve_u(du.min)};
+        for (int s = 0; s < 4; ++s) {
+            const int occt_side = reversed && !along_u(s) ? (s + 2) % 4 : s;
+            const TopoDS_Edge& e = *rectangle->sides[static_cast<std::size_t>(occt_side)];
+            if (BRep_Tool::Degenerated(e)) continue;
+            const SharedEdge& entry = shared(e);
+            if (entry.edge && !(entry.edge->curve.domain() == isocurves[static_cast<std::size_t>(s)].domain() &&
+                                parameterised_alike(entry.edge->curve, isocurves[static_cast<std::size_t>(s)])))
+                return std::nullopt;
+        }
         std::array<Coedge, 4> sides;
         for (int s = 0; s < 4; ++s) {
             const int occt_side = reversed && !along_u(s) ? (s + 2) % 4 : s;
-            const TopoDS_Edge& e = *rectangle.sides[static_cast<std::size_t>(occt_side)];
-            NurbsCurve isocurve = s == 0 ? nurbs.isocurve_v(dv.min)
-                                : s == 1 ? nurbs.isocurve_u(du.max)
-                                : s == 2 ? nurbs.isocurve_v(dv.max)
-                                         : nurbs.isocurve_u(du.min);
+            const TopoDS_Edge& e = *rectangle->sides[static_cast<std::size_t>(occt_side)];
+            NurbsCurve& isocurve = isocurves[static_cast<std::size_t>(s)];
             bool with_parameter = true;
             EdgePtr edge;
             if (BRep_Tool::Degenerated(e)) {
@@ -383,19 +561,160 @@ private:
             } else if (SharedEdge& entry = shared(e); entry.edge) {
                 // Met before: it runs with this side's parameter or against it (validated by Face::from_surface).
                 edge = entry.edge;
-                const Interval a = edge->curve.domain(), b = isocurve.domain();
-                const auto at = [](const NurbsCurve& c, const Interval& d, double f) { return c.point(d.min + f * d.width()); };
-                const double with = distance(at(edge->curve, a, 0.25), at(isocurve, b, 0.25)) +
-                                    distance(at(edge->curve, a, 0.75), at(isocurve, b, 0.75));
-                const double against = distance(at(edge->curve, a, 0.25), at(isocurve, b, 0.75)) +
-                                       distance(at(edge->curve, a, 0.75), at(isocurve, b, 0.25));
-                with_parameter = with <= against;
+                with_parameter = runs_with(edge->curve, isocurve);
             } else {
                 edge = edge_from_isocurve(e, std::move(isocurve)).edge;
             }
             sides[static_cast<std::size_t>(s)] = Coedge{edge, traversal_increasing(s) != with_parameter};
         }
-        return Face::from_surface(std::move(nurbs), sides);
+        // A file's vertices may sit off the surface's corners by its tolerance (a sewn surface model), more than
+        // a surface face allows: such a face is trimmed, whose p-curves take the file's tolerance.
+        try {
+            return Face::from_surface(std::move(nurbs), sides);
+        } catch (const Error&) {
+            return std::nullopt;
+        }
+    }
+
+    // Whether curve a runs the way b does (by a quarter and three quarters along both).
+    // The point a fraction f along a curve's domain (the ends exactly: an affine step can round past them).
+    static Vec3 at_fraction(const NurbsCurve& c, double f) {
+        const Interval d = c.domain();
+        return c.point(f >= 1 ? d.max : f <= 0 ? d.min : std::clamp(d.min + f * d.width(), d.min, d.max));
+    }
+    static bool runs_with(const NurbsCurve& a, const NurbsCurve& b) {
+        const auto at = [](const NurbsCurve& c, const Interval&, double f) { return at_fraction(c, f); };
+        const Interval da = a.domain(), db = b.domain();
+        const double with = distance(at(a, da, 0.25), at(b, db, 0.25)) + distance(at(a, da, 0.75), at(b, db, 0.75));
+        const double against = distance(at(a, da, 0.25), at(b, db, 0.75)) + distance(at(a, da, 0.75), at(b, db, 0.25));
+        return with <= against;
+    }
+    // Whether two curves over one domain are the same curve with the same parameter (or the reversed one, t ->
+    // a + b - t), at 9 parameters to 1e-9 of the size: what Face::from_surface accepts for a shared side.
+    bool parameterised_alike(const NurbsCurve& a, const NurbsCurve& b) const {
+        const bool with = runs_with(a, b);
+        const double tolerance = 1e-9 * std::max(size_, b.control_box().diagonal());
+        for (int k = 0; k <= 8; ++k)
+            if (distance(at_fraction(a, k / 8.0), at_fraction(b, with ? k / 8.0 : 1 - k / 8.0)) > tolerance) return false;
+        return true;
+    }
+
+    // A trimmed face: the exact NURBS over the box of its p-curves, one loop per wire (the outer wire first),
+    // each coedge with its p-curve in our parameters (pcurve_fit.hpp), the loops closed in (u, v) where the
+    // fits of neighbouring coedges end a rounding apart, a degenerate coedge's p-curve running along the pole
+    // from where the previous p-curve ends to where the next begins. Its tolerance: the file's, or what the
+    // p-curves carry if that is more.
+    Face trimmed_face(const TopoDS_Face& face) {
+        const Handle(Geom_Surface) basis = required_basis(face);
+        const bool spline = basis->IsKind(STANDARD_TYPE(Geom_BSplineSurface)) || basis->IsKind(STANDARD_TYPE(Geom_BezierSurface));
+        std::array<double, 4> r = trimmed_rectangle(face, basis);
+        if (spline) {
+            // A B-spline face keeps its whole surface where the p-curves lie inside it: its parameters stay
+            // OCCT's, so the file's p-curves are exact in ours.
+            double a = 0, b = 0, c = 0, d = 0;
+            basis->Bounds(a, b, c, d);
+            if (!basis->IsUPeriodic() && !basis->IsVPeriodic()) r = {a, b, c, d};
+        }
+        const Handle(Geom_BSplineSurface) occt_nurbs = exact_surface(basis, r);
+        NurbsSurface nurbs = checked_surface(occt_nurbs, basis, r);
+        r = {nurbs.domain_u().min, nurbs.domain_u().max, nurbs.domain_v().min, nurbs.domain_v().max};
+        const bool reversed = face.Orientation() == TopAbs_REVERSED;
+        if (reversed) nurbs = reversed_in_u(nurbs);
+        // OCCT's (u, v) on the face as ours, roughly (the pace of a rational form differs inside its spans).
+        const auto ours = [&](const gp_Pnt2d& p) { return reversed ? gp_Pnt2d(r[0] + r[1] - p.X(), p.Y()) : p; };
+        // Our parameters are OCCT's exactly for a B-spline face (Segment keeps them) not run backwards.
+        const bool same_surface_parameters = spline && !reversed;
+
+        double tolerance = file_tolerance(face);
+        detail::PcurveFitter fitter(nurbs, size_);
+        std::vector<std::vector<Coedge>> loops;
+        const TopoDS_Wire outer = BRepTools::OuterWire(face);
+        std::vector<TopoDS_Wire> wires{outer};
+        for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next())
+            if (!it.Current().IsSame(outer)) wires.push_back(TopoDS::Wire(it.Current()));
+        for (const TopoDS_Wire& wire : wires) {
+            std::vector<Coedge> loop;
+            std::vector<std::optional<gp_Pnt2d>> pole_ends;  // a degenerate coedge's pole value, until its ends are known
+            for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
+                const TopoDS_Edge& e = it.Current();
+                double first = 0, last = 0;
+                const Handle(Geom2d_Curve) occt_pcurve = BRep_Tool::CurveOnSurface(e, face, first, last);
+                require(!occt_pcurve.IsNull(), "shape", "an edge has no curve on the face's surface");
+                if (BRep_Tool::Degenerated(e)) {
+                    // Its p-curve is made once its neighbours' ends are known (below).
+                    const VertexPtr pole = vertex(ends(e).first);
+                    const NurbsCurve point_curve(1, {0, 0, 1, 1}, {pole->point, pole->point});
+                    loop.push_back(Coedge{std::make_shared<const Edge>(Edge{point_curve, pole, pole, true}), false, nullptr});
+                    continue;
+                }
+                SharedEdge& entry = edge_from_curve(e);
+                const bool coedge_reversed = (e.Orientation() == TopAbs_REVERSED) != entry.flipped;
+                const NurbsCurve& curve = entry.edge->curve;
+                const Interval domain = curve.domain();
+                // OCCT's pcurve follows the OCCT edge's parameter [first, last]; ours runs over `domain`, the
+                // other way when flipped: the guess maps linearly, projection does the rest.
+                const auto guess = [&, first, last, flipped = entry.flipped](double t) {
+                    double f = (t - domain.min) / domain.width();
+                    if (flipped) f = 1 - f;
+                    return ours(occt_pcurve->Value(first + f * (last - first)));
+                };
+                std::optional<NurbsCurve> exact;
+                if (same_surface_parameters && entry.same_parameter && !entry.flipped) {
+                    try {
+                        exact = from_occt_2d(Geom2dConvert::CurveToBSplineCurve(new Geom2d_TrimmedCurve(occt_pcurve, first, last)));
+                    } catch (const Standard_Failure&) {
+                    }
+                }
+                detail::FittedPcurve fitted = fitter.fit(curve, guess, exact ? &*exact : nullptr, tolerance);
+                tolerance = std::max(tolerance, fitted.deviation);
+                loop.push_back(Coedge{entry.edge, coedge_reversed, std::make_shared<const NurbsCurve>(std::move(fitted.curve))});
+            }
+            require(!loop.empty(), "shape", "a wire of the face has no edges");
+            close_loop(loop, nurbs);
+            loops.push_back(std::move(loop));
+        }
+        // A little room above what was measured: the validation samples other parameters than the fit checked.
+        return Face::trimmed(std::move(nurbs), std::move(loops), 1.5 * tolerance);
+    }
+
+    // Makes the p-curves of a loop meet end to start in (u, v): where two fits end a rounding apart, both ends
+    // move to their middle (the end control point of a clamped curve is its end point, so only the curve's
+    // last stretch moves, by that rounding); a degenerate coedge gets the straight p-curve along its pole
+    // from where the previous p-curve ends to where the next begins.
+    static void close_loop(std::vector<Coedge>& loop, const NurbsSurface& surface) {
+        const std::size_t n = loop.size();
+        const auto end_of = [](const Coedge& c) { return c.reversed ? c.pcurve->start_point() : c.pcurve->end_point(); };
+        const auto start_of = [](const Coedge& c) { return c.reversed ? c.pcurve->end_point() : c.pcurve->start_point(); };
+        const auto moved_end = [](const NurbsCurve& curve, bool at_start, const Vec3& to) {
+            std::vector<Vec4> points = curve.homogeneous_points();
+            Vec4& p = at_start ? points.front() : points.back();
+            p = Vec4{to.x * p.w, to.y * p.w, 0, p.w};
+            return std::make_shared<const NurbsCurve>(
+                NurbsCurve::from_homogeneous(curve.degree(), curve.knots(), std::move(points), curve.is_rational()));
+        };
+        for (std::size_t k = 0; k < n; ++k) {
+            Coedge& here = loop[k];
+            Coedge& next = loop[(k + 1) % n];
+            if (!here.pcurve || !next.pcurve) continue;
+            const Vec3 middle = (end_of(here) + start_of(next)) * 0.5;
+            if (&here == &next) {
+                here.pcurve = moved_end(*moved_end(*here.pcurve, here.reversed, middle), !here.reversed, middle);
+                continue;
+            }
+            here.pcurve = moved_end(*here.pcurve, here.reversed, middle);
+            next.pcurve = moved_end(*next.pcurve, !next.reversed, middle);
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+            Coedge& pole = loop[k];
+            if (pole.pcurve) continue;
+            const Coedge& previous = loop[(k + n - 1) % n];
+            const Coedge& next = loop[(k + 1) % n];
+            require(previous.pcurve && next.pcurve, "shape", "two degenerate edges follow each other in a loop");
+            const Vec3 from = end_of(previous), to = start_of(next);
+            const Interval d = pole.edge->curve.domain();
+            pole.pcurve = std::make_shared<const NurbsCurve>(NurbsCurve(1, {d.min, d.min, d.max, d.max}, {from, to}));
+        }
+        (void)surface;
     }
 
     Face planar_face(const TopoDS_Face& face) {
@@ -419,24 +738,92 @@ private:
                 loop.push_back(Coedge{entry.edge, (e.Orientation() == TopAbs_REVERSED) != entry.flipped});
             }
         }
-        return Face::planar(plane, std::move(loops));
+        return Face::planar(plane, std::move(loops), file_tolerance(face));
     }
 
     TopoDS_Shape solid_;
     TopTools_IndexedMapOfShape vertex_index_, edge_index_;
     std::vector<VertexPtr> vertices_;
     std::vector<SharedEdge> edges_;
+    double size_ = 1;
 };
+
+// The solids a surface model bounds: its faces sewn along the edges they share to within 1e-6 of the model's
+// size (BRepBuilderAPI_Sewing, what FreeCAD's "Shape from mesh"/"Convert to solid" and CAD translators do),
+// each closed shell made a solid and oriented outward (ShapeFix_Solid). Exporters write pin headers and SMD
+// packages as shells of faces with no solid entity (SHELL_BASED_SURFACE_MODEL in STEP); the faces are exact.
+std::vector<TopoDS_Shape> sewn_solids(const TopoDS_Shape& shape) {
+    std::vector<TopoDS_Shape> solids;
+    if (!TopExp_Explorer(shape, TopAbs_FACE).More()) return solids;
+    Bnd_Box box;
+    BRepBndLib::Add(shape, box);
+    if (box.IsVoid()) return solids;
+    try {
+        BRepBuilderAPI_Sewing sewing(std::max(1e-6 * std::sqrt(box.SquareExtent()), Precision::Confusion()));
+        sewing.Add(shape);
+        sewing.Perform();
+        for (TopExp_Explorer it(sewing.SewedShape(), TopAbs_SHELL); it.More(); it.Next()) {
+            const TopoDS_Shell shell = TopoDS::Shell(it.Current());
+            if (!BRep_Tool::IsClosed(shell)) continue;
+            ShapeFix_Solid fix;
+            const TopoDS_Solid solid = fix.SolidFromShell(shell);
+            if (!solid.IsNull()) solids.push_back(solid);
+        }
+    } catch (const Standard_Failure&) {
+        solids.clear();
+    }
+    return solids;
+}
+
+// The solids of a shape in the order TopExp_Explorer meets them; a shape of faces without solids is sewn.
+std::vector<TopoDS_Shape> solids_of(const TopoDS_Shape& shape) {
+    std::vector<TopoDS_Shape> solids;
+    for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) solids.push_back(it.Current());
+    if (solids.empty()) solids = sewn_solids(shape);
+    return solids;
+}
+
+// What a shape without solids holds instead, for the message: "75 open shells (a surface model)".
+std::string what_instead(const TopoDS_Shape& shape) {
+    int shells = 0, faces = 0;
+    for (TopExp_Explorer it(shape, TopAbs_SHELL); it.More(); it.Next()) ++shells;
+    for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) ++faces;
+    if (shells > 0)
+        return "; it holds " + std::to_string(shells) + " shell(s) of " + std::to_string(faces) +
+               " faces, a surface model that does not sew into closed shells";
+    if (faces > 0) return "; it holds " + std::to_string(faces) + " loose faces";
+    return "";
+}
 
 }  // namespace
 
 Solid from_occt(const TopoDS_Shape& shape, const Progress& progress) {
     require(!shape.IsNull(), "shape", "is empty");
-    std::vector<TopoDS_Shape> solids;
-    for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) solids.push_back(it.Current());
+    const std::vector<TopoDS_Shape> solids = solids_of(shape);
+    require(!solids.empty(), "shape", "holds no solid" + what_instead(shape));
     require(solids.size() == 1, "shape",
-            "holds " + std::to_string(solids.size()) + " solids; a ratbez Solid is made from exactly one");
+            "holds " + std::to_string(solids.size()) + " solids; a ratbez Solid is made from exactly one (read them all with read_step_all / read_brep_all)");
     return Importer(solids.front()).run(progress);
+}
+
+std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress) {
+    require(!shape.IsNull(), "shape", "is empty");
+    const std::vector<TopoDS_Shape> solids = solids_of(shape);
+    require(!solids.empty(), "shape", "holds no solid" + what_instead(shape));
+    std::vector<Solid> out;
+    out.reserve(solids.size());
+    for (std::size_t k = 0; k < solids.size(); ++k) {
+        const Progress part = [&](double fraction) {
+            if (progress) progress((static_cast<double>(k) + fraction) / static_cast<double>(solids.size()));
+        };
+        try {
+            out.push_back(Importer(solids[k]).run(part));
+        } catch (const Error& e) {
+            if (solids.size() == 1) throw;
+            throw Error("shape", "solid " + std::to_string(k) + ": " + std::string(e.reason()));
+        }
+    }
+    return out;
 }
 
 }  // namespace ratbez::occt

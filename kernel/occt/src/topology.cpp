@@ -96,18 +96,27 @@ public:
         // tolerance of 1e-12 of the size flagged as BRepCheck_InvalidCurveOnSurface). 1e-10 leaves a
         // margin and is still far below OCCT's default confusion tolerance unless the solid is huge.
         out_.tolerance = std::max(Precision::Confusion(), 1e-10 * box.diagonal());
+        for (const Face& face : solid.faces()) out_.tolerance = std::max(out_.tolerance, face.tolerance());
     }
 
     ConvertedSolid run() {
-        builder_.MakeShell(out_.shell);
         const auto& faces = solid_.faces();
+        shell_of_face_.assign(faces.size(), 0);
+        out_.shells.resize(solid_.shells().size());
+        for (std::size_t k = 0; k < solid_.shells().size(); ++k) {
+            builder_.MakeShell(out_.shells[k]);
+            for (std::size_t f : solid_.shells()[k]) shell_of_face_[f] = k;
+        }
         if (options_.bezier_faces) plan_patches();
         for (std::size_t i = 0; i < faces.size(); ++i) {
             out_.first_face.push_back(out_.faces.size());
+            current_shell_ = shell_of_face_[i];
             try {
                 const Interval du = faces[i].surface().domain_u(), dv = faces[i].surface().domain_v();
                 if (faces[i].kind() == Face::Kind::planar) {
                     add(planar_face(faces[i]), {du.min, du.max, dv.min, dv.max});
+                } else if (faces[i].kind() == Face::Kind::trimmed) {
+                    add(trimmed_face(faces[i]), {du.min, du.max, dv.min, dv.max});
                 } else if (options_.bezier_faces) {
                     patch_faces(faces[i], grids_.at(i));
                 } else {
@@ -124,16 +133,19 @@ public:
             builder_.SameRange(occt_edge, Standard_True);
             builder_.SameParameter(occt_edge, Standard_True);
         }
-        out_.shell.Closed(Standard_True);
         builder_.MakeSolid(out_.solid);
-        builder_.Add(out_.solid, out_.shell);
+        for (TopoDS_Shell& shell : out_.shells) {
+            shell.Closed(Standard_True);
+            builder_.Add(out_.solid, shell);
+        }
+        out_.shell = out_.shells.front();
         return std::move(out_);
     }
 
 private:
     // `domain`: our parameter rectangle the face covers (u0, u1, v0, v1).
     void add(const TopoDS_Face& face, const std::array<double, 4>& domain) {
-        builder_.Add(out_.shell, face);
+        builder_.Add(out_.shells[current_shell_], face);
         out_.faces.push_back(face);
         out_.face_domains.push_back(domain);
     }
@@ -445,6 +457,47 @@ private:
         return made;
     }
 
+    // A trimmed face: its surface and one wire per loop, each coedge with its own p-curve (cut where the edge
+    // is cut, as planar faces do), a degenerate coedge as a Degenerated edge of its own.
+    TopoDS_Face trimmed_face(const Face& face) {
+        TopoDS_Face made;
+        builder_.MakeFace(made, to_occt(face.surface()), out_.tolerance);
+        const std::size_t degenerate_before = degenerate_ranges_.size();
+        std::vector<std::vector<Use>> loops;
+        std::vector<Use> all;
+        for (const auto& loop : face.loops()) {
+            auto& uses = loops.emplace_back();
+            for (const Coedge& coedge : loop) {
+                const TopAbs_Orientation orientation = coedge.reversed ? TopAbs_REVERSED : TopAbs_FORWARD;
+                const Handle(Geom2d_BSplineCurve) whole = to_occt_2d(*coedge.pcurve, Vec3{}, Vec3{1, 0, 0}, Vec3{0, 1, 0});
+                std::vector<Use> piece_uses;
+                if (coedge.edge->degenerate) {
+                    piece_uses.push_back(Use{degenerate_edge(*coedge.edge), orientation, Handle(Geom2d_Curve)(whole)});
+                    degenerate_ranges_.emplace_back(piece_uses.back().edge, coedge.pcurve->domain());
+                } else {
+                    const std::vector<TopoDS_Edge>& edge_pieces = pieces(coedge.edge);
+                    const std::vector<double>& cuts = cut_parameters_.at(coedge.edge.get());
+                    for (std::size_t k = 0; k < edge_pieces.size(); ++k) {
+                        Handle(Geom2d_BSplineCurve) pcurve = whole;
+                        if (edge_pieces.size() > 1) {
+                            pcurve = Handle(Geom2d_BSplineCurve)::DownCast(whole->Copy());
+                            pcurve->Segment(cuts[k], cuts[k + 1]);
+                        }
+                        piece_uses.push_back(Use{edge_pieces[k], orientation, pcurve});
+                    }
+                    if (coedge.reversed) std::reverse(piece_uses.begin(), piece_uses.end());
+                }
+                uses.insert(uses.end(), piece_uses.begin(), piece_uses.end());
+                all.insert(all.end(), piece_uses.begin(), piece_uses.end());
+            }
+        }
+        attach_pcurves(made, all);
+        for (std::size_t k = degenerate_before; k < degenerate_ranges_.size(); ++k)
+            builder_.Range(degenerate_ranges_[k].first, degenerate_ranges_[k].second.min, degenerate_ranges_[k].second.max);
+        for (const auto& uses : loops) builder_.Add(made, wire(uses));
+        return made;
+    }
+
     TopoDS_Face planar_face(const Face& face) {
         const Plane& plane = face.plane();
         // gp_Ax3(P, N, Vx): main direction N, X direction Vx, Y = N ^ Vx = y_axis for our right-handed frame,
@@ -490,6 +543,8 @@ private:
     std::map<const Edge*, std::set<double>> cuts_;                     // bezier_faces: interior cuts per edge
     std::map<const Edge*, std::vector<double>> cut_parameters_;        // the pieces' ends, domain ends included
     std::map<const Edge*, std::vector<TopoDS_Vertex>> cut_vertices_;   // a vertex per entry of cut_parameters_
+    std::vector<std::size_t> shell_of_face_;                           // Solid::shells, by face index
+    std::size_t current_shell_ = 0;                                    // the shell the face being built goes to
 };
 
 }  // namespace

@@ -180,16 +180,29 @@ class Error(ValueError):
     reason: Optional[str]
 
 class Face(object):
-    """A face of a Solid: an untrimmed NURBS surface, or a plane patch trimmed by loops."""
+    """A face of a Solid: an untrimmed NURBS surface, a plane patch trimmed by loops, or any NURBS
+    surface trimmed by loops whose edges carry p-curves in its (u, v)."""
     @property
     def kind(self) -> str:
-        """'surface' (an untrimmed NURBS surface) or 'planar' (a plane patch trimmed by loops)."""
+        """'surface' (an untrimmed NURBS surface), 'planar' (a plane patch trimmed by loops) or
+        'trimmed' (a NURBS surface trimmed by loops of edges with p-curves)."""
     @property
     def surface(self) -> NurbsSurface:
-        """The face's NurbsSurface; for a planar face the plane patch its loops trim."""
+        """The face's NurbsSurface; for a planar face the plane patch its loops trim; for a trimmed
+        face the surface its loops trim."""
+    @property
+    def pcurves(self) -> list:
+        """The loops in the face's (u, v): for each curve of `loops`, the 2D NurbsCurve (z = 0) of the same
+        boundary piece in the same direction (a trimmed face's p-curves; a planar face's loops in the
+        plane's coordinates, which are its surface's parameters); [] for a surface face."""
+    @property
+    def tolerance(self) -> float:
+        """How far the face's boundary may keep from its surface: 0 for exact constructions, the
+        file's tolerance (or a fitted p-curve's error) for imported faces."""
     @property
     def loops(self) -> list:
-        """Boundary loops of a planar face, each a list of NurbsCurve in loop order; [] for a surface face."""
+        """Boundary loops of a planar or trimmed face (the outer loop first, then holes), each a list of the
+        3D NurbsCurve of its edges in loop order (a pole as a curve of one point); [] for a surface face."""
     def point(self, u: float, v: float) -> tuple:
         """The surface point S(u, v) as (x, y, z)."""
     def normal(self, u: float, v: float) -> tuple:
@@ -449,10 +462,17 @@ class NurbsSurface(object):
         ...
 
 class Solid(object):
-    """A closed shell of exact NURBS faces."""
+    """A solid bounded by closed shells of exact NURBS faces (an outer shell and any voids)."""
     @property
     def faces(self) -> List[Face]:
-        """The faces of the closed shell (list of Face)."""
+        """The faces of its shells (list of Face)."""
+    @property
+    def shells(self) -> List[List[int]]:
+        """The indices into `faces` of each shell: the outer shell first, then the voids (whose normals point
+        into the void, out of the material)."""
+    @property
+    def name(self) -> str:
+        """What the file it was read from calls it (a STEP product's name), or ''; free to set."""
     @property
     def kind(self) -> str:
         """What the solid was built as: 'cylinder', 'cone', 'sphere', 'torus', 'revolution', 'extrusion', or 'none' (assembled from faces)."""
@@ -660,22 +680,53 @@ def power_to_bezier(coefficients: Sequence[Point]) -> list:
 def read_brep(path: Path, progress: Optional[Callable[[float], object]] = ...) -> Solid:
     """The one solid of an OpenCASCADE .brep file as an exact Solid; read_brep of write_brep's output is the
     same solid (volume and points to 1e-12).
-    Faces convert exactly: B-spline and Bezier faces bounded by their parameter rectangle, planes with any
-    loops of edges, and cylinder, cone, sphere, torus, revolution and extrusion faces through their exact
-    rational forms; edges and vertices stay shared. Raises ratbez.Error naming path for a missing or
-    unreadable file, a file of another format, a file with no solid or several, and a face that does not
-    convert ("face 7: a trimmed Geom_BSplineSurface face is not supported ...").
+    Surfaces convert exactly: planes, B-spline and Bezier surfaces, and cylinders, cones, spheres, tori,
+    revolutions and extrusions through their exact rational forms, trimmed by any loops (holes, seams,
+    poles); edges and vertices stay shared, voids stay voids. Rounding in the file (a full turn one ulp
+    over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own
+    tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of
+    another format, a file with no solid, and a face that does not convert ("face 7: a
+    Geom_OffsetSurface face has no exact NURBS form ...").
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
+
+def read_brep_all(path: Path, progress: Optional[Callable[[float], object]] = ...) -> List[Solid]:
+    """Every solid of an OpenCASCADE .brep file, in the order its shape holds them.
+    Surfaces convert exactly: planes, B-spline and Bezier surfaces, and cylinders, cones, spheres, tori,
+    revolutions and extrusions through their exact rational forms, trimmed by any loops (holes, seams,
+    poles); edges and vertices stay shared, voids stay voids. Rounding in the file (a full turn one ulp
+    over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own
+    tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of
+    another format, a file with no solid, and a face that does not convert ("face 7: a
+    Geom_OffsetSurface face has no exact NURBS form ...").
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""
 
 def read_step(path: Path, progress: Optional[Callable[[float], object]] = ...) -> Solid:
     """The one solid of a STEP file (AP203 / AP214, read in millimetres) as an exact Solid.
-    Faces convert exactly: B-spline and Bezier faces bounded by their parameter rectangle, planes with any
-    loops of edges, and cylinder, cone, sphere, torus, revolution and extrusion faces through their exact
-    rational forms; edges and vertices stay shared. Raises ratbez.Error naming path for a missing or
-    unreadable file, a file of another format, a file with no solid or several, and a face that does not
-    convert ("face 7: a trimmed Geom_BSplineSurface face is not supported ...").
+    Surfaces convert exactly: planes, B-spline and Bezier surfaces, and cylinders, cones, spheres, tori,
+    revolutions and extrusions through their exact rational forms, trimmed by any loops (holes, seams,
+    poles); edges and vertices stay shared, voids stay voids. Rounding in the file (a full turn one ulp
+    over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own
+    tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of
+    another format, a file with no solid, and a face that does not convert ("face 7: a
+    Geom_OffsetSurface face has no exact NURBS form ...").
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
+
+def read_step_all(path: Path, progress: Optional[Callable[[float], object]] = ...) -> List[Solid]:
+    """Every solid of a STEP file, in file order, as a list of exact Solids: assemblies flattened with each
+    instance's placement, each solid named after its product (Solid.name).
+    Surfaces convert exactly: planes, B-spline and Bezier surfaces, and cylinders, cones, spheres, tori,
+    revolutions and extrusions through their exact rational forms, trimmed by any loops (holes, seams,
+    poles); edges and vertices stay shared, voids stay voids. Rounding in the file (a full turn one ulp
+    over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own
+    tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of
+    another format, a file with no solid, and a face that does not convert ("face 7: a
+    Geom_OffsetSurface face has no exact NURBS form ...").
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""

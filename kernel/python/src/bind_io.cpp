@@ -92,15 +92,17 @@ namespace {
 
 #if RATBEZ_PYTHON_WITH_OCCT
 const char* const read_doc =
-    "Faces convert exactly: B-spline and Bezier faces bounded by their parameter rectangle, planes with any\n"
-    "loops of edges, and cylinder, cone, sphere, torus, revolution and extrusion faces through their exact\n"
-    "rational forms; edges and vertices stay shared. Raises ratbez.Error naming path for a missing or\n"
-    "unreadable file, a file of another format, a file with no solid or several, and a face that does not\n"
-    "convert (\"face 7: a trimmed Geom_BSplineSurface face is not supported ...\").\n";
+    "Surfaces convert exactly: planes, B-spline and Bezier surfaces, and cylinders, cones, spheres, tori,\n"
+    "revolutions and extrusions through their exact rational forms, trimmed by any loops (holes, seams,\n"
+    "poles); edges and vertices stay shared, voids stay voids. Rounding in the file (a full turn one ulp\n"
+    "over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own\n"
+    "tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of\n"
+    "another format, a file with no solid, and a face that does not convert (\"face 7: a\n"
+    "Geom_OffsetSurface face has no exact NURBS form ...\").\n";
 
 // A file reader called with the GIL released: the path and the progress callback checked first.
 template <class Read>
-Solid read_released(const py::object& path, const py::object& progress, Read read) {
+auto read_released(const py::object& path, const py::object& progress, Read read) {
     const std::string file = to_path(path, "path");
     const Progress polled = python_progress(progress);
     py::gil_scoped_release release;
@@ -310,6 +312,21 @@ void bind_io(py::module_& m) {
         ("The one solid of an OpenCASCADE .brep file as an exact Solid; read_brep of write_brep's output is the\n"
          "same solid (volume and points to 1e-12).\n" +
          std::string(read_doc) + progress_doc)
+            .c_str());
+    m.def(
+        "read_step_all",
+        [](const py::object& path, const py::object& progress) { return read_released(path, progress, occt::read_step_all); },
+        py::arg("path"), py::arg("progress") = py::none(),
+        ("Every solid of a STEP file, in file order, as a list of exact Solids: assemblies flattened with each\n"
+         "instance's placement, each solid named after its product (Solid.name).\n" +
+         std::string(read_doc) + progress_doc)
+            .c_str());
+    m.def(
+        "read_brep_all",
+        [](const py::object& path, const py::object& progress) { return read_released(path, progress, occt::read_brep_all); },
+        py::arg("path"), py::arg("progress") = py::none(),
+        ("Every solid of an OpenCASCADE .brep file, in the order its shape holds them.\n" + std::string(read_doc) +
+         progress_doc)
             .c_str());
     m.def(
         "brep_string",

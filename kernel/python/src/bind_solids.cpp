@@ -119,6 +119,29 @@ NurbsCurve coedge_curve(const Coedge& coedge) {
     return coedge.reversed ? coedge.edge->curve.reversed() : coedge.edge->curve;
 }
 
+// The coedge in its face's (u, v), in the direction the loop runs it: a trimmed face's own p-curve; for a
+// planar face the edge in the plane's coordinates, which are its patch's parameters (brep.hpp).
+NurbsCurve coedge_pcurve(const Face& face, const Coedge& coedge) {
+    if (coedge.pcurve) return coedge.reversed ? coedge.pcurve->reversed() : *coedge.pcurve;
+    const Plane& plane = face.plane();
+    const NurbsCurve& curve = coedge.edge->curve;
+    std::vector<Vec4> points = curve.homogeneous_points();
+    for (Vec4& p : points) {
+        const Vec3 d = project(p) - plane.origin;
+        p = Vec4{dot(d, plane.x_axis) * p.w, dot(d, plane.y_axis) * p.w, 0, p.w};
+    }
+    NurbsCurve flat = NurbsCurve::from_homogeneous(curve.degree(), curve.knots(), std::move(points), curve.is_rational());
+    return coedge.reversed ? flat.reversed() : flat;
+}
+
+const char* kind_name(const Face& face) {
+    switch (face.kind()) {
+        case Face::Kind::planar: return "planar";
+        case Face::Kind::trimmed: return "trimmed";
+        default: return "surface";
+    }
+}
+
 // A measurement of a solid (properties.hpp) from Python: the GIL released, Ctrl-C and `progress` polled.
 template <double (*Measure)(const Solid&, const Progress&)>
 double measured(const Solid& solid, const py::object& progress) {
@@ -174,11 +197,32 @@ void bind_solids(py::module_& m) {
                    " triangles=" + std::to_string(mesh.triangles.size()) + ">";
         });
 
-    py::class_<Face>(m, "Face", "A face of a Solid: an untrimmed NURBS surface, or a plane patch trimmed by loops.")
+    py::class_<Face>(m, "Face",
+                     "A face of a Solid: an untrimmed NURBS surface, a plane patch trimmed by loops, or any NURBS\n"
+                     "surface trimmed by loops whose edges carry p-curves in its (u, v).")
+        .def_property_readonly("kind", &kind_name,
+                               "'surface' (an untrimmed NURBS surface), 'planar' (a plane patch trimmed by loops) or\n"
+                               "'trimmed' (a NURBS surface trimmed by loops of edges with p-curves).")
+        .def_property_readonly("surface", &Face::surface,
+                               "The face's NurbsSurface; for a planar face the plane patch its loops trim; for a trimmed\n"
+                               "face the surface its loops trim.")
         .def_property_readonly(
-            "kind", [](const Face& f) { return f.kind() == Face::Kind::planar ? "planar" : "surface"; },
-            "'surface' (an untrimmed NURBS surface) or 'planar' (a plane patch trimmed by loops).")
-        .def_property_readonly("surface", &Face::surface, "The face's NurbsSurface; for a planar face the plane patch its loops trim.")
+            "pcurves",
+            [](const Face& f) {
+                py::list loops;
+                for (const auto& loop : f.loops()) {
+                    py::list curves;
+                    for (const auto& coedge : loop) curves.append(coedge_pcurve(f, coedge));
+                    loops.append(curves);
+                }
+                return loops;
+            },
+            "The loops in the face's (u, v): for each curve of `loops`, the 2D NurbsCurve (z = 0) of the same\n"
+            "boundary piece in the same direction (a trimmed face's p-curves; a planar face's loops in the\n"
+            "plane's coordinates, which are its surface's parameters); [] for a surface face.")
+        .def_property_readonly("tolerance", &Face::tolerance,
+                               "How far the face's boundary may keep from its surface: 0 for exact constructions, the\n"
+                               "file's tolerance (or a fitted p-curve's error) for imported faces.")
         .def_property_readonly(
             "loops",
             [](const Face& f) {
@@ -190,17 +234,23 @@ void bind_solids(py::module_& m) {
                 }
                 return loops;
             },
-            "Boundary loops of a planar face, each a list of NurbsCurve in loop order; [] for a surface face.")
+            "Boundary loops of a planar or trimmed face (the outer loop first, then holes), each a list of the\n"
+            "3D NurbsCurve of its edges in loop order (a pole as a curve of one point); [] for a surface face.")
         .def("point", [](const Face& f, double u, double v) { return to_tuple(f.point(u, v)); }, py::arg("u"), py::arg("v"),
              "The surface point S(u, v) as (x, y, z).")
         .def("normal", [](const Face& f, double u, double v) { return to_tuple(f.normal(u, v)); }, py::arg("u"),
              py::arg("v"), "The outward unit normal.")
-        .def("__repr__", [](const Face& f) {
-            return std::string("<ratbez.Face ") + (f.kind() == Face::Kind::planar ? "planar" : "surface") + ">";
-        });
+        .def("__repr__", [](const Face& f) { return std::string("<ratbez.Face ") + kind_name(f) + ">"; });
 
-    py::class_<Solid>(m, "Solid", "A closed shell of exact NURBS faces.")
-        .def_property_readonly("faces", &Solid::faces, "The faces of the closed shell (list of Face).")
+    py::class_<Solid>(m, "Solid", "A solid bounded by closed shells of exact NURBS faces (an outer shell and any voids).")
+        .def_property_readonly("faces", &Solid::faces, "The faces of its shells (list of Face).")
+        .def_property_readonly(
+            "shells", [](const Solid& s) { return s.shells(); },
+            "The indices into `faces` of each shell: the outer shell first, then the voids (whose normals point\n"
+            "into the void, out of the material).")
+        .def_property(
+            "name", [](const Solid& s) { return s.name(); }, [](Solid& s, std::string name) { s.set_name(std::move(name)); },
+            "What the file it was read from calls it (a STEP product's name), or ''; free to set.")
         .def_property_readonly(
             "kind", [](const Solid& s) { return std::string(s.construction().kind()); },
             "What the solid was built as: 'cylinder', 'cone', 'sphere', 'torus', 'revolution', 'extrusion', "
@@ -234,7 +284,10 @@ void bind_solids(py::module_& m) {
             "it is larger than the tight box where control points lie off the surface (the corner points of a\n"
             "circle's quarter arcs); cheap, no evaluation. For a tight box, tessellate and take the mesh's\n"
             "vertices' extremes (within the tolerance).")
-        .def("__repr__", [](const Solid& s) { return "<ratbez.Solid faces=" + std::to_string(s.faces().size()) + ">"; });
+        .def("__repr__", [](const Solid& s) {
+            return "<ratbez.Solid " + (s.name().empty() ? std::string() : "'" + s.name() + "' ") +
+                   "faces=" + std::to_string(s.faces().size()) + ">";
+        });
 
     m.def("default_tolerance", &default_tolerance, py::arg("solid"),
           "The tessellation tolerance used when none is given: 1e-3 of the bounding-box diagonal.");

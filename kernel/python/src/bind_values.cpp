@@ -52,10 +52,13 @@ std::vector<Vec4> homogeneous_from(py::handle value, const std::string& argument
 
 py::tuple vec_tuple(const Vec3& v) { return py::make_tuple(v.x, v.y, v.z); }
 
-// The items of a state tuple, `count` of them.
-std::vector<py::object> state_items(py::handle state, std::size_t count, const std::string& argument) {
-    if (!py::isinstance<py::tuple>(state) || py::len(state) != count)
-        throw Error(argument, "expected a tuple of " + std::to_string(count) + " items");
+// The items of a state tuple, `count` of them (or, with `most` > count, count to most of them: a state that
+// grew fields keeps reading the pickles written before).
+std::vector<py::object> state_items(py::handle state, std::size_t count, const std::string& argument, std::size_t most = 0) {
+    most = std::max(most, count);
+    if (!py::isinstance<py::tuple>(state) || py::len(state) < count || py::len(state) > most)
+        throw Error(argument, most == count ? "expected a tuple of " + std::to_string(count) + " items"
+                                            : "expected a tuple of " + std::to_string(count) + " to " + std::to_string(most) + " items");
     std::vector<py::object> items;
     for (py::handle item : state) items.push_back(py::reinterpret_borrow<py::object>(item));
     return items;
@@ -109,7 +112,20 @@ NurbsSurface nurbs_surface_from(py::handle state, const std::string& at) {
 
 // ---- B-rep tables and construction records ------------------------------------------------------------
 
-py::tuple coedge_state(const BrepTables::CoedgeRecord& c) { return py::make_tuple(c.edge, c.reversed); }
+py::tuple coedge_state(const BrepTables::CoedgeRecord& c) {
+    if (c.pcurve) return py::make_tuple(c.edge, c.reversed, state_of(*c.pcurve));
+    return py::make_tuple(c.edge, c.reversed);
+}
+
+py::tuple loops_state(const std::vector<std::vector<BrepTables::CoedgeRecord>>& loops) {
+    py::list out;
+    for (const auto& loop : loops) {
+        py::list coedges;
+        for (const auto& c : loop) coedges.append(coedge_state(c));
+        out.append(py::tuple(coedges));
+    }
+    return py::tuple(out);
+}
 
 py::tuple tables_state(const BrepTables& t) {
     py::list vertices, edges, faces;
@@ -120,25 +136,33 @@ py::tuple tables_state(const BrepTables& t) {
             py::list sides;
             for (const auto& c : f.sides) sides.append(coedge_state(c));
             faces.append(py::make_tuple("surface", state_of(*f.surface), py::tuple(sides)));
+        } else if (f.kind == Face::Kind::trimmed) {
+            faces.append(py::make_tuple("trimmed", state_of(*f.surface), loops_state(f.loops), f.tolerance));
         } else {
-            py::list loops;
-            for (const auto& loop : f.loops) {
-                py::list coedges;
-                for (const auto& c : loop) coedges.append(coedge_state(c));
-                loops.append(py::tuple(coedges));
-            }
             const Plane& p = f.plane;
             faces.append(py::make_tuple(
                 "planar", py::make_tuple(vec_tuple(p.origin), vec_tuple(p.x_axis), vec_tuple(p.y_axis), vec_tuple(p.normal)),
-                py::tuple(loops)));
+                loops_state(f.loops), f.tolerance));
         }
     }
     return py::make_tuple(py::tuple(vertices), py::tuple(edges), py::tuple(faces));
 }
 
 BrepTables::CoedgeRecord coedge_from(py::handle state, const std::string& at) {
-    const auto items = state_items(state, 2, at);
-    return {to_index(items[0], at + ".edge"), to_bool(items[1], at + ".reversed")};
+    const auto items = state_items(state, 2, at, 3);
+    BrepTables::CoedgeRecord c{to_index(items[0], at + ".edge"), to_bool(items[1], at + ".reversed"), std::nullopt};
+    if (items.size() == 3) c.pcurve = nurbs_curve_from(items[2], at + ".pcurve");
+    return c;
+}
+
+std::vector<std::vector<BrepTables::CoedgeRecord>> loops_from(py::handle state, const std::string& at) {
+    std::vector<std::vector<BrepTables::CoedgeRecord>> loops;
+    for (py::handle loop : state) {
+        std::vector<BrepTables::CoedgeRecord> coedges;
+        for (py::handle c : loop) coedges.push_back(coedge_from(c, at));
+        loops.push_back(std::move(coedges));
+    }
+    return loops;
 }
 
 BrepTables tables_from(py::handle state, const std::string& at) {
@@ -155,9 +179,10 @@ BrepTables tables_from(py::handle state, const std::string& at) {
     k = 0;
     for (py::handle f : items[2]) {
         const std::string where = at + ".faces[" + std::to_string(k++) + "]";
-        const auto face = state_items(f, 3, where);
+        const auto face = state_items(f, 3, where, 4);
         BrepTables::FaceRecord record;
         const std::string kind = py::isinstance<py::str>(face[0]) ? face[0].cast<std::string>() : "";
+        const auto tolerance = [&] { return face.size() == 4 ? to_double(face[3], where + ".tolerance") : 0.0; };
         if (kind == "surface") {
             record.surface = nurbs_surface_from(face[1], where + ".surface");
             const auto sides = state_items(face[2], 4, where + ".sides");
@@ -167,13 +192,15 @@ BrepTables tables_from(py::handle state, const std::string& at) {
             const auto plane = state_items(face[1], 4, where + ".plane");
             record.plane = {to_vec3(plane[0], where + ".plane"), to_vec3(plane[1], where + ".plane"),
                             to_vec3(plane[2], where + ".plane"), to_vec3(plane[3], where + ".plane")};
-            for (py::handle loop : face[2]) {
-                std::vector<BrepTables::CoedgeRecord> coedges;
-                for (py::handle c : loop) coedges.push_back(coedge_from(c, where + ".loops"));
-                record.loops.push_back(std::move(coedges));
-            }
+            record.loops = loops_from(face[2], where + ".loops");
+            record.tolerance = tolerance();
+        } else if (kind == "trimmed") {
+            record.kind = Face::Kind::trimmed;
+            record.surface = nurbs_surface_from(face[1], where + ".surface");
+            record.loops = loops_from(face[2], where + ".loops");
+            record.tolerance = tolerance();
         } else {
-            throw Error(where, "expected the kind 'surface' or 'planar'");
+            throw Error(where, "expected the kind 'surface', 'planar' or 'trimmed'");
         }
         t.faces.push_back(std::move(record));
     }
@@ -219,7 +246,7 @@ Construction construction_from(py::handle state, const std::string& at) {
 
 py::tuple state_of(const Face& f) { return py::make_tuple(tables_state(tables_of(std::span<const Face>(&f, 1)))); }
 py::tuple state_of(const Solid& s) {
-    return py::make_tuple(tables_state(tables_of(s.faces())), construction_state(s.construction()));
+    return py::make_tuple(tables_state(tables_of(s.faces())), construction_state(s.construction()), s.name());
 }
 py::tuple state_of(const Mesh& m) {
     std::vector<double> vertices;
@@ -237,8 +264,13 @@ Face face_from(py::handle state, const std::string& at) {
     return std::move(faces.front());
 }
 Solid solid_from(py::handle state, const std::string& at) {
-    const auto items = state_items(state, 2, at);
-    return Solid(faces_of(tables_from(items[0], at)), construction_from(items[1], at + ".construction"));
+    const auto items = state_items(state, 2, at, 3);
+    Solid solid(faces_of(tables_from(items[0], at)), construction_from(items[1], at + ".construction"));
+    if (items.size() == 3) {
+        if (!py::isinstance<py::str>(items[2])) throw Error(at + ".name", "expected a str");
+        solid.set_name(items[2].cast<std::string>());
+    }
+    return solid;
 }
 Mesh mesh_from(py::handle state, const std::string& at) {
     const auto items = state_items(state, 2, at);

@@ -4,7 +4,7 @@
 // Python module) or assembled from another system's topology (the OpenCASCADE reader): shared edges and
 // vertices are shared objects in a Solid, and indices are how they stay shared outside it.
 //
-// faces_of rebuilds through the validating constructors (Face::from_surface, Face::planar), so tables
+// faces_of rebuilds through the validating constructors (Face::from_surface, Face::planar, Face::trimmed), so tables
 // from anywhere are checked as any user input is; tables_of followed by faces_of gives back the same
 // faces exactly (the same numbers, the same sharing).
 
@@ -27,13 +27,15 @@ struct BrepTables {
     struct CoedgeRecord {
         std::size_t edge = 0;  // index into edges
         bool reversed = false;
+        std::optional<NurbsCurve> pcurve;  // trimmed faces
     };
     struct FaceRecord {
         Face::Kind kind = Face::Kind::surface;
-        std::optional<NurbsSurface> surface;             // surface faces (a planar face's patch is derived)
+        std::optional<NurbsSurface> surface;             // surface and trimmed faces (a planar face's patch is derived)
         std::array<CoedgeRecord, 4> sides{};             // surface faces, in Side order
         Plane plane{};                                   // planar faces
-        std::vector<std::vector<CoedgeRecord>> loops;    // planar faces
+        std::vector<std::vector<CoedgeRecord>> loops;    // planar and trimmed faces
+        double tolerance = 0;                            // planar and trimmed faces (Face::tolerance)
     };
     std::vector<Vec3> vertices;
     std::vector<EdgeRecord> edges;

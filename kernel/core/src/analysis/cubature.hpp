@@ -40,6 +40,21 @@ public:
     // y = (C - origin)·y_axis, in the curve's own direction (the frame is copied).
     void add_green(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis, double factor);
 
+    // One closed boundary curve of a trimmed region in a surface's (u, v): a 2D curve (z = 0), run forward
+    // (sign 1) or backward (sign -1).
+    struct TrimmingCurve {
+        const NurbsCurve* pcurve;
+        double sign;
+    };
+    // The integrand over the region of `surface`'s (u, v) that the trimming curves bound (counterclockwise
+    // outside, clockwise around holes), by Green's theorem: the double integral of g over the region is the
+    // line integral of G dv along its boundary, G(u, v) = the integral of g(s, v) ds from the domain's u_min
+    // to u (or, along v, minus that of H du with H the integral in v, whichever direction has fewer spans).
+    // The inner integral is Gauss–Legendre on every knot span of the surface it crosses; the outer one runs
+    // through the engine's adaptive cells on the curves' Bézier segments. The curves must stay inside the
+    // surface's domain (Face::trimmed validates it); the caller keeps them alive until integrate().
+    void add_trimmed_surface(const NurbsSurface& surface, const std::vector<TrimmingCurve>& boundary, Integrand integrand);
+
     // The integral. Throws Error naming `argument` when the accuracy cannot be reached within the cell
     // budget; `progress` (may be null or empty) is polled with 0 every few thousand cells, so that it can
     // cancel (progress.hpp). Consumes the problem.

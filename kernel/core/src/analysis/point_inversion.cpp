@@ -93,6 +93,8 @@ ParameterFoot newton_foot_on_surface(const SurfaceEvaluator& s, const Vec3& p, c
 double newton_foot_on_curve(const NurbsCurve& curve, const Vec3& p, const Interval& box, double t,
                             const NewtonStop& stop) {
     const Interval d = box;
+    // The start inside the box: callers interpolate it between parameters, which can round past an end.
+    t = std::clamp(t, d.min, d.max);
     double best_t = t, best = distance(curve.point(t), p);
     for (int iteration = 0; iteration < stop.max_iterations; ++iteration) {
         const auto der = curve.derivatives(best_t, 2);

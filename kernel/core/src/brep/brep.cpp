@@ -11,6 +11,7 @@
 #include "brep/face_integrals.hpp"
 #include "math/numeric_internal.hpp"
 #include "math/solid_scale.hpp"
+#include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/properties.hpp"
 
@@ -160,7 +161,8 @@ Face Face::from_surface(NurbsSurface surface) {
                                              Coedge{u_min, true}});
 }
 
-Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
+Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops, double tolerance) {
+    require(std::isfinite(tolerance) && tolerance >= 0, "tolerance", "must be a finite number >= 0");
     require(is_finite(plane.origin) && is_finite(plane.x_axis) && is_finite(plane.y_axis) && is_finite(plane.normal),
             "plane", "must have finite coordinates");
     constexpr double frame_tolerance = 1e-12;
@@ -187,17 +189,33 @@ Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
     }
     const double size = box.diagonal();
     require(size > 0, "loops", "enclose no area");
-    const double tolerance = kRelativeTolerance * size;
+    const double off_plane = std::max(tolerance, kRelativeTolerance * size);
 
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (std::size_t l = 0; l < loops.size(); ++l) {
         double signed_area = 0;
         for (const Coedge& c : loops[l]) {
-            for (const Vec4& pw : c.edge->curve.homogeneous_points()) {
+            // Exact constructions keep their control points in the plane (so the curve, by the convex hull
+            // property); a file's tolerance bounds how far the curve itself strays, and its control points may
+            // stray further (a B-spline fitted to an intersection): then the curve is held to it at samples.
+            const NurbsCurve& curve = c.edge->curve;
+            if (tolerance > 0) {
+                const std::vector<double> breaks = breakpoints(curve.degree(), curve.knots());
+                for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
+                    for (int j = 0; j < 8; ++j) {
+                        const double away = std::abs(dot(curve.point(breaks[k] + (breaks[k + 1] - breaks[k]) * j / 8.0) - plane.origin, plane.normal));
+                        require(away <= off_plane, "loops", [&] {
+                            return "loop " + std::to_string(l) + " leaves the plane (a point of it is " + detail::number(away) +
+                                   " away from it, more than the tolerance " + detail::number(off_plane) + ")";
+                        });
+                    }
+            }
+            for (const Vec4& pw : curve.homogeneous_points()) {
                 const Vec3 r = project(pw) - plane.origin;
-                require(std::abs(dot(r, plane.normal)) <= tolerance, "loops", [&] {
+                require(tolerance > 0 || std::abs(dot(r, plane.normal)) <= off_plane, "loops", [&] {
                     return "loop " + std::to_string(l) + " leaves the plane (a control point is " +
-                           std::to_string(std::abs(dot(r, plane.normal))) + " away from it)";
+                           detail::number(std::abs(dot(r, plane.normal))) + " away from it, more than the tolerance " +
+                           detail::number(off_plane) + ")";
                 });
                 x0 = std::min(x0, dot(r, plane.x_axis));
                 x1 = std::max(x1, dot(r, plane.x_axis));
@@ -228,6 +246,7 @@ Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
     Face face(Kind::planar, std::move(patch));
     face.plane_ = plane;
     face.loops_ = std::move(loops);
+    face.tolerance_ = tolerance;
     return face;
 }
 
@@ -235,14 +254,38 @@ namespace {
 
 template <class Visitor>
 void for_each_coedge(std::span<const Face> faces, Visitor visit) {
-    for (const Face& face : faces) {
-        if (face.kind() == Face::Kind::surface) {
-            for (const Coedge& c : face.sides()) visit(c);
-        } else {
-            for (const auto& loop : face.loops())
-                for (const Coedge& c : loop) visit(c);
-        }
+    for (const Face& face : faces) ratbez::for_each_coedge(face, visit);
+}
+
+// The faces connected through shared (non-degenerate) edges, each component's face indices ascending,
+// components ordered by their first face (union-find over the edges' users).
+std::vector<std::vector<std::size_t>> connected_shells(std::span<const Face> faces) {
+    std::vector<std::size_t> root(faces.size());
+    for (std::size_t i = 0; i < faces.size(); ++i) root[i] = i;
+    const auto find = [&](std::size_t i) {
+        while (root[i] != i) i = root[i] = root[root[i]];
+        return i;
+    };
+    std::map<const Edge*, std::size_t> first_user;
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        ratbez::for_each_coedge(faces[i], [&](const Coedge& c) {
+            if (c.edge->degenerate) return;
+            const auto [it, inserted] = first_user.try_emplace(c.edge.get(), i);
+            if (!inserted) root[find(i)] = find(it->second);
+        });
+    std::map<std::size_t, std::size_t> component_of_root;
+    std::vector<std::vector<std::size_t>> shells;
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        const auto [it, inserted] = component_of_root.try_emplace(find(i), shells.size());
+        if (inserted) shells.emplace_back();
+        shells[it->second].push_back(i);
     }
+    return shells;
+}
+
+std::string describe_shell(const std::vector<std::size_t>& shell) {
+    return "the shell of face " + std::to_string(shell.front()) + " (" + std::to_string(shell.size()) + " face" +
+           (shell.size() == 1 ? "" : "s") + ")";
 }
 
 }  // namespace
@@ -270,10 +313,40 @@ Solid::Solid(std::vector<Face> faces, Construction construction) : construction_
     Box box;
     for (const Face& face : faces) box.add(face.surface().control_box());
     detail::require_solid_scale(box.diagonal(), detail::reach_of(box), "faces", "faces");
-    // Coherent edge directions make the shell consistently oriented; the sign of the enclosed volume
-    // tells outward from inward.
-    require(detail::faces_volume(faces, "faces", /*quick=*/true) > 0, "faces",
-            "the shell is oriented inward (its enclosed volume is negative); normals must point out of the solid");
+    // Coherent edge directions make each shell consistently oriented; the sign of the volume it encloses
+    // tells outward from inward: positive for the outer shell, negative for a void (its normals point into it).
+    std::vector<std::vector<std::size_t>> shells = connected_shells(faces);
+    std::vector<double> volumes;
+    std::vector<Box> boxes;
+    for (const auto& shell : shells) {
+        std::vector<Face> shell_faces;
+        Box shell_box;
+        for (std::size_t i : shell) {
+            shell_faces.push_back(faces[i]);
+            shell_box.add(faces[i].surface().control_box());
+        }
+        volumes.push_back(shells.size() == 1 ? detail::faces_volume(faces, "faces", /*quick=*/true)
+                                             : detail::faces_volume(shell_faces, "faces", /*quick=*/true));
+        boxes.push_back(shell_box);
+    }
+    const auto outer = static_cast<std::size_t>(std::max_element(volumes.begin(), volumes.end()) - volumes.begin());
+    require(volumes[outer] > 0, "faces",
+            shells.size() == 1 ? "the shell is oriented inward (its enclosed volume is negative); normals must point out of the solid"
+                               : "every shell is oriented inward (encloses a negative volume); the outer shell's normals must point out of the solid");
+    for (std::size_t k = 0; k < shells.size(); ++k) {
+        if (k == outer) continue;
+        require(volumes[k] < 0, "faces", [&] {
+            return describe_shell(shells[k]) + " encloses a positive volume beside " + describe_shell(shells[outer]) +
+                   ": a Solid has one outer shell, any others are voids inside it with their normals pointing into the void";
+        });
+        const Box& inner = boxes[k];
+        const Box& hull = boxes[outer];
+        require(inner.min.x >= hull.min.x && inner.min.y >= hull.min.y && inner.min.z >= hull.min.z &&
+                    inner.max.x <= hull.max.x && inner.max.y <= hull.max.y && inner.max.z <= hull.max.z,
+                "faces", [&] { return describe_shell(shells[k]) + " is a void but lies outside the outer shell's box"; });
+    }
+    std::rotate(shells.begin(), shells.begin() + static_cast<std::ptrdiff_t>(outer), shells.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
+    shells_ = std::move(shells);
     faces_ = std::move(faces);
 }
 
@@ -308,7 +381,7 @@ int Solid::euler_characteristic() const {
     // formula V - E + F - R = 2 (S - G) with R rings), so the rings are subtracted to keep 2 - 2 genus.
     std::size_t rings = 0;
     for (const Face& face : faces_)
-        if (face.kind() == Face::Kind::planar) rings += face.loops().size() - 1;
+        if (face.kind() != Face::Kind::surface) rings += face.loops().size() - 1;
     return static_cast<int>(vertices().size()) - static_cast<int>(proper) + static_cast<int>(faces_.size()) -
            static_cast<int>(rings);
 }
@@ -316,7 +389,7 @@ int Solid::euler_characteristic() const {
 Box Solid::bounding_box() const {
     Box box;
     for (const Face& face : faces_) {
-        if (face.kind() == Face::Kind::surface) {
+        if (face.kind() != Face::Kind::planar) {
             box.add(face.surface().control_box());
         } else {
             // The plane patch spans the loops' rectangle; the loops themselves bound the face tighter.

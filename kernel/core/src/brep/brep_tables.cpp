@@ -16,7 +16,9 @@ class TableWriter {
 public:
     BrepTables tables;
 
-    BrepTables::CoedgeRecord coedge(const Coedge& c) { return {edge(c.edge), c.reversed}; }
+    BrepTables::CoedgeRecord coedge(const Coedge& c) {
+        return {edge(c.edge), c.reversed, c.pcurve ? std::optional<NurbsCurve>(*c.pcurve) : std::nullopt};
+    }
 
 private:
     std::size_t edge(const EdgePtr& e) {
@@ -41,7 +43,9 @@ public:
         edges_.resize(tables.edges.size());
     }
 
-    Coedge coedge(const BrepTables::CoedgeRecord& c, const std::string& where) { return {edge(c.edge, where), c.reversed}; }
+    Coedge coedge(const BrepTables::CoedgeRecord& c, const std::string& where) {
+        return {edge(c.edge, where), c.reversed, c.pcurve ? std::make_shared<const NurbsCurve>(*c.pcurve) : nullptr};
+    }
 
 private:
     EdgePtr edge(std::size_t index, const std::string& where) {
@@ -78,7 +82,9 @@ BrepTables tables_of(std::span<const Face> faces) {
             record.surface = face.surface();
             for (std::size_t s = 0; s < 4; ++s) record.sides[s] = writer.coedge(face.sides()[s]);
         } else {
+            if (face.kind() == Face::Kind::trimmed) record.surface = face.surface();
             record.plane = face.plane();
+            record.tolerance = face.tolerance();
             for (const auto& loop : face.loops()) {
                 std::vector<BrepTables::CoedgeRecord> coedges;
                 for (const Coedge& c : loop) coedges.push_back(writer.coedge(c));
@@ -110,7 +116,12 @@ std::vector<Face> faces_of(const BrepTables& tables) {
                     for (const auto& c : loop) coedges.push_back(reader.coedge(c, where));
                     loops.push_back(std::move(coedges));
                 }
-                faces.push_back(Face::planar(record.plane, std::move(loops)));
+                if (record.kind == Face::Kind::trimmed) {
+                    require(record.surface.has_value(), where, "a trimmed face needs its surface");
+                    faces.push_back(Face::trimmed(*record.surface, std::move(loops), record.tolerance));
+                } else {
+                    faces.push_back(Face::planar(record.plane, std::move(loops), record.tolerance));
+                }
             }
         } catch (const Error& e) {
             if (e.argument().starts_with("faces[") || e.argument().starts_with("edges[")) throw;

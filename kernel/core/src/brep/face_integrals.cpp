@@ -5,6 +5,8 @@
 // Planar faces: area by Green's theorem on their loops in the plane frame, A = (1/2) ∮ (x dy - y dx);
 // on a plane (S - c) · n is the constant (origin - c) · n, so the volume contribution is
 // (1/3) ((origin - c) · n) A.
+// Trimmed faces: the same integrands as surface faces over the region their p-curves bound in (u, v)
+// (Cubature::add_trimmed_surface, Green's theorem on the region).
 #include "brep/face_integrals.hpp"
 
 #include "analysis/cubature.hpp"
@@ -22,8 +24,19 @@ void add_planar(const Face& face, double factor, Cubature& cubature) {
                                coedge.reversed ? -factor : factor);
 }
 
+// A trimmed face's boundary in (u, v): its p-curves, each in the direction the face runs it.
+std::vector<Cubature::TrimmingCurve> trimming_curves(const Face& face) {
+    std::vector<Cubature::TrimmingCurve> curves;
+    for (const auto& loop : face.loops())
+        for (const Coedge& coedge : loop) curves.push_back({coedge.pcurve.get(), coedge.reversed ? -1.0 : 1.0});
+    return curves;
+}
+
 void add_face_area(const Face& face, Cubature& cubature) {
     if (face.kind() == Face::Kind::planar) return add_planar(face, 1.0, cubature);
+    if (face.kind() == Face::Kind::trimmed)
+        return cubature.add_trimmed_surface(face.surface(), trimming_curves(face),
+                                            [](const SurfaceFirstDerivatives& d) { return norm(cross(d.su, d.sv)); });
     cubature.add_surface_area(face.surface());
 }
 
@@ -34,8 +47,9 @@ void add_face_volume(const Face& face, const Vec3& c, Cubature& cubature) {
         const Plane& plane = face.plane();
         return add_planar(face, dot(plane.origin - c, plane.normal) / 3.0, cubature);
     }
-    cubature.add_surface(face.surface(),
-                         [c](const SurfaceFirstDerivatives& d) { return dot(d.s - c, cross(d.su, d.sv)) / 3.0; }, 3);
+    const auto flux = [c](const SurfaceFirstDerivatives& d) { return dot(d.s - c, cross(d.su, d.sv)) / 3.0; };
+    if (face.kind() == Face::Kind::trimmed) return cubature.add_trimmed_surface(face.surface(), trimming_curves(face), flux);
+    cubature.add_surface(face.surface(), flux, 3);
 }
 
 Box box_of(const std::vector<Face>& faces) {

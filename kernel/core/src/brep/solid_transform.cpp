@@ -22,7 +22,23 @@ NurbsSurface swapped_parameters(const NurbsSurface& s) {
                                           s.is_rational());
 }
 
-Coedge reversed(const Coedge& coedge) { return {coedge.edge, !coedge.reversed}; }
+Coedge reversed(const Coedge& coedge) { return {coedge.edge, !coedge.reversed, coedge.pcurve}; }
+
+// A p-curve with its coordinates swapped, (u, v) -> (v, u), for the surface with swapped parameters.
+std::shared_ptr<const NurbsCurve> swapped_coordinates(const NurbsCurve& pcurve) {
+    std::vector<Vec4> points = pcurve.homogeneous_points();
+    for (Vec4& p : points) std::swap(p.x, p.y);
+    return std::make_shared<const NurbsCurve>(
+        NurbsCurve::from_homogeneous(pcurve.degree(), pcurve.knots(), std::move(points), pcurve.is_rational()));
+}
+
+// How much the map can stretch a distance at most (the Frobenius norm of its linear part bounds the
+// spectral norm): a face's tolerance grows by no more.
+double largest_stretch(const AffineMap& map) {
+    double sum = 0;
+    for (const Vec3& row : map.linear()) sum += dot(row, row);
+    return std::sqrt(sum);
+}
 
 // Maps faces one by one, each edge and vertex once, so the images share them as the originals did.
 class BrepMapper {
@@ -31,6 +47,7 @@ public:
 
     Face face(const Face& face) {
         if (face.kind() == Face::Kind::planar) return planar(face);
+        if (face.kind() == Face::Kind::trimmed) return trimmed(face);
         const auto& sides = face.sides();
         std::array<Coedge, 4> mapped;
         for (std::size_t s = 0; s < 4; ++s) mapped[s] = coedge(sides[s]);
@@ -45,6 +62,27 @@ public:
     }
 
 private:
+    // The surface maps as a surface face's; the p-curves stay where they are in (u, v). A reflection turns
+    // S_u x S_v inward, so the image's parameters are swapped (as for surface faces): the p-curves swap
+    // their coordinates, which runs every loop the other way round in (u, v), and the loops are run
+    // backwards to make the outer loop counterclockwise again.
+    Face trimmed(const Face& face) {
+        std::vector<std::vector<Coedge>> loops;
+        for (const auto& loop : face.loops()) {
+            std::vector<Coedge> mapped;
+            for (const Coedge& c : loop) {
+                Coedge image = coedge(c);
+                if (reflects_) image = reversed(Coedge{image.edge, image.reversed, swapped_coordinates(*c.pcurve)});
+                mapped.push_back(std::move(image));
+            }
+            if (reflects_) std::reverse(mapped.begin(), mapped.end());
+            loops.push_back(std::move(mapped));
+        }
+        NurbsSurface surface = transformed(face.surface(), map_);
+        if (reflects_) surface = swapped_parameters(surface);
+        return Face::trimmed(std::move(surface), std::move(loops), face.tolerance() * largest_stretch(map_));
+    }
+
     Face planar(const Face& face) {
         const Plane& plane = face.plane();
         // The image plane's outward normal is L^-T n (the outside half-space maps to the outside); x_axis
@@ -68,10 +106,10 @@ private:
             }
             loops.push_back(std::move(mapped));
         }
-        return Face::planar(image, std::move(loops));
+        return Face::planar(image, std::move(loops), face.tolerance() * largest_stretch(map_));
     }
 
-    Coedge coedge(const Coedge& c) { return {edge(c.edge), c.reversed}; }
+    Coedge coedge(const Coedge& c) { return {edge(c.edge), c.reversed, c.pcurve}; }
 
     EdgePtr edge(const EdgePtr& e) {
         auto [it, inserted] = edges_.try_emplace(e.get());
@@ -103,7 +141,9 @@ Solid transformed(const Solid& solid, const AffineMap& map) {
     std::vector<Face> faces;
     faces.reserve(solid.faces().size());
     for (const Face& face : solid.faces()) faces.push_back(mapper.face(face));
-    return Solid(std::move(faces), transformed(solid.construction(), map));
+    Solid image(std::move(faces), transformed(solid.construction(), map));
+    image.set_name(solid.name());
+    return image;
 }
 
 Construction transformed(const Construction& construction, const AffineMap& map) {

@@ -12,6 +12,11 @@
 // cell of each nearby cell's best seed, so rational weights that crowd the geometry into a sliver of
 // the parameter domain do not hide the foot.
 //
+// Trimmed faces are measured on their region: a foot whose (u, v) lies outside the region the p-curves bound
+// (even-odd rule on a fine polyline of them) is replaced by the distance to the face's boundary curves, which
+// bounds the distance to the region from above (an interior local minimum elsewhere in the region could
+// only be nearer), so a mesh that strays over the trimmed-away part of a surface is measured, not excused.
+//
 // Only the maximum is wanted, so most samples are settled cheaply: the distance to any point of the
 // surface bounds the true distance from above, and a warm start from the previous sample's foot gives
 // such a point after a step or two. When that bound is already below the running maximum, the sample
@@ -33,7 +38,7 @@
 #include "analysis/point_inversion.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/surface_evaluator.hpp"
-#include "mesh/polygon_triangulation.hpp"
+#include "mesh/domain_triangulation.hpp"
 #include "mesh/triangle_grid.hpp"
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/bezier_surface.hpp"
@@ -81,6 +86,7 @@ std::pair<Vec3, Vec3> knot_legs(const NurbsCurve& curve, double k) {
 struct PlanarRegion {
     struct Curve {
         const NurbsCurve* curve;
+        const Edge* edge;
         bool reversed;
         std::size_t loop, next, previous;  // neighbours in loop order (indices into curves)
     };
@@ -92,6 +98,7 @@ struct PlanarRegion {
     Plane plane;
     std::vector<Curve> curves;
     std::vector<Segment> segments;
+    double band = 0;  // how far the curves stray from their polyline at most (sampled): the even-odd rule's margin
 
     detail::Point2 to_plane(const Vec3& p) const {
         const Vec3 d = p - plane.origin;
@@ -109,7 +116,9 @@ struct PlanarRegion {
         double best = std::numeric_limits<double>::infinity();
         const Segment* nearest = nullptr;
         double fraction = 0;
+        bool crossed = false;  // the even-odd rule on the closed polyline (a ray from q towards +x)
         for (const Segment& s : segments) {
+            if ((s.a.y <= q.y) != (s.b.y <= q.y) && q.x < s.a.x + (q.y - s.a.y) / (s.b.y - s.a.y) * (s.b.x - s.a.x)) crossed = !crossed;
             const double ex = s.b.x - s.a.x, ey = s.b.y - s.a.y;
             const double len2 = ex * ex + ey * ey;
             double f = len2 > 0 ? ((q.x - s.a.x) * ex + (q.y - s.a.y) * ey) / len2 : 0;
@@ -148,6 +157,11 @@ struct PlanarRegion {
                 if (interior && distance(other_foot, p) <= distance(foot, p)) index = other, t = other_t, foot = other_foot;
             }
         }
+        // Farther from the polyline than the curves stray from it, the even-odd rule decides exactly, whatever
+        // the corners (a loop that doubles back on itself, as the spike where a gull-wing lead's arc meets a
+        // short line retracing it, defeats the tangent rules below). Closer, the rules at the foot decide; a
+        // wrong decision there errs by less than the band.
+        if (std::sqrt(best) > 2 * band) return crossed ? std::abs(height) : distance(p, foot);
         const Curve& curve = curves[index];
         const Interval dom = curve.curve->domain();
         const detail::Point2 f2 = to_plane(foot);
@@ -224,7 +238,7 @@ PlanarRegion make_region(const Face& face) {
         const std::size_t first = region.curves.size();
         for (const Coedge& coedge : loop) {
             if (coedge.edge->degenerate) continue;
-            region.curves.push_back({&coedge.edge->curve, coedge.reversed, l, 0, 0});
+            region.curves.push_back({&coedge.edge->curve, coedge.edge.get(), coedge.reversed, l, 0, 0});
         }
         const std::size_t count = region.curves.size() - first;
         for (std::size_t k = 0; k < count; ++k) {
@@ -248,10 +262,179 @@ PlanarRegion make_region(const Face& face) {
             add_certified_params(breaks[b], breaks[b + 1], cuts, count, params);
         }
         params.push_back(d.max);
-        for (std::size_t k = 0; k + 1 < params.size(); ++k)
-            region.segments.push_back({region.to_plane(curve.point(params[k])), region.to_plane(curve.point(params[k + 1])), c,
-                                       params[k], params[k + 1]});
+        // The polyline's ends are the edge's vertices, which the loop's neighbouring edges share: the loop's
+        // polyline then closes exactly, which the even-odd rule of planar_samples needs (edge curves that meet
+        // 1e-13 apart put a row through a corner on both sides of it, and a hole's inside counted as face).
+        const Edge& edge = *region.curves[c].edge;
+        const auto at = [&](std::size_t k) {
+            if (k == 0) return region.to_plane(edge.start->point);
+            if (k + 1 == params.size()) return region.to_plane(edge.end->point);
+            return region.to_plane(curve.point(params[k]));
+        };
+        for (std::size_t k = 0; k + 1 < params.size(); ++k) {
+            region.segments.push_back({at(k), at(k + 1), c, params[k], params[k + 1]});
+            const detail::Point2 a = region.segments.back().a, b = region.segments.back().b;
+            for (double f : {0.25, 0.5, 0.75}) {
+                const detail::Point2 m = region.to_plane(curve.point(params[k] + f * (params[k + 1] - params[k])));
+                const double cx = a.x + f * (b.x - a.x) - m.x, cy = a.y + f * (b.y - a.y) - m.y;
+                region.band = std::max(region.band, std::hypot(cx, cy));
+            }
+        }
     }
+    return region;
+}
+
+// A trimmed face's region: its p-curves as a polyline in (u, v) for the inside test, and its boundary edges
+// as 3D polylines that locate the nearest edge for a foot outside the region.
+struct TrimmedRegion {
+    struct Segment2 {
+        double u0, v0, u1, v1;
+    };
+    struct Segment3 {
+        Vec3 a, b;
+        const NurbsCurve* curve;
+        double ta, tb;
+    };
+    std::vector<Segment2> uv;
+    std::vector<Segment3> edges;
+
+    bool empty() const { return uv.empty(); }
+
+    // Even-odd rule: the number of boundary segments a ray from (u, v) towards +u crosses; only the segments
+    // of the band of v the point is in (index()).
+    bool contains(double u, double v) const {
+        if (!(v >= v_min_ && v <= v_max_)) return false;
+        bool inside = false;
+        for (const std::uint32_t k : bands_[band_of(v)]) {
+            const Segment2& s = uv[k];
+            if ((s.v0 <= v) != (s.v1 <= v) && u < s.u0 + (v - s.v0) / (s.v1 - s.v0) * (s.u1 - s.u0)) inside = !inside;
+        }
+        return inside;
+    }
+
+    // The distance from p to the nearest boundary edge: the nearest polyline segment (searched in growing
+    // boxes of the uniform grid of segment middles, index()), then Newton on its curve.
+    double boundary_distance(const Vec3& p) const {
+        double best = std::numeric_limits<double>::infinity();
+        const Segment3* nearest = nullptr;
+        double fraction = 0;
+        const auto consider = [&](const Segment3& s) {
+            const Vec3 e = s.b - s.a;
+            const double length2 = dot(e, e);
+            const double f = length2 > 0 ? std::clamp(dot(p - s.a, e) / length2, 0.0, 1.0) : 0.0;
+            const double d = distance(p, s.a + e * f);
+            if (d < best) best = d, nearest = &s, fraction = f;
+        };
+        // Every segment lies within half_length_ of its middle: a box of half-width r + half_length_ around p
+        // holds every segment closer than r.
+        for (double r = cell_;; r *= 2) {
+            visit_cells(p, r + half_length_, [&](std::uint32_t k) { consider(edges[k]); });
+            if (best <= r || r > 4 * extent_) break;
+        }
+        if (nearest == nullptr) return best;
+        const double t = detail::newton_foot_on_curve(*nearest->curve, p, nearest->curve->domain(),
+                                                      nearest->ta + fraction * (nearest->tb - nearest->ta));
+        return std::min(best, distance(p, nearest->curve->point(t)));
+    }
+
+    // The search structures: bands of v for the segments in (u, v), a uniform grid of the 3D segments' middles.
+    void index() {
+        if (uv.empty()) return;
+        v_min_ = std::numeric_limits<double>::infinity(), v_max_ = -v_min_;
+        for (const Segment2& s : uv) v_min_ = std::min({v_min_, s.v0, s.v1}), v_max_ = std::max({v_max_, s.v0, s.v1});
+        bands_.assign(std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(static_cast<double>(uv.size()))), 1, 4096), {});
+        for (std::size_t k = 0; k < uv.size(); ++k) {
+            const auto [lo, hi] = std::minmax(uv[k].v0, uv[k].v1);
+            for (std::size_t b = band_of(lo), end = band_of(hi); b <= end; ++b) bands_[b].push_back(static_cast<std::uint32_t>(k));
+        }
+        if (edges.empty()) return;
+        lo_ = hi_ = 0.5 * (edges.front().a + edges.front().b);
+        for (const Segment3& e : edges) {
+            const Vec3 m = 0.5 * (e.a + e.b);
+            lo_ = {std::min(lo_.x, m.x), std::min(lo_.y, m.y), std::min(lo_.z, m.z)};
+            hi_ = {std::max(hi_.x, m.x), std::max(hi_.y, m.y), std::max(hi_.z, m.z)};
+            half_length_ = std::max(half_length_, 0.5 * distance(e.a, e.b));
+        }
+        extent_ = std::max({hi_.x - lo_.x, hi_.y - lo_.y, hi_.z - lo_.z, 1e-300});
+        const double cells = std::max(1.0, std::cbrt(static_cast<double>(edges.size())));
+        cell_ = std::max(extent_ / cells, 2 * half_length_);
+        for (int a = 0; a < 3; ++a) dims_[static_cast<std::size_t>(a)] = 1 + static_cast<int>(((&hi_.x)[a] - (&lo_.x)[a]) / cell_);
+        grid_.assign(static_cast<std::size_t>(dims_[0]) * static_cast<std::size_t>(dims_[1]) * static_cast<std::size_t>(dims_[2]), {});
+        for (std::size_t k = 0; k < edges.size(); ++k) grid_[flat(cell_of(0.5 * (edges[k].a + edges[k].b)))].push_back(static_cast<std::uint32_t>(k));
+    }
+
+private:
+    std::size_t band_of(double v) const {
+        const double f = (v - v_min_) / std::max(v_max_ - v_min_, 1e-300);
+        return std::min(bands_.size() - 1, static_cast<std::size_t>(std::max(0.0, f) * static_cast<double>(bands_.size())));
+    }
+    std::array<int, 3> cell_of(const Vec3& p) const {
+        std::array<int, 3> c{};
+        for (int a = 0; a < 3; ++a)
+            c[static_cast<std::size_t>(a)] = std::clamp(static_cast<int>(std::floor(((&p.x)[a] - (&lo_.x)[a]) / cell_)), 0, dims_[static_cast<std::size_t>(a)] - 1);
+        return c;
+    }
+    std::size_t flat(const std::array<int, 3>& c) const {
+        return (static_cast<std::size_t>(c[0]) * static_cast<std::size_t>(dims_[1]) + static_cast<std::size_t>(c[1])) *
+                   static_cast<std::size_t>(dims_[2]) + static_cast<std::size_t>(c[2]);
+    }
+    template <class Visit>
+    void visit_cells(const Vec3& p, double r, Visit&& visit) const {
+        const std::array<int, 3> a = cell_of(p - Vec3{r, r, r}), b = cell_of(p + Vec3{r, r, r});
+        for (int x = a[0]; x <= b[0]; ++x)
+            for (int y = a[1]; y <= b[1]; ++y)
+                for (int z = a[2]; z <= b[2]; ++z)
+                    for (const std::uint32_t k : grid_[flat({x, y, z})]) visit(k);
+    }
+
+    double v_min_ = 0, v_max_ = 0;
+    std::vector<std::vector<std::uint32_t>> bands_;
+    Vec3 lo_, hi_;
+    double cell_ = 1, half_length_ = 0, extent_ = 1;
+    std::array<int, 3> dims_{1, 1, 1};
+    std::vector<std::vector<std::uint32_t>> grid_;
+};
+
+// 64 parameters per knot span of a curve (its end included), per weight-certified piece at least 8; a curve of
+// many spans (a fitted p-curve of 800) 8 per span: its spans are short already.
+std::vector<double> fine_params(const NurbsCurve& curve) {
+    std::vector<double> params;
+    const std::vector<double> breaks = breakpoints(curve.degree(), curve.knots());
+    const std::vector<BezierCurve> segments = curve.bezier_segments();
+    const int per_span = breaks.size() > 65 ? 8 : 64;
+    for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
+        std::vector<double> weights;
+        for (const Vec4& pw : segments[b].homogeneous_points()) weights.push_back(pw.w);
+        const std::vector<double> cuts = detail::weight_cuts({weights}, detail::kMaxHalvings);
+        add_certified_params(breaks[b], breaks[b + 1], cuts, std::max(8, per_span / static_cast<int>(cuts.size() - 1)), params);
+    }
+    params.push_back(curve.domain().max);
+    return params;
+}
+
+TrimmedRegion make_trimmed_region(const Face& face) {
+    TrimmedRegion region;
+    for (const auto& loop : face.loops()) {
+        // One closed polyline per loop, in the loop's direction, each coedge's first point the previous one's
+        // last (p-curves meet to rounding, and the even-odd rule needs an exactly closed polyline).
+        std::vector<Vec3> chain;
+        for (const Coedge& coedge : loop) {
+            std::vector<double> ts = fine_params(*coedge.pcurve);
+            if (coedge.reversed) std::reverse(ts.begin(), ts.end());
+            for (std::size_t k = chain.empty() ? 0 : 1; k < ts.size(); ++k) chain.push_back(coedge.pcurve->point(ts[k]));
+        }
+        chain.back() = chain.front();
+        for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+            region.uv.push_back({chain[k].x, chain[k].y, chain[k + 1].x, chain[k + 1].y});
+        for (const Coedge& coedge : loop) {
+            if (coedge.edge->degenerate) continue;
+            const std::vector<double> es = fine_params(coedge.edge->curve);
+            for (std::size_t k = 0; k + 1 < es.size(); ++k)
+                region.edges.push_back({coedge.edge->curve.point(es[k]), coedge.edge->curve.point(es[k + 1]),
+                                        &coedge.edge->curve, es[k], es[k + 1]});
+        }
+    }
+    region.index();
     return region;
 }
 
@@ -331,6 +514,7 @@ public:
         double spacing = 0;
         const auto& faces = solid.faces();
         regions_.resize(faces.size());
+        trimmed_.resize(faces.size());
         evaluators_.resize(faces.size());
         cells_.resize(faces.size());
         cell_spacing_.resize(faces.size());
@@ -338,7 +522,8 @@ public:
         for (std::size_t f = 0; f < faces.size(); ++f) {
             const Face& face = faces[f];
             const auto id = static_cast<std::uint32_t>(f);
-            if (face.kind() == Face::Kind::surface) evaluators_[f] = std::make_unique<detail::SurfaceEvaluator>(face.surface());
+            if (face.kind() != Face::Kind::planar) evaluators_[f] = std::make_unique<detail::SurfaceEvaluator>(face.surface());
+            if (face.kind() == Face::Kind::trimmed) trimmed_[f] = make_trimmed_region(face);
             if (face.kind() == Face::Kind::planar) {
                 regions_[f] = make_region(face);
                 for (const auto& s : regions_[f].segments) {
@@ -422,7 +607,8 @@ public:
         });
         double result = std::numeric_limits<double>::infinity();
         // Keeps the better foot; true once the result is within `enough`.
-        auto take = [&](std::size_t f, const Foot& foot) {
+        auto take = [&](std::size_t f, Foot foot) {
+            foot = on_region(f, p, foot);
             if (foot.distance < result) result = foot.distance, face = static_cast<std::uint32_t>(f), warm = foot;
             return result <= enough;
         };
@@ -484,10 +670,16 @@ public:
         if (!regions_[face].curves.empty()) return regions_[face].distance_to(p);
         const detail::SurfaceEvaluator& s = *evaluators_[face];
         warm = detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, warm.u, warm.v, {8, enough});
-        return warm.distance;
+        return on_region(face, p, warm).distance;
     }
 
 private:
+    // A foot on a trimmed face's surface outside its region counts as the distance to its boundary edges.
+    Foot on_region(std::size_t f, const Vec3& p, const Foot& foot) const {
+        if (trimmed_[f].empty() || trimmed_[f].contains(foot.u, foot.v)) return foot;
+        return Foot{foot.u, foot.v, std::max(foot.distance, trimmed_[f].boundary_distance(p))};
+    }
+
     // The parameter box of cell `cell` of face f (Seed::patch).
     ParameterBox cell_box(std::size_t f, std::uint32_t cell) const {
         const auto& [pieces_u, pieces_v] = cells_[f];
@@ -496,6 +688,7 @@ private:
 
     const Solid& solid_;
     std::vector<PlanarRegion> regions_;
+    std::vector<TrimmedRegion> trimmed_;  // trimmed faces
     // Per face: the weight-certified pieces along u and along v, whose products are its cells.
     std::vector<std::pair<std::vector<Interval>, std::vector<Interval>>> cells_;
     // Per face and cell: the largest distance between neighbouring seeds of the cell (or its edge), and
@@ -535,12 +728,13 @@ std::vector<double> coverage_params(const NurbsSurface& s, const std::vector<std
     for (const Interval& piece : pieces.pieces) {
         double length = 0;
         for (int q = 0; q <= 4; ++q) {
-            const double w = other.min + (other.max - other.min) * q / 4.0;
+            // The ends exactly (an affine step past the last can land an ulp outside the domain).
+            const double w = q == 4 ? other.max : other.min + (other.max - other.min) * q / 4.0;
             auto at = [&](double t) { return along_u ? s.point(t, w) : s.point(w, t); };
             double l = 0;
             Vec3 previous = at(piece.min);
             for (int k = 1; k <= 8; ++k) {
-                const Vec3 p = at(piece.min + (piece.max - piece.min) * k / 8.0);
+                const Vec3 p = at(k == 8 ? piece.max : piece.min + (piece.max - piece.min) * k / 8.0);
                 l += distance(p, previous);
                 previous = p;
             }
@@ -603,10 +797,18 @@ double max_surface_to_mesh_distance(const Solid& solid, const Mesh& mesh, const 
         const NurbsSurface& s = face.surface();
         const auto patches = s.bezier_patches();
         const std::vector<double> us = coverage_params(s, patches, true, h), vs = coverage_params(s, patches, false, h);
+        // A trimmed face: the grid points inside its region and its boundary edges at the spacing h.
+        const TrimmedRegion region = face.kind() == Face::Kind::trimmed ? make_trimmed_region(face) : TrimmedRegion{};
+        for (const auto& segment : region.edges) {
+            const int parts = static_cast<int>(std::clamp(std::ceil(distance(segment.a, segment.b) / h), 1.0, 1e5));
+            for (int k = 0; k < parts; ++k)
+                worst = std::max(worst, grid.distance(segment.curve->point(segment.ta + (segment.tb - segment.ta) * k / parts)));
+        }
         // A row of the grid at a time, so memory stays with the row, not the face.
         for (double u : us) {
             evaluate_grid(s, std::span<const double>(&u, 1), vs, GridOutput::points, points);
-            for (std::size_t k = 0; k < points.points.size(); ++k) worst = std::max(worst, grid.distance(points.points[k]));
+            for (std::size_t k = 0; k < points.points.size(); ++k)
+                if (region.empty() || region.contains(u, vs[k])) worst = std::max(worst, grid.distance(points.points[k]));
         }
     }
     return worst;

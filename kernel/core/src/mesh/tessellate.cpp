@@ -11,13 +11,17 @@
 //  3. assembly (here): the cells of each grid become triangles on the shared edge samples; cells along
 //     a boundary whose edge carries extra samples (from the neighbouring face) are closed with a zipper
 //     strip; degenerate sides collapse to their single vertex, so cells at a pole become fan triangles.
-//     Planar faces are triangulated from their boundary loops.
+//     Planar faces are triangulated from their boundary loops; trimmed faces by a constrained Delaunay
+//     triangulation of their (u, v) region on the edge samples, refined by the chord error
+//     (trimmed_domain.hpp). Edges and vertices of trimmed faces stay on their curves (no offset): the
+//     p-curves say where they are in the face.
 
 #include "ratbez/tessellate.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -27,13 +31,13 @@
 #include <utility>
 #include <vector>
 
-#include "mesh/polygon_triangulation.hpp"
 #include "mesh/tessellate_cells.hpp"
 #include "mesh/tessellate_offsets.hpp"
 #include "mesh/tessellate_plan.hpp"
 #include "mesh/tessellate_sides.hpp"
 #include "mesh/tessellator.hpp"
 #include "mesh/triangle_grid.hpp"
+#include "mesh/domain_triangulation.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/surface_grid.hpp"
@@ -138,22 +142,34 @@ public:
             mesh_surface(plan);
             done += step;
         }
-        for (const Face& face : faces_)
-            if (face.kind() == Face::Kind::planar) {
-                settings_.report(done);
-                mesh_planar(face);
-                done += step;
+        for (std::size_t i = 0; i < faces_.size(); ++i) {
+            const Face& face = faces_[i];
+            if (face.kind() == Face::Kind::surface) continue;
+            settings_.report(done);
+            try {
+                if (face.kind() == Face::Kind::planar) mesh_planar(face);
+                else mesh_trimmed(face);
+            } catch (const TooFine&) {
+                throw;
+            } catch (const detail::CrossingLoops& e) {
+                throw detail::CrossingLoops("solid", "face " + std::to_string(i) + ": " + e.what());
+            } catch (const Error& e) {
+                throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
             }
+            done += step;
+        }
         settings_.report(1.0);
         return assembler_.take();
     }
 
 private:
-    // One use of an edge by a face: a side of a surface face (plan index) or a loop of a planar face.
+    // One use of an edge by a face: a side of a surface face (plan index), a loop of a planar face or a
+    // coedge of a trimmed face.
     struct EdgeUse {
         const Face* face;
         std::size_t plan = 0;  // surface faces
         Side side = Side::v_min;
+        const Coedge* coedge = nullptr;  // trimmed faces
     };
     // Where a B-rep vertex sits on a surface face: a corner (u, v), or a whole collapsed side (a pole).
     struct VertexUse {
@@ -187,14 +203,31 @@ private:
             }
         }
         for (const Face& face : faces_) {
-            if (face.kind() != Face::Kind::planar) continue;
+            if (face.kind() == Face::Kind::surface) continue;
             for (const auto& loop : face.loops())
                 for (const Coedge& coedge : loop) {
-                    edge_uses_[coedge.edge.get()].push_back({&face, 0, Side::v_min});
+                    edge_uses_[coedge.edge.get()].push_back({&face, 0, Side::v_min, &coedge});
                     for (const Vertex* v : {coedge.edge->start.get(), coedge.edge->end.get()})
                         vertex_uses_[v].push_back({&face, 0, 0, 0, std::nullopt});
                 }
         }
+    }
+
+    // True when a trimmed face uses the edge (vertex): its samples stay on the curve (the point).
+    bool used_by_trimmed(const Edge* edge) {
+        const auto& uses = edge_uses_[edge];
+        return std::any_of(uses.begin(), uses.end(), [](const EdgeUse& use) { return use.face->kind() == Face::Kind::trimmed; });
+    }
+    bool used_by_trimmed(const Vertex* vertex) {
+        const auto& uses = vertex_uses_[vertex];
+        return std::any_of(uses.begin(), uses.end(), [](const VertexUse& use) { return use.face->kind() == Face::Kind::trimmed; });
+    }
+
+    // The (u, v) of a trimmed face's use of an edge at the edge's parameter t (its p-curve shares it).
+    static std::pair<double, double> pcurve_point(const EdgeUse& use, double t) {
+        const NurbsCurve& pcurve = *use.coedge->pcurve;
+        const Vec3 p = pcurve.point(std::clamp(t, pcurve.domain().min, pcurve.domain().max));
+        return {p.x, p.y};
     }
 
     // The face's unit normal at (u, v) (the surface's limit normal where its partials are parallel), or none
@@ -206,6 +239,16 @@ private:
         if (length > 1e-10 * (dot(d.su, d.su) + dot(d.sv, d.sv))) return n / length;
         try {
             return p.face->surface().normal(u, v);
+        } catch (const Error&) {
+            return std::nullopt;
+        }
+    }
+
+    // The surface's unit normal at (u, v) (clamped into its domain), or none where it has no tangent plane.
+    static std::optional<Vec3> surface_normal(const NurbsSurface& surface, double u, double v) {
+        const Interval du = surface.domain_u(), dv = surface.domain_v();
+        try {
+            return surface.normal(std::clamp(u, du.min, du.max), std::clamp(v, dv.min, dv.max));
         } catch (const Error&) {
             return std::nullopt;
         }
@@ -233,6 +276,7 @@ private:
     // (longer moves towards the centre of curvature would fold the edge's polygon, and a cap with it) and the
     // offset_room its neighbours leave; at a crease leaning towards centring the edge's polyline on its curve.
     Vec3 edge_offset(const Edge* edge, double t, double gap, double chord) {
+        if (used_by_trimmed(edge)) return {};
         wishes_.clear();
         double cap = std::numeric_limits<double>::infinity();
         for (const EdgeUse& use : edge_uses_[edge]) {
@@ -273,6 +317,11 @@ private:
                 normals.push_back(use.face->plane().normal);
                 continue;
             }
+            if (use.face->kind() == Face::Kind::trimmed) {
+                const auto [u, v] = pcurve_point(use, t);
+                if (const std::optional<Vec3> n = surface_normal(use.face->surface(), u, v)) normals.push_back(*n);
+                continue;
+            }
             const auto [u, v] = side_point(use, t);
             if (const std::optional<Vec3> n = face_normal(plans_[use.plan], u, v)) normals.push_back(*n);
         }
@@ -286,6 +335,7 @@ private:
     // corner of three or more faces or where a face has no normal, and at a pole only when the surface's
     // limit normal is one direction around it (not at an apex).
     Vec3 vertex_offset(const Vertex* vertex) {
+        if (used_by_trimmed(vertex)) return {};
         wishes_.clear();
         double cap = std::numeric_limits<double>::infinity();
         for (const VertexUse& use : vertex_uses_[vertex]) {
@@ -370,6 +420,7 @@ private:
     // point the faces' checks saw. A face that did not propose it sees it as an extra sample of a boundary
     // cell, as before the offsets.
     void sample_edges() {
+        index_uses();  // a solid of trimmed and planar faces only has no plan that asked for it yet
         for (const EdgePtr& edge : distinct_edges(faces_)) {
             EdgeSamples samples;
             if (edge->degenerate) {
@@ -412,15 +463,19 @@ private:
             // the curve itself, which neither face's check sees. A chord that strays further is split (the
             // faces close the cells along it with a zipper strip, as for another face's extra samples).
             // The bound: the loosest target of the faces along the edge. Between faces inscribed in their
-            // surfaces the edge's samples lie on it and the meshes stay as they were before the offsets.
+            // surfaces the chords still owe the curve the tolerance: a face's check measures its triangles'
+            // distance to its surface, and a chord close to the surface can be farther than that from the curve
+            // bulging past it at a crease (the corner runs of a loft through a square).
             double bound = 0;
-            bool straddled = false;
+            bool straddled = false, surface_use = false;
             for (const EdgeUse& use : edge_uses_[edge.get()])
                 if (use.face->kind() == Face::Kind::surface) {
                     bound = std::max(bound, plans_[use.plan].target);
                     straddled = straddled || plans_[use.plan].straddle;
+                    surface_use = true;
                 }
-            if (straddled && is_crease(edge.get())) {
+            if (!straddled) bound = settings_.check_tolerance();
+            if (surface_use && is_crease(edge.get())) {
                 for (int round = 0; round < 8; ++round) {
                     std::vector<double> added;
                     for (std::size_t k = 0; k + 1 < samples.params.size(); ++k) {
@@ -437,6 +492,7 @@ private:
                     place();
                 }
             }
+            if (used_by_trimmed(edge.get()) && refine_for_trimmed(edge.get(), samples.params)) place();
             const std::size_t n = samples.params.size();
             samples.ids.reserve(n);
             for (std::size_t k = 0; k < n; ++k) {
@@ -446,6 +502,58 @@ private:
             }
             edge_samples_.emplace(edge.get(), std::move(samples));
         }
+    }
+
+    // A trimmed face triangulates its (u, v) region on the edge's samples, whose segments in (u, v) then map
+    // onto the surface along curves the mesh does not follow: the chord between two samples. Adds the middle
+    // parameter of every interval where that curve strays from the chord by more than half the tolerance, or
+    // the edge itself by more than the tolerance, or (with an angle limit) where the face's normals turn by
+    // more than the limit, so that the triangles along the boundary can always be refined to the tolerance
+    // (domain_triangulation.cpp). Samples of a trimmed face's edges are on the curve (no
+    // offsets). Returns whether it added any.
+    bool refine_for_trimmed(const Edge* edge, std::vector<double>& params) {
+        const Interval d = edge->curve.domain();
+        const double half = 0.5 * settings_.check_tolerance();
+        const auto point_at = [&](double t) {
+            if (t <= d.min) return edge->start->point;
+            if (t >= d.max) return edge->end->point;
+            return edge->curve.point(t);
+        };
+        bool changed = false;
+        for (int round = 0; round < 30; ++round) {
+            std::vector<double> added;
+            for (std::size_t k = 0; k + 1 < params.size(); ++k) {
+                const double a = params[k], b = params[k + 1];
+                const Vec3 pa = point_at(a), pb = point_at(b);
+                bool fine = true;
+                for (double f : {0.25, 0.5, 0.75}) {
+                    const Vec3 chord = pa + (pb - pa) * f;
+                    if (distance(edge->curve.point(a + f * (b - a)), chord) > settings_.check_tolerance()) fine = false;
+                    for (const EdgeUse& use : edge_uses_[edge]) {
+                        if (!fine || use.face->kind() != Face::Kind::trimmed) continue;
+                        const auto [ua, va] = pcurve_point(use, a);
+                        const auto [ub, vb] = pcurve_point(use, b);
+                        const NurbsSurface& s = use.face->surface();
+                        const Interval su = s.domain_u(), sv = s.domain_v();
+                        const Vec3 on_surface = s.point(std::clamp(ua + f * (ub - ua), su.min, su.max),
+                                                        std::clamp(va + f * (vb - va), sv.min, sv.max));
+                        if (distance(on_surface, chord) > half) fine = false;
+                        // With an angle limit the face's normals at the two ends may turn by at most the limit
+                        // (its inner edges are the triangulation's business).
+                        if (fine && settings_.angle_rad > 0 && f == 0.5) {
+                            const std::optional<Vec3> na = surface_normal(s, ua, va), nb = surface_normal(s, ub, vb);
+                            if (na && nb && std::acos(std::clamp(dot(*na, *nb), -1.0, 1.0)) > settings_.angle_rad) fine = false;
+                        }
+                    }
+                }
+                if (!fine) added.push_back(0.5 * (a + b));
+            }
+            if (added.empty()) break;
+            changed = true;
+            added.insert(added.end(), params.begin(), params.end());
+            params = detail::merge_params(std::move(added), d.min, d.max);
+        }
+        return changed;
     }
 
     // A sample a surface face proposes for an edge: one of its lines along it, with the distances to the
@@ -459,7 +567,7 @@ private:
     std::vector<Proposal> proposals_of(const Edge* edge) {
         std::vector<Proposal> proposals;
         for (const EdgeUse& use : edge_uses_[edge]) {
-            if (use.face->kind() == Face::Kind::planar) continue;
+            if (use.face->kind() != Face::Kind::surface) continue;
             const SurfacePlan& plan = plans_[use.plan];
             const SideMap& m = plan.sides[side_slot(use.side)];
             if (m.degenerate) continue;
@@ -635,6 +743,37 @@ private:
         }
     }
 
+    // A trimmed face: its loops as boundary samples in (u, v) (each coedge's samples in the direction the face
+    // runs it, its last one left to the next coedge; a degenerate coedge contributes the start of its pole
+    // segment), then the refined triangulation of the region they bound.
+    void mesh_trimmed(const Face& face) {
+        index_uses();
+        std::vector<std::vector<detail::BoundarySample>> loops;
+        for (const auto& loop : face.loops()) {
+            auto& samples = loops.emplace_back();
+            for (const Coedge& coedge : loop) {
+                const EdgeSamples& e = samples_of(coedge.edge.get());
+                const NurbsCurve& pcurve = *coedge.pcurve;
+                const Interval d = pcurve.domain();
+                if (coedge.edge->degenerate) {
+                    const Vec3 uv = coedge.reversed ? pcurve.end_point() : pcurve.start_point();
+                    samples.push_back({uv.x, uv.y, e.ids[0], assembler_.point(e.ids[0])});
+                    continue;
+                }
+                const std::size_t n = e.params.size();
+                for (std::size_t k = 0; k + 1 < n; ++k) {
+                    const std::size_t at = coedge.reversed ? n - 1 - k : k;
+                    const Vec3 uv = pcurve.point(std::clamp(e.params[at], d.min, d.max));
+                    samples.push_back({uv.x, uv.y, e.ids[at], assembler_.point(e.ids[at])});
+                }
+            }
+        }
+        const detail::SurfaceEvaluator evaluator(face.surface());
+        const std::function<Id(const Vec3&)> add = [this](const Vec3& p) { return assembler_.add_point(p); };
+        for (const auto& t : detail::triangulate_trimmed_domain(evaluator, loops, settings_, add))
+            assembler_.add_triangle(t[0], t[1], t[2]);
+    }
+
     std::span<const Face> faces_;
     detail::TessellationSettings settings_;
     std::vector<SurfacePlan> plans_;
@@ -692,12 +831,20 @@ detail::TessellationSettings settings_of(const TessellationOptions& options) {
     return settings;
 }
 
-// Tessellates the faces; a request over the budget is reported with the estimate for all of them.
+// Tessellates the faces; a request over the budget is reported with the estimate for all of them. Where a
+// face's boundary samples cross (detail::CrossingLoops: edges closer than the tolerance), the whole solid is
+// tessellated again at half the tolerance, a few times at most: finer, so still within the tolerance asked.
 Mesh run_within_budget(std::span<const Face> faces, const detail::TessellationSettings& settings) {
-    try {
-        return Tessellator(faces, settings).run();
-    } catch (const TooFine& e) {
-        throw TooFine(estimate_triangles(faces, settings, e.estimated_triangles()), settings.max_triangles);
+    detail::TessellationSettings attempt = settings;
+    for (int halving = 0;; ++halving) {
+        try {
+            return Tessellator(faces, attempt).run();
+        } catch (const TooFine& e) {
+            throw TooFine(estimate_triangles(faces, attempt, e.estimated_triangles()), settings.max_triangles);
+        } catch (const detail::CrossingLoops& e) {
+            if (halving == 6) throw Error("solid", std::string(e.reason()) + " (also at 1/64 of the tolerance)");
+            attempt.tolerance *= 0.5;
+        }
     }
 }
 

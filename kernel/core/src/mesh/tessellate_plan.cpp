@@ -3,6 +3,7 @@
 #include "mesh/tessellate_plan.hpp"
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -713,10 +714,18 @@ void plan_surfaces(std::span<const Face> faces, const TessellationSettings& sett
     plans.clear();
     std::vector<CurvatureSamples> curvatures;
     const bool straddle = may_straddle(faces);
+    // A face beside a trimmed face is inscribed: the trimmed face's boundary samples stay on their curves
+    // (its p-curves say where they are in its (u, v)), and a straddling grid whose side is held on the curve
+    // covers its own surface near that side by less than the tolerance (a torus beside trimmed faces: 1.005x).
+    std::set<const Edge*> trimmed_edges;
+    for (const Face& face : faces)
+        if (face.kind() == Face::Kind::trimmed) for_each_coedge(face, [&](const Coedge& c) { trimmed_edges.insert(c.edge.get()); });
     for (const Face& face : faces) {
         if (face.kind() != Face::Kind::surface) continue;
+        bool beside_trimmed = false;
+        for (const Coedge& c : face.sides()) beside_trimmed = beside_trimmed || trimmed_edges.count(c.edge.get()) > 0;
         curvatures.emplace_back();
-        plans.push_back(plan_face(face, settings, curvatures.back(), straddle));
+        plans.push_back(plan_face(face, settings, curvatures.back(), straddle && !beside_trimmed));
     }
     // The estimate for the whole solid before any mesh is built: two triangles per cell, plus the
     // planar faces (about one triangle per boundary sample, bounded by the cells along their edges).

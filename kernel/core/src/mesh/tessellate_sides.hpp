@@ -4,6 +4,7 @@
 // edge is sampled at (the union of the lines of the faces that share it). Not installed, not part of
 // the public API.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -28,17 +29,19 @@ struct SideMap {
     double p0 = 0, p1 = 1;  // the face's parameter range along the side
     double t0 = 0, t1 = 1;  // the edge's domain
 
+    // Both maps stay inside the range they map into: the affine formula rounds, and a parameter one ulp past
+    // an end is outside the curve's domain.
     double to_edge(double p) const {
         if (p == p0) return flipped ? t1 : t0;
         if (p == p1) return flipped ? t0 : t1;
         const double s = (p - p0) / (p1 - p0);
-        return flipped ? t1 - s * (t1 - t0) : t0 + s * (t1 - t0);
+        return std::clamp(flipped ? t1 - s * (t1 - t0) : t0 + s * (t1 - t0), std::min(t0, t1), std::max(t0, t1));
     }
     double to_face(double t) const {
         if (t == t0) return flipped ? p1 : p0;
         if (t == t1) return flipped ? p0 : p1;
         const double s = (t - t0) / (t1 - t0);
-        return flipped ? p1 - s * (p1 - p0) : p0 + s * (p1 - p0);
+        return std::clamp(flipped ? p1 - s * (p1 - p0) : p0 + s * (p1 - p0), std::min(p0, p1), std::max(p0, p1));
     }
 };
 

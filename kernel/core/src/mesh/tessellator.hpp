@@ -11,16 +11,27 @@
 //   vertex and sample offsets      tessellate_offsets.hpp/.cpp shared_offset (OffsetWish, EdgeBend)
 //   triangle distances             triangle_grid.hpp/.cpp     point_segment_distance, point_triangle_distance
 //   strips between two rails       strip_zipper.hpp           zip_rails
-//   planar faces                   polygon_triangulation.hpp  triangulate_polygon
+//   planar and trimmed faces       domain_triangulation.hpp   triangulate_polygon, triangulate_trimmed_domain
+//                                                             (CGAL's constrained Delaunay triangulation)
 //   the mesh measured afterwards   deviation.cpp              max_deviation (deviation.hpp)
 //
 // Not installed, not part of the public API.
 
 #include <cstddef>
 
+#include "ratbez/error.hpp"
 #include "ratbez/progress.hpp"
 
 namespace ratbez::detail {
+
+// A face's boundary samples whose polygon crosses itself in the face's plane or (u, v): two edges closer than
+// the tolerance, each sampled only as finely as the tolerance asks (a thin ring, the band between two arcs
+// 0.04 apart at a tolerance of 0.08), or a neighbour's straddling offsets pushing one across the other. The
+// driver tessellates again at a finer tolerance (tessellate.cpp), which samples the edges finer.
+class CrossingLoops : public Error {
+public:
+    using Error::Error;
+};
 
 // What the caller of tessellate() asked for.
 struct TessellationSettings {

@@ -3,6 +3,7 @@
 // the CLI can use it beside CGAL (whose headers clash with OCCT's Handle macro).
 
 #include <string>
+#include <vector>
 
 #include "ratbez/brep.hpp"
 #include "ratbez/occt/convert_options.hpp"
@@ -19,10 +20,16 @@ std::string brep_string(const Solid& solid, const ConvertOptions& options = {});
 
 // The one solid of a STEP file or a .brep file, converted exactly (shape_import.hpp says which faces convert
 // and which are refused). Throws ratbez::Error naming "path" for a missing or unreadable file, a file that is
-// not STEP / .brep, a file with no solid or several, and a face that does not convert ("'a.step': face 7: ...").
-// `progress` gets the fraction done (reading the file is the first half, the faces the second) and may throw
-// to cancel; OpenCASCADE's reader is stopped at its next check.
+// not STEP / .brep, a file with no solid or several (pointing at read_step_all), and a face that does not
+// convert ("'a.step': face 7: ..."). `progress` gets the fraction done (reading the file is the first half,
+// the faces the second) and may throw to cancel; OpenCASCADE's reader is stopped at its next check.
 Solid read_step(const std::string& path, const Progress& progress = {});
 Solid read_brep(const std::string& path, const Progress& progress = {});
+// Every solid of the file, in file order: a STEP assembly is flattened with each instance's placement (the
+// product structure through OpenCASCADE's XCAF reader) and each solid named after its product
+// (Solid::name; "" where the file names none); a .brep file's solids in the order its shape holds them
+// (unnamed). Errors as above, a solid's prefixed "solid k: ".
+std::vector<Solid> read_step_all(const std::string& path, const Progress& progress = {});
+std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress = {});
 
 }  // namespace ratbez::occt

@@ -52,6 +52,9 @@ NurbsCurve from_occt(const Handle(Geom_BSplineCurve)& curve);
 BezierSurface from_occt(const Handle(Geom_BezierSurface)& surface);
 NurbsSurface from_occt(const Handle(Geom_BSplineSurface)& surface);
 
+// A 2D B-spline (a pcurve) as our NurbsCurve with z = 0.
+NurbsCurve from_occt_2d(const Handle(Geom2d_BSplineCurve)& curve);
+
 // The same NURBS curve in a plane's coordinates: every control point P becomes
 // (dot(P - origin, x_axis), dot(P - origin, y_axis)) with the same knots and weights. For a curve lying in
 // the plane (and orthonormal axes) this is the exact parameter-space curve of the plane (a pcurve).

@@ -1,28 +1,35 @@
 #pragma once
 // TopoDS_Shape -> ratbez::Solid: the inverse of topology.hpp, for shapes read from STEP and .brep files
-// (files.hpp) and made by OpenCASCADE itself. Exposes OCCT types (see geometry.hpp): do not include it
-// beside CGAL.
+// (files.hpp), made by OpenCASCADE itself or handed over by FreeCAD. Exposes OCCT types (see geometry.hpp): do
+// not include it beside CGAL.
 //
-// The shape must hold exactly one solid. Its topology is kept one to one: one Vertex per TopoDS_Vertex and one
-// shared Edge per TopoDS_Edge (by TopoDS identity, orientation aside), so the Solid is closed where the shell was.
-// Each face becomes
+// Each TopoDS_Solid becomes one Solid, all its shells (voids included). Its topology is kept one to one: one
+// Vertex per TopoDS_Vertex and one shared Edge per TopoDS_Edge (by TopoDS identity, orientation aside), so the
+// Solid is closed where the shells were. Each face becomes
 //  - a planar face when its surface is a Geom_Plane: the plane's frame (its y axis flipped for a REVERSED face,
 //    so that the normal points out), one loop per wire (outer wire first), the edges' 3D curves converted
-//    exactly (lines, conics, B-splines, Béziers; GeomConvert);
+//    exactly (lines, conics, B-splines, Béziers; GeomConvert), with the file's tolerance;
 //  - a surface face when the face is the natural rectangle of its surface's parameters: one wire whose edges'
 //    pcurves are the four sides of the (u, v) rectangle they span, one edge per side (degenerate at a pole,
-//    one seam edge for both sides of a closed direction). The surface over that rectangle becomes one exact
-//    NURBS: B-spline faces segmented to it, Bézier faces as they are, and cylinders, cones, spheres, tori,
-//    surfaces of revolution and of linear extrusion (of lines, conics, B-splines or Béziers) through
-//    GeomConvert's rational conversions, which are exact (rational quadratic arcs). A REVERSED face has its
-//    u direction reversed so that S_u x S_v points out. The sides' edges are the NURBS surface's own
-//    boundary isocurves (brep.hpp: edge parameter = surface parameter), from the first surface face that
-//    uses each edge; the exact conversions may parameterise an arc differently from OCCT's edge curve.
-// Anything else — a trimmed (non-rectangular) non-planar face, a face with holes, offset or other surfaces
-// without an exact conversion, two surface faces that parameterise a shared edge differently — is refused with
-// ratbez::Error naming "shape" and the face: "face 7: a trimmed Geom_BSplineSurface face is not supported ...".
-// Face and Solid validation (brep.hpp) then check closure and orientation. `progress` is called with the
-// fraction of faces done, and may throw to cancel (progress.hpp).
+//    one seam edge for both sides of a closed direction), its sides' edges the NURBS surface's own boundary
+//    isocurves (brep.hpp: edge parameter = surface parameter);
+//  - a trimmed face otherwise (any wires, holes, seams, poles; or a rectangle whose sides another surface face
+//    parameterised differently): the exact NURBS over the box of its p-curves, the edges' 3D curves converted
+//    exactly, the p-curves in our parameters (pcurve_fit.hpp: the file's own where they are exact in ours,
+//    else fitted by projection), with the file's tolerance or the fit's, whichever is larger.
+// The surfaces convert exactly: B-spline faces segmented to their rectangle (or kept whole), Bézier faces as
+// they are, cylinders, cones, spheres, tori, surfaces of revolution and of linear extrusion (of lines, conics,
+// B-splines or Béziers) through GeomConvert's rational conversions, which are exact (rational quadratic arcs).
+// A REVERSED face has its u direction reversed so that S_u x S_v points out.
+// Files are read as they are written: parameter ranges that overshoot a period or a bound by rounding are
+// snapped onto it, knots that dip by rounding are levelled (geometry.hpp), loops off their plane and p-curves
+// off their edges are accepted within the file's own tolerances (recorded as Face::tolerance).
+// Refused with ratbez::Error naming "shape" and the face: offset and other surfaces without an exact NURBS form,
+// an edge whose curve misses its vertices by more than the file's tolerances, faces that do not close into
+// valid shells (Face and Solid validation, brep.hpp). `progress` is called with the fraction of faces done, and
+// may throw to cancel (progress.hpp).
+
+#include <vector>
 
 #include <TopoDS_Shape.hxx>
 
@@ -31,6 +38,10 @@
 
 namespace ratbez::occt {
 
+// The shape's one solid; Error when it holds none (naming what it holds instead) or several (pointing at
+// from_occt_all / read_step_all).
 Solid from_occt(const TopoDS_Shape& shape, const Progress& progress = {});
+// Every solid of the shape in the order the shape holds them (TopExp_Explorer), errors prefixed "solid k: ".
+std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress = {});
 
 }  // namespace ratbez::occt

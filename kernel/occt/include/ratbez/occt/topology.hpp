@@ -15,9 +15,15 @@
 //    with no 3D curve, one per use;
 //  - a planar face is a Geom_Plane (gp_Ax3 from the face's plane frame) bounded by one wire per loop;
 //    the pcurves are the exact plane coordinates of the edges' NURBS (to_occt_2d);
+//  - a trimmed face is its Geom_BSplineSurface bounded by one wire per loop, the outer one first; the
+//    pcurves are the coedges' own p-curves (Geom2d_BSplineCurve, sharing the edge's parameter), a
+//    degenerate coedge a Degenerated edge with its p-curve along the pole;
 //  - coedges that run against their edge are TopAbs_REVERSED in the wire; all faces are
 //    TopAbs_FORWARD, because ours are outward (S_u x S_v, and the plane normal, point out of the solid),
-//    so the shell is closed and the solid has positive volume.
+//    so every shell is closed and the solid has positive volume. One TopoDS_Shell per shell of the Solid
+//    (Solid::shells), the outer one first; a void's faces point into the void, as OCCT wants.
+// Tolerance: 1e-10 of the solid's size (exact geometry), or the largest tolerance of its faces (what an
+// imported model's edges carry, Face::tolerance) when that is larger.
 // Errors: ratbez::Error naming "solid" when the geometry cannot be represented (degree 0 or > 25).
 //
 // With ConvertOptions::bezier_faces the same solid is handed over with one face per rational Bézier
@@ -50,7 +56,8 @@ namespace ratbez::occt {
 // The OCCT solid and where each of our topological entities went.
 struct ConvertedSolid {
     TopoDS_Solid solid;
-    TopoDS_Shell shell;
+    TopoDS_Shell shell;                // the outer shell
+    std::vector<TopoDS_Shell> shells;  // every shell, the outer one first (Solid::shells)
     // Every OCCT face in order; solid.faces()[i] became faces[first_face[i]] .. faces[first_face[i + 1] - 1]
     // (one face each unless bezier_faces). first_face has solid.faces().size() + 1 entries.
     std::vector<TopoDS_Face> faces;

@@ -1,7 +1,8 @@
-// Ear clipping with holes (kernel/core/src/mesh/polygon_triangulation.hpp): every boundary edge used once in
-// its direction, interior edges twice in opposite directions, the areas adding up, no zero-area ears.
-
-#include "mesh/polygon_triangulation.hpp"
+// Triangulations of plane regions (kernel/core/src/mesh/domain_triangulation.hpp). Polygons with holes: every
+// boundary edge used once in its direction, interior edges twice in opposite directions, the areas adding up,
+// no zero-area triangles. (The trimmed faces' refined regions are tested through tessellate, in
+// tessellate_trimmed_test.cpp.)
+#include "mesh/domain_triangulation.hpp"
 
 #include <gtest/gtest.h>
 

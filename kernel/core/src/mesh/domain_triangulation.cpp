@@ -1,0 +1,421 @@
+// Constrained Delaunay triangulations of plane regions (domain_triangulation.hpp).
+//
+// 1. The loops' points go into a constrained Delaunay triangulation (exact predicates); a trimmed face's in
+//    scaled coordinates x = u |S_u|, y = v |S_v| (the surface's average speeds), so that Delaunay's empty
+//    circles are roughly round on the surface and a long thin (u, v) rectangle does not give slivers in 3D.
+// 2. The region is the set of triangles nested an odd number of constrained boundaries deep, found by a flood
+//    fill from the infinite face across boundary segments (CGAL's own example does the same): holes and the
+//    outside are even.
+// 3. A trimmed face's region is refined in rounds: every triangle not yet known good is checked at the 25
+//    non-corner points of the barycentric lattice of step 1/6 (the surface at the lattice point's (u, v)
+//    against the triangle at the same coordinates); a failing triangle gets one new vertex at its worst point
+//    (or, for a triangle on a pole, the middle of the pole segment it spans, which fans the pole out). Points of a boundary segment are
+//    not checked and never added: the segment is the edge's chord, within the tolerance of the edge by the
+//    edge sampling (tessellate.cpp samples the edges of trimmed faces so that the chord in (u, v) also maps
+//    within half the tolerance of it). A triangle created in the current round waits for the next, so one
+//    round adds at most one point per failing region.
+
+#include "mesh/domain_triangulation.hpp"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_face_base_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <optional>
+#include <string>
+
+#include "math/numeric_internal.hpp"
+#include "ratbez/error.hpp"
+#include "ratbez/tessellate.hpp"
+
+namespace ratbez::detail {
+namespace {
+
+struct VertexInfo {
+    double u = 0, v = 0;
+    MeshVertexId id = 0;
+    Vec3 point;
+    bool known = false;  // false: a vertex CGAL made where two boundary segments cross
+};
+
+struct FaceInfo {
+    int nesting = -1;      // constrained boundaries crossed from the outside
+    bool checked = false;  // known to be within the tolerance
+    bool fresh = false;    // made in this round (by the insertion of a new vertex)
+    bool inside() const { return nesting % 2 == 1; }
+};
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
+using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>,
+                                                       CGAL::Exact_predicates_tag>;
+using Point = Cdt::Point;
+using FaceHandle = Cdt::Face_handle;
+using VertexHandle = Cdt::Vertex_handle;
+
+// The lattice points of step 1/kLattice in a triangle, corners excluded: barycentric (i, j, k) / kLattice.
+// The 25 points of step 1/6 and a check at 0.95 of the tolerance leave room for the largest error falling
+// between them (the error of a small triangle is about quadratic in its barycentric coordinates).
+constexpr int kLattice = 6;
+constexpr double kLatticeShare = 0.95;
+// Rounds of refinement before giving up on a triangle that cannot be improved (its error comes from a
+// boundary segment it touches): far more than a smooth surface needs (each round halves the failing sizes).
+constexpr int kMaxRounds = 200;
+
+// The triangulation of the loops' points and the region they bound.
+class Region {
+public:
+    // One loop: the points and their ids; consecutive points are joined by a constrained segment.
+    void add_loop(const std::vector<Point>& points, const std::vector<VertexInfo>& info) {
+        std::vector<VertexHandle> handles;
+        handles.reserve(points.size());
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const VertexHandle h = cdt_.insert(points[k]);
+            if (h->info().known && h->info().id != info[k].id)
+                fail("loops", "two points of the boundary fall on one place (" + number(info[k].u) + ", " + number(info[k].v) +
+                                  "): the loops touch themselves or each other");
+            h->info() = info[k];
+            handles.push_back(h);
+        }
+        for (std::size_t k = 0; k < handles.size(); ++k) {
+            const VertexHandle a = handles[k], b = handles[(k + 1) % handles.size()];
+            if (a != b) cdt_.insert_constraint(a, b);
+        }
+    }
+    // Once every loop is in: a vertex CGAL made itself sits where two boundary segments cross.
+    void require_simple_loops() const {
+        for (auto v = cdt_.finite_vertices_begin(); v != cdt_.finite_vertices_end(); ++v)
+            if (!v->info().known)
+                throw CrossingLoops("loops", "the boundary crosses itself (near (" + number(v->point().x()) + ", " + number(v->point().y()) +
+                                  ") in the triangulated plane): its loops overlap");
+    }
+
+    // Nesting levels by flood fill from the infinite face; crossing a constrained segment adds one.
+    void mark_domains() {
+        for (auto f = cdt_.all_faces_begin(); f != cdt_.all_faces_end(); ++f) f->info().nesting = -1;
+        std::deque<Cdt::Edge> border;
+        flood(cdt_.infinite_face(), 0, border);
+        while (!border.empty()) {
+            const Cdt::Edge e = border.front();
+            border.pop_front();
+            const FaceHandle n = e.first->neighbor(e.second);
+            if (n->info().nesting == -1) flood(n, e.first->info().nesting + 1, border);
+        }
+    }
+
+    // The ids of the region's triangles, counterclockwise; those with a repeated id (collapsed at a pole) left out.
+    std::vector<std::array<MeshVertexId, 3>> triangles() const {
+        std::vector<std::array<MeshVertexId, 3>> out;
+        for (auto f = cdt_.finite_faces_begin(); f != cdt_.finite_faces_end(); ++f) {
+            if (!f->info().inside()) continue;
+            const MeshVertexId a = f->vertex(0)->info().id, b = f->vertex(1)->info().id, c = f->vertex(2)->info().id;
+            if (a == b || b == c || c == a) continue;
+            out.push_back({a, b, c});
+        }
+        return out;
+    }
+
+protected:
+    void flood(FaceHandle start, int level, std::deque<Cdt::Edge>& border) {
+        if (start->info().nesting != -1) return;
+        std::deque<FaceHandle> queue{start};
+        while (!queue.empty()) {
+            const FaceHandle f = queue.front();
+            queue.pop_front();
+            if (f->info().nesting != -1) continue;
+            f->info().nesting = level;
+            for (int i = 0; i < 3; ++i) {
+                const FaceHandle n = f->neighbor(i);
+                if (n->info().nesting != -1) continue;
+                if (cdt_.is_constrained(Cdt::Edge(f, i))) border.emplace_back(f, i);
+                else queue.push_back(n);
+            }
+        }
+    }
+
+    Cdt cdt_;
+};
+
+// A trimmed face's region, refined on its surface.
+class DomainMesher : public Region {
+public:
+    DomainMesher(const SurfaceEvaluator& surface, const TessellationSettings& settings,
+                 const std::function<MeshVertexId(const Vec3&)>& add_point)
+        : surface_(surface), settings_(settings), add_point_(add_point) {}
+
+    std::vector<std::array<MeshVertexId, 3>> run(std::span<const std::vector<BoundarySample>> loops) {
+        choose_scale(loops);
+        for (const auto& loop : loops) {
+            require(loop.size() >= 2, "solid", "a trimmed face has a boundary loop of fewer than two samples");
+            std::vector<Point> points;
+            std::vector<VertexInfo> info;
+            for (const BoundarySample& sample : loop) {
+                points.push_back(to_point(sample.u, sample.v));
+                info.push_back(VertexInfo{sample.u, sample.v, sample.id, sample.point, true});
+            }
+            add_loop(points, info);
+        }
+        require_simple_loops();
+        mark_domains();
+        for (int round = 0; round < kMaxRounds; ++round) {
+            settings_.poll();
+            if (!refine_once()) break;
+            mark_domains();
+        }
+        remove_slivers();
+        return triangles();
+    }
+
+private:
+    // The average speeds |S_u| and |S_v| over a 9 x 9 grid of the loops' (u, v) box, for the metric.
+    void choose_scale(std::span<const std::vector<BoundarySample>> loops) {
+        double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+        for (const auto& loop : loops)
+            for (const BoundarySample& s : loop) u0 = std::min(u0, s.u), u1 = std::max(u1, s.u), v0 = std::min(v0, s.v), v1 = std::max(v1, s.v);
+        double su = 0, sv = 0;
+        int n = 0;
+        for (int i = 0; i <= 8; ++i)
+            for (int j = 0; j <= 8; ++j) {
+                const SurfaceFirstDerivatives d = evaluate(u0 + (u1 - u0) * i / 8.0, v0 + (v1 - v0) * j / 8.0);
+                if (!is_finite(d.su) || !is_finite(d.sv)) continue;
+                su += norm(d.su), sv += norm(d.sv), ++n;
+            }
+        scale_u_ = n > 0 && su > 0 && std::isfinite(su) ? su / n : 1.0;
+        scale_v_ = n > 0 && sv > 0 && std::isfinite(sv) ? sv / n : 1.0;
+        origin_u_ = u0, origin_v_ = v0;
+    }
+
+    Point to_point(double u, double v) const { return Point((u - origin_u_) * scale_u_, (v - origin_v_) * scale_v_); }
+
+    SurfaceFirstDerivatives evaluate(double u, double v) const {
+        const Interval du = surface_.domain_u(), dv = surface_.domain_v();
+        return surface_.first_derivatives(std::clamp(u, du.min, du.max), std::clamp(v, dv.min, dv.max));
+    }
+    Vec3 surface_point(double u, double v) const {
+        const Interval du = surface_.domain_u(), dv = surface_.domain_v();
+        return surface_.point(std::clamp(u, du.min, du.max), std::clamp(v, dv.min, dv.max));
+    }
+
+    // A constrained segment of the boundary proper (not a pole, whose ends are one mesh vertex).
+    bool is_boundary(FaceHandle f, int i) const {
+        return cdt_.is_constrained(Cdt::Edge(f, i)) && f->vertex(Cdt::ccw(i))->info().id != f->vertex(Cdt::cw(i))->info().id;
+    }
+    bool is_pole(FaceHandle f, int i) const {
+        return cdt_.is_constrained(Cdt::Edge(f, i)) && f->vertex(Cdt::ccw(i))->info().id == f->vertex(Cdt::cw(i))->info().id;
+    }
+
+    // Where a failing triangle wants its new vertex: a lattice point of the triangle with these corners
+    // (vertices are never removed, so the corners outlive the triangle, which a flip may have replaced).
+    struct Candidate {
+        std::array<VertexHandle, 3> corners;
+        double error = 0;
+        std::array<int, 3> lattice{};  // barycentric numerators of the point, per corner
+    };
+
+    // The triangle's largest distance from the surface over its lattice points (boundary segments' points
+    // excluded), and that point; with an angle limit, a corner normal turning too far fails it at its centre.
+    Candidate assess(FaceHandle f) const {
+        Candidate worst{{f->vertex(0), f->vertex(1), f->vertex(2)}, 0, {2, 2, 2}};
+        const VertexInfo* corner[3] = {&f->vertex(0)->info(), &f->vertex(1)->info(), &f->vertex(2)->info()};
+        for (int i = 0; i <= kLattice; ++i)
+            for (int j = 0; i + j <= kLattice; ++j) {
+                const int k = kLattice - i - j;
+                if (i == kLattice || j == kLattice || k == kLattice) continue;
+                const std::array<int, 3> b{i, j, k};
+                bool on_boundary = false;
+                for (int m = 0; m < 3; ++m)
+                    if (b[static_cast<std::size_t>(m)] == 0 && is_boundary(f, m)) on_boundary = true;
+                if (on_boundary) continue;
+                double u = 0, v = 0;
+                Vec3 linear{};
+                for (int m = 0; m < 3; ++m) {
+                    const double w = b[static_cast<std::size_t>(m)] / static_cast<double>(kLattice);
+                    u += w * corner[m]->u, v += w * corner[m]->v;
+                    linear = linear + corner[m]->point * w;
+                }
+                const double error = distance(surface_point(u, v), linear);
+                if (error > worst.error) worst.error = error, worst.lattice = b;
+            }
+        if (worst.error <= kLatticeShare * settings_.check_tolerance() && settings_.angle_rad > 0) {
+            // The normals at the ends of every inner edge may turn by at most the angle limit; a boundary
+            // segment's are the edge sampling's business (tessellate.cpp refines the edges of trimmed faces for it).
+            std::array<std::optional<Vec3>, 3> normals;
+            for (int m = 0; m < 3; ++m) {
+                const SurfaceFirstDerivatives d = evaluate(corner[m]->u, corner[m]->v);
+                const Vec3 n = cross(d.su, d.sv);
+                const double length = norm(n);
+                if (length > 1e-10 * (dot(d.su, d.su) + dot(d.sv, d.sv))) normals[static_cast<std::size_t>(m)] = n / length;
+            }
+            for (int m = 0; m < 3; ++m) {  // the edge opposite corner m
+                if (cdt_.is_constrained(Cdt::Edge(f, m))) continue;
+                const auto& a = normals[static_cast<std::size_t>(Cdt::ccw(m))];
+                const auto& b = normals[static_cast<std::size_t>(Cdt::cw(m))];
+                if (a && b && std::acos(std::clamp(dot(*a, *b), -1.0, 1.0)) > settings_.angle_rad) {
+                    worst.error = 2 * settings_.check_tolerance();
+                    worst.lattice = {kLattice / 2, kLattice / 2, kLattice / 2};
+                    worst.lattice[static_cast<std::size_t>(m)] = 0;  // the middle of that edge
+                    break;
+                }
+            }
+        }
+        return worst;
+    }
+
+    // One round: checks the triangles not yet known good, adds a vertex in each failing one that this
+    // round has not replaced yet. Returns whether anything was added.
+    bool refine_once() {
+        std::vector<Candidate> failing;
+        std::size_t inside = 0;
+        for (auto f = cdt_.finite_faces_begin(); f != cdt_.finite_faces_end(); ++f) {
+            f->info().fresh = false;
+            if (!f->info().inside()) continue;
+            ++inside;
+            if (f->info().checked) continue;
+            Candidate c = assess(f);
+            if (c.error <= kLatticeShare * settings_.check_tolerance()) f->info().checked = true;
+            else failing.push_back(c);
+        }
+        if (inside > settings_.max_triangles) throw TooFine(static_cast<double>(inside) * 2, settings_.max_triangles);
+        if (failing.empty()) return false;
+        std::sort(failing.begin(), failing.end(), [](const Candidate& a, const Candidate& b) { return a.error > b.error; });
+        bool added = false;
+        for (const Candidate& c : failing) {
+            FaceHandle f;
+            if (!cdt_.is_face(c.corners[0], c.corners[1], c.corners[2], f) || f->info().fresh) continue;
+            added = insert(c, f) || added;
+        }
+        return added;
+    }
+
+    // A triangle whose corners are distinct mesh vertices but collinear in space (near an apex: two points of
+    // one generator of a cone and the apex) has no area: its inner edge is flipped, when the flip keeps the
+    // triangulation valid in (u, v), to the one across the neighbour. The region stays covered; only the
+    // diagonal of a quadrilateral changes (the lattice check passed both triangles, which are on the surface).
+    void remove_slivers() {
+        const auto sliver = [](FaceHandle f) {
+            const VertexInfo &a = f->vertex(0)->info(), &b = f->vertex(1)->info(), &c = f->vertex(2)->info();
+            if (a.id == b.id || b.id == c.id || c.id == a.id) return false;  // a pole's collapsed triangle, left out
+            const double longest = std::max({norm(b.point - a.point), norm(c.point - b.point), norm(a.point - c.point)});
+            return norm(cross(b.point - a.point, c.point - a.point)) <= 1e-9 * longest * longest;
+        };
+        for (int pass = 0; pass < 3; ++pass) {
+            std::vector<std::array<VertexHandle, 3>> found;
+            for (auto f = cdt_.finite_faces_begin(); f != cdt_.finite_faces_end(); ++f)
+                if (f->info().inside() && sliver(f)) found.push_back({f->vertex(0), f->vertex(1), f->vertex(2)});
+            bool flipped = false;
+            for (const auto& corners : found) {
+                FaceHandle f;
+                if (!cdt_.is_face(corners[0], corners[1], corners[2], f) || !sliver(f)) continue;
+                for (int m = 0; m < 3; ++m) {
+                    const FaceHandle n = f->neighbor(m);
+                    if (cdt_.is_constrained(Cdt::Edge(f, m)) || cdt_.is_infinite(n) || !n->info().inside()) continue;
+                    // The flip is valid where the quadrilateral is strictly convex in the triangulation's plane.
+                    const Point& apex = f->vertex(m)->point();
+                    const Point& mirror = n->vertex(cdt_.mirror_index(f, m))->point();
+                    if (CGAL::orientation(apex, mirror, f->vertex(Cdt::ccw(m))->point()) *
+                            CGAL::orientation(apex, mirror, f->vertex(Cdt::cw(m))->point()) >= 0)
+                        continue;
+                    const int nesting = f->info().nesting;
+                    cdt_.flip(f, m);
+                    f->info().nesting = nesting, n->info().nesting = nesting;
+                    flipped = true;
+                    break;
+                }
+            }
+            if (!flipped) return;
+        }
+    }
+
+    // Adds the candidate's vertex in its triangle f: the middle of a pole segment of f if it has one (a fan
+    // at the pole), else its lattice point (on an interior edge: that edge is split, the neighbour too).
+    bool insert(const Candidate& c, FaceHandle f) {
+        for (int m = 0; m < 3; ++m) {
+            if (!is_pole(f, m)) continue;
+            const VertexInfo a = f->vertex(Cdt::ccw(m))->info();
+            const VertexInfo b = f->vertex(Cdt::cw(m))->info();
+            const double u = 0.5 * (a.u + b.u), v = 0.5 * (a.v + b.v);
+            const VertexHandle h = cdt_.insert(to_point(u, v), Cdt::EDGE, f, m);
+            h->info() = VertexInfo{u, v, a.id, a.point, true};
+            touched(h);
+            return true;
+        }
+        double u = 0, v = 0;
+        int edge = -1;  // the index in f of the edge the point lies on, if any
+        for (std::size_t m = 0; m < 3; ++m) {
+            const double w = c.lattice[m] / static_cast<double>(kLattice);
+            u += w * c.corners[m]->info().u, v += w * c.corners[m]->info().v;
+            if (c.lattice[m] == 0) edge = f->index(c.corners[m]);
+        }
+        if (edge >= 0 && cdt_.is_constrained(Cdt::Edge(f, edge))) return false;  // never on the boundary
+        const Point p = to_point(u, v);
+        const VertexHandle h = edge >= 0 ? cdt_.insert(p, Cdt::EDGE, f, edge) : cdt_.insert(p, Cdt::FACE, f, 0);
+        if (h->info().known) return false;  // fell on an existing vertex (rounding)
+        const Vec3 point = surface_point(u, v);
+        h->info() = VertexInfo{u, v, add_point_(point), point, true};
+        touched(h);
+        return true;
+    }
+
+    // The triangles around a new vertex are new (or reused by a flip): not checked, not to be refined again
+    // in this round.
+    void touched(VertexHandle h) {
+        Cdt::Face_circulator f = cdt_.incident_faces(h), end = f;
+        do {
+            f->info().checked = false;
+            f->info().fresh = true;
+        } while (++f != end);
+    }
+
+    const SurfaceEvaluator& surface_;
+    const TessellationSettings& settings_;
+    const std::function<MeshVertexId(const Vec3&)>& add_point_;
+    double scale_u_ = 1, scale_v_ = 1, origin_u_ = 0, origin_v_ = 0;
+};
+
+}  // namespace
+
+std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<std::vector<Point2>>& loops) {
+    require(!loops.empty(), "loops", "a polygon needs an outer loop");
+    Region region;
+    MeshVertexId index = 0;
+    for (const auto& loop : loops) {
+        require(loop.size() >= 3, "loops", "a loop needs at least three points");
+        std::vector<Point> points;
+        std::vector<VertexInfo> info;
+        for (const Point2& p : loop) {
+            require(std::isfinite(p.x) && std::isfinite(p.y), "loops", "points must be finite");
+            points.emplace_back(p.x, p.y);
+            info.push_back(VertexInfo{p.x, p.y, index++, Vec3{p.x, p.y, 0}, true});
+        }
+        region.add_loop(points, info);
+    }
+    region.require_simple_loops();
+    region.mark_domains();
+    std::vector<std::array<std::size_t, 3>> out;
+    for (const auto& t : region.triangles()) out.push_back({t[0], t[1], t[2]});
+    return out;
+}
+
+double twice_signed_area(const std::vector<Point2>& polygon) {
+    double sum = 0;
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        const Point2& a = polygon[k];
+        const Point2& b = polygon[(k + 1) % polygon.size()];
+        sum += a.x * b.y - b.x * a.y;
+    }
+    return sum;
+}
+
+std::vector<std::array<MeshVertexId, 3>> triangulate_trimmed_domain(
+    const SurfaceEvaluator& surface, std::span<const std::vector<BoundarySample>> loops,
+    const TessellationSettings& settings, const std::function<MeshVertexId(const Vec3&)>& add_point) {
+    return DomainMesher(surface, settings, add_point).run(loops);
+}
+
+}  // namespace ratbez::detail
