@@ -3,6 +3,7 @@
 #include "ratbez/export/three_mf.hpp"
 
 #include <algorithm>
+#include <clocale>
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
@@ -30,6 +31,25 @@ struct Releaser {
     }
 };
 using Handle = std::unique_ptr<PLib3MFBase, Releaser>;
+
+// lib3mf 1.8.1 sets the process's C locale to "C" while it writes or reads and leaves it so (measured: after
+// one write Python's LC_CTYPE was C and its file encoding ASCII, so a host's non-ASCII file names broke).
+// The host's locale is restored when lib3mf returns. (setlocale is process-wide: lib3mf's own call cannot
+// be made thread-local, so a host thread reading the locale meanwhile may see "C".)
+class LocaleRestorer {
+public:
+    LocaleRestorer() {
+        if (const char* current = std::setlocale(LC_ALL, nullptr)) saved_ = current;
+    }
+    ~LocaleRestorer() {
+        if (!saved_.empty()) std::setlocale(LC_ALL, saved_.c_str());
+    }
+    LocaleRestorer(const LocaleRestorer&) = delete;
+    LocaleRestorer& operator=(const LocaleRestorer&) = delete;
+
+private:
+    std::string saved_;
+};
 
 // lib3mf's last error on `instance` (or the bare code when it has none), as a ratbez::Error naming "3mf".
 [[noreturn]] void fail(PLib3MFBase* instance, LIB3MFRESULT code, const char* what) {
@@ -112,6 +132,7 @@ std::string utf8_string(PLib3MFBase* instance, const char* what, Get get) {
 std::string write_three_mf(const std::vector<ThreeMfObject>& objects,
                            const std::vector<std::pair<std::string, std::string>>& metadata, const Progress& progress) {
     require(!objects.empty(), "solids", "is empty");
+    const LocaleRestorer locale;
     Handle model = new_model();
     check(model.get(), lib3mf_model_setunit(model.get(), MODELUNIT_MILLIMETER), "setunit");
     for (const auto& [name, value] : metadata)
@@ -234,6 +255,7 @@ std::optional<Color> base_material_color(PLib3MFModel* model, PLib3MFModelResour
 }  // namespace
 
 std::vector<ThreeMfMesh> read_three_mf(std::string_view package) {
+    const LocaleRestorer locale;
     const Handle model = read_model(package);
     PLib3MFModelResourceIterator* created = nullptr;
     check(model.get(), lib3mf_model_getmeshobjects(model.get(), &created), "getmeshobjects");
@@ -271,6 +293,7 @@ std::vector<ThreeMfMesh> read_three_mf(std::string_view package) {
 }
 
 std::vector<std::pair<std::string, std::string>> read_three_mf_metadata(std::string_view package) {
+    const LocaleRestorer locale;
     const Handle model = read_model(package);
     DWORD count = 0;
     check(model.get(), lib3mf_model_getmetadatacount(model.get(), &count), "getmetadatacount");

@@ -89,6 +89,22 @@ def test_one_solid_is_one_named_coloured_object_with_the_version_and_what_was_me
 
 
 @needs_cgal
+def test_the_hosts_locale_survives_lib3mf(tmp_path):
+    # lib3mf 1.8.1 sets the C locale to "C" and leaves it so; in FreeCAD that made Python's file encoding
+    # ASCII. write_3mf restores the host's locale.
+    import locale
+    before = locale.setlocale(locale.LC_ALL)
+    locale.setlocale(locale.LC_CTYPE, "C.UTF-8")
+    changed = locale.setlocale(locale.LC_ALL)
+    try:
+        ratbez.write_3mf(ratbez.sphere(1), tmp_path / "b\u00e4ll.3mf", 0.1)
+        assert locale.setlocale(locale.LC_ALL) == changed
+        assert locale.getencoding() == "UTF-8"
+    finally:
+        locale.setlocale(locale.LC_ALL, before)
+
+
+@needs_cgal
 def test_a_dict_gives_one_object_per_solid_in_order_each_with_its_colour(tmp_path):
     solids = {"peg": ratbez.cylinder(2, 10), "knob": ratbez.sphere(3, center=(0, 0, 10))}
     ratbez.write_3mf(solids, tmp_path / "parts.3mf", tolerance=0.01, color={"knob": "#ff0000"})
