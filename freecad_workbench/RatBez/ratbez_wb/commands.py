@@ -257,33 +257,38 @@ class SweepCommand(_CappedCommand):
 class ExportOpenSCADCommand:
     def GetResources(self):
         return {"Pixmap": resources.icon("RatBez_ExportOpenSCAD"),
-                "MenuText": QT_TRANSLATE_NOOP("RatBez_ExportOpenSCAD", "Export to OpenSCAD..."),
+                "MenuText": QT_TRANSLATE_NOOP("RatBez_ExportOpenSCAD", "Export to OpenSCAD or 3MF..."),
                 "ToolTip": QT_TRANSLATE_NOOP("RatBez_ExportOpenSCAD",
-                                             "Write the selected RatBez solid as an OpenSCAD polyhedron (.scad), "
-                                             "a watertight mesh within a chosen tolerance of the exact surfaces")}
+                                             "Write the selected solids as one OpenSCAD library (.scad: a module "
+                                             "per solid in its colour, and one placing them all) or one 3MF file "
+                                             "(an object per solid, named and coloured): watertight meshes within "
+                                             "a chosen tolerance of the exact surfaces")}
 
     def IsActive(self):
-        return App.ActiveDocument is not None and len(_selected_solids()) == 1
+        return App.ActiveDocument is not None and len(_selected_exportable()) > 0
 
     def Activated(self):
         import RatBez
         from . import dialogs
-        solids = _selected_solids()
-        if len(solids) != 1:
-            App.Console.PrintError(translate("RatBez: select one RatBez solid to export\n"))
+        objects = _selected_exportable()
+        if not objects:
+            App.Console.PrintError(translate("RatBez: select the solids to export\n"))
             return
-        obj = solids[0]
-        options = dialogs.ask_export_options(obj)
+        options = dialogs.ask_export_options(objects)
         if options is None:
             return
         path, tolerance = options
+        target = objects if len(objects) > 1 else objects[0]
+        labels = ", ".join("'{}'".format(one_line(o.Label)) for o in objects)
         try:
-            RatBez.export_openscad(obj, path, tolerance)
+            if path.lower().endswith(".3mf"):
+                RatBez.export_3mf(target, path, tolerance)
+            else:
+                RatBez.export_openscad(target, path, tolerance)
         except kernel.error_types() + (OSError,) as error:
-            App.Console.PrintError(translate("RatBez: export of '{}' failed: {}\n").format(
-                one_line(obj.Label), one_line(error)))
+            App.Console.PrintError(translate("RatBez: export of {} failed: {}\n").format(labels, one_line(error)))
             return
-        App.Console.PrintMessage(translate("RatBez: wrote '{}' to {}\n").format(one_line(obj.Label), path))
+        App.Console.PrintMessage(translate("RatBez: wrote {} to {}\n").format(labels, path))
 
 
 class CheckOCCTCommand:
@@ -316,6 +321,12 @@ class CheckOCCTCommand:
 
 def _selected_solids():
     return [o for o in Gui.Selection.getSelection() if features.is_solid_feature(o)]
+
+
+def _selected_exportable():
+    """The selected objects that can be exported, in selection order: RatBez solids and other solids."""
+    import RatBez
+    return [o for o in Gui.Selection.getSelection() if RatBez.exportable(o)]
 
 
 CREATE_COMMANDS = [BezierCurveCommand, BezierSurfaceCommand, CylinderCommand, ConeCommand,
