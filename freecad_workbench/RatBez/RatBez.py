@@ -96,7 +96,10 @@ def _make(kind, doc, properties):
         for link in _links_of(properties):
             if conversion.is_whole_profile_object(link):
                 link[0].ViewObject.Visibility = False
-    doc.recompute()
+    # An object still missing a link it cannot do without (a sweep's Path, picked in its task panel next) is
+    # not recomputed: that could only fail. Link it, then recompute.
+    if all(getattr(obj, prop) for prop in cls.REQUIRED_LINKS):
+        doc.recompute()
     return obj
 
 
@@ -108,15 +111,16 @@ def _links_of(properties):
 
 def _complete(kind, properties):
     """Defaults that depend on other properties: a revolve's axis is the profile's vertical axis (as for a
-    sketch in Sketcher and PartDesign) unless one is given; an extrusion given a Direction or a
-    DirectionReference goes along it."""
-    if kind == "revolve" and properties.get("Profile") and not (
-            {"AxisPoint", "AxisDirection", "AxisReference"} & set(properties)):
-        try:
-            point, direction = conversion.revolve_axis(properties["Profile"])
-        except conversion.ProfileError:
-            return  # not planar: the recompute says so
-        properties["AxisPoint"], properties["AxisDirection"] = point, direction
+    sketch in Sketcher and PartDesign, and following the sketch when it moves) unless one is given: an
+    AxisReference (AxisMode Reference) or AxisPoint / AxisDirection (Custom); an extrusion given a Direction
+    or a DirectionReference goes along it."""
+    if kind == "revolve" and "AxisMode" not in properties:
+        if properties.get("AxisReference"):
+            properties["AxisMode"] = "Reference"
+        elif {"AxisPoint", "AxisDirection"} & set(properties):
+            properties["AxisMode"] = "Custom"
+        else:
+            properties["AxisMode"] = "Vertical"
     if kind == "extrude" and "DirectionMode" not in properties:
         if properties.get("DirectionReference"):
             properties["DirectionMode"] = "Edge"
@@ -156,8 +160,10 @@ def make_torus(doc=None, **properties):
 
 def make_revolve(doc=None, **properties):
     """A solid of revolution. Properties: Profile (sketch, wire, edge, face, (object, subnames) or a Part
-    shape), AxisReference (a straight edge or datum line) or AxisPoint and AxisDirection (default: the
-    profile's vertical axis, as a sketch revolves), Angle (degrees, in (0, 360]), Symmetric, Reversed."""
+    shape), AxisMode ("Vertical" (default: the profile's vertical axis, as a sketch revolves, following the
+    sketch when it moves), "Horizontal", "X", "Y", "Z", "Reference", "Custom"), AxisReference (a straight edge
+    or datum line) or AxisPoint and AxisDirection (given, they set the mode), Angle (degrees, in (0, 360]),
+    Symmetric, Reversed."""
     return _make("revolve", doc, properties)
 
 

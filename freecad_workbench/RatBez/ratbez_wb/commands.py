@@ -5,6 +5,8 @@ recorded by the macro recorder, as with FreeCAD's own Part primitives, and then 
 task panel (setEdit): FreeCAD keeps the command's transaction open while the edit lasts, so OK commits
 it as one undo step and Cancel removes the object. Revolve, Extrude, Ruled, Loft and Sweep are enabled only
 for a selection they can use, check it before they create anything, and say in one line why they refuse it.
+While a task panel is open, the creating commands are disabled (as Part's Revolve, Extrude, Loft, Sweep and
+Primitives are): a second command must not replace the open panel and leave its object behind.
 """
 
 import FreeCAD as App
@@ -74,12 +76,22 @@ class _CreateCommand:
         return "RatBez_" + "".join(part.capitalize() for part in cls.kind.split("_"))
 
     def IsActive(self):
-        return App.ActiveDocument is not None
+        return App.ActiveDocument is not None and not Gui.Control.activeDialog()
 
     def arguments(self):
         return ""
 
+    def refused_for_open_dialog(self):
+        """True (and one line in the report view) when a task panel is open: run from the console or a macro,
+        the command does nothing rather than replace it."""
+        if not Gui.Control.activeDialog():
+            return False
+        App.Console.PrintError("RatBez: {}: {}\n".format(translate(self.menu), translate("close the open task panel first")))
+        return True
+
     def Activated(self):
+        if self.refused_for_open_dialog():
+            return
         # The creation and the task panel session are one transaction: the panel's OK commits it, Cancel
         # aborts it (removing the object). FreeCAD keeps a transaction open while an edit it started lasts.
         App.ActiveDocument.openTransaction(translate("Create {}").format(translate(self.menu)))
@@ -131,7 +143,7 @@ class _ProfileCommand(_CreateCommand):
     hint = QT_TRANSLATE_NOOP("RatBez", "select a sketch, a wire, edges or one face first")
 
     def IsActive(self):
-        return App.ActiveDocument is not None and self.roles() is not None
+        return App.ActiveDocument is not None and not Gui.Control.activeDialog() and self.roles() is not None
 
     def roles(self):
         """[(property, link), ...] the selection gives, or None when it does not fit."""
@@ -162,6 +174,8 @@ class _ProfileCommand(_CreateCommand):
         pass
 
     def Activated(self):
+        if self.refused_for_open_dialog():
+            return
         roles = self.roles()
         reason = translate(self.hint) if roles is None else self.refusal(roles)
         if reason:
