@@ -757,6 +757,20 @@ def test_package_metadata_preferences_and_translations():
     check(root.find("p:maintainer", ns).text == "ratbez developers", "maintainer")
     check(root.find("p:license", ns).text == "LGPL-2.1-or-later", "license")
     check(root.find("p:name", ns).text == "RatBez", "name")
+    # Addon-ready, as FreeCAD's own reader (App.Metadata, the Addon Manager's) sees it: a maintainer with an
+    # address, the repository and documentation, the license file (in the Mod folder, with a README) and
+    # the workbenches it needs.
+    metadata = App.Metadata(os.path.join(mod, "package.xml"))
+    check(all(m["name"] and "@" in m["email"] for m in metadata.Maintainer), "maintainer: {}".format(metadata.Maintainer))
+    kinds = {url["type"]: url["location"] for url in metadata.Urls}
+    check({"repository", "documentation", "readme", "bugtracker"} <= set(kinds), "urls: {}".format(metadata.Urls))
+    check(all(location.startswith("https://") for location in kinds.values()), "urls: {}".format(kinds))
+    check(metadata.License == [{"name": "LGPL-2.1-or-later", "file": "LICENSE"}], "license: {}".format(metadata.License))
+    check("LESSER GENERAL PUBLIC LICENSE" in open(os.path.join(mod, "LICENSE")).read(), "LICENSE text")
+    check("# RatBez" in open(os.path.join(mod, "README.md")).read(), "README.md in the Mod folder")
+    check([d["package"] for d in metadata.Depend] == ["Part", "Sketcher"], "depends: {}".format(metadata.Depend))
+    check(metadata.Version == ratbez.__version__, "one version: package.xml {} vs ratbez {}".format(
+        metadata.Version, ratbez.__version__))
     preferences.set_default_tolerance(0.02)
     check(preferences.default_tolerance() == 0.02, "default tolerance preference")
     preferences.set_default_tolerance(0)
