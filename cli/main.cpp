@@ -1,6 +1,6 @@
 // The `ratbez` command: JSON shape spec in, files and reports out.
 //
-//   ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
+//   ratbez export SPEC.json -o OUT.{scad,stl,off,3mf,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
 //                [--import-stl]
 //                 [--max-triangles N] [--skip-self-intersection-check]
 //   ratbez check SPEC.json [--json]
@@ -58,7 +58,7 @@ using ratbez::spec::ShapeSpec;
 
 constexpr const char* usage_text =
     "usage: ratbez <command> ...\n"
-    "  ratbez export SPEC.json -o OUT.{scad,stl,off,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
+    "  ratbez export SPEC.json -o OUT.{scad,stl,off,3mf,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
     "                [--max-triangles N] [--import-stl] [--skip-self-intersection-check]\n"
     "                --import-stl: a .scad whose module import()s the mesh from a binary STL beside it (faster in\n"
     "                OpenSCAD for large meshes); --skip-self-intersection-check: for very large meshes\n"
@@ -261,13 +261,13 @@ int command_export(const std::vector<std::string>& raw) {
                                             {"--ascii", "--import-stl", "--skip-self-intersection-check"});
     const std::string& spec_path = single_spec(args, "export");
     const auto output = args.value("--output");
-    if (!output || output->empty()) throw UsageError("-o", "the output file is required (-o OUT.scad|stl|off|step|brep)");
+    if (!output || output->empty()) throw UsageError("-o", "the output file is required (-o OUT.scad|stl|off|3mf|step|brep)");
     const std::string extension = lowercase_extension(*output);
-    const bool mesh_format = extension == ".scad" || extension == ".stl" || extension == ".off";
+    const bool mesh_format = extension == ".scad" || extension == ".stl" || extension == ".off" || extension == ".3mf";
     const bool brep_format = extension == ".step" || extension == ".stp" || extension == ".brep";
     if (!mesh_format && !brep_format)
         throw UsageError("-o", "unknown extension '" + extension + "' in '" + *output +
-                                   "' (expected .scad, .stl, .off, .step or .brep)");
+                                   "' (expected .scad, .stl, .off, .3mf, .step or .brep)");
     // Options that cannot apply are errors rather than silently ignored (they are usually typos).
     if (args.value("--module") && extension != ".scad") throw UsageError("--module", "applies only to .scad output");
     if (args.flag("--ascii") && extension != ".stl") throw UsageError("--ascii", "applies only to .stl output");
@@ -308,9 +308,11 @@ int command_export(const std::vector<std::string>& raw) {
         tessellate_for(spec, MeshRequest{used_tolerance, angle, max_triangles, tolerance.has_value(),
                                          ratbez::progress_part(line, 0, kTessellationShare)});
     ratbez::exporter::ExportOptions options;
-    // The module is named by --module, else by the spec's `name`, else after the file written.
+    // The module is named by --module, else by the spec's `name`, else after the file written. A 3MF
+    // object's name is any text: the spec's name or the file's stem as they are.
     options.openscad.module_name =
-        module_name  ? *module_name
+        extension == ".3mf" ? (spec.named ? spec.name : fs::path(*output).stem().string())
+        : module_name       ? *module_name
         : spec.named ? derived_module_name(spec.name, "the spec's name")
                      : derived_module_name(fs::path(*output).stem().string(), "the file name");
     options.binary_stl = !args.flag("--ascii");

@@ -43,6 +43,9 @@ BY_FUNCTION = {
     ("NurbsSurface.__init__", "weights"): "Optional[Sequence[Sequence[float]]]",
     ("Mesh.__init__", "triangles"): "Sequence[Sequence[int]]",
     ("Mesh.__init__", "vertices"): "Sequence[Point]",
+    ("write_3mf", "solid"): "Union[Solid, Dict[str, Solid]]",
+    ("write_3mf", "name"): "Optional[str]",
+    ("write_3mf", "color"): "Union[str, Dict[str, str]]",
     ("_restore_state", "state"): "Any",
     ("_restore_state", "type"): "str",
 }

@@ -18,6 +18,7 @@ packages=(
   libgtest-dev libbenchmark-dev                                 # C++ tests, bench/
   clang libclang-rt-14-dev                                      # libFuzzer targets (fuzz/, scripts/fuzz.sh)
   openscad xvfb xauth                                           # OpenSCAD checks and PNG renders
+  lib3mf-dev                                                    # 3MF writing (openscad_export; pkg-config lib3MF)
   freecad                                                       # the workbench and its tests
 )
 

@@ -5,4 +5,5 @@
 
 import FreeCAD
 
-FreeCAD.addExportType("OpenSCAD polyhedron of a RatBez solid (*.scad)", "RatBez")
+FreeCAD.addExportType("OpenSCAD library of RatBez solids (*.scad)", "RatBez")
+FreeCAD.addExportType("3MF of RatBez solids (*.3mf)", "RatBez")

@@ -4,6 +4,22 @@
 import FreeCADGui
 
 
+def _setup():
+    """Translations and icons, before the workbench's menus and the preferences dialog ask for them: FreeCAD
+    loads Resources/translations/RatBez_<language>.qm for its language (the English one makes the property
+    group read "RatBez", which the property editor would split to "Rat Bez"), and finds the preferences
+    page's icon, preferences-ratbez.svg, among the workbench's icons. The English file is installed by the
+    workbench itself (i18n.install_english), since FreeCAD loads none for English."""
+    from ratbez_wb import i18n, resources
+    i18n.install_english()
+    FreeCADGui.addLanguagePath(resources.TRANSLATIONS_DIR)
+    FreeCADGui.updateLocale()
+    FreeCADGui.addIconPath(resources.ICON_DIR)
+
+
+_setup()
+
+
 class RatBezWorkbench(FreeCADGui.Workbench):
     MenuText = "RatBez"
     ToolTip = ("Exact rational Bézier / NURBS solids built by the ratbez kernel, with OpenSCAD "

@@ -8,14 +8,21 @@ Scripting interface (works in freecadcmd, without the GUI):
     loft = RatBez.make_loft(Sections=[bottom, middle, top])
     swept = RatBez.make_sweep(Profile=circle, Path=(sketch, ["Edge1", "Edge2"]))
     RatBez.export_openscad(cyl, "/tmp/cyl.scad", tolerance=0.01)
+    RatBez.export_openscad([cyl, sphere], "/tmp/parts.scad")   # a library: one module per solid, coloured
+    RatBez.export_3mf([cyl, sphere], "/tmp/parts.3mf")          # one 3MF object per solid, named and coloured
     print(RatBez.check_occt(cyl))
 
 Every make_<thing>(doc=None, **properties) adds a Part::FeaturePython to `doc` (default: the active
-document, or a new one), sets the given FreeCAD-style properties, recomputes and returns the object.
+document, or a new one), sets the given FreeCAD-style properties, recomputes and returns the object (a
+sweep without its Path is not recomputed until the path is linked).
 Bad property values do not raise here: the object is marked invalid and the kernel's message goes to
 the report view, exactly as when the value is typed into the property editor.
 """
 
+
+import os
+import re
+import tempfile
 
 import FreeCAD as App
 import Part
@@ -25,8 +32,8 @@ from ratbez_wb import text as text_tools
 
 __all__ = ["make_bezier_curve", "make_bezier_surface", "make_cylinder", "make_cone", "make_sphere",
            "make_torus", "make_revolve", "make_extrude", "make_ruled", "make_loft", "make_sweep", "is_solid",
-           "solid_of", "export_openscad", "check_occt", "format_check_report", "check_passed", "safe_label",
-           "export"]
+           "solid_of", "export_openscad", "export_3mf", "exportable", "check_occt", "format_check_report",
+           "check_passed", "safe_label", "export"]
 
 _DEFAULT_NAMES = {
     "bezier_curve": "BezierCurve", "bezier_surface": "BezierSurface", "cylinder": "Cylinder",
@@ -89,7 +96,10 @@ def _make(kind, doc, properties):
         for link in _links_of(properties):
             if conversion.is_whole_profile_object(link):
                 link[0].ViewObject.Visibility = False
-    doc.recompute()
+    # An object still missing a link it cannot do without (a sweep's Path, picked in its task panel next) is
+    # not recomputed: that could only fail. Link it, then recompute.
+    if all(getattr(obj, prop) for prop in cls.REQUIRED_LINKS):
+        doc.recompute()
     return obj
 
 
@@ -101,15 +111,16 @@ def _links_of(properties):
 
 def _complete(kind, properties):
     """Defaults that depend on other properties: a revolve's axis is the profile's vertical axis (as for a
-    sketch in Sketcher and PartDesign) unless one is given; an extrusion given a Direction or a
-    DirectionReference goes along it."""
-    if kind == "revolve" and properties.get("Profile") and not (
-            {"AxisPoint", "AxisDirection", "AxisReference"} & set(properties)):
-        try:
-            point, direction = conversion.revolve_axis(properties["Profile"])
-        except conversion.ProfileError:
-            return  # not planar: the recompute says so
-        properties["AxisPoint"], properties["AxisDirection"] = point, direction
+    sketch in Sketcher and PartDesign, and following the sketch when it moves) unless one is given: an
+    AxisReference (AxisMode Reference) or AxisPoint / AxisDirection (Custom); an extrusion given a Direction
+    or a DirectionReference goes along it."""
+    if kind == "revolve" and "AxisMode" not in properties:
+        if properties.get("AxisReference"):
+            properties["AxisMode"] = "Reference"
+        elif {"AxisPoint", "AxisDirection"} & set(properties):
+            properties["AxisMode"] = "Custom"
+        else:
+            properties["AxisMode"] = "Vertical"
     if kind == "extrude" and "DirectionMode" not in properties:
         if properties.get("DirectionReference"):
             properties["DirectionMode"] = "Edge"
@@ -149,8 +160,10 @@ def make_torus(doc=None, **properties):
 
 def make_revolve(doc=None, **properties):
     """A solid of revolution. Properties: Profile (sketch, wire, edge, face, (object, subnames) or a Part
-    shape), AxisReference (a straight edge or datum line) or AxisPoint and AxisDirection (default: the
-    profile's vertical axis, as a sketch revolves), Angle (degrees, in (0, 360]), Symmetric, Reversed."""
+    shape), AxisMode ("Vertical" (default: the profile's vertical axis, as a sketch revolves, following the
+    sketch when it moves), "Horizontal", "X", "Y", "Z", "Reference", "Custom"), AxisReference (a straight edge
+    or datum line) or AxisPoint and AxisDirection (given, they set the mode), Angle (degrees, in (0, 360]),
+    Symmetric, Reversed."""
     return _make("revolve", doc, properties)
 
 
@@ -209,24 +222,154 @@ def safe_label(text):
     return text_tools.one_line(text)
 
 
-def export_openscad(obj, path, tolerance=None, module=None):
-    """Write the solid of a RatBez feature to `path` as an OpenSCAD library file (ratbez.export_openscad:
-    `module NAME() { polyhedron(...); }` then `NAME();`, a watertight mesh within `tolerance` of the exact
-    surfaces; None: the kernel's default). NAME is `module`, else the file's stem made an identifier. A
-    non-identity Placement is applied to the solid (on its control points) before tessellating,
-    so `use <file>` imports the solid where FreeCAD shows it."""
+def exportable(obj):
+    """Whether `obj` can be offered for export: a RatBez solid feature, or any object whose shape holds a
+    solid (the kernel reads it through ratbez.read_brep; what it cannot read yet is refused at export with
+    the kernel's reason)."""
+    if is_solid(obj):
+        return True
+    if features.proxy_of(obj) is not None:
+        return False  # a RatBez curve or surface
+    shape = getattr(obj, "Shape", None)
+    return shape is not None and not shape.isNull() and bool(shape.Solids)
+
+
+def _placed_solid(obj):
+    """The ratbez.Solid of a RatBez feature with its Placement applied (on its control points: exact)."""
     solid = solid_of(obj)
-    rb = kernel.ratbez()
     placement = obj.Placement
     if not placement.isIdentity():
         solid = solid.transformed(_placement_matrix_rows(placement))
+    return solid
+
+
+def _read_solids(obj):
+    """The solids of another object's shape (its Placement included), read by the kernel from a .brep of it:
+    every solid where the module reads several (read_brep_all), else the one."""
+    rb = kernel.ratbez()
+    handle, path = tempfile.mkstemp(prefix="ratbez-", suffix=".brep")
+    os.close(handle)
+    try:
+        obj.Shape.exportBrep(path)
+        try:
+            if hasattr(rb, "read_brep_all"):
+                return list(rb.read_brep_all(path))
+            return [rb.read_brep(path)]
+        except rb.Error as error:
+            _, reason = kernel.error_parts(error)
+            raise ValueError("'{}': the ratbez kernel cannot read this solid yet: {}".format(
+                safe_label(obj.Label), reason.replace("'{}': ".format(path), "").replace(path, "its shape")))
+    finally:
+        os.remove(path)
+
+
+def _color_of(obj):
+    """The object's ShapeColor with its Transparency as "#rrggbbaa", or None without a view (freecadcmd)."""
+    view = getattr(obj, "ViewObject", None)
+    color = getattr(view, "ShapeColor", None) if view is not None else None
+    if color is None:
+        return None
+    opacity = 1.0 - max(0.0, min(100.0, float(getattr(view, "Transparency", 0)))) / 100.0
+    return "#" + "".join("{:02x}".format(int(round(max(0.0, min(1.0, c)) * 255))) for c in tuple(color[:3]) + (opacity,))
+
+
+def _identifier(text):
+    """`text` made an OpenSCAD identifier (as the kernel makes one of a file's stem): other characters
+    become _, a leading digit gets a _ in front."""
+    name = re.sub(r"[^A-Za-z0-9_]", "_", text) or "solid"
+    return "_" + name if name[0].isdigit() else name
+
+
+def _named_solids(objects, identifiers):
+    """[(name, ratbez.Solid, colour)] of the objects, in order: one per RatBez feature, one per solid of
+    another object; names from the Labels (identifiers for OpenSCAD modules when `identifiers`), made
+    unique with _2, _3, ..."""
+    if not isinstance(objects, (list, tuple)):
+        objects = [objects]
+    named = []
+    for obj in objects:
+        if features.proxy_of(obj) is not None and not is_solid(obj):
+            raise TypeError("'{}' is not a RatBez solid".format(safe_label(obj.Label)))
+        solids = [_placed_solid(obj)] if is_solid(obj) else _read_solids(obj)
+        color = _color_of(obj)
+        for k, solid in enumerate(solids):
+            base = obj.Label if len(solids) == 1 else "{}_{}".format(obj.Label, k + 1)
+            named.append((_identifier(base) if identifiers else base, solid, color))
+    taken, unique = set(), []
+    for name, solid, color in named:
+        candidate, count = name, 1
+        while candidate in taken:
+            count += 1
+            candidate = "{}_{}".format(name, count)
+        taken.add(candidate)
+        unique.append((candidate, solid, color))
+    return unique
+
+
+def _refused_builtin(error, names):
+    """The module name of `names` that export_openscad refused as an OpenSCAD built-in, or None."""
+    argument, reason = kernel.error_parts(error)
+    match = re.fullmatch(r"solids\['(.*)'\]", argument or "")
+    if match and "built-in" in reason and match.group(1) in names:
+        return match.group(1)
+    return None
+
+
+def export_openscad(objects, path, tolerance=None, module=None, color=True):
+    """Write RatBez solids (and other solids the kernel can read) to `path` as an OpenSCAD library file
+    (ratbez.export_openscad), a watertight mesh within `tolerance` of the exact surfaces (None: the kernel's
+    default). One object: `module NAME() { polyhedron(...); }` then `NAME();`, NAME being `module`, else the
+    file's stem made an identifier. A list: one module per solid, named after its Label, and the module NAME
+    placing them all. With `color`, each module's body is wrapped in color() of the object's ShapeColor (and
+    Transparency). A non-identity Placement is applied to the solid (on its control points) before
+    tessellating, so `use <file>` imports the solids where FreeCAD shows them."""
+    rb = kernel.ratbez()
+    several = isinstance(objects, (list, tuple))
+    named = _named_solids(objects, identifiers=True)
+    if not several:
+        name, solid, shape_color = named[0]
+        rb.export_openscad(solid, path, tolerance, module=module, color=shape_color if color else None)
+        labels = [objects.Label]
+    else:
+        names = [name for name, _, _ in named]
+        while True:
+            solids = {name: solid for name, solid, _ in named}
+            colors = {name: c for name, _, c in named if c is not None} if color else None
+            try:
+                rb.export_openscad(solids, path, tolerance, module=module, color=colors or None)
+                break
+            except rb.Error as error:
+                # A Label such as "cube" would shadow OpenSCAD's own cube(): that module gets _solid behind it,
+                # as the kernel names a file's stem.
+                refused = _refused_builtin(error, names)
+                if refused is None:
+                    raise
+                named = [(n + "_solid" if n == refused else n, s, c) for n, s, c in named]
+                names = [n for n, _, _ in named]
+        labels = [obj.Label for obj in objects]
     # The kernel's writer (a new file renamed over the target, the rules of every ratbez export) writes the
-    # library file, named after the target's stem; write_text_file then adds the Label in a comment line of
-    # its own, escaped, by the same rules.
-    rb.export_openscad(solid, path, tolerance, module=module)
-    with open(path) as source:
+    # library file; write_text_file then adds the Labels in comment lines of their own, escaped, by the same
+    # rules.
+    with open(path, encoding="utf-8") as source:
         body = source.read()
-    rb.write_text_file(path, "// RatBez '{}' from FreeCAD, its Placement applied\n{}".format(safe_label(obj.Label), body))
+    header = "".join("// RatBez '{}' from FreeCAD, its Placement applied\n".format(safe_label(label)) for label in labels)
+    rb.write_text_file(path, header + body)
+    return path
+
+
+def export_3mf(objects, path, tolerance=None, color=True):
+    """Write RatBez solids (and other solids the kernel can read) to `path` as a 3MF file (ratbez.write_3mf):
+    one object per solid named after its Label, with the object's ShapeColor (and Transparency) as its
+    colour when `color`, each a watertight mesh within `tolerance` of the exact surfaces, Placements
+    applied."""
+    rb = kernel.ratbez()
+    named = _named_solids(objects, identifiers=False)
+    if not isinstance(objects, (list, tuple)):
+        name, solid, shape_color = named[0]
+        rb.write_3mf(solid, path, tolerance, name=name, color=shape_color if color else None)
+    else:
+        colors = {name: c for name, _, c in named if c is not None} if color else None
+        rb.write_3mf({name: solid for name, solid, _ in named}, path, tolerance, color=colors or None)
     return path
 
 
@@ -266,16 +409,17 @@ def check_passed(report):
 
 
 def export(objects, filename):
-    """File > Export handler for *.scad (registered in Init.py): the first RatBez solid."""
-    solids = [o for o in objects if is_solid(o)]
+    """File > Export handler for *.scad and *.3mf (registered in Init.py): every exportable solid among the
+    objects, in one file (one module or 3MF object each)."""
+    solids = [o for o in objects if exportable(o)]
     if not solids:
-        App.Console.PrintError("RatBez: select a RatBez solid to export to OpenSCAD\n")
+        App.Console.PrintError("RatBez: select a RatBez solid (or another solid) to export\n")
         return
-    if len(solids) > 1:
-        App.Console.PrintWarning("RatBez: exporting only '{}'; export one solid per file\n".format(
-            solids[0].Label))
     try:
-        export_openscad(solids[0], filename)
+        if filename.lower().endswith(".3mf"):
+            export_3mf(solids if len(solids) > 1 else solids[0], filename)
+        else:
+            export_openscad(solids if len(solids) > 1 else solids[0], filename)
         App.Console.PrintMessage("RatBez: wrote {}\n".format(filename))
-    except kernel.error_types() as error:
-        App.Console.PrintError("RatBez: export of '{}' failed: {}\n".format(solids[0].Label, error))
+    except kernel.error_types() + (OSError,) as error:
+        App.Console.PrintError("RatBez: export to {} failed: {}\n".format(filename, text_tools.one_line(error)))

@@ -12,12 +12,13 @@
 
 #include "ratbez/deviation.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/export/three_mf.hpp"
 #include "ratbez/output_file.hpp"
 
 namespace ratbez::exporter {
 namespace {
 
-enum class Format { openscad, stl, off };
+enum class Format { openscad, stl, off, three_mf };
 
 Format format_from_path(const std::string& path) {
     require(!path.empty(), "path", "is empty");
@@ -26,7 +27,8 @@ Format format_from_path(const std::string& path) {
     if (extension == ".scad") return Format::openscad;
     if (extension == ".stl") return Format::stl;
     if (extension == ".off") return Format::off;
-    throw Error("path", "unknown extension '" + extension + "' in '" + path + "' (expected .scad, .stl or .off)");
+    if (extension == ".3mf") return Format::three_mf;
+    throw Error("path", "unknown extension '" + extension + "' in '" + path + "' (expected .scad, .stl, .off or .3mf)");
 }
 
 // The format, with the options it needs checked before any heavy work.
@@ -43,6 +45,37 @@ bool writes_float32(Format format, const ExportOptions& options) {
     return (format == Format::stl && options.binary_stl) || (format == Format::openscad && options.import_stl);
 }
 
+// What a format whose coordinates we cannot choose stores, for messages ("<this>, which leave this mesh ...").
+std::string fixed_coordinates(Format format) {
+    if (format == Format::three_mf) return "3MF, as lib3mf 1.8 writes it, stores float32 coordinates cut to 6 decimals";
+    if (format == Format::openscad) return "the binary STL beside the .scad (import_stl) stores float32 coordinates";
+    return "binary STL stores float32 coordinates";
+}
+
+// The header's words for such coordinates.
+std::string fixed_coordinates_note(Format format) {
+    return format == Format::three_mf ? "float32 cut to 6 decimals (3MF as lib3mf writes it)" : "float32 (binary STL)";
+}
+
+// The 3MF model's metadata: the version that wrote it, a title and `lines` as its description.
+std::vector<std::pair<std::string, std::string>> three_mf_metadata(const std::string& title, const std::vector<std::string>& lines) {
+    std::string description;
+    for (const std::string& line : lines) description += (description.empty() ? "" : "\n") + line;
+    return {{"Application", "ratbez " RATBEZ_VERSION}, {"Title", title}, {"Description", description}};
+}
+
+// The objects of a 3MF package as written and read back by lib3mf (what OpenSCAD's import() and slicers
+// get), checked to be the objects given: same names, counts and triangles.
+std::vector<ThreeMfMesh> written_back(const std::string& package, const std::vector<ThreeMfObject>& objects) {
+    std::vector<ThreeMfMesh> read = read_three_mf(package);
+    require(read.size() == objects.size(), "3mf", "lib3mf read back a different number of objects than it wrote");
+    for (std::size_t i = 0; i < read.size(); ++i)
+        require(read[i].name == objects[i].name && read[i].mesh.triangles == objects[i].mesh->triangles &&
+                    read[i].mesh.vertices.size() == objects[i].mesh->vertices.size(),
+                "3mf", [&] { return "lib3mf read object '" + objects[i].name + "' back with other triangles"; });
+    return read;
+}
+
 // One writer for every format (output_file.hpp): a new temporary beside the target, renamed over it.
 void write_file(const Mesh& mesh, const std::string& path, Format format, const ExportOptions& options) {
     output::write_file(path, [&](std::ostream& out) {
@@ -55,6 +88,7 @@ void write_file(const Mesh& mesh, const std::string& path, Format format, const 
                 write_stl_ascii(mesh, out, options.openscad.module_name);
             break;
         case Format::off: write_off(mesh, out); break;
+        case Format::three_mf: throw Error("path", "a 3MF file is written by write_three_mf_file");
         }
     });
 }
@@ -95,7 +129,7 @@ struct Measured {
     double max_deviation = 0;
     double exact_volume = 0;
     std::optional<int> decimals;
-    bool float32 = false;  // the mesh is in a binary STL
+    std::string fixed;  // the format fixes the coordinates (binary STL, 3MF): its words for them
 };
 
 std::vector<std::string> header_lines(const Mesh& written, const std::string& source, const std::optional<Measured>& measured) {
@@ -110,9 +144,9 @@ std::vector<std::string> header_lines(const Mesh& written, const std::string& so
     }
     lines.push_back(std::to_string(written.triangles.size()) + " triangles, " + std::to_string(written.vertices.size()) +
                     " vertices; coordinates " +
-                    (measured && measured->float32    ? std::string("float32 (binary STL)")
-                     : measured && measured->decimals ? "rounded to " + std::to_string(*measured->decimals) + " decimals"
-                                                      : std::string("exact (shortest round trip)")));
+                    (measured && !measured->fixed.empty() ? measured->fixed
+                     : measured && measured->decimals     ? "rounded to " + std::to_string(*measured->decimals) + " decimals"
+                                                          : std::string("exact (shortest round trip)")));
     Vec3 low = written.vertices.empty() ? Vec3{} : written.vertices.front(), high = low;
     for (const Vec3& p : written.vertices) {
         low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
@@ -173,8 +207,54 @@ MeshCheckOptions tessellation_checks(const Solid& solid, const Mesh& mesh, doubl
     return options;
 }
 
+namespace {
+
+// A 3MF package of `objects`, read back (the objects as a reader gets them) with `check` run on each; then
+// the package again with the metadata `describe` makes from what was measured, whose objects must read back
+// the same; then the file through the one safe writer. (lib3mf writes each coordinate as its float32 cut to
+// 6 decimals, which is not idempotent, so the second package is made from the same objects, not from the
+// read-back ones.) Progress: the first package and reading to 0.1, the checks to 0.9, the rest to 1.
+template <class Check, class Describe>
+void write_three_mf_file(const std::vector<ThreeMfObject>& objects, const std::string& path, const Progress& progress,
+                         Check check, Describe describe) {
+    const std::vector<ThreeMfMesh> read = written_back(write_three_mf(objects, {}, progress_part(progress, 0, 0.05)), objects);
+    if (progress) progress(0.1);
+    const double share = 0.8 / static_cast<double>(objects.size());
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        check(i, read[i].mesh, progress_part(progress, 0.1 + share * static_cast<double>(i), 0.1 + share * static_cast<double>(i + 1)));
+    const std::string package = write_three_mf(objects, describe(), progress_part(progress, 0.9, 0.95));
+    const std::vector<ThreeMfMesh> again = written_back(package, objects);
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        require(again[i].mesh.vertices == read[i].mesh.vertices, "3mf",
+                "lib3mf wrote the same coordinates differently the second time");
+    output::write_file(path, [&](std::ostream& out) {
+        out.write(package.data(), static_cast<std::streamsize>(package.size()));
+    });
+    if (progress) progress(1.0);
+}
+
+}  // namespace
+
 void export_mesh(const Mesh& given, const std::string& path, const ExportOptions& options) {
     const Format format = checked_format(path, options);
+    if (format == Format::three_mf) {
+        const std::vector<ThreeMfObject> objects = {{&given, options.openscad.module_name, options.openscad.color}};
+        std::vector<std::string> lines;
+        write_three_mf_file(
+            objects, path, options.progress,
+            [&](std::size_t, const Mesh& mesh, const Progress& progress) {
+                MeshCheckOptions checks = options.checks;
+                checks.progress = progress;
+                const MeshReport report = check_mesh(mesh, checks);
+                if (!report.ok()) refuse(report);
+                lines = header_lines(mesh, options.source, std::nullopt);
+            },
+            [&] {
+                lines.front() = "ratbez " RATBEZ_VERSION ", a 3MF file";
+                return three_mf_metadata(options.openscad.module_name, lines);
+            });
+        return;
+    }
     // Checked as written: binary STL holds float32 coordinates (a copy only then).
     const std::optional<Mesh> rounded =
         writes_float32(format, options) ? std::optional<Mesh>(float32_mesh(given)) : std::nullopt;
@@ -191,13 +271,21 @@ void export_mesh(const Mesh& given, const std::string& path, const ExportOptions
 
 namespace {
 
-// The mesh of `solid` as it will be written (float32, or the fewest decimals that pass, or exact) with its
-// measured deviation, checked: the work of export_tessellation before the writing. `progress` runs to 0.95.
-WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance, bool float32,
+// The coordinates a format fixes itself, as a reader of the file gets them, and the format's words for them
+// (fixed_coordinates).
+struct FixedMesh {
+    const Mesh* mesh = nullptr;
+    std::string stores;
+};
+
+// The mesh of `solid` as it will be written (the format's own coordinates, or the fewest decimals that
+// pass, or exact) with its measured deviation, checked: the work of export_tessellation before the writing.
+// `progress` runs to 0.95.
+WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance, const FixedMesh& fixed,
                           const MeshCheckOptions& base_checks, const Progress& progress) {
     require(std::isfinite(tolerance) && tolerance > 0, "tolerance", "must be a positive number");
-    const bool text = !float32;
-    WrittenMesh result{float32 ? float32_mesh(mesh) : mesh, 0, std::nullopt};
+    const bool text = fixed.mesh == nullptr;
+    WrittenMesh result{text ? mesh : *fixed.mesh, 0, std::nullopt};
     bool chosen = false;
     // The work, in shares of the progress reported: the deviation of the mesh as given, then for each
     // decimal candidate (fewest first) its deviation and checks, which end at the first that passes; then the
@@ -228,17 +316,17 @@ WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance
             break;
         }
     }
-    if (float32) {
+    if (!text) {
         result.max_deviation = measured(result.mesh, 0, 0.5);
         const MeshReport report = checked(result.mesh, 0.5, 0.95);
         if (!report.ok() || !(result.max_deviation <= tolerance))
-            throw Error("mesh", "binary STL stores float32 coordinates, which leave this mesh " +
+            throw Error("mesh", fixed.stores + ", which leave this mesh " +
                                     (report.ok() ? number_text(result.max_deviation, 4) + " from the surface, beyond the tolerance " +
                                                        number_text(tolerance, 4)
                                                  : "invalid (" + report.problems.front() + ")") +
-                                    ": write ASCII STL, .off or .scad text, or use a coarser tolerance");
+                                    ": write .scad, .off or ASCII STL text, or use a coarser tolerance");
     } else if (!chosen) {
-        const MeshReport report = checked(mesh, text ? kCandidatesEnd : 0, 0.95);
+        const MeshReport report = checked(mesh, kCandidatesEnd, 0.95);
         if (!report.ok()) refuse(report);
         if (!(result.max_deviation <= tolerance))
             throw Error("mesh", "refusing to export a mesh " + number_text(result.max_deviation, 4) +
@@ -248,16 +336,63 @@ WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance
     return result;
 }
 
+// The solids of `parts` in one 3MF file, one object each (named after the part's module_name, any text,
+// with its colour), each checked as export_tessellation checks a binary STL: on the coordinates lib3mf
+// wrote, read back.
+std::vector<WrittenMesh> export_three_mf(const std::vector<LibraryPart>& parts, const std::string& path,
+                                         const ExportOptions& options) {
+    require(!parts.empty(), "solids", "is empty");
+    std::vector<ThreeMfObject> objects;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const LibraryPart& part = parts[i];
+        require(part.solid != nullptr && part.mesh != nullptr, "solids", "a part has no solid or mesh");
+        require(!part.module_name.empty(), "solids", "a 3MF object needs a name");
+        for (std::size_t j = 0; j < i; ++j)
+            require(parts[j].module_name != part.module_name, "solids",
+                    [&] { return "two solids are named '" + part.module_name + "'"; });
+        require(std::isfinite(part.tolerance) && part.tolerance > 0, "tolerance", "must be a positive number");
+        objects.push_back({part.mesh, part.module_name, part.color});
+    }
+    const std::string stores = fixed_coordinates(Format::three_mf);
+    std::vector<WrittenMesh> written(parts.size());
+    std::vector<std::string> lines = {"ratbez " RATBEZ_VERSION ", a 3MF file of " + std::to_string(parts.size()) +
+                                          (parts.size() == 1 ? " solid" : " solids"),
+                                      "source: " + options.source};
+    write_three_mf_file(
+        objects, path, options.progress,
+        [&](std::size_t i, const Mesh& mesh, const Progress& progress) {
+            const LibraryPart& part = parts[i];
+            written[i] = prepared_mesh(*part.solid, *part.mesh, part.tolerance, FixedMesh{&mesh, stores}, part.checks, progress);
+            const std::vector<std::string> part_lines =
+                header_lines(written[i].mesh, options.source,
+                             Measured{part.tolerance, written[i].max_deviation, part.solid->volume(), std::nullopt,
+                                      fixed_coordinates_note(Format::three_mf)});
+            lines.push_back("object " + part.module_name + ":");
+            for (std::size_t k = 2; k < part_lines.size(); ++k) lines.push_back("  " + part_lines[k]);
+        },
+        [&] { return three_mf_metadata(parts.size() == 1 ? parts.front().module_name : std::filesystem::path(path).stem().string(), lines); });
+    return written;
+}
+
 }  // namespace
 
 WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tolerance, const std::string& path,
                                 const ExportOptions& options) {
     const Format format = checked_format(path, options);
+    if (format == Format::three_mf)
+        return export_three_mf({LibraryPart{options.openscad.module_name, &solid, &mesh, tolerance, options.checks, options.openscad.color}},
+                               path, options)
+            .front();
     const bool float32 = writes_float32(format, options);
-    const WrittenMesh result = prepared_mesh(solid, mesh, tolerance, float32, options.checks, options.progress);
+    const Mesh rounded = float32 ? float32_mesh(mesh) : Mesh{};
+    const std::string stores = float32 ? fixed_coordinates(format) : std::string();
+    const WrittenMesh result =
+        prepared_mesh(solid, mesh, tolerance, FixedMesh{float32 ? &rounded : nullptr, stores}, options.checks, options.progress);
     ExportOptions written = options;
-    written.openscad.header = header_lines(result.mesh, options.source,
-                                           Measured{tolerance, result.max_deviation, solid.volume(), result.decimals, float32});
+    written.openscad.header =
+        header_lines(result.mesh, options.source,
+                     Measured{tolerance, result.max_deviation, solid.volume(), result.decimals,
+                              float32 ? fixed_coordinates_note(Format::stl) : std::string()});
     write_files(result.mesh, path, format, written);
     if (options.progress) options.progress(1.0);
     return result;
@@ -266,8 +401,10 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
 std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, const std::string& path,
                                         const ExportOptions& options) {
     const Format format = checked_format(path, options);
-    require(format == Format::openscad, "path", "a library of several solids is a .scad file");
+    require(format == Format::openscad || format == Format::three_mf, "path",
+            "a file of several solids is a .scad library or a .3mf file");
     require(!options.import_stl, "import_stl", "applies to one solid, not a library of several");
+    if (format == Format::three_mf) return export_three_mf(parts, path, options);
     require(!parts.empty(), "solids", "is empty");
     std::vector<WrittenMesh> written;
     std::vector<LibraryModule> modules;
@@ -280,14 +417,14 @@ std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, c
         require(part.solid != nullptr && part.mesh != nullptr, "solids", "a part has no solid or mesh");
         require_module_name(part.module_name);
         const double share = 0.95 / static_cast<double>(parts.size());
-        written.push_back(prepared_mesh(*part.solid, *part.mesh, part.tolerance, false, part.checks,
+        written.push_back(prepared_mesh(*part.solid, *part.mesh, part.tolerance, FixedMesh{}, part.checks,
                                         progress_part(options.progress, share * static_cast<double>(i),
                                                       share * static_cast<double>(i + 1))));
         const WrittenMesh& mesh = written.back();
         // The module's lines are export_tessellation's header without its first two (version, source).
         const std::vector<std::string> lines =
             header_lines(mesh.mesh, options.source,
-                         Measured{part.tolerance, mesh.max_deviation, part.solid->volume(), mesh.decimals, false});
+                         Measured{part.tolerance, mesh.max_deviation, part.solid->volume(), mesh.decimals, std::string()});
         file.openscad.header.push_back("module " + part.module_name + "():");
         for (std::size_t k = 2; k < lines.size(); ++k) file.openscad.header.push_back("  " + lines[k]);
     }

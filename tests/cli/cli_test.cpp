@@ -13,10 +13,13 @@
 #include <fstream>
 #include <iterator>
 #include <numbers>
+#include <utility>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "ratbez/export/three_mf.hpp"
 
 namespace {
 
@@ -214,7 +217,7 @@ TEST_F(Cli, UsageErrors) {
                      "usage error: command: unknown command 'explode' (expected export, check, info or demo)");
     const std::string sphere = example("sphere.json");
     expect_bad_input(ratbez({"export", sphere}),
-                     "usage error: -o: the output file is required (-o OUT.scad|stl|off|step|brep)");
+                     "usage error: -o: the output file is required (-o OUT.scad|stl|off|3mf|step|brep)");
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--tolerance", "abc"}),
                      "usage error: --tolerance: must be a positive number, not 'abc'");
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--tolerance=-1"}),
@@ -242,7 +245,7 @@ TEST_F(Cli, UnknownExtensionAndUnwritablePath) {
     const std::string sphere = example("sphere.json");
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.obj")}),
                      "usage error: -o: unknown extension '.obj' in '" + path("a.obj") +
-                         "' (expected .scad, .stl, .off, .step or .brep)");
+                         "' (expected .scad, .stl, .off, .3mf, .step or .brep)");
     expect_bad_input(ratbez({"export", sphere, "-o", path("no/such/dir/a.scad")}),
                      "error: path: the folder '" + path("no/such/dir") + "' of '" + path("no/such/dir/a.scad") +
                          "' does not exist");
@@ -500,6 +503,45 @@ TEST_F(Cli, Version) {
     EXPECT_EQ(run.out, "ratbez " RATBEZ_VERSION "\n");
     EXPECT_EQ(run.err, "");
     expect_bad_input(ratbez({"--version", "x"}), "usage error: x: unexpected argument for '--version'");
+}
+
+// .3mf (issue 27): one object named after the spec (or the file: any text) with the spec's colour, read back by lib3mf
+// with the triangles the command reports; a built-in name is no matter there (no note), and --module is
+// refused as for every format but .scad.
+TEST_F(Cli, ExportsThreeMfNamedAndColouredFromTheSpec) {
+    const std::string spec =
+        spec_file(R"({"name": "red_ball", "color": "#ff0000", "shape": {"type": "sphere", "radius": 1}})");
+    CommandResult run = ratbez({"export", spec, "-o", path("r.3mf"), "--tolerance", "0.01"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    const std::string package = read_file(path("r.3mf"));
+    const auto objects = ratbez::exporter::read_three_mf(package);
+    ASSERT_EQ(objects.size(), 1u);
+    EXPECT_EQ(objects[0].name, "red_ball");
+    ASSERT_TRUE(objects[0].color.has_value());
+    EXPECT_EQ(objects[0].color->red, 1.0);
+    EXPECT_EQ(objects[0].color->blue, 0.0);
+    EXPECT_EQ(run.out.rfind("wrote " + path("r.3mf") + " (" + std::to_string(objects[0].mesh.triangles.size()) + " triangles, ", 0), 0u)
+        << run.out;
+    EXPECT_NEAR(objects[0].mesh.volume(), 4.0 / 3.0 * std::numbers::pi, 0.01 * 4 * std::numbers::pi);
+    EXPECT_NE(package.find("PK"), std::string::npos);
+    const auto metadata = ratbez::exporter::read_three_mf_metadata(package);
+    ASSERT_FALSE(metadata.empty());
+    EXPECT_EQ(metadata.front(), std::make_pair(std::string("Application"), std::string("ratbez " RATBEZ_VERSION)));
+
+    const std::string unnamed = spec_file(R"({"shape": {"type": "sphere", "radius": 1}})", "unnamed.json");
+    run = ratbez({"export", unnamed, "-o", path("sphere.3mf"), "--tolerance", "0.05"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err, "");  // no note: a 3MF object may be called sphere
+    EXPECT_EQ(ratbez::exporter::read_three_mf(read_file(path("sphere.3mf"))).at(0).name, "sphere");
+    expect_bad_input(ratbez({"export", spec, "-o", path("m.3mf"), "--module", "m"}),
+                     "usage error: --module: applies only to .scad output");
+    // Coordinates lib3mf cannot hold within the tolerance: refused as our failure (exit 1), no file.
+    const std::string tiny = spec_file(R"({"shape": {"type": "sphere", "radius": 0.01}})", "tiny.json");
+    run = ratbez({"export", tiny, "-o", path("tiny.3mf"), "--tolerance", "1e-6"});
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_EQ(run.err.rfind("error: mesh: 3MF, as lib3mf 1.8 writes it, stores float32 coordinates cut to 6 decimals", 0), 0u) << run.err;
+    EXPECT_FALSE(fs::exists(path("tiny.3mf")));
 }
 
 TEST_F(Cli, SpecColourWrapsTheModuleBody) {

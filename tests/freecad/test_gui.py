@@ -535,7 +535,7 @@ def test_export_and_check_commands():
         os.remove(path)
     asked = []
     original = dialogs.ask_export_options
-    dialogs.ask_export_options = lambda obj: (asked.append(obj.Name), (path, 0.05))[1]
+    dialogs.ask_export_options = lambda objects: (asked.extend(o.Name for o in objects), (path, 0.05))[1]
     try:
         Gui.runCommand("RatBez_ExportOpenSCAD")
         process_events()

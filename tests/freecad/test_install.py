@@ -23,7 +23,10 @@ def main():
         failures = []
         for name in ("Init.py", "InitGui.py", "RatBez.py", "package.xml", "ratbez_wb/features.py",
                      "ratbez_wb/commands.py", "ratbez_wb/conversion.py", "Resources/icons/RatBezWorkbench.svg",
-                     "Resources/icons/RatBez_Cylinder.svg", "Resources/icons/RatBez_CheckOCCT.svg"):
+                     "Resources/icons/RatBez_Cylinder.svg", "Resources/icons/RatBez_CheckOCCT.svg",
+                     "Resources/icons/preferences-ratbez.svg", "Resources/translations/RatBez.ts",
+                     "Resources/translations/RatBez_en.qm", "Resources/translations/RatBez_de.qm", "LICENSE",
+                     "README.md"):
             if not os.path.isfile(os.path.join(root, name)):
                 failures.append("missing " + name)
         modules = glob.glob(os.path.join(root, "ratbez*.so"))

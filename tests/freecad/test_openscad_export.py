@@ -94,4 +94,70 @@ def test_every_solid_renders_in_openscad():
             obj.Label, centre, expected_centre))
 
 
+def openscad_log(source, folder, output):
+    """Render `source` (written to folder/user.scad) to `output`; returns openscad's output after checking it."""
+    with open(os.path.join(folder, "user.scad"), "w") as f:
+        f.write(source)
+    result = subprocess.run(["openscad", "-o", output, "user.scad"], cwd=folder, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, timeout=240)
+    log = result.stdout.decode("utf-8", "replace")
+    check(result.returncode == 0 and "ERROR" not in log and "WARNING" not in log, log)
+    return log
+
+
+@suite.test
+def test_several_solids_make_one_library_and_one_3mf():
+    import zipfile
+    doc = App.newDocument("Library")
+    peg = RatBez.make_cylinder(doc, Radius=2, Height=10)
+    peg.Label = "Peg"
+    knob = RatBez.make_sphere(doc, Radius=3, Center=V(0, 0, 10))
+    knob.Label = "cube"  # an OpenSCAD built-in: its module gets _solid
+    box = doc.addObject("Part::Box", "Box")  # not a RatBez solid: the kernel reads its shape
+    box.Label = "Base plate"
+    box.Length, box.Width, box.Height = 20, 20, 2
+    box.Placement.Base = V(-10, -10, -2)
+    doc.recompute()
+    folder = os.path.join(OUT, "library")
+    os.makedirs(folder, exist_ok=True)
+    scad = os.path.join(folder, "parts.scad")
+    RatBez.export_openscad([peg, knob, box], scad, TOLERANCE)
+    text = open(scad).read()
+    for module in ("Peg", "cube_solid", "Base_plate"):
+        check("\nmodule {}() {{\npolyhedron(".format(module) in text, module + " module missing")
+    check(text.endswith("module parts() {\nPeg();\ncube_solid();\nBase_plate();\n}\nparts();\n"), text[-200:])
+    check(text.startswith("// RatBez 'Peg' from FreeCAD, its Placement applied\n// RatBez 'cube' from FreeCAD"), text[:200])
+    exact = {"Peg": PI * 4 * 10, "cube_solid": 4 / 3 * PI * 27, "Base_plate": 800.0}
+    for module, volume in exact.items():
+        stl = os.path.join(folder, module + ".stl")
+        openscad_log("use <parts.scad>\ndifference() {{ {}(); translate([1e4, 1e4, 1e4]) cube(0.01); }}\n".format(module),
+                     folder, stl)
+        close(Mesh.Mesh(stl).Volume, volume, 0.02, module + " rendered volume")
+    # The same solids as 3MF: one object each, named after the Labels as they are.
+    path = os.path.join(folder, "parts.3mf")
+    RatBez.export_3mf([peg, knob, box], path, TOLERANCE)
+    model = zipfile.ZipFile(path).read("3D/3dmodel.model").decode()
+    for label in ("Peg", "cube", "Base plate"):
+        check('name="{}"'.format(label) in model, label + " not a 3MF object")
+    stl = os.path.join(folder, "parts_3mf.stl")
+    log = openscad_log('difference() { import("parts.3mf"); translate([1e4, 1e4, 1e4]) cube(0.01); }\n', folder, stl)
+    check("Simple:        yes" in log, log)
+    # The union of the three: the knob overlaps the peg's top, the peg stands on the plate.
+    volume = Mesh.Mesh(stl).Volume
+    check(800 + PI * 40 < volume < 800 + PI * 40 + 36 * PI, "union volume {}".format(volume))
+    # A solid the kernel cannot read (yet) is refused with the object's Label, and nothing is written.
+    holed = doc.addObject("Part::Cut", "Holed")
+    holed.Base, holed.Tool = doc.addObject("Part::Box", "B2"), doc.addObject("Part::Cylinder", "C2")
+    holed.Tool.Placement.Base = V(5, 5, -1)
+    doc.recompute()
+    try:
+        RatBez.export_openscad([peg, holed], os.path.join(folder, "holed.scad"), TOLERANCE)
+        readable = True
+    except ValueError as error:
+        readable = False
+        check(str(error).startswith("'Holed': the ratbez kernel cannot read this solid yet: face "), str(error))
+        check(not os.path.exists(os.path.join(folder, "holed.scad")), "a refused export left a file")
+    print("a Part Cut with a cylindrical hole: {}".format("read by the kernel" if readable else "refused"))
+
+
 suite.run_and_exit()

@@ -295,6 +295,76 @@ def test_bad_input_is_one_line_in_property_words():
 
 
 @suite.test
+def test_out_of_range_sizes_are_blamed_on_their_property():
+    # Issue 25: Radius 1e100 was "faces: gives a solid of size 3.46e+100"; a thin cylinder "sides: side u_max ...".
+    doc = new_document("Range")
+    for make, expected in ((lambda: RatBez.make_sphere(doc, Radius=1e100), "Radius: gives a solid of size"),
+                           (lambda: RatBez.make_torus(doc, MajorRadius=4e99, MinorRadius=2e99),
+                            "MajorRadius: gives a solid of size"),
+                           (lambda: RatBez.make_cylinder(doc, Radius=1e100, Height=1), "Height: is 1, less than 1e-08"),
+                           (lambda: RatBez.make_cone(doc, Radius1=1, Radius2=1e-10, Height=1), "Radius2: is 1e-10")):
+        text = output_of(make)
+        obj = doc.Objects[-1]
+        check(not obj.isValid() and obj.getStatusString().startswith(expected),
+              "{}: {}".format(obj.Label, obj.getStatusString()))
+        check("RatBez: {}: {}".format(obj.Label, expected) in text, text)
+
+
+@suite.test
+def test_revolve_axis_follows_its_sketch_when_it_moves():
+    # Issue 25: the axis was frozen at creation, so moving the sketch gave "Profile: must lie in a plane
+    # containing the axis". Its Vertical axis is the sketch's V axis, found again at every recompute.
+    doc = new_document("Follow")
+    sketch, volume = xz_profile_sketch(doc)
+    revolve = RatBez.make_revolve(doc, Profile=sketch, Angle=270)
+    check(revolve.AxisMode == "Vertical", "default AxisMode: " + revolve.AxisMode)
+    assert_good_solid(revolve, volume * 0.75, "revolve")
+    start = revolve.Shape.CenterOfMass
+    for base, rotation in ((V(0, 5, 0), App.Rotation(V(1, 0, 0), 90)), (V(5, 0, 0), App.Rotation(V(1, 0, 0), 90)),
+                           (V(1, 2, 3), App.Rotation(V(1, 1, 0), 60))):
+        sketch.Placement = App.Placement(base, rotation)
+        doc.recompute()
+        assert_good_solid(revolve, volume * 0.75, "revolve after the sketch moved to {}".format(base))
+        axis = sketch.Placement.Rotation.multVec(V(0, 1, 0))
+        check((revolve.AxisPoint - base).Length < 1e-9 and (revolve.AxisDirection - axis).Length < 1e-9,
+              "the axis is the sketch's V axis: {} {}".format(revolve.AxisPoint, revolve.AxisDirection))
+        moved = App.Placement(base, rotation).multiply(App.Placement(V(), App.Rotation(V(1, 0, 0), 90)).inverse())
+        check((revolve.Shape.CenterOfMass - moved.multVec(start)).Length < 1e-6, "the solid moved with the sketch")
+    # A typed point makes the axis custom (it stays where typed); AxisMode Vertical makes it follow again.
+    revolve.AxisPoint = revolve.AxisPoint + V(0, 0, 0.5)
+    check(revolve.AxisMode == "Custom", "a typed AxisPoint: " + revolve.AxisMode)
+    revolve.AxisMode = "Vertical"
+    sketch.Placement = App.Placement(V(0, 0, 0), App.Rotation(V(1, 0, 0), 90))
+    doc.recompute()
+    assert_good_solid(revolve, volume * 0.75, "back at the origin")
+    # A document saved before AxisMode existed keeps its fixed axis (Custom).
+    revolve.removeProperty("AxisMode")
+    name = revolve.Name
+    path = os.path.join(OUT, "ratbez_revolve_without_axis_mode.FCStd")
+    doc.saveAs(path)
+    App.closeDocument(doc.Name)
+    doc = App.openDocument(path)
+    old = doc.getObject(name)
+    check(old.AxisMode == "Custom" and (old.AxisDirection - V(0, 0, 1)).Length < 1e-9, "restored: " + old.AxisMode)
+    App.closeDocument(doc.Name)
+
+
+@suite.test
+def test_a_sweep_without_its_path_is_not_recomputed_until_linked():
+    doc = new_document("SweepPath")
+    profile = circle_object(doc, "Profile", 0.5, V(2, 0, 0), V(0, 1, 0))  # across the arc's start
+    arc = doc.addObject("Part::Feature", "Arc")
+    arc.Shape = Part.ArcOfCircle(Part.Circle(V(0, 0, 0), V(0, 0, 1), 2), 0, PI / 2).toShape()
+    doc.recompute()
+    text = output_of(lambda: RatBez.make_sweep(doc, Profile=profile))
+    sweep = doc.Objects[-1]
+    check("Invalid" not in sweep.State and "Path" not in text and "failed" not in text, text + str(sweep.State))
+    sweep.Path = (arc, ["Edge1"])
+    doc.recompute()
+    assert_good_solid(sweep, PI * 0.25 * PI, "the sweep once its path is linked")
+
+
+@suite.test
 def test_debug_preference_prints_the_traceback():
     doc = new_document("Debug")
     sphere = RatBez.make_sphere(doc, Radius=1)
@@ -687,6 +757,20 @@ def test_package_metadata_preferences_and_translations():
     check(root.find("p:maintainer", ns).text == "ratbez developers", "maintainer")
     check(root.find("p:license", ns).text == "LGPL-2.1-or-later", "license")
     check(root.find("p:name", ns).text == "RatBez", "name")
+    # Addon-ready, as FreeCAD's own reader (App.Metadata, the Addon Manager's) sees it: a maintainer with an
+    # address, the repository and documentation, the license file (in the Mod folder, with a README) and
+    # the workbenches it needs.
+    metadata = App.Metadata(os.path.join(mod, "package.xml"))
+    check(all(m["name"] and "@" in m["email"] for m in metadata.Maintainer), "maintainer: {}".format(metadata.Maintainer))
+    kinds = {url["type"]: url["location"] for url in metadata.Urls}
+    check({"repository", "documentation", "readme", "bugtracker"} <= set(kinds), "urls: {}".format(metadata.Urls))
+    check(all(location.startswith("https://") for location in kinds.values()), "urls: {}".format(kinds))
+    check(metadata.License == [{"name": "LGPL-2.1-or-later", "file": "LICENSE"}], "license: {}".format(metadata.License))
+    check("LESSER GENERAL PUBLIC LICENSE" in open(os.path.join(mod, "LICENSE")).read(), "LICENSE text")
+    check("# RatBez" in open(os.path.join(mod, "README.md")).read(), "README.md in the Mod folder")
+    check([d["package"] for d in metadata.Depend] == ["Part", "Sketcher"], "depends: {}".format(metadata.Depend))
+    check(metadata.Version == ratbez.__version__, "one version: package.xml {} vs ratbez {}".format(
+        metadata.Version, ratbez.__version__))
     preferences.set_default_tolerance(0.02)
     check(preferences.default_tolerance() == 0.02, "default tolerance preference")
     preferences.set_default_tolerance(0)

@@ -5,6 +5,8 @@ recorded by the macro recorder, as with FreeCAD's own Part primitives, and then 
 task panel (setEdit): FreeCAD keeps the command's transaction open while the edit lasts, so OK commits
 it as one undo step and Cancel removes the object. Revolve, Extrude, Ruled, Loft and Sweep are enabled only
 for a selection they can use, check it before they create anything, and say in one line why they refuse it.
+While a task panel is open, the creating commands are disabled (as Part's Revolve, Extrude, Loft, Sweep and
+Primitives are): a second command must not replace the open panel and leave its object behind.
 """
 
 import FreeCAD as App
@@ -74,12 +76,22 @@ class _CreateCommand:
         return "RatBez_" + "".join(part.capitalize() for part in cls.kind.split("_"))
 
     def IsActive(self):
-        return App.ActiveDocument is not None
+        return App.ActiveDocument is not None and not Gui.Control.activeDialog()
 
     def arguments(self):
         return ""
 
+    def refused_for_open_dialog(self):
+        """True (and one line in the report view) when a task panel is open: run from the console or a macro,
+        the command does nothing rather than replace it."""
+        if not Gui.Control.activeDialog():
+            return False
+        App.Console.PrintError("RatBez: {}: {}\n".format(translate(self.menu), translate("close the open task panel first")))
+        return True
+
     def Activated(self):
+        if self.refused_for_open_dialog():
+            return
         # The creation and the task panel session are one transaction: the panel's OK commits it, Cancel
         # aborts it (removing the object). FreeCAD keeps a transaction open while an edit it started lasts.
         App.ActiveDocument.openTransaction(translate("Create {}").format(translate(self.menu)))
@@ -131,7 +143,7 @@ class _ProfileCommand(_CreateCommand):
     hint = QT_TRANSLATE_NOOP("RatBez", "select a sketch, a wire, edges or one face first")
 
     def IsActive(self):
-        return App.ActiveDocument is not None and self.roles() is not None
+        return App.ActiveDocument is not None and not Gui.Control.activeDialog() and self.roles() is not None
 
     def roles(self):
         """[(property, link), ...] the selection gives, or None when it does not fit."""
@@ -162,6 +174,8 @@ class _ProfileCommand(_CreateCommand):
         pass
 
     def Activated(self):
+        if self.refused_for_open_dialog():
+            return
         roles = self.roles()
         reason = translate(self.hint) if roles is None else self.refusal(roles)
         if reason:
@@ -257,33 +271,38 @@ class SweepCommand(_CappedCommand):
 class ExportOpenSCADCommand:
     def GetResources(self):
         return {"Pixmap": resources.icon("RatBez_ExportOpenSCAD"),
-                "MenuText": QT_TRANSLATE_NOOP("RatBez_ExportOpenSCAD", "Export to OpenSCAD..."),
+                "MenuText": QT_TRANSLATE_NOOP("RatBez_ExportOpenSCAD", "Export to OpenSCAD or 3MF..."),
                 "ToolTip": QT_TRANSLATE_NOOP("RatBez_ExportOpenSCAD",
-                                             "Write the selected RatBez solid as an OpenSCAD polyhedron (.scad), "
-                                             "a watertight mesh within a chosen tolerance of the exact surfaces")}
+                                             "Write the selected solids as one OpenSCAD library (.scad: a module "
+                                             "per solid in its colour, and one placing them all) or one 3MF file "
+                                             "(an object per solid, named and coloured): watertight meshes within "
+                                             "a chosen tolerance of the exact surfaces")}
 
     def IsActive(self):
-        return App.ActiveDocument is not None and len(_selected_solids()) == 1
+        return App.ActiveDocument is not None and len(_selected_exportable()) > 0
 
     def Activated(self):
         import RatBez
         from . import dialogs
-        solids = _selected_solids()
-        if len(solids) != 1:
-            App.Console.PrintError(translate("RatBez: select one RatBez solid to export\n"))
+        objects = _selected_exportable()
+        if not objects:
+            App.Console.PrintError(translate("RatBez: select the solids to export\n"))
             return
-        obj = solids[0]
-        options = dialogs.ask_export_options(obj)
+        options = dialogs.ask_export_options(objects)
         if options is None:
             return
         path, tolerance = options
+        target = objects if len(objects) > 1 else objects[0]
+        labels = ", ".join("'{}'".format(one_line(o.Label)) for o in objects)
         try:
-            RatBez.export_openscad(obj, path, tolerance)
+            if path.lower().endswith(".3mf"):
+                RatBez.export_3mf(target, path, tolerance)
+            else:
+                RatBez.export_openscad(target, path, tolerance)
         except kernel.error_types() + (OSError,) as error:
-            App.Console.PrintError(translate("RatBez: export of '{}' failed: {}\n").format(
-                one_line(obj.Label), one_line(error)))
+            App.Console.PrintError(translate("RatBez: export of {} failed: {}\n").format(labels, one_line(error)))
             return
-        App.Console.PrintMessage(translate("RatBez: wrote '{}' to {}\n").format(one_line(obj.Label), path))
+        App.Console.PrintMessage(translate("RatBez: wrote {} to {}\n").format(labels, path))
 
 
 class CheckOCCTCommand:
@@ -316,6 +335,12 @@ class CheckOCCTCommand:
 
 def _selected_solids():
     return [o for o in Gui.Selection.getSelection() if features.is_solid_feature(o)]
+
+
+def _selected_exportable():
+    """The selected objects that can be exported, in selection order: RatBez solids and other solids."""
+    import RatBez
+    return [o for o in Gui.Selection.getSelection() if RatBez.exportable(o)]
 
 
 CREATE_COMMANDS = [BezierCurveCommand, BezierSurfaceCommand, CylinderCommand, ConeCommand,

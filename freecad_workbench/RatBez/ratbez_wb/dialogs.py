@@ -30,23 +30,30 @@ def tolerance_field(value):
     return spin
 
 
-def ask_export_options(obj):
-    """Ask where to write the OpenSCAD file of `obj` and with which chordal tolerance.
+FORMATS = (("OpenSCAD library (*.scad)", ".scad"), ("3MF (*.3mf)", ".3mf"))
+
+
+def ask_export_options(objects):
+    """Ask where to write the solids `objects` (a list) and with which chordal tolerance; the extension
+    chooses the format (.scad: an OpenSCAD library, .3mf: 3MF), the filter chosen when none is typed.
 
     Returns (path, tolerance) with tolerance None for the kernel's automatic choice, or None when
     the user cancels. The folder and tolerance start from the preferences, and the folder used is
     remembered there.
     """
-    suggestion = os.path.join(preferences.export_directory(), file_name_of(obj.Label) + ".scad")
-    path, _ = QtGui.QFileDialog.getSaveFileName(Gui.getMainWindow(), translate("Export RatBez solid to OpenSCAD"),
-                                                suggestion, translate("OpenSCAD files (*.scad)"))
+    stem = objects[0].Label if len(objects) == 1 else objects[0].Document.Label
+    suggestion = os.path.join(preferences.export_directory(), file_name_of(stem) + ".scad")
+    filters = [translate(text) for text, _ in FORMATS]
+    title = (translate("Export RatBez solid") if len(objects) == 1
+             else translate("Export {} solids").format(len(objects)))
+    path, chosen = QtGui.QFileDialog.getSaveFileName(Gui.getMainWindow(), title, suggestion, ";;".join(filters))
     if not path:
         return None
-    if not path.lower().endswith(".scad"):
-        path += ".scad"
+    if not path.lower().endswith(tuple(extension for _, extension in FORMATS)):
+        path += FORMATS[filters.index(chosen)][1] if chosen in filters else ".scad"
 
     dialog = QtGui.QDialog(Gui.getMainWindow())
-    dialog.setWindowTitle(translate("OpenSCAD export tolerance"))
+    dialog.setWindowTitle(translate("Export tolerance"))
     layout = QtGui.QFormLayout(dialog)
     spin = tolerance_field(preferences.default_tolerance())
     layout.addRow(translate("Chordal tolerance:"), spin)

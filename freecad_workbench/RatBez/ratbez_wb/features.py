@@ -36,6 +36,8 @@ class RatBezFeature:
 
     TYPE = "RatBez::Feature"
     GROUP = "RatBez"
+    # Links the feature cannot be built without; make_* does not recompute an object that lacks one.
+    REQUIRED_LINKS = ()
     # (property type, name, tooltip, default); defaults may be callables (fresh lists) or None.
     PROPERTIES = ()
 
@@ -239,17 +241,30 @@ class ProfileFeature(SolidFeature):
         return MessageContext(loops=profile.names if profile else [])
 
 
+# How a revolution's axis is given: the profile plane's vertical or horizontal axis (recomputed from the
+# profile each time, so it follows a sketch that moves, as PartDesign's sketch axes do), a global axis, a
+# straight edge or datum line (AxisReference), or AxisPoint and AxisDirection as typed.
+REVOLVE_AXIS_MODES = ["Vertical", "Horizontal", "X", "Y", "Z", "Reference", "Custom"]
+_GLOBAL_AXES = {"X": (1, 0, 0), "Y": (0, 1, 0), "Z": (0, 0, 1)}
+
+
 class Revolve(ProfileFeature):
     TYPE = "RatBez::Revolve"
     PROPERTIES = (
         ("App::PropertyLinkSub", "Profile",
          _tip("Profile to revolve: a sketch, a 2D object, a wire, edges or one face (without holes). It must be "
               "closed, or open with both ends on the axis, and must not cross the axis"), None),
+        ("App::PropertyEnumeration", "AxisMode",
+         _tip("Vertical / Horizontal: the profile plane's vertical or horizontal axis (a sketch's V or H axis), "
+              "found again at every recompute, so the axis moves with the sketch; X, Y, Z: a global axis; "
+              "Reference: AxisReference; Custom: AxisPoint and AxisDirection"), lambda: list(REVOLVE_AXIS_MODES)),
         ("App::PropertyLinkSub", "AxisReference",
-         _tip("A straight edge or a datum line to revolve about. When set, it gives the axis and AxisPoint "
-              "and AxisDirection follow it"), None),
-        ("App::PropertyVector", "AxisPoint", _tip("A point on the axis of revolution"), lambda: V(0, 0, 0)),
-        ("App::PropertyVector", "AxisDirection", _tip("Direction of the axis of revolution"), lambda: V(0, 0, 1)),
+         _tip("A straight edge or a datum line to revolve about (AxisMode Reference). AxisPoint and "
+              "AxisDirection follow it"), None),
+        ("App::PropertyVector", "AxisPoint",
+         _tip("A point on the axis of revolution: typed for AxisMode Custom, else the axis used"), lambda: V(0, 0, 0)),
+        ("App::PropertyVector", "AxisDirection",
+         _tip("Direction of the axis of revolution: typed for AxisMode Custom, else the axis used"), lambda: V(0, 0, 1)),
         ("App::PropertyFloat", "Angle",
          _tip("Angle of revolution in degrees, in (0, 360]; other values are refused. The profile turns "
               "counterclockwise about AxisDirection (clockwise with Reversed)"), 360.0),
@@ -258,12 +273,48 @@ class Revolve(ProfileFeature):
         ("App::PropertyBool", "Reversed", _tip("Revolve the other way (clockwise about AxisDirection)"), False),
     )
 
+    def ensure_properties(self, obj):
+        restoring = "AxisMode" not in obj.PropertiesList and "AxisPoint" in obj.PropertiesList
+        self.updating_axis = True  # the defaults set here are nobody's choice of a custom axis
+        try:
+            super().ensure_properties(obj)
+        finally:
+            self.updating_axis = False
+        if restoring:
+            # Saved before AxisMode existed, the axis was fixed: Reference when one was linked, else Custom (it
+            # keeps the stored AxisPoint and AxisDirection; choose Vertical to make it follow the sketch).
+            obj.AxisMode = "Reference" if obj.AxisReference else "Custom"
+
+    def onChanged(self, obj, prop):
+        # Typed in the property editor (or set by a script), an axis point or direction means a custom axis,
+        # and a linked edge a reference axis, as before AxisMode existed; the feature's own updates of them
+        # (axis()) and a document being restored change no mode.
+        if getattr(self, "updating_axis", False) or "Restore" in obj.State or "AxisMode" not in obj.PropertiesList:
+            return
+        if prop in ("AxisPoint", "AxisDirection") and obj.AxisMode not in ("Custom", "Reference"):
+            obj.AxisMode = "Custom"
+        elif prop == "AxisReference" and obj.AxisReference and obj.AxisMode != "Reference":
+            obj.AxisMode = "Reference"
+
     def axis(self, obj):
-        """(point, unit direction) of the axis used, from AxisReference when set."""
-        if obj.AxisReference:
-            point, direction = conversion.straight_line(obj.AxisReference, "AxisReference")
+        """(point, unit direction) of the axis used, by AxisMode; AxisPoint and AxisDirection are set to it
+        (they show the axis used in every mode)."""
+        mode = obj.AxisMode
+        found = None
+        if mode == "Reference":
+            found = conversion.straight_line(obj.AxisReference, "AxisReference")
+        elif mode in ("Vertical", "Horizontal"):
+            found = conversion.revolve_axis(obj.Profile, mode)
+        elif mode in _GLOBAL_AXES:
+            found = V(0, 0, 0), V(*_GLOBAL_AXES[mode])
+        if found is not None:
+            point, direction = found
             if (obj.AxisPoint - point).Length > 1e-12 or (obj.AxisDirection - direction).Length > 1e-12:
-                obj.AxisPoint, obj.AxisDirection = point, direction
+                self.updating_axis = True
+                try:
+                    obj.AxisPoint, obj.AxisDirection = point, direction
+                finally:
+                    self.updating_axis = False
         direction = V(*_finite_vector("AxisDirection", obj.AxisDirection))
         if direction.Length <= 1e-12:
             raise Failure("AxisDirection", translate("must not be the zero vector"))
@@ -459,6 +510,7 @@ class Loft(SectionsFeature):
 
 class Sweep(ProfileFeature):
     TYPE = "RatBez::Sweep"
+    REQUIRED_LINKS = ("Path",)
     PROPERTIES = (
         ("App::PropertyLinkSub", "Profile",
          _tip("Closed planar profile to sweep: a sketch, a 2D object, a wire, edges or one face (without holes), "

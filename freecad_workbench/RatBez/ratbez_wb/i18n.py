@@ -21,3 +21,26 @@ except AttributeError:  # pragma: no cover - FreeCAD without FreeCAD.Qt
 
 def translate(text, context=CONTEXT):
     return _translate(context, text)
+
+
+_english = None  # the installed QTranslator of RatBez_en.qm (kept alive here)
+
+
+def install_english():
+    """Install RatBez_en.qm below FreeCAD's own translators. FreeCAD 0.20 loads a module's .qm files only
+    for a language other than English (and none at all under the C locale), but the English file holds the
+    display fixes of English texts: the property editor splits the group name "RatBez" at its capitals
+    and translates "Rat Bez" (App::Property), which this file turns back into "RatBez". Translators
+    installed later (FreeCAD's, for German, ...) take precedence over it."""
+    global _english
+    if _english is not None:
+        return True
+    import os
+    from PySide import QtCore
+    from . import resources
+    translator = QtCore.QTranslator()
+    if not translator.load(os.path.join(resources.TRANSLATIONS_DIR, "RatBez_en.qm")):
+        return False
+    QtCore.QCoreApplication.installTranslator(translator)
+    _english = translator
+    return True

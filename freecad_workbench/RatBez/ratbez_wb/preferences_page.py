@@ -13,7 +13,7 @@ class PreferencesPage:
         self.form.setWindowTitle(translate("RatBez"))
         layout = QtGui.QVBoxLayout(self.form)
 
-        export = QtGui.QGroupBox(translate("OpenSCAD export"))
+        export = QtGui.QGroupBox(translate("Export (OpenSCAD, 3MF)"))
         form = QtGui.QFormLayout(export)
         self.tolerance = dialogs.tolerance_field(None)
         form.addRow(translate("Default chordal tolerance"), self.tolerance)

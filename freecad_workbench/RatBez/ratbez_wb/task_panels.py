@@ -3,9 +3,17 @@ double-click (the view provider's setEdit), as FreeCAD's Part primitives and Par
 
 Every change in the form is written to the object's properties and recomputed at once (live preview);
 a failure shows in the panel (not in the report view while the panel is open). The whole session is one
-undo step: the transaction FreeCAD keeps open while an edit started by a command or a double-click lasts
-(or one the panel opens), committed by OK and aborted by Cancel, so Cancel of a new object removes it and
-Cancel of an edit restores the old values. OK is refused while the object does not recompute.
+undo step: the creating command's transaction, or, for an edit (a double-click in the tree or the 3D view,
+setEdit from the console), one the panel opens before its first change, since the tree's double-click
+leaves none open; OK commits it and Cancel aborts it, so Cancel of a new object removes it and Cancel of
+an edit restores the old values. OK is refused while the object does not recompute.
+
+Only one task panel at a time, as in Part and PartDesign: the creating commands are disabled while one is
+open, and editing another object asks whether to close the open RatBez panel (Cancel) first.
+
+The panels fit FreeCAD's default Combo View (264 px wide, about 230 px for the form): fields shrink, rows
+whose label and field do not fit side by side put the field under the label, button rows are grids of two,
+and tables scroll rather than cut their cells.
 """
 
 import contextlib
@@ -16,19 +24,46 @@ from PySide import QtCore, QtGui
 
 from . import conversion, features, resources
 from .errors import Failure
-from .i18n import translate
+from .i18n import QT_TRANSLATE_NOOP, translate
 
 V = App.Vector
 _open = {}  # object name -> its open panel
 
 
+def may_edit(obj):
+    """Before the view provider starts editing obj (a double-click): True when no task dialog is open or obj's
+    own is; another RatBez panel is cancelled first if the user agrees, as PartDesign asks ("A dialog is
+    already open in the task panel"); a dialog of another workbench must be closed first (False, one line
+    in the report view). FreeCAD would otherwise end the open edit without its panel's Cancel."""
+    if not Gui.Control.activeDialog() or obj.Name in _open:
+        return True
+    others = list(_open.values())
+    if not others:
+        App.Console.PrintWarning(translate("RatBez: close the open task panel first\n"))
+        return False
+    if not ask_to_close_open_panel():
+        return False
+    for other in others:
+        other.reject()
+    process_pending()
+    return not Gui.Control.activeDialog()
+
+
+def process_pending():
+    """Let the task view remove a closed dialog before the next one shows."""
+    for _ in range(3):
+        QtGui.QApplication.processEvents()
+
+
 def open_for(obj):
-    """Show the task panel of a RatBez object (the view provider's setEdit). False if another task
-    dialog is open."""
+    """Show the task panel of a RatBez object (the view provider's setEdit); False if a task dialog is still
+    open (may_edit asks first)."""
     proxy = features.proxy_of(obj)
     if proxy is None:
         return False
     if Gui.Control.activeDialog():
+        if obj.Name in _open:
+            return True
         App.Console.PrintWarning(translate("RatBez: close the open task panel first\n"))
         return False
     panel = PANELS[proxy.TYPE](obj)
@@ -37,11 +72,25 @@ def open_for(obj):
     return True
 
 
+def ask_to_close_open_panel():
+    """PartDesign's question when a dialog is open: True to close it (Yes, the default)."""
+    box = QtGui.QMessageBox(Gui.getMainWindow())
+    box.setObjectName("RatBezCloseOpenPanel")
+    box.setIcon(QtGui.QMessageBox.Question)
+    box.setText(translate("A dialog is already open in the task panel"))
+    box.setInformativeText(translate("Do you want to close this dialog?"))
+    box.setStandardButtons(QtGui.QMessageBox.Yes | QtGui.QMessageBox.No)
+    box.setDefaultButton(QtGui.QMessageBox.Yes)
+    return box.exec_() == QtGui.QMessageBox.Yes
+
+
 def close_for(obj):
-    """The view provider's unsetEdit: forget the panel and close the dialog."""
+    """The view provider's unsetEdit: close the dialog. A panel still open here did not end by its OK or
+    Cancel (FreeCAD ended the edit: another object's edit started, the document closes): it ends as Cancel,
+    so its transaction does not stay open with the changes in it."""
     panel = _open.pop(getattr(obj, "Name", None), None)
     if panel is not None:
-        panel.cleanup()
+        panel.abandon()
     Gui.Control.closeDialog()
 
 
@@ -52,6 +101,53 @@ def panel_of(obj):
 
 # ---------------------------------------------------------------------------------------------------
 # Fields
+
+# The narrowest a number field or combo box gets: two fields side by side (a Center and an Axis column) and
+# the X / Y / Z labels fit the form FreeCAD's default Combo View leaves (about 230 px).
+FIELD_MINIMUM_WIDTH = 72
+
+
+def narrow_combo(combo):
+    """A combo box whose width does not follow its longest item (the popup still shows it whole)."""
+    combo.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
+    combo.setMinimumContentsLength(8)
+    combo.setSizePolicy(QtGui.QSizePolicy.Expanding, QtGui.QSizePolicy.Fixed)
+    return combo
+
+
+class ElidedLabel(QtGui.QLabel):
+    """A one-line label that shows as much of its text as fits, with "..." in the middle, and the whole text
+    as its tooltip: an object name never widens the panel."""
+
+    def __init__(self, text=""):
+        super().__init__()
+        self.full_text = ""
+        self.setMinimumWidth(40)
+        self.setSizePolicy(QtGui.QSizePolicy.Ignored, QtGui.QSizePolicy.Preferred)
+        self.set_full_text(text)
+
+    def set_full_text(self, text):
+        self.full_text = text
+        self.setToolTip(text)
+        self._elide()
+
+    def resizeEvent(self, event):
+        super().resizeEvent(event)
+        self._elide()
+
+    def _elide(self):
+        width = max(self.contentsRect().width() - 2 * max(self.indent(), 0), 40)
+        self.setText(self.fontMetrics().elidedText(self.full_text, QtCore.Qt.ElideMiddle, width))
+
+
+def button_grid(buttons, columns=2):
+    """A widget with the buttons (or check boxes) in a grid, `columns` per row."""
+    widget = QtGui.QWidget()
+    grid = QtGui.QGridLayout(widget)
+    grid.setContentsMargins(0, 0, 0, 0)
+    for index, button in enumerate(buttons):
+        grid.addWidget(button, index // columns, index % columns)
+    return widget
 
 class NumberField:
     """A number input with a unit: FreeCAD's Gui::QuantitySpinBox (units, expressions, as in FreeCAD's
@@ -71,6 +167,9 @@ class NumberField:
             widget.setDecimals(6)
             widget.setSingleStep(step)
             widget.setSuffix(" " + unit.replace("deg", "°") if unit else "")
+        # Narrower than its size hint when the task view is (a spin box's hint fits its longest value).
+        widget.setMinimumWidth(FIELD_MINIMUM_WIDTH)
+        widget.setSizePolicy(QtGui.QSizePolicy.Expanding, QtGui.QSizePolicy.Fixed)
         self.widget = widget
 
     def value(self):
@@ -130,6 +229,8 @@ class VectorGrid:
             self.columns.append(VectorColumn(fields))
         for r, axis in enumerate("XYZ"):
             grid.addWidget(QtGui.QLabel(axis), r + 1, 0)
+        for c in range(len(self.columns)):
+            grid.setColumnStretch(c + 1, 1)  # the vector columns share the width equally
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -148,13 +249,17 @@ class TaskPanel:
         self.proxy = obj.Proxy
         self.loading = False
         self.linked_before = features.linked_objects(obj)
-        if not App.getActiveTransaction():
-            # Opened from the Python console (setEdit): no command or double-click transaction to join.
-            self.doc.openTransaction(translate("Edit {}").format(obj.Label))
+        # A creating command's transaction is open now and lasts until OK / Cancel; an edit has none that
+        # lasts (the tree's double-click closes its own when the handler returns), so the panel opens one
+        # before its first change (editing()).
+        self.transaction = App.getActiveTransaction() is not None
         self.form = QtGui.QWidget()
         self.form.setWindowTitle(translate(self.TITLE))
         self.form.setWindowIcon(QtGui.QIcon(resources.icon(self.ICON)))
         self.layout = QtGui.QFormLayout(self.form)
+        # Narrow task view: a field that does not fit beside its label goes under it.
+        self.layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
+        self.layout.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
         self.build()
         self.status = QtGui.QLabel()
         self.status.setWordWrap(True)
@@ -180,6 +285,19 @@ class TaskPanel:
     def shown(self):
         """After the form is filled and after each preview (the Revolve axis drawing)."""
 
+    def ready(self):
+        """Whether the object can be recomputed yet (a sweep needs its path); else the reason, in the status."""
+        return True
+
+    # -- the undo step ----------------------------------------------------------------------------
+
+    def editing(self):
+        """Before the panel changes a property: the session's transaction is open (one the panel opens for an
+        edit, named "Edit <Label>", unless FreeCAD has one open for it)."""
+        if not App.getActiveTransaction():
+            self.doc.openTransaction(translate("Edit {}").format(self.obj.Label))
+        self.transaction = True
+
     # -- live preview -----------------------------------------------------------------------------
 
     @contextlib.contextmanager
@@ -200,10 +318,14 @@ class TaskPanel:
     def changed(self, *_):
         if self.loading:
             return
+        self.editing()
         try:
             self.store()
         except Failure as failure:
             self.tell(str(failure))
+            return
+        if self.ready() is not True:
+            self.tell(self.ready())
             return
         self.doc.recompute()
         self.show_status()
@@ -221,7 +343,7 @@ class TaskPanel:
         self.status.setVisible(True)
 
     def show_status(self):
-        failure = self.failure()
+        failure = self.failure() or (None if self.ready() is True else self.ready())
         self.status.setText(failure or "")
         self.status.setVisible(bool(failure))
 
@@ -231,10 +353,14 @@ class TaskPanel:
         return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
 
     def accept(self):
+        self.editing()
         try:
             self.store()
         except Failure as failure:
             self.tell(str(failure))
+            return False
+        if self.ready() is not True:
+            self.tell(self.ready())
             return False
         self.doc.recompute()
         if self.failure():
@@ -245,14 +371,23 @@ class TaskPanel:
         return True
 
     def reject(self):
-        self.doc.abortTransaction()
+        self.undo_session()
+        self.finish()
+        return True
+
+    def abandon(self):
+        """Cancel without ending the edit (FreeCAD is ending it)."""
+        self.undo_session()
+        self.cleanup()
+
+    def undo_session(self):
+        if self.transaction:
+            self.doc.abortTransaction()
         if self.doc.getObject(self.name) is None:
             # Cancel of a new object: it is gone, show its profiles again (hiding them was not undoable).
             for linked in self.linked_before:
                 linked.ViewObject.Visibility = True
         self.doc.recompute()
-        self.finish()
-        return True
 
     def finish(self):
         self.cleanup()
@@ -306,9 +441,9 @@ class PrimitivePanel(TaskPanel):
         for prop in self.DIMENSIONS:
             minimum = 0.0 if prop in ("Radius2",) else 1e-7
             self.dimensions[prop] = self.add_number(prop, "mm", minimum, 1e9, self.tooltip(prop))
-        titles, units, tips = ["Center"], ["mm"], [self.tooltip("Center")]
+        titles, units, tips = [QT_TRANSLATE_NOOP("RatBez", "Center")], ["mm"], [self.tooltip("Center")]
         if self.HAS_AXIS:
-            titles, units, tips = titles + ["Axis"], units + [""], tips + [self.tooltip("Axis")]
+            titles, units, tips = titles + [QT_TRANSLATE_NOOP("RatBez", "Axis")], units + [""], tips + [self.tooltip("Axis")]
         self.layout.addRow(QtGui.QLabel("<b>{}</b>".format(translate("Location"))))
         columns = self.add_vectors(titles, units, tips)
         self.center = columns[0]
@@ -364,11 +499,13 @@ class LinkRow:
 
     def __init__(self, panel, prop, label, tooltip, picking=False):
         self.panel, self.prop, self.picking = panel, prop, picking
+        # The row's title, then the linked object's name across the whole panel (elided only past its
+        # width), then the button: the narrow task view has no room for the three side by side.
         self.widget = QtGui.QWidget()
-        layout = QtGui.QHBoxLayout(self.widget)
+        layout = QtGui.QVBoxLayout(self.widget)
         layout.setContentsMargins(0, 0, 0, 0)
-        self.label = QtGui.QLabel()
-        self.label.setToolTip(panel.tooltip(prop))
+        layout.setSpacing(2)
+        self.label = ElidedLabel()
         self.button = QtGui.QPushButton(translate("Select..." if picking else "Use selection"))
         self.button.setToolTip(tooltip)
         self.button.setCheckable(picking)
@@ -376,18 +513,23 @@ class LinkRow:
             self.button.toggled.connect(self.pick)
         else:
             self.button.clicked.connect(self.use_selection)
-        layout.addWidget(self.label, 1)
-        layout.addWidget(self.button)
-        panel.layout.addRow(translate(label), self.widget)
+        buttons = QtGui.QHBoxLayout()
+        buttons.addWidget(self.button)
+        buttons.addStretch(1)
+        layout.addWidget(self.label)
+        layout.addLayout(buttons)
+        panel.layout.addRow(QtGui.QLabel(translate(label)))
+        panel.layout.addRow(self.widget)
 
     def load(self):
-        self.label.setText(conversion.link_label(getattr(self.panel.obj, self.prop)))
+        self.label.set_full_text(conversion.link_label(getattr(self.panel.obj, self.prop)))
 
     def pick(self, pressed):
         if pressed:
             Gui.Selection.clearSelection()
             self.button.setText(translate("Done"))
-            self.panel.tell(translate("Select the edges or the sketch in the 3D view or the tree, then press Done"))
+            self.panel.tell("{}: {}".format(self.prop, translate(
+                "select its edges or its sketch in the 3D view or the tree, then press Done")))
             return
         self.button.setText(translate("Select..."))
         self.use_selection()
@@ -397,6 +539,7 @@ class LinkRow:
         if link is None:
             self.panel.tell(translate("Select a sketch, a wire, edges or one face first"))
             return
+        self.panel.editing()
         setattr(self.panel.obj, self.prop, link)
         self.load()
         self.panel.changed()
@@ -417,14 +560,16 @@ class ProfilePanel(TaskPanel):
     def add_line_modes(self, label, modes, tooltip):
         """The combo box of the ways to give the axis or direction (modes: (name, text) pairs), and below
         it the label that names the picked edge or datum line when that is the way."""
-        combo = QtGui.QComboBox()
+        combo = narrow_combo(QtGui.QComboBox())
         for _, text in modes:
             combo.addItem(translate(text))
         combo.setToolTip(tooltip)
         combo.currentIndexChanged.connect(self.changed)
-        self.layout.addRow(translate(label), combo)
+        self.layout.addRow(QtGui.QLabel(translate(label)))
+        self.layout.addRow(combo)
         self.reference_label = QtGui.QLabel()
-        self.layout.addRow("", self.reference_label)
+        self.reference_label.setWordWrap(True)
+        self.layout.addRow(self.reference_label)
         return combo
 
     def show_reference(self):
@@ -461,14 +606,15 @@ class ProfilePanel(TaskPanel):
             pass
 
 
+# The Revolve feature's AxisMode values, in its order, with their words in the panel.
 _AXIS_MODES = [
-    ("Vertical", "Vertical axis of the profile"),
-    ("Horizontal", "Horizontal axis of the profile"),
+    ("Vertical", "Profile's vertical axis"),
+    ("Horizontal", "Profile's horizontal axis"),
     ("X", "X axis"), ("Y", "Y axis"), ("Z", "Z axis"),
-    ("Reference", "Straight edge or datum line (pick it)"),
+    ("Reference", "Picked edge or datum line"),
     ("Custom", "Custom"),
 ]
-_GLOBAL_AXES = {"X": V(1, 0, 0), "Y": V(0, 1, 0), "Z": V(0, 0, 1)}
+assert [mode for mode, _ in _AXIS_MODES] == features.REVOLVE_AXIS_MODES
 
 
 class RevolvePanel(ProfilePanel):
@@ -494,34 +640,13 @@ class RevolvePanel(ProfilePanel):
         obj = self.obj
         self.profile_row.load()
         self.reference = obj.AxisReference if obj.AxisReference else None
-        self.axis_mode.setCurrentIndex([m for m, _ in _AXIS_MODES].index(self.guess_mode()))
+        self.axis_mode.setCurrentIndex(features.REVOLVE_AXIS_MODES.index(obj.AxisMode))
         self.point.set_value(obj.AxisPoint)
         self.direction.set_value(obj.AxisDirection)
         self.angle.set_value(obj.Angle)
         self.symmetric.setChecked(obj.Symmetric)
         self.reversed.setChecked(obj.Reversed)
         self.update_fields()
-
-    def guess_mode(self):
-        """The preset the stored axis is, else Custom."""
-        obj = self.obj
-        if obj.AxisReference:
-            return "Reference"
-        point, direction = obj.AxisPoint, obj.AxisDirection
-        if direction.Length <= 1e-12:
-            return "Custom"
-        unit = V(direction).normalize()
-        for mode in ("Vertical", "Horizontal"):
-            try:
-                p, d = conversion.revolve_axis(obj.Profile, mode)
-            except Failure:
-                continue
-            if (unit - d).Length < 1e-9 and (point - p).Length < 1e-9:
-                return mode
-        for mode, axis in _GLOBAL_AXES.items():
-            if (unit - axis).Length < 1e-12 and point.Length < 1e-12:
-                return mode
-        return "Custom"
 
     def picking_line(self):
         return self.mode() == "Reference"
@@ -533,20 +658,19 @@ class RevolvePanel(ProfilePanel):
         self.show_reference()
 
     def store(self):
+        # The feature finds the axis of every mode but Custom at each recompute (AxisPoint and AxisDirection
+        # then show it): a Vertical axis follows the sketch when it moves.
         obj = self.obj
         mode = self.mode()
         if mode != "Reference" and obj.AxisReference:
             obj.AxisReference = None
-        if mode in ("Vertical", "Horizontal"):
-            obj.AxisPoint, obj.AxisDirection = conversion.revolve_axis(obj.Profile, mode)
-        elif mode in _GLOBAL_AXES:
-            obj.AxisPoint, obj.AxisDirection = V(0, 0, 0), _GLOBAL_AXES[mode]
-        elif mode == "Reference":
+        if mode == "Reference":
             if self.reference is None:
                 raise Failure("AxisReference", translate("select a straight edge or a datum line"))
             obj.AxisReference = self.reference
-        else:
+        elif mode == "Custom":
             obj.AxisPoint, obj.AxisDirection = self.point.value(), self.direction.value()
+        obj.AxisMode = mode
         obj.Angle = self.angle.value()
         obj.Symmetric = self.symmetric.isChecked()
         obj.Reversed = self.reversed.isChecked()
@@ -601,8 +725,8 @@ class RevolvePanel(ProfilePanel):
 
 
 _DIRECTION_MODES = [
-    ("Normal", "Normal of the profile"),
-    ("Edge", "Straight edge or datum line (pick it)"),
+    ("Normal", "Profile's normal"),
+    ("Edge", "Picked edge or datum line"),
     ("Custom", "Custom direction"),
 ]
 
@@ -686,9 +810,7 @@ class LoftPanel(TaskPanel):
         self.list.setToolTip(self.tooltip("Sections"))
         self.list.setMinimumHeight(120)
         self.layout.addRow(self.list)
-        buttons = QtGui.QWidget()
-        row = QtGui.QHBoxLayout(buttons)
-        row.setContentsMargins(0, 0, 0, 0)
+        buttons = []
         for text, tip, action in (
                 ("Add selection", "Append the selected sketches, wires, edges or faces as sections", self.add_selected),
                 ("Remove", "Remove the selected section", self.remove),
@@ -697,8 +819,8 @@ class LoftPanel(TaskPanel):
             button = QtGui.QPushButton(translate(text))
             button.setToolTip(translate(tip))
             button.clicked.connect(action)
-            row.addWidget(button)
-        self.layout.addRow(buttons)
+            buttons.append(button)
+        self.layout.addRow(button_grid(buttons))
         self.degree = QtGui.QSpinBox()
         self.degree.setRange(1, features.LOFT_MAX_DEGREE)
         self.degree.setToolTip(self.tooltip("Degree"))
@@ -769,6 +891,7 @@ class SweepPanel(TaskPanel):
         self.path_row = LinkRow(self, "Path", "Path", translate(
             "Press, select the path's edges or its sketch in the 3D view or the tree, and press Done"), picking=True)
         self.tolerance = QtGui.QLineEdit()
+        self.tolerance.setMinimumWidth(FIELD_MINIMUM_WIDTH)
         self.tolerance.setValidator(QtGui.QDoubleValidator(0.0, 1e9, 15))
         self.tolerance.setToolTip(self.tooltip("Tolerance"))
         self.tolerance.editingFinished.connect(self.changed)
@@ -778,6 +901,17 @@ class SweepPanel(TaskPanel):
         self.profile_row.load()
         self.path_row.load()
         self.tolerance.setText("{:g}".format(self.obj.Tolerance))
+
+    def ready(self):
+        if self.obj.Path:
+            return True
+        return "Path: {}".format(translate("press Select..., select its edges or its sketch in the 3D view or the tree, "
+                                           "then press Done"))
+
+    def shown(self):
+        # Made with its profile only (the command): the path is picked first, nothing recomputed before.
+        if not self.obj.Path and not self.path_row.button.isChecked():
+            self.path_row.button.setChecked(True)
 
     def store(self):
         text = self.tolerance.text().strip().replace(",", ".")
@@ -797,7 +931,13 @@ class PoleTable:
         self.panel, self.row_label = panel, row_label
         self.table = QtGui.QTableWidget(0, 4)
         self.table.setHorizontalHeaderLabels(["X", "Y", "Z", translate("Weight")])
-        self.table.horizontalHeader().setSectionResizeMode(QtGui.QHeaderView.Stretch)
+        # Each column as wide as its numbers (a stretched column in a narrow task view cut "3.333333333" to
+        # "3...."); the table scrolls sideways when they do not fit.
+        header = self.table.horizontalHeader()
+        header.setSectionResizeMode(QtGui.QHeaderView.ResizeToContents)
+        header.setStretchLastSection(True)
+        self.table.setTextElideMode(QtCore.Qt.ElideNone)
+        self.table.setMinimumWidth(120)
         self.table.setMinimumHeight(160)
         self.table.itemChanged.connect(panel.changed)
         self.rational = QtGui.QCheckBox(translate("Rational (a weight per pole)"))
@@ -807,20 +947,31 @@ class PoleTable:
         self.table.setColumnHidden(3, not self.rational.isChecked())
         self.panel.changed()
 
+    @staticmethod
+    def item(value):
+        """A cell showing `value` with 6 significant digits and keeping it whole: reading an untouched cell
+        back gives the exact value, not its shown digits."""
+        item = QtGui.QTableWidgetItem("{:.6g}".format(value))
+        item.setData(QtCore.Qt.UserRole, float(value))
+        return item
+
     def fill(self, poles, weights, labels):
         self.table.setRowCount(len(poles))
         self.table.setVerticalHeaderLabels(labels)
         for row, pole in enumerate(poles):
             for column, value in enumerate((pole.x, pole.y, pole.z)):
-                self.table.setItem(row, column, QtGui.QTableWidgetItem("{:.10g}".format(value)))
+                self.table.setItem(row, column, self.item(value))
             weight = weights[row] if row < len(weights) else 1.0
-            self.table.setItem(row, 3, QtGui.QTableWidgetItem("{:.10g}".format(weight)))
+            self.table.setItem(row, 3, self.item(weight))
         self.rational.setChecked(bool(weights))
         self.table.setColumnHidden(3, not weights)
 
     def _number(self, row, column):
         item = self.table.item(row, column)
         text = item.text().strip() if item else ""
+        kept = item.data(QtCore.Qt.UserRole) if item else None
+        if kept is not None and text == "{:.6g}".format(kept):
+            return kept
         try:
             return float(text.replace(",", "."))
         except ValueError:
@@ -843,19 +994,14 @@ class BezierCurvePanel(TaskPanel):
     def build(self):
         self.poles = PoleTable(self, lambda row: translate("pole {}").format(row + 1))
         self.layout.addRow(self.poles.table)
-        buttons = QtGui.QWidget()
-        row = QtGui.QHBoxLayout(buttons)
-        row.setContentsMargins(0, 0, 0, 0)
         add = QtGui.QPushButton(translate("Add pole"))
         add.setToolTip(translate("Append a pole beyond the last one (the degree goes up by one)"))
         add.clicked.connect(self.add_pole)
         remove = QtGui.QPushButton(translate("Remove pole"))
         remove.setToolTip(translate("Remove the selected pole, or the last one"))
         remove.clicked.connect(self.remove_pole)
-        row.addWidget(add)
-        row.addWidget(remove)
-        row.addWidget(self.poles.rational)
-        self.layout.addRow(buttons)
+        self.layout.addRow(button_grid([add, remove]))
+        self.layout.addRow(self.poles.rational)
 
     def load(self):
         count = len(self.obj.Poles)
@@ -868,6 +1014,7 @@ class BezierCurvePanel(TaskPanel):
         self.obj.Weights = weights
 
     def add_pole(self):
+        self.editing()
         poles, weights = list(self.obj.Poles), list(self.obj.Weights)
         step = poles[-1] - poles[-2] if len(poles) > 1 else V(1, 0, 0)
         poles.append(poles[-1] + step)
@@ -880,6 +1027,7 @@ class BezierCurvePanel(TaskPanel):
         poles, weights = list(self.obj.Poles), list(self.obj.Weights)
         if len(poles) <= 2:
             return
+        self.editing()
         row = self.poles.table.currentRow()
         index = row if 0 <= row < len(poles) else len(poles) - 1
         del poles[index]
@@ -921,6 +1069,7 @@ class BezierSurfacePanel(TaskPanel):
         if self.loading:
             return
         # The feature regenerates a net of the new size over the same extent (BezierSurface.onChanged).
+        self.editing()
         self.obj.DegreeU, self.obj.DegreeV = self.degrees[0].value(), self.degrees[1].value()
         self.reload()
 

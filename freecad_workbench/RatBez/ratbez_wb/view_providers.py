@@ -62,7 +62,10 @@ class ViewProviderRatBez:
 
     def doubleClicked(self, vobj):
         import FreeCADGui as Gui
-        Gui.ActiveDocument.setEdit(vobj.Object.Name, _DEFAULT_EDIT)
+        from . import task_panels
+        # With another panel open, FreeCAD's setEdit would end that edit without its Cancel: ask first.
+        if task_panels.may_edit(vobj.Object):
+            Gui.ActiveDocument.setEdit(vobj.Object.Name, _DEFAULT_EDIT)
         return True
 
     def setupContextMenu(self, vobj, menu):

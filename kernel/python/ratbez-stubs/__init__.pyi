@@ -753,6 +753,21 @@ def torus(major_radius: float, minor_radius: float, center: Point = ..., axis: P
     """A torus about axis through center: the tube of minor_radius around the circle of major_radius
     (major_radius > minor_radius > 0)."""
 
+def write_3mf(solid: Union[Solid, Dict[str, Solid]], path: Path, tolerance: Optional[float] = ..., name: Optional[str] = ..., color: Optional[Union[str, Dict[str, str]]] = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
+    """Write a 3MF file (lib3mf; OpenSCAD's import() and slicers read it) after the CGAL mesh checks: a Solid
+    is tessellated at tolerance (default: as export_openscad) and becomes one object named `name` (default:
+    the file's stem); a dict {name: Solid} gives one object per name, in order. lib3mf writes each
+    coordinate as its float32 cut to 6 decimals: the deviation and the checks run on the package read back,
+    and a mesh those coordinates move beyond the tolerance (a part far from the origin, or smaller than a
+    few thousandths at a fine tolerance) is refused with ratbez.Error naming mesh.
+    color: "#rrggbb" or "#rrggbbaa" (for a dict: a dict of them by name) gives the object a base
+    material of that display colour. The model's metadata: Application "ratbez VERSION", Title and a
+    Description with each object's tolerance, measured deviation, counts and volumes.
+    
+    progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
+    and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
+    while the call runs (the GIL is released)."""
+
 def write_brep(solid: Solid, path: Path, bezier_faces: bool = ...) -> None:
     """Write OpenCASCADE's native .brep text (bezier_faces: as brep_string)."""
 

@@ -119,9 +119,10 @@ std::optional<exporter::Color> color_for(const py::object& color, const std::str
 }
 
 // export_openscad of a dict {name: Solid}: one module per name (each must be a safe module name), one module
-// after the file (or `module`) placing them all.
+// after the file (or `module`) placing them all; write_3mf of a dict (module_names false): one object per
+// name (any non-empty text).
 void export_library(const py::dict& solids, const std::string& file, const py::object& tolerance, const py::object& color,
-                    exporter::ExportOptions options) {
+                    exporter::ExportOptions options, bool module_names = true) {
     if (solids.empty()) throw Error("solids", "is empty");
     if (!color.is_none() && !py::isinstance<py::dict>(color))
         throw Error("color", "for a dict of solids must be a dict {name: \"#rrggbb\"}");
@@ -134,7 +135,10 @@ void export_library(const py::dict& solids, const std::string& file, const py::o
     for (const auto& [key, value] : solids) {
         if (!py::isinstance<py::str>(key)) throw Error("solids", "keys must be module names (str)");
         const std::string name = key.cast<std::string>();
-        exporter::require_module_name(name, "solids['" + exporter::comment_text(name) + "']");
+        if (module_names)
+            exporter::require_module_name(name, "solids['" + exporter::comment_text(name) + "']");
+        else if (name.empty())
+            throw Error("solids", "a name is empty");
         if (!py::isinstance<Solid>(value)) throw Error("solids['" + name + "']", "expected a ratbez.Solid");
         exporter::LibraryPart part;
         part.module_name = name;
@@ -216,6 +220,39 @@ void bind_io(py::module_& m) {
             "them all; the header lists each module with its triangles, deviation and volumes.\n"
             "color: \"#rrggbb\" or \"#rrggbbaa\" (for a dict: a dict of them by name) wraps the module's body in\n"
             "color([r, g, b, a]).") +
+         "\n\n" + progress_doc).c_str());
+    m.def(
+        "write_3mf",
+        [](const py::object& solid, const py::object& path, const py::object& tolerance, const py::object& name,
+           const py::object& color, const py::object& max_triangles, const py::object& progress) {
+            const std::string file = to_path(path, "path");
+            if (!has_extension(file, ".3mf")) throw Error("path", "a 3MF file name must end in .3mf");
+            exporter::ExportOptions options;
+            if (py::isinstance<py::dict>(solid)) {
+                if (!name.is_none()) throw Error("name", "applies to one solid; a dict names its solids by its keys");
+                if (!max_triangles.is_none()) throw Error("max_triangles", "applies to one solid, not a dict of solids");
+                options.progress = python_progress(progress);
+                return export_library(solid.cast<py::dict>(), file, tolerance, color, options, false);
+            }
+            if (!py::isinstance<Solid>(solid)) throw Error("solid", "expected a ratbez.Solid or a dict {name: Solid}");
+            if (!name.is_none() && !py::isinstance<py::str>(name)) throw Error("name", "must be a str or None");
+            options.openscad.module_name = name.is_none() ? std::filesystem::path(file).stem().string() : name.cast<std::string>();
+            if (options.openscad.module_name.empty()) throw Error("name", "is empty");
+            options.openscad.color = color_for(color, "color");
+            export_shape(solid, file, tolerance, max_triangles, progress, options);
+        },
+        py::arg("solid"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("name") = py::none(),
+        py::arg("color") = py::none(), py::arg("max_triangles") = py::none(), py::arg("progress") = py::none(),
+        (std::string(
+            "Write a 3MF file (lib3mf; OpenSCAD's import() and slicers read it) after the CGAL mesh checks: a Solid\n"
+            "is tessellated at tolerance (default: as export_openscad) and becomes one object named `name` (default:\n"
+            "the file's stem); a dict {name: Solid} gives one object per name, in order. lib3mf writes each\n"
+            "coordinate as its float32 cut to 6 decimals: the deviation and the checks run on the package read back,\n"
+            "and a mesh those coordinates move beyond the tolerance (a part far from the origin, or smaller than a\n"
+            "few thousandths at a fine tolerance) is refused with ratbez.Error naming mesh.\n"
+            "color: \"#rrggbb\" or \"#rrggbbaa\" (for a dict: a dict of them by name) gives the object a base\n"
+            "material of that display colour. The model's metadata: Application \"ratbez VERSION\", Title and a\n"
+            "Description with each object's tolerance, measured deviation, counts and volumes.") +
          "\n\n" + progress_doc).c_str());
     m.def(
         "write_stl",

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "geometry/arcs.hpp"
 #include "math/degrees.hpp"
+#include "math/numeric_internal.hpp"
 #include "math/solid_scale.hpp"
 #include "modelling/revolve_internal.hpp"
 #include "ratbez/curves.hpp"
@@ -35,6 +37,36 @@ void require_scale(double size, const Vec3& center, std::string_view size_argume
     require(is_finite(center), "center", "must have finite coordinates");
     const double reach = std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z)}) + size;
     detail::require_solid_scale(size, reach, size_argument, "center");
+}
+
+// The largest dimension over the smallest non-zero one a primitive may have: below about 1e-9 of the solid's
+// size (brep.cpp's relative tolerance) a side or circle cannot be told from a point, and the faces' own
+// checks would fail with their words ("sides: side u_max collapses to a point", "loops: ... degenerate
+// edges") instead of the argument's. 1e-8 keeps a margin of 10 for the box diagonal (up to 3x the largest
+// dimension).
+constexpr double kMinProportion = 1e-8;
+
+// `small` (the argument `small_argument`, non-zero) against the primitive's largest dimension `large`.
+void require_proportion(double small, std::string_view small_argument, double large, std::string_view large_argument) {
+    require(small >= kMinProportion * large, small_argument, [&] {
+        return "is " + detail::number(small) + ", less than " + detail::number(kMinProportion) + " of " +
+               std::string(large_argument) + " " + detail::number(large) +
+               ": the solid would be too thin for its faces to be told from their edges";
+    });
+}
+
+// The Solid of a primitive whose size passed require_scale. The Solid checks the scale again on the box of
+// its control points (up to about 3.5x the radius for a sphere): a primitive just under the limit by its
+// radius can exceed it there, and that Error ("faces: gives a solid of size ...") is about the primitive's
+// size argument.
+template <class Build>
+Solid scaled_solid(std::string_view size_argument, Build build) {
+    try {
+        return build();
+    } catch (const Error& e) {
+        if (e.argument() == "faces" && e.reason().starts_with("gives a solid")) throw Error(size_argument, e.reason());
+        throw;
+    }
 }
 
 // The meridian frame of a primitive: x radial (the seam direction), y along the axis. A profile drawn
@@ -65,9 +97,14 @@ Solid conical_solid(const Frame& frame, double radius1, double radius2, double h
 Solid cylinder(double radius, double height, const Vec3& center, const Vec3& axis) {
     require_positive(radius, "radius");
     require_positive(height, "height");
-    require_scale(std::max(radius, height), center, radius >= height ? "radius" : "height");
+    const std::string_view larger = radius >= height ? "radius" : "height";
+    require_scale(std::max(radius, height), center, larger);
+    if (radius < height) require_proportion(radius, "radius", height, "height");
+    else require_proportion(height, "height", radius, "radius");
     const Frame frame = placed_frame(center, axis);
-    return conical_solid(frame, radius, radius, height, Construction::Cylinder{center, frame.z_axis, radius, height});
+    return scaled_solid(larger, [&] {
+        return conical_solid(frame, radius, radius, height, Construction::Cylinder{center, frame.z_axis, radius, height});
+    });
 }
 
 Solid cone(double radius1, double radius2, double height, const Vec3& center, const Vec3& axis) {
@@ -78,21 +115,28 @@ Solid cone(double radius1, double radius2, double height, const Vec3& center, co
     require(radius1 > 0 || radius2 > 0, "radius1", "radius1 and radius2 cannot both be 0");
     require_positive(height, "height");
     const double radius = std::max(radius1, radius2);
-    require_scale(std::max(radius, height), center, radius < height ? "height" : radius1 >= radius2 ? "radius1" : "radius2");
+    const std::string_view larger = radius < height ? "height" : radius1 >= radius2 ? "radius1" : "radius2";
+    require_scale(std::max(radius, height), center, larger);
+    const double largest = std::max(radius, height);
+    for (const auto& [value, argument] : {std::pair<double, std::string_view>{radius1, "radius1"}, {radius2, "radius2"}, {height, "height"}})
+        if (value > 0 && argument != larger) require_proportion(value, argument, largest, larger);
     const Frame frame = placed_frame(center, axis);
-    return conical_solid(frame, radius1, radius2, height,
-                         Construction::Cone{center, frame.z_axis, radius1, radius2, height});
+    return scaled_solid(larger, [&] {
+        return conical_solid(frame, radius1, radius2, height, Construction::Cone{center, frame.z_axis, radius1, radius2, height});
+    });
 }
 
 Solid sphere(double radius, const Vec3& center) {
     require_positive(radius, "radius");
     require_scale(radius, center, "radius");
     const Frame frame = placed_frame(center, {0, 0, 1});
-    // The meridian semicircle from the south pole through the seam (+x) to the north pole: two rational
-    // quarter circles; its ends lie exactly on the axis (cos_deg(±90) == 0), so the poles are exact.
-    const NurbsCurve semicircle = detail::arc_in_frame(meridian_frame(frame, center), radius, radius, -90.0, 180.0);
-    detail::RevolutionShell shell = detail::build_revolution({semicircle}, false, center, frame.z_axis, 360.0);
-    return Solid(std::move(shell.faces), Construction::Sphere{center, radius});
+    return scaled_solid("radius", [&] {
+        // The meridian semicircle from the south pole through the seam (+x) to the north pole: two rational
+        // quarter circles; its ends lie exactly on the axis (cos_deg(±90) == 0), so the poles are exact.
+        const NurbsCurve semicircle = detail::arc_in_frame(meridian_frame(frame, center), radius, radius, -90.0, 180.0);
+        detail::RevolutionShell shell = detail::build_revolution({semicircle}, false, center, frame.z_axis, 360.0);
+        return Solid(std::move(shell.faces), Construction::Sphere{center, radius});
+    });
 }
 
 Solid torus(double major_radius, double minor_radius, const Vec3& center, const Vec3& axis) {
@@ -101,13 +145,16 @@ Solid torus(double major_radius, double minor_radius, const Vec3& center, const 
     require(minor_radius < major_radius, "minor_radius", "must be less than major_radius (else the tube meets the axis)");
     require_scale(major_radius, center, "major_radius");
     require_scale(minor_radius, center, "minor_radius");
+    require_proportion(minor_radius, "minor_radius", major_radius, "major_radius");
     const Frame frame = placed_frame(center, axis);
-    // The tube's circle in the meridian plane, starting at its outer equator; revolved it gives one face
-    // whose two seams are that circle (u = 0 and u = 1) and the outer equator (v = 0 and v = 1).
-    const NurbsCurve tube =
-        detail::arc_in_frame(meridian_frame(frame, center + frame.x_axis * major_radius), minor_radius, minor_radius, 0.0, 360.0);
-    detail::RevolutionShell shell = detail::build_revolution({tube}, true, center, frame.z_axis, 360.0);
-    return Solid(std::move(shell.faces), Construction::Torus{center, frame.z_axis, major_radius, minor_radius});
+    return scaled_solid("major_radius", [&] {
+        // The tube's circle in the meridian plane, starting at its outer equator; revolved it gives one face
+        // whose two seams are that circle (u = 0 and u = 1) and the outer equator (v = 0 and v = 1).
+        const NurbsCurve tube = detail::arc_in_frame(meridian_frame(frame, center + frame.x_axis * major_radius),
+                                                     minor_radius, minor_radius, 0.0, 360.0);
+        detail::RevolutionShell shell = detail::build_revolution({tube}, true, center, frame.z_axis, 360.0);
+        return Solid(std::move(shell.faces), Construction::Torus{center, frame.z_axis, major_radius, minor_radius});
+    });
 }
 
 }  // namespace ratbez

@@ -1,7 +1,8 @@
 #pragma once
 // Exporting to files: check the mesh with CGAL first and refuse (ratbez::Error naming "mesh") rather than
-// write a bad one; the format follows the extension (.scad, .stl, .off). Unwritable paths and unknown
-// extensions throw ratbez::Error naming "path".
+// write a bad one; the format follows the extension (.scad, .stl, .off, .3mf). Unwritable paths and unknown
+// extensions throw ratbez::Error naming "path". Every file goes through the one safe writer
+// (ratbez/output_file.hpp); a 3MF package is made in memory by lib3mf first (three_mf.hpp).
 
 #include <optional>
 #include <string>
@@ -15,7 +16,9 @@
 namespace ratbez::exporter {
 
 struct ExportOptions {
-    OpenScadOptions openscad{};  // its header is filled in by the exporter
+    // Its header is filled in by the exporter. module_name also names the solid of an ASCII STL and the
+    // object of a 3MF file (any text there); color also colours the 3MF object.
+    OpenScadOptions openscad{};
     MeshCheckOptions checks{};
     bool binary_stl = true;
     // .scad only: the mesh goes to a binary STL beside it (the same name with .stl), which the module
@@ -39,9 +42,11 @@ struct WrittenMesh {
 // `mesh`, a tessellation of `solid` at `tolerance`, written to path. Text formats (.scad, .off, ASCII
 // .stl) get the fewest decimals that keep the mesh AS WRITTEN within tolerance (max_deviation) and
 // CGAL-clean; when no rounding passes, the exact doubles are written (the same checks must then pass,
-// or Error "mesh"). Binary STL (also under import_stl) holds float32 coordinates: the checks run on those,
-// and a mesh they move beyond the tolerance or break is refused (Error "mesh": write text, or a coarser
-// tolerance). The .scad header also states the tolerance, that deviation and the exact volume.
+// or Error "mesh"). Binary STL (also under import_stl) holds float32 coordinates, and 3MF what lib3mf
+// writes (float32 cut to 6 decimals, read back from the package): the checks run on those, and a mesh
+// they move beyond the tolerance or break is refused (Error "mesh" naming the format: write text, or a
+// coarser tolerance). The .scad header (3MF: the model's Description metadata, with the version as
+// Application) also states the tolerance, that deviation and the exact volume.
 WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tolerance, const std::string& path,
                                 const ExportOptions& options = {});
 
@@ -59,6 +64,8 @@ struct LibraryPart {
 // decimals that keep it within its tolerance and CGAL-clean), one module per part, and the module
 // options.openscad.module_name placing them all. The header lists every module with its triangles, its
 // measured deviation and volumes. import_stl is refused (Error "import_stl"). Returns each part's mesh as written.
+// A .3mf path gives one 3MF object per part instead (named module_name, any non-empty text, with its
+// colour), each checked on the coordinates lib3mf wrote; the Description metadata lists every object.
 std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, const std::string& path,
                                         const ExportOptions& options = {});
 

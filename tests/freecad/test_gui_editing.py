@@ -1,0 +1,539 @@
+"""GUI tests of editing in the RatBez workbench (issue 25's workbench defects), run as `xvfb-run ... freecad
+test_gui_editing.py` by run_freecad.py in FreeCAD's default layout: the Combo View keeps its default width
+(264 px), nothing is resized.
+
+Each defect is driven through the path a user takes: real mouse double-clicks on the tree's items (Qt mouse
+events on its viewport, which go through FreeCAD's TreeWidget), commands through Gui.runCommand and the
+toolbar's actions, Std_Undo, the preferences dialog opened by Std_DlgPreferences, the property editor's own
+model, FreeCAD's language switch. Screenshots of the Combo View with every panel go to
+$RATBEZ_TEST_OUT/gui-editing/ (and the preferences dialog, the property editor). A watchdog ends FreeCAD if
+anything hangs.
+"""
+
+import math
+import os
+import sys
+import threading
+import time
+import zipfile
+
+sys.path.insert(0, os.environ.get("RATBEZ_TEST_DIR", os.path.dirname(os.path.abspath(__file__))))
+
+import FreeCAD as App  # noqa: E402
+import FreeCADGui as Gui  # noqa: E402
+import Part  # noqa: E402
+import Sketcher  # noqa: E402,F401
+from PySide import QtCore, QtGui  # noqa: E402
+
+from harness import Suite, check, close, say  # noqa: E402
+
+OUT = os.environ.get("RATBEZ_TEST_OUT", "/tmp")
+SHOTS = os.path.join(OUT, "gui-editing")
+V = App.Vector
+PI = math.pi
+DEFAULT_COMBO_WIDTH = 264  # FreeCAD 0.20's Combo View in a fresh profile
+
+watchdog = threading.Timer(260, lambda: (say("RATBEZ_TEST_FAILED: watchdog fired"), os._exit(3)))
+watchdog.daemon = True
+watchdog.start()
+
+_output_params = App.ParamGet("User parameter:BaseApp/Preferences/OutputWindow")
+_output_params.SetBool("RedirectPythonErrors", True)
+_output_params.SetBool("RedirectPythonOutput", True)
+_output_params.SetBool("checkShowReportViewOnError", False)
+
+suite = Suite()
+doc = None
+
+
+def process_events(seconds=0.0):
+    end = time.time() + seconds
+    while True:
+        for _ in range(5):
+            QtGui.QApplication.processEvents()
+        if time.time() >= end:
+            return
+        time.sleep(0.02)
+
+
+def report_text():
+    return "\n".join(w.toPlainText() for w in Gui.getMainWindow().findChildren(QtGui.QTextEdit)
+                     if "report" in (w.objectName() + w.windowTitle()).lower())
+
+
+def new_document(name):
+    global doc
+    for doc_name in list(App.listDocuments()):
+        App.closeDocument(doc_name)
+    doc = App.newDocument(name)
+    process_events()
+    return doc
+
+
+def combo_view():
+    return Gui.getMainWindow().findChild(QtGui.QDockWidget, "Combo View")
+
+
+def combo_shot(name):
+    """The Combo View as the user sees it, to SHOTS/name.png."""
+    process_events(0.1)
+    path = os.path.join(SHOTS, name + ".png")
+    combo_view().grab().save(path)
+    check(not QtGui.QImage(path).isNull(), "screenshot unreadable: " + path)
+    return path
+
+
+def tree_double_click(obj):
+    """A real double-click on obj's item in the tree (press, release, double-click, release on its viewport).
+    The Combo View shows its Tasks tab while a panel is open: the user goes to the Model tab first."""
+    tabs = combo_view().findChild(QtGui.QTabWidget, "combiTab")
+    if tabs is not None and tabs.currentIndex() != 0:
+        tabs.setCurrentIndex(0)
+        process_events()
+    for tree in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
+        if not tree.isVisible():
+            continue
+        items = tree.findItems(obj.Label, QtCore.Qt.MatchExactly | QtCore.Qt.MatchRecursive, 0)
+        if not items:
+            continue
+        tree.scrollToItem(items[0])
+        position = tree.visualItemRect(items[0]).center()
+        viewport = tree.viewport()
+        for kind in (QtCore.QEvent.MouseButtonPress, QtCore.QEvent.MouseButtonRelease,
+                     QtCore.QEvent.MouseButtonDblClick, QtCore.QEvent.MouseButtonRelease):
+            buttons = QtCore.Qt.NoButton if kind == QtCore.QEvent.MouseButtonRelease else QtCore.Qt.LeftButton
+            event = QtGui.QMouseEvent(kind, position, viewport.mapToGlobal(position), QtCore.Qt.LeftButton, buttons,
+                                      QtCore.Qt.NoModifier)
+            QtGui.QApplication.sendEvent(viewport, event)
+        process_events()
+        return
+    raise AssertionError("no tree item for " + obj.Label)
+
+
+def answer_question_later(button):
+    """Answer the next "A dialog is already open" question with `button` (Yes / No) once it shows."""
+    answered = []
+
+    def answer():
+        box = QtGui.QApplication.activeModalWidget()
+        if isinstance(box, QtGui.QMessageBox) and box.objectName() == "RatBezCloseOpenPanel":
+            answered.append(box.text())
+            box.button(button).click()
+        else:
+            QtCore.QTimer.singleShot(100, answer)
+    QtCore.QTimer.singleShot(200, answer)
+    return answered
+
+
+def panel_of(obj):
+    from ratbez_wb import task_panels
+    return task_panels.panel_of(obj)
+
+
+def run_command(name):
+    before = set(o.Name for o in doc.Objects)
+    Gui.runCommand(name)
+    process_events()
+    created = [o for o in doc.Objects if o.Name not in before]
+    check(len(created) == 1, "{} created {} objects".format(name, len(created)))
+    panel = panel_of(created[0])
+    check(panel is not None and Gui.Control.activeDialog(), name + ": no task panel")
+    return created[0], panel
+
+
+def select(*items):
+    Gui.Selection.clearSelection()
+    for item in items:
+        if isinstance(item, tuple):
+            Gui.Selection.addSelection(*item)
+        else:
+            Gui.Selection.addSelection(item)
+    process_events()
+
+
+def action(name):
+    for candidate in Gui.getMainWindow().findChildren(QtGui.QAction):
+        if candidate.objectName() == name:
+            return candidate
+    raise AssertionError("no action " + name)
+
+
+def property_groups(obj):
+    """The group rows of the property editor's Data tab for obj, as displayed."""
+    select(obj)
+    process_events(0.5)
+    for view in Gui.getMainWindow().findChildren(QtGui.QTreeView):
+        if view.metaObject().className() == "Gui::PropertyEditor::PropertyEditor" and view.isVisible():
+            model = view.model()
+            rows = [model.data(model.index(r, 0)) for r in range(model.rowCount())]
+            if "Base" in rows:
+                return rows
+    return []
+
+
+def xz_sketch(name, x0=2.0):
+    """A closed rectangular sketch in the XZ plane, x in [x0, x0 + 2], z in [0, 3]."""
+    sketch = doc.addObject("Sketcher::SketchObject", name)
+    sketch.Placement = App.Placement(V(0, 0, 0), App.Rotation(V(1, 0, 0), 90))
+    corners = [(x0, 0), (x0 + 2, 0), (x0 + 2, 3), (x0, 3)]
+    for k in range(4):
+        (a, b), (c, d) = corners[k], corners[(k + 1) % 4]
+        sketch.addGeometry(Part.LineSegment(V(a, b, 0), V(c, d, 0)))
+    doc.recompute()
+    return sketch
+
+
+# ---------------------------------------------------------------------------------------------------
+
+@suite.test
+def test_the_combo_view_has_its_default_width():
+    Gui.activateWorkbench("RatBezWorkbench")
+    process_events()
+    os.makedirs(SHOTS, exist_ok=True)
+    check(combo_view().width() == DEFAULT_COMBO_WIDTH, "Combo View {} px wide".format(combo_view().width()))
+
+
+@suite.test
+def test_a_tree_double_click_edit_is_one_undo_step():
+    # Issue 25: a real double-click opened the panel with no transaction: OK added no undo step, Cancel kept
+    # the change, and one Std_Undo deleted the whole sphere.
+    new_document("DoubleClick")
+    sphere, panel = run_command("RatBez_Sphere")
+    panel.accept()
+    process_events()
+    check(doc.UndoNames == ["Create Sphere"], "undo: {}".format(doc.UndoNames))
+    tree_double_click(sphere)
+    panel = panel_of(sphere)
+    check(panel is not None and Gui.Control.activeDialog(), "the double-click opened no panel")
+    panel.dimensions["Radius"].set_value(4.5)
+    process_events()
+    check(sphere.Radius.Value == 4.5, "preview")
+    check(panel.accept() is True, "OK refused")
+    process_events()
+    check(len(doc.UndoNames) == 2 and doc.UndoNames[0].startswith("Edit"), "OK of an edit: undo {}".format(doc.UndoNames))
+    tree_double_click(sphere)
+    panel = panel_of(sphere)
+    panel.dimensions["Radius"].set_value(1.5)
+    process_events()
+    check(sphere.Radius.Value == 1.5, "preview 1.5")
+    panel.reject()
+    process_events()
+    check(sphere.Radius.Value == 4.5 and abs(sphere.Shape.Volume - 4 / 3 * PI * 4.5 ** 3) < 1e-6, "Cancel restored 4.5")
+    check(len(doc.UndoNames) == 2, "Cancel left an undo step: {}".format(doc.UndoNames))
+    Gui.runCommand("Std_Undo")
+    process_events()
+    check(doc.getObject(sphere.Name) is not None, "one Std_Undo deleted the sphere")
+    check(sphere.Radius.Value == 5, "Std_Undo gave Radius {}".format(sphere.Radius))
+    Gui.runCommand("Std_Redo")
+    process_events()
+    check(sphere.Radius.Value == 4.5, "Std_Redo gave Radius {}".format(sphere.Radius))
+
+
+@suite.test
+def test_a_second_command_does_not_replace_an_open_panel():
+    # Issue 25: with a new Sphere's panel open, RatBez Cone replaced the panel and Cancel then removed neither.
+    # As in Part, the creating commands are disabled while a task panel is open.
+    new_document("Second")
+    sphere, panel = run_command("RatBez_Sphere")
+    process_events(0.6)  # FreeCAD updates its actions' enabled state on a timer
+    for name in ("RatBez_Cone", "RatBez_Cylinder", "RatBez_Torus", "RatBez_Sphere"):
+        check(not Gui.Command.get(name).isActive() and not action(name).isEnabled(), name + " enabled with a panel open")
+    Gui.runCommand("RatBez_Cone")  # as from the console or a macro
+    process_events()
+    check([o.Name for o in doc.Objects] == [sphere.Name], "objects: {}".format([o.Name for o in doc.Objects]))
+    check(panel_of(sphere) is panel and Gui.Control.activeDialog(), "the sphere's panel was replaced")
+    panel.reject()
+    process_events(0.6)
+    check(not doc.Objects, "Cancel left {}".format([o.Name for o in doc.Objects]))
+    check(Gui.Command.get("RatBez_Cone").isActive() and action("RatBez_Cone").isEnabled(), "Cone disabled after Cancel")
+
+
+@suite.test
+def test_editing_another_object_asks_to_close_the_open_panel():
+    new_document("Another")
+    cylinder, panel = run_command("RatBez_Cylinder")
+    panel.accept()
+    sphere, panel = run_command("RatBez_Sphere")
+    sphere_name = sphere.Name
+    answered = answer_question_later(QtGui.QMessageBox.No)
+    tree_double_click(cylinder)
+    check(answered == ["A dialog is already open in the task panel"], "question: {}".format(answered))
+    check(panel_of(sphere) is panel and panel_of(cylinder) is None, "No kept the sphere's panel")
+    answered = answer_question_later(QtGui.QMessageBox.Yes)
+    tree_double_click(cylinder)
+    check(answered, "no question")
+    check(doc.getObject(sphere_name) is None, "Yes cancelled the new sphere's panel: the sphere is gone")
+    check(doc.UndoNames == ["Create Cylinder"], "undo: {}".format(doc.UndoNames))
+    check(panel_of(cylinder) is not None and Gui.Control.activeDialog(), "the cylinder's panel opened")
+    panel_of(cylinder).reject()
+    process_events()
+
+
+@suite.test
+def test_the_revolve_axis_follows_the_sketch():
+    # Issue 25: moving the profile sketch 5 mm gave "Profile: must lie in a plane containing the axis".
+    new_document("Follow")
+    sketch = xz_sketch("Sketch")
+    select(sketch)
+    revolve, panel = run_command("RatBez_Revolve")
+    check(panel.mode() == "Vertical", "mode " + panel.mode())
+    panel.accept()
+    process_events()
+    volume = revolve.Shape.Volume
+    for base in (V(0, 5, 0), V(5, 0, 0)):
+        sketch.Placement = App.Placement(base, App.Rotation(V(1, 0, 0), 90))  # as the property editor sets it
+        Gui.runCommand("Std_Refresh")
+        process_events()
+        check(revolve.isValid(), "after moving the sketch to {}: {}".format(base, revolve.getStatusString()))
+        close(revolve.Shape.Volume, volume, 1e-9, "volume after the sketch moved")
+        check((revolve.AxisPoint - base).Length < 1e-9, "axis point {}".format(revolve.AxisPoint))
+    check("must lie in a plane" not in report_text(), "the frozen axis again")
+
+
+@suite.test
+def test_a_sweep_of_the_profile_alone_lets_the_user_pick_the_path():
+    # Issue 25: "Sweep: Path: nothing is linked" and "Recompute failed!" before the user could pick the path.
+    new_document("SweepPick")
+    profile = doc.addObject("Part::Circle", "Profile")
+    profile.Radius = 0.5
+    profile.Placement = App.Placement(V(2, 0, 0), App.Rotation(V(1, 0, 0), 90))
+    arc = doc.addObject("Part::Feature", "Arc")
+    arc.Shape = Part.ArcOfCircle(Part.Circle(V(0, 0, 0), V(0, 0, 1), 2), 0, PI / 2).toShape()
+    doc.recompute()
+    before = report_text()
+    select(profile)
+    sweep, panel = run_command("RatBez_Sweep")
+    added = report_text()[len(before):]
+    check("Path" not in added and "failed" not in added, "report view: " + added)
+    check("Invalid" not in sweep.State, "state {}".format(sweep.State))
+    check(panel.path_row.button.isChecked() and panel.path_row.button.text() == "Done", "not picking the path")
+    check(panel.status.text().startswith("Path:") and panel.status.isVisible(), "status: " + panel.status.text())
+    check(panel.accept() is False, "OK accepted a sweep without its path")
+    combo_shot("RatBez_Sweep_picking")
+    select((arc, "Edge1"))
+    panel.path_row.button.setChecked(False)
+    process_events()
+    check(sweep.Path and sweep.isValid(), "the picked edge became the path: " + panel.status.text())
+    close(sweep.ExactVolume, PI * 0.25 * PI, 1e-9, "a quarter torus")
+    check(panel.accept() is True, "OK refused")
+    process_events()
+    check("failed" not in report_text()[len(before):], "report view: " + report_text()[len(before):])
+
+
+def clipping(panel):
+    """What of the open task dialog the Combo View cuts: widgets beyond its viewport's edges, texts cut in
+    their widgets, table cells narrower than their text; [] when everything shows."""
+    view = [w for w in combo_view().findChildren(QtGui.QScrollArea)
+            if w.metaObject().className() == "Gui::TaskView::TaskView" and w.isVisible()][0]
+    viewport = view.viewport()
+    problems = []
+    if panel.form.minimumSizeHint().width() > panel.form.width():
+        problems.append("the form needs {} px, has {}".format(panel.form.minimumSizeHint().width(), panel.form.width()))
+    kinds = (QtGui.QPushButton, QtGui.QLabel, QtGui.QCheckBox, QtGui.QComboBox, QtGui.QAbstractSpinBox,
+             QtGui.QLineEdit, QtGui.QAbstractItemView)
+    for widget in view.findChildren(QtGui.QWidget):
+        if not widget.isVisible() or not isinstance(widget, kinds) or widget.parent() is viewport:
+            continue
+        if isinstance(widget.parent(), (QtGui.QAbstractItemView, QtGui.QAbstractSpinBox)):
+            continue  # editors inside tables and spin boxes
+        corner = widget.mapTo(viewport, QtCore.QPoint(0, 0))
+        name = "{} '{}'".format(widget.metaObject().className(), getattr(widget, "text", lambda: "")()
+                                if not isinstance(widget, QtGui.QAbstractSpinBox) else "")
+        if corner.x() < 0 or corner.x() + widget.width() > viewport.width():
+            problems.append("{} spans x {}..{} of {}".format(name, corner.x(), corner.x() + widget.width(), viewport.width()))
+        if isinstance(widget, QtGui.QLabel) and widget.text():
+            if widget.wordWrap():
+                if widget.heightForWidth(widget.width()) > widget.height() + 1:
+                    problems.append("{} needs {} px of height, has {}".format(name, widget.heightForWidth(widget.width()),
+                                                                           widget.height()))
+            elif widget.sizeHint().width() > widget.width() + 1:
+                problems.append("{} needs {} px, has {}".format(name, widget.sizeHint().width(), widget.width()))
+        if isinstance(widget, (QtGui.QPushButton, QtGui.QCheckBox)) and widget.sizeHint().width() > widget.width() + 1:
+            problems.append("{} needs {} px, has {}".format(name, widget.sizeHint().width(), widget.width()))
+        if hasattr(widget, "full_text") and widget.text() != widget.full_text:
+            problems.append("the name '{}' shows as '{}'".format(widget.full_text, widget.text()))
+        if isinstance(widget, QtGui.QAbstractSpinBox):
+            edit = widget.findChild(QtGui.QLineEdit)
+            if edit is not None and edit.fontMetrics().horizontalAdvance(edit.text()) + 4 > edit.width():
+                problems.append("a field shows '{}' in {} px".format(edit.text(), edit.width()))
+        if isinstance(widget, QtGui.QComboBox):
+            needed = widget.fontMetrics().horizontalAdvance(widget.currentText()) + 30  # frame and arrow
+            if needed > widget.width():
+                problems.append("the choice '{}' needs {} px, has {}".format(widget.currentText(), needed, widget.width()))
+        if isinstance(widget, QtGui.QTableWidget):
+            metrics = widget.fontMetrics()
+            for row in range(widget.rowCount()):
+                for column in range(widget.columnCount()):
+                    item = widget.item(row, column)
+                    if item is None or widget.isColumnHidden(column):
+                        continue
+                    needed = metrics.horizontalAdvance(item.text()) + 6
+                    if needed > widget.columnWidth(column):
+                        problems.append("cell ({}, {}) '{}' needs {} px, has {}".format(
+                            row, column, item.text(), needed, widget.columnWidth(column)))
+    return problems
+
+
+@suite.test
+def test_every_panel_fits_the_default_combo_view():
+    # Issue 25: at the default Combo View width the panels needed 310 px: Bézier curve and Loft cut their
+    # Cancel button, the torus's message was cut, pole cells showed "3....".
+    new_document("Fit")
+    check(combo_view().width() == DEFAULT_COMBO_WIDTH, "Combo View {} px".format(combo_view().width()))
+    circles = []
+    for k, radius in enumerate((1.0, 2.0, 1.0)):
+        circle = doc.addObject("Part::Circle", "C{}".format(k))
+        circle.Radius = radius
+        circle.Placement.Base = V(0, 0, k)
+        circles.append(circle)
+    sketch = xz_sketch("LongSketchNameForTheProfileRow")
+    line = doc.addObject("Part::Line", "Line")
+    doc.recompute()
+    selections = {"RatBez_Revolve": [sketch], "RatBez_Extrude": [circles[0]], "RatBez_Ruled": circles[:2],
+                  "RatBez_Loft": circles, "RatBez_Sweep": [circles[0], line]}
+    commands = ["RatBez_Cylinder", "RatBez_Cone", "RatBez_Sphere", "RatBez_Torus", "RatBez_BezierCurve",
+                "RatBez_BezierSurface", "RatBez_Revolve", "RatBez_Extrude", "RatBez_Ruled", "RatBez_Loft",
+                "RatBez_Sweep"]
+    failures = []
+    for name in commands:
+        select(*selections.get(name, []))
+        obj, panel = run_command(name)
+        if name == "RatBez_Torus":  # the longest message
+            panel.dimensions["MinorRadius"].set_value(20)
+        if name == "RatBez_BezierCurve":
+            panel.poles.rational.setChecked(True)
+            panel.poles.table.item(1, 0).setText("3.333333333")
+        if name == "RatBez_BezierSurface":
+            panel.poles.rational.setChecked(True)
+        if name == "RatBez_Revolve":
+            panel.axis_mode.setCurrentIndex(1)  # the longest choice
+            process_events(0.1)
+            problems = clipping(panel)
+            if problems:
+                failures.append("{} (horizontal axis): {}".format(name, "; ".join(problems)))
+            panel.axis_mode.setCurrentIndex(5)  # a reference to pick: the hint row shows
+        process_events(0.2)
+        combo_shot(name)
+        problems = clipping(panel)
+        if problems:
+            failures.append("{}: {}".format(name, "; ".join(problems)))
+        panel.reject()
+        process_events()
+    check(not failures, "\n".join(failures))
+
+
+@suite.test
+def test_the_preferences_page_has_its_icon():
+    # Issue 25: "Cannot find icon: preferences-ratbez".
+    before = report_text()
+    seen = []
+
+    def inspect():
+        for window in QtGui.QApplication.topLevelWidgets():
+            if window.isVisible() and window.metaObject().className() == "Gui::Dialog::DlgPreferencesImp":
+                for pages in window.findChildren(QtGui.QListWidget):
+                    for row in range(pages.count()):
+                        item = pages.item(row)
+                        if item.text() == "RatBez":
+                            seen.append(not item.icon().isNull())
+                            pages.setCurrentRow(row)
+                process_events(0.3)
+                window.grab().save(os.path.join(SHOTS, "preferences.png"))
+                window.reject()
+                return
+        QtCore.QTimer.singleShot(200, inspect)
+    QtCore.QTimer.singleShot(300, inspect)
+    Gui.runCommand("Std_DlgPreferences")
+    process_events()
+    check(seen == [True], "the RatBez page's icon: {}".format(seen))
+    added = report_text()[len(before):]
+    check("Cannot find icon" not in added, added)
+
+
+@suite.test
+def test_the_property_group_reads_RatBez():
+    # Issue 25: the property editor split the group name into "Rat Bez".
+    new_document("Group")
+    sphere, panel = run_command("RatBez_Sphere")
+    panel.accept()
+    groups = property_groups(sphere)
+    combo_shot("property_editor")
+    check("RatBez" in groups and "Rat Bez" not in groups, "groups: {}".format(groups))
+
+
+@suite.test
+def test_german_translation():
+    new_document("German")
+    try:
+        Gui.setLocale("German")
+        process_events(0.3)
+        check(action("RatBez_Cone").text() == "Kegel", "Cone in German: " + action("RatBez_Cone").text())
+        check(action("RatBez_ExportOpenSCAD").text() == "Nach OpenSCAD oder 3MF exportieren...",
+              action("RatBez_ExportOpenSCAD").text())
+        cone, panel = run_command("RatBez_Cone")
+        check(panel.form.windowTitle() == "RatBez-Kegel", "panel title: " + panel.form.windowTitle())
+        combo_shot("RatBez_Cone_German")
+        panel.accept()
+        groups = property_groups(cone)
+        check("RatBez" in groups and "Rat Bez" not in groups, "groups in German: {}".format(groups))
+    finally:
+        Gui.setLocale("English")
+        process_events(0.3)
+    check(action("RatBez_Cone").text() == "Cone", "back in English: " + action("RatBez_Cone").text())
+
+
+@suite.test
+def test_export_takes_the_colours_and_every_selected_solid():
+    new_document("Colours")
+    cylinder, panel = run_command("RatBez_Cylinder")
+    panel.accept()
+    sphere, panel = run_command("RatBez_Sphere")
+    panel.center.set_value(V(0, 0, 10))
+    panel.accept()
+    process_events()
+    cylinder.ViewObject.ShapeColor = (1.0, 0.0, 0.0)
+    cylinder.ViewObject.Transparency = 50
+    sphere.ViewObject.ShapeColor = (0.0, 0.0, 1.0)
+    select(cylinder, sphere)
+    check(Gui.Command.get("RatBez_ExportOpenSCAD").isActive(), "export inactive with two solids")
+    from ratbez_wb import dialogs
+    original = dialogs.ask_export_options
+    written = {}
+    try:
+        for extension in (".scad", ".3mf"):
+            path = os.path.join(OUT, "ratbez_gui_parts" + extension)
+            if os.path.exists(path):
+                os.remove(path)
+            dialogs.ask_export_options = lambda objects: (written.setdefault(extension, [o.Name for o in objects]),
+                                                          (path, 0.05))[1]
+            Gui.runCommand("RatBez_ExportOpenSCAD")
+            process_events()
+    finally:
+        dialogs.ask_export_options = original
+    check(written == {".scad": ["Cylinder", "Sphere"], ".3mf": ["Cylinder", "Sphere"]}, "exported {}".format(written))
+    text = open(os.path.join(OUT, "ratbez_gui_parts.scad")).read()
+    check("module Cylinder() {\ncolor([1,0,0,0.50196" in text, "the cylinder's colour:\n" + text[:600])
+    check("module Sphere() {\ncolor([0,0,1,1])\n" in text, "the sphere's colour")
+    check(text.rstrip().endswith("ratbez_gui_parts();"), "the module placing both")
+    model = zipfile.ZipFile(os.path.join(OUT, "ratbez_gui_parts.3mf")).read("3D/3dmodel.model").decode()
+    check('displaycolor="#FF000080"' in model and 'displaycolor="#0000FFFF"' in model, "3MF colours")
+    check('name="Cylinder"' in model and 'name="Sphere"' in model, "3MF names")
+    check("RatBez: wrote 'Cylinder', 'Sphere' to" in report_text(), "no word in the report view")
+
+
+@suite.test
+def test_no_python_exception_in_the_report_view():
+    process_events()
+    text = report_text()
+    say("---- report view ----\n" + text + "\n---- end of report view ----")
+    for marker in ("Traceback", "<class '", "internal error", "Cannot find icon"):
+        check(marker not in text, "'{}' in the report view".format(marker))
+
+
+def main():
+    for name in list(App.listDocuments()):
+        App.closeDocument(name)
+    suite.run_and_exit()  # os._exit: no "save changes?" dialog can block
+
+
+QtCore.QTimer.singleShot(500, main)
