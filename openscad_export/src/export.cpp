@@ -398,13 +398,54 @@ WrittenMesh export_tessellation(const Solid& solid, const Mesh& mesh, double tol
     return result;
 }
 
+namespace {
+
+// The solids of `parts` as one mesh in one .stl or .off file: each part's mesh prepared as export_tessellation
+// prepares it (float32 for binary STL, else the fewest decimals that pass) and checked on its own, then the
+// meshes side by side (an assembly's parts may touch or overlap, which separate closed shells in one mesh
+// allow; the checks of the whole would call a touch a self-intersection).
+std::vector<WrittenMesh> export_merged(const std::vector<LibraryPart>& parts, const std::string& path, Format format,
+                                       const ExportOptions& options) {
+    require(!parts.empty(), "solids", "is empty");
+    const bool float32 = writes_float32(format, options);
+    std::vector<WrittenMesh> written;
+    ExportOptions file = options;
+    file.openscad.header = {"ratbez " RATBEZ_VERSION ", one mesh of " + std::to_string(parts.size()) + " solids",
+                            "source: " + options.source};
+    Mesh merged;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const LibraryPart& part = parts[i];
+        require(part.solid != nullptr && part.mesh != nullptr, "solids", "a part has no solid or mesh");
+        const double share = 0.95 / static_cast<double>(parts.size());
+        const Mesh rounded = float32 ? float32_mesh(*part.mesh) : Mesh{};
+        written.push_back(prepared_mesh(*part.solid, *part.mesh, part.tolerance,
+                                        FixedMesh{float32 ? &rounded : nullptr, float32 ? fixed_coordinates(format) : std::string()},
+                                        part.checks,
+                                        progress_part(options.progress, share * static_cast<double>(i), share * static_cast<double>(i + 1))));
+        const WrittenMesh& mesh = written.back();
+        const std::vector<std::string> lines =
+            header_lines(mesh.mesh, options.source,
+                         Measured{part.tolerance, mesh.max_deviation, part.solid->volume(), mesh.decimals,
+                                  float32 ? fixed_coordinates_note(Format::stl) : std::string()});
+        file.openscad.header.push_back("solid " + part.module_name + ":");
+        for (std::size_t k = 2; k < lines.size(); ++k) file.openscad.header.push_back("  " + lines[k]);
+        const auto offset = static_cast<std::uint32_t>(merged.vertices.size());
+        merged.vertices.insert(merged.vertices.end(), mesh.mesh.vertices.begin(), mesh.mesh.vertices.end());
+        for (const auto& t : mesh.mesh.triangles) merged.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+    write_files(merged, path, format, file);
+    if (options.progress) options.progress(1.0);
+    return written;
+}
+
+}  // namespace
+
 std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, const std::string& path,
                                         const ExportOptions& options) {
     const Format format = checked_format(path, options);
-    require(format == Format::openscad || format == Format::three_mf, "path",
-            "a file of several solids is a .scad library or a .3mf file");
     require(!options.import_stl, "import_stl", "applies to one solid, not a library of several");
     if (format == Format::three_mf) return export_three_mf(parts, path, options);
+    if (format == Format::stl || format == Format::off) return export_merged(parts, path, format, options);
     require(!parts.empty(), "solids", "is empty");
     std::vector<WrittenMesh> written;
     std::vector<LibraryModule> modules;

@@ -65,7 +65,9 @@ struct LibraryPart {
 // options.openscad.module_name placing them all. The header lists every module with its triangles, its
 // measured deviation and volumes. import_stl is refused (Error "import_stl"). Returns each part's mesh as written.
 // A .3mf path gives one 3MF object per part instead (named module_name, any non-empty text, with its
-// colour), each checked on the coordinates lib3mf wrote; the Description metadata lists every object.
+// colour), each checked on the coordinates lib3mf wrote; the Description metadata lists every object. A .stl or
+// .off path gives one mesh of all the parts, each prepared and checked on its own (they may touch or overlap,
+// as an assembly's parts do), the OFF comments / ASCII STL header listing them.
 std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, const std::string& path,
                                         const ExportOptions& options = {});
 
