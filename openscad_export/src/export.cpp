@@ -158,6 +158,18 @@ std::vector<int> decimal_candidates(const Mesh& mesh, double tolerance, double d
 
 }  // namespace
 
+Mesh tessellate_for_export(const Solid& solid, TessellationOptions options, const MeshCheckOptions& checks) {
+    const TriangleLimit limit = checked_triangle_limit(checks);
+    const bool checks_bind = limit.triangles < options.max_triangles;
+    if (checks_bind) options.max_triangles = std::max<std::size_t>(limit.triangles, 1);
+    try {
+        return tessellate(solid, options);
+    } catch (const TooFine& e) {
+        if (!checks_bind) throw;
+        throw e.reworded(limit.limit, "a tolerance of");
+    }
+}
+
 Mesh rounded_mesh(const Mesh& mesh, int decimals) {
     require(decimals >= 0 && decimals <= 40, "decimals", "must be from 0 to 40");
     Mesh result = mesh;

@@ -144,8 +144,13 @@ public:
                 mesh_planar(face);
                 done += step;
             }
+        // The plans were held against the count their mesh cannot fall below; the zippers and split cells
+        // may add a few more. The mesh's own count decides, so that max_triangles holds exactly.
+        Mesh mesh = assembler_.take();
+        if (mesh.triangles.size() > settings_.max_triangles)
+            throw TooFine(static_cast<double>(mesh.triangles.size()), settings_.max_triangles);
         settings_.report(1.0);
-        return assembler_.take();
+        return mesh;
     }
 
 private:
@@ -652,22 +657,53 @@ private:
 
 namespace {
 
-// The planner's estimate covers the face it stopped at, so it is a lower bound for the whole. A coarser
-// tessellation of all faces that fits (tolerance x4 each step, at most 20,000 triangles: about a second)
-// scaled by the tolerance ratio gives the estimate: a curved face's triangles grow as 1 / tolerance, flat
-// ones not at all (so it errs high).
-double estimate_triangles(std::span<const Face> faces, detail::TessellationSettings settings, double lower_bound) {
+// The planner's count covers the faces it planned before it stopped, so it is a lower bound for the whole.
+// A coarser tessellation of all faces that fits (tolerance x4 each step, at most 20,000 triangles: about a
+// second) scaled by the tolerance ratio gives the estimate: a curved face's triangles grow as 1 / tolerance,
+// flat ones not at all (so it errs high). The same scaling gives a tolerance that fits the budget (10%
+// coarser than the scaling says, and never finer than a coarse tolerance that was seen to fit).
+struct Estimate {
+    double triangles = 0;
+    double fitting_tolerance = 0;  // 0: no coarser tessellation fitted
+};
+
+Estimate estimate_triangles(std::span<const Face> faces, detail::TessellationSettings settings, double lower_bound) {
     const double requested = settings.tolerance;
+    const double budget = static_cast<double>(settings.max_triangles);
     settings.max_triangles = std::min<std::size_t>(settings.max_triangles, 20'000);
+    // The coarse runs are part of the refusal, not progress of the tessellation asked for: they poll the
+    // caller's callback (Ctrl-C) with the fraction reached so far instead of reporting their own.
+    const Progress* caller = settings.progress;
+    const double reached = settings.reported;
+    const Progress poll_only = [caller, reached](double) {
+        if (caller != nullptr && *caller) (*caller)(reached);
+    };
+    settings.progress = &poll_only;
     for (int step = 0; step < 24; ++step) {
         settings.tolerance *= 4;
         try {
-            const Mesh coarse = Tessellator(faces, settings).run();
-            return std::max(lower_bound, static_cast<double>(coarse.triangles.size()) * settings.tolerance / requested);
+            const double count = static_cast<double>(Tessellator(faces, settings).run().triangles.size());
+            const double estimate = std::max(lower_bound, count * settings.tolerance / requested);
+            // Scaled from the coarse mesh, and from the estimate at the requested tolerance (which does not fit,
+            // so the answer must be coarser than it).
+            const double scaled = TooFine::two_digits_up(1.1 * std::max(settings.tolerance * count, requested * estimate) / budget);
+            if (count > budget || scaled >= settings.tolerance) return {estimate, scaled};
+            // A small budget is near the coarsest meshes, where the count no longer scales with 1 / tolerance
+            // (every face keeps its fewest cells): the scaled tolerance is tried (a mesh of at most 20,000
+            // triangles), and the coarse one, seen to fit, named instead when it does not.
+            if (budget > static_cast<double>(settings.max_triangles)) return {estimate, scaled};
+            detail::TessellationSettings check = settings;
+            check.tolerance = scaled;
+            try {
+                (void)Tessellator(faces, check).run();
+                return {estimate, scaled};
+            } catch (const TooFine&) {
+                return {estimate, settings.tolerance};
+            }
         } catch (const TooFine&) {
         }
     }
-    return lower_bound;
+    return {lower_bound, 0};
 }
 
 }  // namespace
@@ -697,7 +733,8 @@ Mesh run_within_budget(std::span<const Face> faces, const detail::TessellationSe
     try {
         return Tessellator(faces, settings).run();
     } catch (const TooFine& e) {
-        throw TooFine(estimate_triangles(faces, settings, e.estimated_triangles()), settings.max_triangles);
+        const Estimate estimate = estimate_triangles(faces, settings, e.estimated_triangles());
+        throw TooFine(estimate.triangles, settings.max_triangles, estimate.fitting_tolerance);
     }
 }
 
