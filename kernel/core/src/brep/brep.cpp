@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -23,6 +24,16 @@ namespace {
 constexpr double kRelativeTolerance = 1e-9;
 constexpr int kSideSamples = 9;
 
+// The tolerance of the consistency checks for geometry that lies in `box`: kRelativeTolerance of its size,
+// and no less than the rounding of coordinates as far from the origin as the box reaches (64 ulps of its
+// largest coordinate). Far from the origin the second decides: the sample points along a pole of a unit
+// sphere at 1e8 (inside the scale rule of limits.hpp) are evaluated about 1e-8 apart, three times 1e-9 of
+// its size, so the pole looked like a side of length 1e-7 that "does not collapse to a point" (issue 29).
+// Within the scale rule (size >= 1e-9 of the reach) the floor stays below 1.5e-5 of the size.
+double consistency_tolerance(const Box& box) {
+    return kRelativeTolerance * box.diagonal() + 64 * std::numeric_limits<double>::epsilon() * detail::reach_of(box);
+}
+
 const char* side_name(int side) {
     static const char* names[] = {"v_min", "u_max", "v_max", "u_min"};
     return names[side];
@@ -36,7 +47,7 @@ VertexPtr traversal_end(const Coedge& c) { return c.reversed ? c.edge->start : c
 Face Face::from_surface(NurbsSurface surface, std::array<Coedge, 4> sides) {
     const double size = surface.control_box().diagonal();
     require(size > 0 && std::isfinite(size), "surface", "must not collapse to a single point");
-    const double tolerance = kRelativeTolerance * size;
+    const double tolerance = consistency_tolerance(surface.control_box());
     const Interval du = surface.domain_u(), dv = surface.domain_v();
 
     for (int s = 0; s < 4; ++s) {
@@ -100,7 +111,7 @@ Face Face::from_surface(NurbsSurface surface, std::array<Coedge, 4> sides) {
 Face Face::from_surface(NurbsSurface surface) {
     const double size = surface.control_box().diagonal();
     require(size > 0 && std::isfinite(size), "surface", "must not collapse to a single point");
-    const double tolerance = kRelativeTolerance * size;
+    const double tolerance = consistency_tolerance(surface.control_box());
     const Interval du = surface.domain_u(), dv = surface.domain_v();
     // The points of side s (Side order) at the validation's sample parameters, in increasing parameter.
     auto side_points = [&](int s) {
@@ -187,7 +198,7 @@ Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops) {
     }
     const double size = box.diagonal();
     require(size > 0, "loops", "enclose no area");
-    const double tolerance = kRelativeTolerance * size;
+    const double tolerance = consistency_tolerance(box);
 
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (std::size_t l = 0; l < loops.size(); ++l) {
@@ -269,7 +280,7 @@ Solid::Solid(std::vector<Face> faces, Construction construction) : construction_
     // A solid too large or too small to measure (limits.hpp) would fail the check below for the wrong reason.
     Box box;
     for (const Face& face : faces) box.add(face.surface().control_box());
-    detail::require_solid_scale(box.diagonal(), detail::reach_of(box), "faces", "faces");
+    detail::require_solid_scale(box.diagonal(), detail::reach_of(box), "faces", "faces", detail::largest_box_diagonal);
     // Coherent edge directions make the shell consistently oriented; the sign of the enclosed volume
     // tells outward from inward.
     require(detail::faces_volume(faces, "faces", /*quick=*/true) > 0, "faces",

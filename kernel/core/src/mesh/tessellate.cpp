@@ -34,8 +34,10 @@
 #include "mesh/tessellate_sides.hpp"
 #include "mesh/tessellator.hpp"
 #include "mesh/triangle_grid.hpp"
+#include "mesh/weight_limit.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/solid_transform.hpp"
 #include "ratbez/surface_grid.hpp"
 
 namespace ratbez {
@@ -740,7 +742,40 @@ Mesh run_within_budget(std::span<const Face> faces, const detail::TessellationSe
 
 }  // namespace
 
+namespace {
+
+// Far from unit size the planner's curvature products (E G - F^2 grows as size^4) leave the double range:
+// below about 1e-75 and above 1e75 a sphere still meshed within its tolerance, with up to seven times the
+// triangles (radius 1e-99: 3000 for the 432 of radius 1). Such a solid is meshed at a power-of-two scale
+// near size 1, which is exact (every control point, vertex and tolerance scaled, nothing rounded), and the
+// mesh scaled back, exactly too. 0: the solid's own scale will do.
+int unit_scale_exponent(const Box& box) {
+    const double size = box.diagonal();
+    if (!(size > 0) || !std::isfinite(size)) return 0;
+    const int exponent = std::ilogb(size);
+    return std::abs(exponent) > 64 ? exponent : 0;
+}
+
+Mesh scaled_back(Mesh mesh, int exponent) {
+    for (Vec3& v : mesh.vertices) v = {std::ldexp(v.x, exponent), std::ldexp(v.y, exponent), std::ldexp(v.z, exponent)};
+    return mesh;
+}
+
+}  // namespace
+
 Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
+    detail::require_tessellatable_weights(solid.faces(), "solid");
+    if (const int exponent = unit_scale_exponent(solid.bounding_box())) {
+        (void)settings_of(options);  // the options are checked as given
+        TessellationOptions unit = options;
+        unit.tolerance = std::ldexp(options.tolerance, -exponent);
+        const Solid scaled = transformed(solid, AffineMap::scaling(std::ldexp(1.0, -exponent), {}));
+        try {
+            return scaled_back(tessellate(scaled, unit), exponent);
+        } catch (const TooFine& e) {
+            throw TooFine(e.estimated_triangles(), e.max_triangles(), std::ldexp(e.fitting_tolerance(), exponent));
+        }
+    }
     Mesh mesh = run_within_budget(solid.faces(), settings_of(options));
     // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
     // solid whose faces fold onto each other — a profile that runs back over itself, found by
@@ -751,12 +786,14 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
 }
 
 Mesh tessellate(const Face& face, const TessellationOptions& options) {
+    detail::require_tessellatable_weights(std::span<const Face>(&face, 1), "face");
     return run_within_budget(std::span<const Face>(&face, 1), settings_of(options));
 }
 
 Mesh tessellate(const NurbsSurface& surface, const TessellationOptions& options) {
     const detail::TessellationSettings settings = settings_of(options);  // the options first, then the surface
     const Face face = Face::from_surface(surface);
+    detail::require_tessellatable_weights(std::span<const Face>(&face, 1), "surface");
     return run_within_budget(std::span<const Face>(&face, 1), settings);
 }
 

@@ -66,6 +66,8 @@ Solid cylinder(double radius, double height, const Vec3& center, const Vec3& axi
     require_positive(radius, "radius");
     require_positive(height, "height");
     require_scale(std::max(radius, height), center, radius >= height ? "radius" : "height");
+    detail::require_feature(radius, height, "radius", "a radius");
+    detail::require_feature(height, radius, "height", "a height");
     const Frame frame = placed_frame(center, axis);
     return conical_solid(frame, radius, radius, height, Construction::Cylinder{center, frame.z_axis, radius, height});
 }
@@ -79,6 +81,11 @@ Solid cone(double radius1, double radius2, double height, const Vec3& center, co
     require_positive(height, "height");
     const double radius = std::max(radius1, radius2);
     require_scale(std::max(radius, height), center, radius < height ? "height" : radius1 >= radius2 ? "radius1" : "radius2");
+    // A radius is 0 (an apex) or a feature of the cone: cone(1, 1e-12, 1)'s top circle is no circle.
+    const double size = std::max(radius, height);
+    if (radius1 > 0) detail::require_feature(radius1, size, "radius1", "a radius (0 makes an apex)");
+    if (radius2 > 0) detail::require_feature(radius2, size, "radius2", "a radius (0 makes an apex)");
+    detail::require_feature(height, size, "height", "a height");
     const Frame frame = placed_frame(center, axis);
     return conical_solid(frame, radius1, radius2, height,
                          Construction::Cone{center, frame.z_axis, radius1, radius2, height});
@@ -101,6 +108,10 @@ Solid torus(double major_radius, double minor_radius, const Vec3& center, const 
     require(minor_radius < major_radius, "minor_radius", "must be less than major_radius (else the tube meets the axis)");
     require_scale(major_radius, center, "major_radius");
     require_scale(minor_radius, center, "minor_radius");
+    detail::require_feature(minor_radius, major_radius, "minor_radius", "a tube radius");
+    // The hole at the axis: its equator circle (radius major - minor) is a side of the torus's face.
+    detail::require_feature(major_radius - minor_radius, major_radius, "minor_radius",
+                            "a hole at the axis (major_radius - minor_radius)");
     const Frame frame = placed_frame(center, axis);
     // The tube's circle in the meridian plane, starting at its outer equator; revolved it gives one face
     // whose two seams are that circle (u = 0 and u = 1) and the outer equator (v = 0 and v = 1).
