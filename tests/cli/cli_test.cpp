@@ -458,6 +458,18 @@ TEST_F(Cli, SpecSizeDepthAndRepeatedKeysAreRefused) {
     expect_bad_input(ratbez({"info", twice}), "spec error: " + twice + ": the key \"radius\" appears twice in one object");
 }
 
+// Issue 29 item 8: a spec with a NUL and garbage after the closing brace was accepted (the JSON parser took the
+// NUL for the end of the text and never read the rest). Refused, one line, exit code 2; garbage alone already was.
+TEST_F(Cli, SpecWithANulByteIsRefused) {
+    const std::string spec = R"({"shape": {"type": "sphere", "radius": 1}})";
+    const std::string nul = spec_file(spec + std::string(1, '\0') + "garbage");
+    expect_bad_input(ratbez({"info", nul}), "spec error: " + nul + ": not valid JSON: a NUL byte at offset 42 (JSON text has none)");
+    const std::string inside = spec_file(R"({"name": "a)" + std::string(1, '\0') + R"(b", "shape": {"type": "sphere", "radius": 1}})");
+    expect_bad_input(ratbez({"info", inside}), "spec error: " + inside + ": not valid JSON: a NUL byte at offset 11 (JSON text has none)");
+    expect_bad_input_prefix(ratbez({"export", nul, "-o", path("a.scad")}), "spec error: " + nul + ": not valid JSON: a NUL byte");
+    EXPECT_FALSE(fs::exists(path("a.scad")));
+}
+
 TEST_F(Cli, DemoFailsWhenTwoSpecsShareAName) {
     fs::create_directories(dir_ / "specs");
     std::ofstream(dir_ / "specs" / "a.json") << R"({"name": "same", "shape": {"type": "sphere", "radius": 1}})";
