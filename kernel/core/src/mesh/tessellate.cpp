@@ -761,40 +761,50 @@ Mesh scaled_back(Mesh mesh, int exponent) {
     return mesh;
 }
 
+// mesh_of(shape, options), at the power-of-two scale near size 1 when the shape's size calls for one
+// (unit_scale_exponent); a refusal's tolerance that fits is scaled back too.
+template <class Shape, class MeshOf>
+Mesh at_unit_scale(const Shape& shape, const Box& box, const TessellationOptions& options, MeshOf mesh_of) {
+    const int exponent = unit_scale_exponent(box);
+    if (exponent == 0) return mesh_of(shape, options);
+    (void)settings_of(options);  // the options are checked as given
+    TessellationOptions unit = options;
+    unit.tolerance = std::ldexp(options.tolerance, -exponent);
+    const Shape scaled = transformed(shape, AffineMap::scaling(std::ldexp(1.0, -exponent), {}));
+    try {
+        return scaled_back(mesh_of(scaled, unit), exponent);
+    } catch (const TooFine& e) {
+        throw TooFine(e.estimated_triangles(), e.max_triangles(), std::ldexp(e.fitting_tolerance(), exponent));
+    }
+}
+
 }  // namespace
 
 Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
     detail::require_tessellatable_weights(solid.faces(), "solid");
-    if (const int exponent = unit_scale_exponent(solid.bounding_box())) {
-        (void)settings_of(options);  // the options are checked as given
-        TessellationOptions unit = options;
-        unit.tolerance = std::ldexp(options.tolerance, -exponent);
-        const Solid scaled = transformed(solid, AffineMap::scaling(std::ldexp(1.0, -exponent), {}));
-        try {
-            return scaled_back(tessellate(scaled, unit), exponent);
-        } catch (const TooFine& e) {
-            throw TooFine(e.estimated_triangles(), e.max_triangles(), std::ldexp(e.fitting_tolerance(), exponent));
-        }
-    }
-    Mesh mesh = run_within_budget(solid.faces(), settings_of(options));
-    // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
-    // solid whose faces fold onto each other — a profile that runs back over itself, found by
-    // fuzz_geometry — from handing out an open mesh.
-    require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
-                                       "back on each other, e.g. a profile that runs back over itself)");
-    return mesh;
+    return at_unit_scale(solid, solid.bounding_box(), options, [](const Solid& s, const TessellationOptions& o) {
+        Mesh mesh = run_within_budget(s.faces(), settings_of(o));
+        // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
+        // solid whose faces fold onto each other — a profile that runs back over itself, found by
+        // fuzz_geometry — from handing out an open mesh.
+        require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
+                                           "back on each other, e.g. a profile that runs back over itself)");
+        return mesh;
+    });
 }
 
 Mesh tessellate(const Face& face, const TessellationOptions& options) {
     detail::require_tessellatable_weights(std::span<const Face>(&face, 1), "face");
-    return run_within_budget(std::span<const Face>(&face, 1), settings_of(options));
+    return at_unit_scale(face, face.surface().control_box(), options, [](const Face& f, const TessellationOptions& o) {
+        return run_within_budget(std::span<const Face>(&f, 1), settings_of(o));
+    });
 }
 
 Mesh tessellate(const NurbsSurface& surface, const TessellationOptions& options) {
-    const detail::TessellationSettings settings = settings_of(options);  // the options first, then the surface
+    (void)settings_of(options);  // the options first, then the surface
     const Face face = Face::from_surface(surface);
     detail::require_tessellatable_weights(std::span<const Face>(&face, 1), "surface");
-    return run_within_budget(std::span<const Face>(&face, 1), settings);
+    return tessellate(face, options);
 }
 
 }  // namespace ratbez
