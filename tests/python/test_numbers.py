@@ -117,5 +117,5 @@ def test_extreme_weights_are_refused_up_front_naming_the_ratio(weights, tmp_path
     solid = ratbez.revolve([ratbez.BezierCurve(points, weights=weights), ratbez.BezierCurve([(1, 0, 1), (1, 0, -1)])])
     assert math.isfinite(solid.volume())
     error = raises_naming("solid", solid.tessellate, 0.01)
-    assert "times apart within one Bézier piece, above the limit 1e7" in str(error)
+    assert "times apart within one Bézier piece, above the limit 1e9" in str(error)
     raises_naming("solid", ratbez.export_openscad, solid, tmp_path / "w.scad", 0.01)

@@ -34,7 +34,7 @@ double largest_span_weight_ratio(const NurbsSurface& surface) {
     return worst;
 }
 
-static_assert(kMaxTessellationWeightRatio == 1e7, "the message below states the limit as 1e7");
+static_assert(kMaxTessellationWeightRatio == 1e9, "the message below states the limit as 1e9");
 
 void require_tessellatable_weights(std::span<const Face> faces, const char* argument) {
     for (std::size_t k = 0; k < faces.size(); ++k) {
@@ -42,7 +42,7 @@ void require_tessellatable_weights(std::span<const Face> faces, const char* argu
         const double ratio = largest_span_weight_ratio(faces[k].surface());
         require(ratio <= kMaxTessellationWeightRatio, argument, [&] {
             return "face " + std::to_string(k) + " has rational weights " + number(ratio) +
-                   " times apart within one Bézier piece, above the limit 1e7" +
+                   " times apart within one Bézier piece, above the limit 1e9" +
                    " that tessellation supports (weights that far apart crowd the surface into slivers of its "
                    "parameters; its volume and area are still measured exactly)";
         });
