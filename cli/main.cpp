@@ -177,16 +177,21 @@ ratbez::Mesh tessellate_for(const ShapeSpec& spec, const MeshRequest& request) {
     if (request.max_triangles) options.max_triangles = *request.max_triangles;
     options.progress = request.progress;
     try {
-        return ratbez::tessellate(spec.solid, options);
+        // Refused from the plan, before the mesh is built, when it would exceed what the export's mesh checks
+        // (or the memory limit) take, as well as the budget (issue 29).
+        return ratbez::exporter::tessellate_for_export(spec.solid, options);
     } catch (const ratbez::TooFine& e) {
+        // The limit as the user knows it: their --max-triangles, the default budget, or the checks' limit
+        // (already worded by tessellate_for_export); the tolerance that fits as the option that sets it.
+        const bool own_budget = e.budget() == "max_triangles = " + std::to_string(e.max_triangles());
         const std::string budget =
-            request.max_triangles ? "--max-triangles " + std::to_string(e.max_triangles())
-                                  : "the default limit of " + std::to_string(e.max_triangles()) + " (--max-triangles)";
-        std::string reason(e.reason());
-        reason = reason.substr(0, reason.find(", more than")) + ", more than " + budget + " allows";
+            !own_budget             ? e.budget()
+            : request.max_triangles ? "--max-triangles " + std::to_string(e.max_triangles())
+                                    : "the default limit of " + std::to_string(e.max_triangles()) + " (--max-triangles)";
+        const std::string reason(e.reworded(budget, "--tolerance").reason());
         if (request.tolerance_from_option) throw UsageError("--tolerance", reason);
-        if (spec.tolerance) throw ratbez::spec::SpecError("tolerance", reason + " (or pass a coarser --tolerance)");
-        throw UsageError("--max-triangles", reason);
+        if (spec.tolerance) throw ratbez::spec::SpecError("tolerance", reason);
+        throw UsageError(own_budget ? "--max-triangles" : "--tolerance", reason);
     } catch (const ratbez::Error& e) {
         if (e.argument() == "tolerance") throw UsageError("--tolerance", std::string(e.reason()));
         if (e.argument() == "angle_deg") throw UsageError("--angle", std::string(e.reason()));
@@ -508,7 +513,7 @@ DemoRow demo_one(const fs::path& spec_path, const fs::path& out_dir, bool render
         ratbez::TessellationOptions options;
         options.tolerance = row.tolerance;
         options.angle_deg = spec.tessellation_angle;
-        const ratbez::Mesh mesh = ratbez::tessellate(spec.solid, options);
+        const ratbez::Mesh mesh = ratbez::exporter::tessellate_for_export(spec.solid, options);
         row.triangles = mesh.triangles.size();
         row.volume_exact = spec.solid.volume();
         row.volume_mesh = mesh.volume();

@@ -437,6 +437,11 @@ ShapeSpec parse_spec(std::string_view json_text, const std::string& fallback_nam
     if (json_text.size() > max_spec_bytes)
         throw SpecError("document", "has " + std::to_string(json_text.size()) + " bytes, above the limit " +
                                         std::to_string(max_spec_bytes) + " for a spec");
+    // The JSON parser takes a NUL byte for the end of the text, so whatever followed one went unread (a spec
+    // with garbage after "}\0" was accepted, issue 29): JSON text has no NUL outside strings, nor in them
+    // unescaped, so any NUL refuses the document.
+    if (const std::size_t nul = json_text.find('\0'); nul != std::string_view::npos)
+        throw SpecError("document", "not valid JSON: a NUL byte at offset " + std::to_string(nul) + " (JSON text has none)");
     json document;
     try {
         // Checked while parsing, before the document grows with them (issue 14): the nesting depth (30 MB of

@@ -192,6 +192,18 @@ std::vector<int> decimal_candidates(const Mesh& mesh, double tolerance, double d
 
 }  // namespace
 
+Mesh tessellate_for_export(const Solid& solid, TessellationOptions options, const MeshCheckOptions& checks) {
+    const TriangleLimit limit = checked_triangle_limit(checks);
+    const bool checks_bind = limit.triangles < options.max_triangles;
+    if (checks_bind) options.max_triangles = std::max<std::size_t>(limit.triangles, 1);
+    try {
+        return tessellate(solid, options);
+    } catch (const TooFine& e) {
+        if (!checks_bind) throw;
+        throw e.reworded(limit.limit, "a tolerance of");
+    }
+}
+
 Mesh rounded_mesh(const Mesh& mesh, int decimals) {
     require(decimals >= 0 && decimals <= 40, "decimals", "must be from 0 to 40");
     Mesh result = mesh;
@@ -262,7 +274,17 @@ void export_mesh(const Mesh& given, const std::string& path, const ExportOptions
     MeshCheckOptions checks = options.checks;
     if (options.progress) checks.progress = progress_part(options.progress, 0, 0.95);
     const MeshReport report = check_mesh(mesh, checks);
-    if (!report.ok()) refuse(report);
+    if (!report.ok()) {
+        // The mesh as given first: its own problems are its own, not float32's.
+        if (rounded) {
+            checks.progress = {};
+            const MeshReport exact = check_mesh(given, checks);
+            if (!exact.ok()) refuse(exact);
+            throw Error("mesh", "binary STL stores float32 coordinates, which leave this mesh invalid (" +
+                                    report.problems.front() + "): write ASCII STL, .off or .scad text");
+        }
+        refuse(report);
+    }
     ExportOptions written = options;
     written.openscad.header = header_lines(mesh, options.source, std::nullopt);
     write_files(mesh, path, format, written);
@@ -319,12 +341,21 @@ WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance
     if (!text) {
         result.max_deviation = measured(result.mesh, 0, 0.5);
         const MeshReport report = checked(result.mesh, 0.5, 0.95);
-        if (!report.ok() || !(result.max_deviation <= tolerance))
+        if (!report.ok() || !(result.max_deviation <= tolerance)) {
+            // Blame the rounding only for what it did: a mesh already invalid or off the surface before it
+            // is refused as such (issue 29: its problems were reported as float32's).
+            const MeshReport exact = checked(mesh, 0.95, 0.95);
+            if (!exact.ok()) refuse(exact);
+            const double exact_deviation = measured(mesh, 0.95, 0.95);
+            if (!(exact_deviation <= tolerance))
+                throw Error("mesh", "refusing to export a mesh " + number_text(exact_deviation, 4) +
+                                        " from the surface, beyond the tolerance " + number_text(tolerance, 4));
             throw Error("mesh", fixed.stores + ", which leave this mesh " +
                                     (report.ok() ? number_text(result.max_deviation, 4) + " from the surface, beyond the tolerance " +
                                                        number_text(tolerance, 4)
                                                  : "invalid (" + report.problems.front() + ")") +
                                     ": write .scad, .off or ASCII STL text, or use a coarser tolerance");
+        }
     } else if (!chosen) {
         const MeshReport report = checked(mesh, kCandidatesEnd, 0.95);
         if (!report.ok()) refuse(report);

@@ -212,10 +212,10 @@ constexpr double kSelfIntersectionStart = 0.2;
 }  // namespace
 
 MeshReport check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
-    require(mesh.triangles.size() <= options.max_triangles, "mesh", [&] {
-        return "has " + std::to_string(mesh.triangles.size()) + " triangles, above the limit " +
-               std::to_string(options.max_triangles) + " of the export's mesh checks (about " +
-               std::to_string(bytes_per_checked_triangle) + " bytes each); use a coarser tolerance";
+    const TriangleLimit limit = checked_triangle_limit(options);
+    require(mesh.triangles.size() <= limit.triangles, "mesh", [&] {
+        return "has " + std::to_string(mesh.triangles.size()) + " triangles, above " + limit.limit +
+               "; use a coarser tolerance";
     });
     MeshReport report;
 

@@ -341,8 +341,9 @@ TEST_F(Cli, TooFineNamesTheOptionPassedAndEstimatesTheCount) {
     CommandResult run = ratbez({"export", sphere, "-o", path("a.scad"), "--max-triangles", "1000"});
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.err.rfind("spec error: tolerance: too fine: the mesh would need about ", 0), 0u) << run.err;
-    EXPECT_NE(run.err.find(" triangles, more than --max-triangles 1000 allows (or pass a coarser --tolerance)\n"),
-              std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(" triangles, more than --max-triangles 1000 allows; --tolerance "), std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find(" or coarser fits\n"), std::string::npos) << run.err;
     const std::size_t at = run.err.find("about ") + 6;
     const double estimate = std::stod(run.err.substr(at, run.err.find(' ', at) - at));
     EXPECT_GT(estimate, 4000);
@@ -350,11 +351,25 @@ TEST_F(Cli, TooFineNamesTheOptionPassedAndEstimatesTheCount) {
     run = ratbez({"export", sphere, "-o", path("a.scad"), "--tolerance", "0.001", "--max-triangles", "5000"});
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.err.rfind("usage error: --tolerance: too fine: the mesh would need about ", 0), 0u) << run.err;
-    EXPECT_NE(run.err.find("more than --max-triangles 5000 allows\n"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("more than --max-triangles 5000 allows; --tolerance "), std::string::npos) << run.err;
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--max-triangles", "0"}),
                      "usage error: --max-triangles: must be a positive whole number, not '0'");
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.step"), "--max-triangles", "10"}),
                      "usage error: --max-triangles: does not apply to exact .step output");
+    EXPECT_FALSE(fs::exists(path("a.scad")));
+}
+
+// Issue 29 item 3: an export whose mesh the CGAL checks would refuse (4,000,000 triangles) was tessellated in
+// full first (sphere r = 10 at 1e-5: 4.47M triangles, 352 s) and refused after. It is refused from the plan,
+// one line, with the estimate, the checks' limit and a --tolerance that fits.
+TEST_F(Cli, ExportOverTheChecksLimitIsRefusedFromThePlan) {
+    const std::string spec = spec_file(R"({"shape": {"type": "sphere", "radius": 10}})");
+    const CommandResult run = ratbez({"export", spec, "-o", path("a.scad"), "--tolerance", "1e-5"});
+    expect_bad_input_prefix(run, "usage error: --tolerance: too fine: the mesh would need about ");
+    EXPECT_NE(run.err.find(" triangles, more than the export's mesh checks' limit of 4000000 triangles (about 1.8 GB at "
+                           "450 bytes each) allows; --tolerance 1.2e-05 or coarser fits\n"),
+              std::string::npos)
+        << run.err;
     EXPECT_FALSE(fs::exists(path("a.scad")));
 }
 
@@ -444,6 +459,18 @@ TEST_F(Cli, SpecSizeDepthAndRepeatedKeysAreRefused) {
     expect_bad_input(ratbez({"info", deep}), "spec error: " + deep + ": nests objects and arrays deeper than the limit 64");
     const std::string twice = spec_file(R"({"shape": {"type": "sphere", "radius": 1, "radius": 2}})");
     expect_bad_input(ratbez({"info", twice}), "spec error: " + twice + ": the key \"radius\" appears twice in one object");
+}
+
+// Issue 29 item 8: a spec with a NUL and garbage after the closing brace was accepted (the JSON parser took the
+// NUL for the end of the text and never read the rest). Refused, one line, exit code 2; garbage alone already was.
+TEST_F(Cli, SpecWithANulByteIsRefused) {
+    const std::string spec = R"({"shape": {"type": "sphere", "radius": 1}})";
+    const std::string nul = spec_file(spec + std::string(1, '\0') + "garbage");
+    expect_bad_input(ratbez({"info", nul}), "spec error: " + nul + ": not valid JSON: a NUL byte at offset 42 (JSON text has none)");
+    const std::string inside = spec_file(R"({"name": "a)" + std::string(1, '\0') + R"(b", "shape": {"type": "sphere", "radius": 1}})");
+    expect_bad_input(ratbez({"info", inside}), "spec error: " + inside + ": not valid JSON: a NUL byte at offset 11 (JSON text has none)");
+    expect_bad_input_prefix(ratbez({"export", nul, "-o", path("a.scad")}), "spec error: " + nul + ": not valid JSON: a NUL byte");
+    EXPECT_FALSE(fs::exists(path("a.scad")));
 }
 
 TEST_F(Cli, DemoFailsWhenTwoSpecsShareAName) {

@@ -102,9 +102,13 @@ def test_max_triangles_gives_an_estimate():
         sphere.tessellate(1e-3, max_triangles=1000)
     message = str(info.value)
     assert message.startswith("tolerance: too fine: the mesh would need about ")
-    assert message.endswith(" triangles, more than max_triangles = 1000 allows")
+    assert " triangles, more than max_triangles = 1000 allows; a tolerance of " in message
+    assert message.endswith(" or coarser fits")
     estimate = int(message.split("about ")[1].split(" ")[0])
     assert needed / 2 < estimate < 2 * needed
+    # The tolerance the message names fits the same budget.
+    fitting = float(message.split("a tolerance of ")[1].split(" ")[0])
+    assert len(sphere.tessellate(fitting, max_triangles=1000).triangles) <= 1000
     raises_naming("max_triangles", sphere.tessellate, 1e-3, max_triangles=0)
 
 
@@ -115,6 +119,58 @@ def test_export_max_triangles(tmp_path):
     assert not (tmp_path / "s.scad").exists()
     raises_naming("max_triangles", ratbez.write_off, ratbez.sphere(1.0), tmp_path / "s.off", max_triangles=-1)
     ratbez.write_off(ratbez.sphere(1.0), tmp_path / "s.off", tolerance=1e-2, max_triangles=5000)
+
+
+# Issue 29 item 3: export_openscad(sphere(10), path, 1e-5) tessellated 4.47M triangles (352 s under a 1.5 GB
+# limit) and only then refused them: "above the limit 4000000 of the export's mesh checks". The export's
+# tessellation is now held against the checks' limit from its plan: refused before any cell is checked or
+# any triangle built (the progress never leaves 0, where main went on to mesh it), with the estimate and a
+# tolerance that fits.
+@needs_cgal
+def test_export_refuses_a_mesh_over_the_checks_limit_from_the_plan(tmp_path):
+    def progress(fraction):
+        if fraction > 0:
+            raise RuntimeError(f"the export went on to build the mesh (progress {fraction})")
+
+    with pytest.raises(ratbez.Error) as info:
+        ratbez.export_openscad(ratbez.sphere(10), tmp_path / "s.scad", 1e-5, progress=progress)
+    message = str(info.value)
+    assert message.startswith("tolerance: too fine: the mesh would need about "), message
+    assert "more than the export's mesh checks' limit of 4000000 triangles (about 1.8 GB at 450 bytes each) allows" \
+        in message
+    estimate = int(message.split("about ")[1].split(" ")[0])
+    assert 4_000_000 < estimate < 6_000_000
+    fitting = float(message.split("a tolerance of ")[1].split(" ")[0])
+    assert 1e-5 < fitting < 2e-5
+    assert not (tmp_path / "s.scad").exists()
+
+
+# The same from the process's memory limit (the reported 1.5 GB): an export refuses from the plan what its
+# checks could not hold (450 bytes a triangle) within RLIMIT_AS, with a ratbez.Error naming the memory
+# limit; main built the mesh and ran out (MemoryError or bad_alloc). In a child process: the limit stays there.
+@needs_cgal
+def test_export_refuses_what_the_memory_limit_cannot_hold(tmp_path):
+    import subprocess
+    import sys
+    script = f"""
+import resource, ratbez
+with open('/proc/self/status') as f:
+    size = next(int(l.split()[1]) * 1024 for l in f if l.startswith('VmSize:'))
+limit = size + 150 * 2**20
+resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+try:
+    ratbez.export_openscad(ratbez.sphere(10), {str(tmp_path / "s.scad")!r}, 5e-5)
+    print("written")
+except ratbez.Error as e:
+    print(e)
+"""
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    line = run.stdout.strip()
+    assert line.startswith("tolerance: too fine: the mesh would need about "), line
+    assert "triangles the process's memory limit leaves room for (" in line, line
+    assert " or coarser fits" in line, line
+    assert not (tmp_path / "s.scad").exists()
 
 
 @needs_cgal

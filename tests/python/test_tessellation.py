@@ -42,9 +42,31 @@ def test_too_fine_reports_an_estimate_not_the_cap():
 def test_max_triangles_is_kept_when_enough():
     solid = ratbez.sphere(1.0)
     mesh = solid.tessellate(1e-3)
-    # The planner estimates conservatively (planned grid plus edge allowance), so leave it room.
     again = solid.tessellate(1e-3, max_triangles=2 * len(mesh.triangles))
     assert np.array_equal(mesh.triangles, again.triangles)
+
+
+# Issue 29: tessellate(0.01, max_triangles=432) refused the sphere's mesh of exactly 432 triangles (its
+# estimate was 480: two triangles per planned cell plus an edge allowance, where a cell at a pole is one).
+# The plan is now held against a count its mesh never falls below, and the mesh's own count decides.
+@pytest.mark.parametrize("solid", [ratbez.sphere(1.0), ratbez.torus(2.0, 1.0), ratbez.cylinder(1.0, 2.0),
+                                   ratbez.cone(1.0, 0.0, 1.0), ratbez.cone(1.0, 0.5, 2.0)],
+                         ids=["sphere", "torus", "cylinder", "cone_apex", "cone"])
+@pytest.mark.parametrize("tolerance", [0.1, 0.01, 0.001])
+def test_max_triangles_never_refuses_a_mesh_within_it(solid, tolerance):
+    mesh = solid.tessellate(tolerance)
+    count = len(mesh.triangles)
+    exact = solid.tessellate(tolerance, max_triangles=count)
+    assert np.array_equal(mesh.triangles, exact.triangles)
+    error = raises_naming("tolerance", solid.tessellate, tolerance, max_triangles=count - 1)
+    # ... and a refusal names a tolerance that fits.
+    fitting = float(re.search(r"a tolerance of (\S+) or coarser fits", str(error)).group(1))
+    assert fitting > tolerance
+    assert len(solid.tessellate(fitting, max_triangles=count - 1).triangles) <= count - 1
+
+
+def test_the_reported_sphere_of_432_triangles_fits_432():
+    assert len(ratbez.sphere(1.0).tessellate(0.01, max_triangles=432).triangles) == 432
 
 
 @pytest.mark.parametrize("bad", [0, -5, "many", 2.5])

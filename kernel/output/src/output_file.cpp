@@ -37,20 +37,23 @@ std::string quoted(std::string_view text) {
 // ---- The temporary files in flight, for the signal handler --------------------------------------------------
 // A fixed table (no allocation, no lock: a signal may arrive anywhere); a slot is claimed with `used`, filled,
 // then published with `ready`, so the handler only ever reads a complete name. More concurrent writes than
-// slots are written just the same; only their cleanup on a signal is skipped.
+// slots are written just the same; only their cleanup on a signal is skipped. The target's name is kept too:
+// the handler's line says which file was not written.
 struct TemporarySlot {
     std::atomic<bool> used{false};
     std::atomic<bool> ready{false};
     char name[PATH_MAX + 1]{};
+    char target[PATH_MAX + 1]{};
 };
 std::array<TemporarySlot, 64> temporaries;
 
-TemporarySlot* register_temporary(const std::string& name) {
-    if (name.size() > PATH_MAX) return nullptr;
+TemporarySlot* register_temporary(const std::string& name, const std::string& target) {
+    if (name.size() > PATH_MAX || target.size() > PATH_MAX) return nullptr;
     for (TemporarySlot& slot : temporaries) {
         bool expected = false;
         if (!slot.used.compare_exchange_strong(expected, true)) continue;
         std::memcpy(slot.name, name.c_str(), name.size() + 1);
+        std::memcpy(slot.target, target.c_str(), target.size() + 1);
         slot.ready.store(true);
         return &slot;
     }
@@ -63,10 +66,131 @@ void release(TemporarySlot* slot) {
     slot->used.store(false);
 }
 
+// ---- The signals that end the program -----------------------------------------------------------------------
+// Every signal whose default action ends the process and that arrives from outside (a terminal, kill, a
+// closed pipe, a timer, a resource limit): the handler removes the temporaries, says in one line on stderr
+// why the program stopped and which file it did not write, then ends the process as the signal would have.
+// Synchronous faults (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP, SIGSYS) are left to their default
+// action and to the sanitizers, which report them better than a line could.
+struct EndingSignal {
+    int number;
+    const char* name;
+    const char* reason;
+};
+constexpr EndingSignal ending_signals[] = {
+    {SIGHUP, "SIGHUP", "the terminal hung up"},
+    {SIGINT, "SIGINT", "interrupted"},
+    {SIGQUIT, "SIGQUIT", "quit"},
+    {SIGPIPE, "SIGPIPE", "the pipe it writes to was closed"},
+    {SIGALRM, "SIGALRM", "a timer expired"},
+    {SIGTERM, "SIGTERM", "asked to terminate"},
+    {SIGUSR1, "SIGUSR1", "user signal 1"},
+    {SIGUSR2, "SIGUSR2", "user signal 2"},
+    {SIGXCPU, "SIGXCPU", "the CPU time limit (ulimit -t) was reached"},
+    {SIGXFSZ, "SIGXFSZ", "the file size limit (ulimit -f) was reached"},
+    {SIGVTALRM, "SIGVTALRM", "a virtual timer expired"},
+    {SIGPROF, "SIGPROF", "a profiling timer expired"},
+    {SIGPOLL, "SIGPOLL", "a pollable event"},
+    {SIGPWR, "SIGPWR", "power failure"},
+    {SIGSTKFLT, "SIGSTKFLT", "a stack fault"},
+};
+
+// The program name that starts the handler's line ("ratbez"); a fixed buffer, set before any handler.
+char program_name[64] = "ratbez";
+
+// An async-signal-safe line buffer: text appended up to its size, written with one write(2).
+struct SignalLine {
+    char text[1024];
+    std::size_t size = 0;
+    void add(const char* s) {
+        while (*s != '\0' && size + 1 < sizeof text) text[size++] = *s++;
+    }
+    // A file name quoted, its control bytes escaped as \xNN (a name cannot forge lines or drive the terminal).
+    void add_quoted(const char* s) {
+        static constexpr char hex[] = "0123456789abcdef";
+        add("'");
+        for (; *s != '\0' && size + 5 < sizeof text; ++s) {
+            const auto c = static_cast<unsigned char>(*s);
+            if (c < 0x20 || c == 0x7f) {
+                const char escaped[] = {'\\', 'x', hex[c >> 4], hex[c & 15], '\0'};
+                add(escaped);
+            } else {
+                text[size++] = static_cast<char>(c);
+            }
+        }
+        add("'");
+    }
+    // Written with SIGPIPE ignored: a closed stderr must not replace the signal being handled by another.
+    void write_out() {
+        if (size + 1 < sizeof text) text[size++] = '\n';
+        else text[sizeof text - 1] = '\n', size = sizeof text;
+        struct sigaction ignore {}, previous {};
+        ignore.sa_handler = SIG_IGN;
+        sigemptyset(&ignore.sa_mask);
+        ::sigaction(SIGPIPE, &ignore, &previous);
+        write_all();
+        ::sigaction(SIGPIPE, &previous, nullptr);
+    }
+    void write_all() const {
+        const char* data = text;
+        std::size_t left = size;
+        while (left > 0) {
+            const ssize_t written = ::write(STDERR_FILENO, data, left);
+            if (written <= 0) {
+                if (written < 0 && errno == EINTR) continue;
+                return;
+            }
+            data += written;
+            left -= static_cast<std::size_t>(written);
+        }
+    }
+};
+
 extern "C" void remove_temporaries_and_reraise(int signal_number) {
-    for (TemporarySlot& slot : temporaries)
-        if (slot.ready.load()) ::unlink(slot.name);  // async-signal-safe
+    const int saved_errno = errno;
+    SignalLine line;
+    const EndingSignal* which = nullptr;
+    for (const EndingSignal& s : ending_signals)
+        if (s.number == signal_number) which = &s;
+    // SIGXFSZ comes from a write past the file size limit: that is the write's error, worded as the
+    // command's other errors are (its "error: path: ..." line and exit code 2), not a crash.
+    const bool file_too_large = signal_number == SIGXFSZ;
+    if (file_too_large) {
+        line.add("error: path: ");
+    } else {
+        line.add(program_name);
+        line.add(": stopped by ");
+        line.add(which != nullptr ? which->name : "a signal");
+        line.add(" (");
+        line.add(which != nullptr ? which->reason : "ended");
+        line.add(")");
+    }
+    bool first = true;
+    for (TemporarySlot& slot : temporaries) {
+        if (!slot.ready.load()) continue;
+        ::unlink(slot.name);  // async-signal-safe
+        line.add(first ? (file_too_large ? "" : "; ") : ", ");
+        line.add_quoted(slot.target);
+        first = false;
+    }
+    if (file_too_large) {
+        if (first) line.add("a file");
+        line.add(" reached the file size limit (ulimit -f) and was not written");
+    } else if (!first) {
+        line.add(" not written (its temporary file was removed)");
+    }
+    line.write_out();
+    if (file_too_large) _exit(2);
+    errno = saved_errno;
     std::raise(signal_number);  // SA_RESETHAND restored the default action
+}
+
+// The handled signals as a set (blocked while a temporary file is created and registered).
+sigset_t handled_signals() {
+    sigset_t set;
+    sigemptyset(&set);
+    for (const EndingSignal& s : ending_signals) sigaddset(&set, s.number);
+    return set;
 }
 
 // ---- An ostream over a file descriptor ---------------------------------------------------------------------
@@ -190,16 +314,14 @@ std::pair<int, std::string> create_temporary(const std::string& path, const Targ
 class Temporary {
 public:
     Temporary(const std::string& path, const Target& target) : path_(path), target_(target) {
-        // SIGINT and SIGTERM wait until the new file is registered for removal (else one arriving between
+        // The handled signals wait until the new file is registered for removal (else one arriving between
         // creation and registration would leave it behind).
-        sigset_t blocked, previous;
-        sigemptyset(&blocked);
-        sigaddset(&blocked, SIGINT);
-        sigaddset(&blocked, SIGTERM);
+        const sigset_t blocked = handled_signals();
+        sigset_t previous;
         pthread_sigmask(SIG_BLOCK, &blocked, &previous);
         try {
             std::tie(fd_, name_) = create_temporary(path, target);
-            slot_ = register_temporary(name_);
+            slot_ = register_temporary(name_, path);
         } catch (...) {
             pthread_sigmask(SIG_SETMASK, &previous, nullptr);
             throw;
@@ -231,6 +353,8 @@ public:
         if (::close(fd) != 0) fail("writing");
         if (::rename(name_.c_str(), path_.c_str()) != 0) fail("cannot replace");
         committed_ = true;
+        release(slot_);  // written: a signal from now on must not call it unwritten
+        slot_ = nullptr;
     }
 
 private:
@@ -272,16 +396,21 @@ void write_file_by_name(const std::string& path, const std::function<void(const 
     temporary.commit();
 }
 
-void remove_temporaries_on_signals() {
-    for (const int signal_number : {SIGINT, SIGTERM}) {
+void remove_temporaries_on_signals(const char* program) {
+    if (program != nullptr) {
+        std::strncpy(program_name, program, sizeof program_name - 1);
+        program_name[sizeof program_name - 1] = '\0';
+    }
+    for (const EndingSignal& s : ending_signals) {
         struct sigaction previous {};
-        ::sigaction(signal_number, nullptr, &previous);
+        ::sigaction(s.number, nullptr, &previous);
         if (previous.sa_handler == SIG_IGN) continue;  // ignored when we started (nohup, a background job): stays so
         struct sigaction action {};
         action.sa_handler = remove_temporaries_and_reraise;
-        sigemptyset(&action.sa_mask);
+        // The other handled signals wait while the handler runs: one line, one cleanup.
+        action.sa_mask = handled_signals();
         action.sa_flags = SA_RESETHAND;
-        ::sigaction(signal_number, &action, nullptr);
+        ::sigaction(s.number, &action, nullptr);
     }
 }
 

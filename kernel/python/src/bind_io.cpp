@@ -64,7 +64,8 @@ namespace {
         tessellation.tolerance = requested ? *requested : default_tolerance(solid);
         tessellation.progress = progress_part(poll, 0, kTessellationShare);
         const double used = tessellation.tolerance;
-        const Mesh mesh = tessellate(solid, tessellation);
+        // Refused from the plan when the mesh would exceed what the checks (or the memory) take (issue 29).
+        const Mesh mesh = exporter::tessellate_for_export(solid, tessellation);
         options.checks = exporter::tessellation_checks(solid, mesh, used);
         options.progress = progress_part(poll, kTessellationShare, 1);
         exporter::export_tessellation(solid, mesh, used, file, options);
@@ -158,7 +159,7 @@ void export_library(const py::dict& solids, const std::string& file, const py::o
         TessellationOptions tessellation;
         tessellation.tolerance = part.tolerance;
         tessellation.progress = progress_part(poll, share * static_cast<double>(i), share * static_cast<double>(i + 1));
-        meshes.push_back(tessellate(*part.solid, tessellation));
+        meshes.push_back(exporter::tessellate_for_export(*part.solid, tessellation));
         part.mesh = &meshes.back();
         part.checks = exporter::tessellation_checks(*part.solid, *part.mesh, part.tolerance);
     }

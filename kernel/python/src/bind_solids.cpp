@@ -56,9 +56,7 @@ py::array triangle_view(const py::object& self) {
 Mesh make_mesh(const py::object& vertices, const py::object& triangles) {
     Mesh mesh;
     mesh.vertices = to_points(vertices, "vertices");
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-        if (!is_finite(mesh.vertices[i]))
-            throw Error("vertices[" + std::to_string(i) + "]", "coordinates must be finite numbers");
+    require_finite_vertices(mesh.vertices, "vertices");
     std::size_t index = 0;
     if (py::isinstance<py::str>(triangles) || !PySequence_Check(triangles.ptr()))
         throw Error("triangles", "expected a sequence of index triples");

@@ -19,6 +19,7 @@
 #include "ratbez/brep.hpp"
 #include "ratbez/brep_tables.hpp"
 #include "ratbez/construction.hpp"
+#include "ratbez/construction_check.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/mesh.hpp"
 
@@ -263,9 +264,14 @@ Face face_from(py::handle state, const std::string& at) {
     if (faces.size() != 1) throw Error(at, "expected the tables of one face");
     return std::move(faces.front());
 }
+// The construction record is checked against the faces (construction_check.hpp): a crafted pickle must not
+// give a cube a sphere's exact volume, nor keep it through a re-pickling.
 Solid solid_from(py::handle state, const std::string& at) {
     const auto items = state_items(state, 2, at, 3);
-    Solid solid(faces_of(tables_from(items[0], at)), construction_from(items[1], at + ".construction"));
+    std::vector<Face> faces = faces_of(tables_from(items[0], at));
+    Construction construction = construction_from(items[1], at + ".construction");
+    require_describes(construction, faces, at + ".construction");
+    Solid solid(std::move(faces), std::move(construction));
     if (items.size() == 3) {
         if (!py::isinstance<py::str>(items[2])) throw Error(at + ".name", "expected a str");
         solid.set_name(items[2].cast<std::string>());
@@ -280,6 +286,8 @@ Mesh mesh_from(py::handle state, const std::string& at) {
     Mesh mesh;
     for (std::size_t k = 0; k < coordinates.size(); k += 3)
         mesh.vertices.push_back({coordinates[k], coordinates[k + 1], coordinates[k + 2]});
+    // As the constructor: a NaN vertex restored would be a Mesh the constructor refuses.
+    require_finite_vertices(mesh.vertices, at + ".vertices");
     for (std::size_t k = 0; k < indices.size(); k += 3) {
         std::array<std::uint32_t, 3> t{};
         for (std::size_t c = 0; c < 3; ++c) {

@@ -178,4 +178,9 @@ Profile to_profile(py::handle value, const std::string& argument) {
     }
 }
 
+void require_finite_vertices(const std::vector<Vec3>& points, const std::string& argument) {
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (!is_finite(points[i])) throw Error(argument + "[" + std::to_string(i) + "]", "coordinates must be finite numbers");
+}
+
 }  // namespace ratbez::python

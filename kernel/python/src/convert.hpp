@@ -25,6 +25,9 @@ int to_int(py::handle value, const std::string& argument);
 Vec3 to_vec3(py::handle value, const std::string& argument);
 std::vector<double> to_doubles(py::handle value, const std::string& argument);
 std::vector<Vec3> to_points(py::handle value, const std::string& argument);
+// Error naming argument[i] for the first point with a coordinate that is not a finite number (a Mesh's
+// vertices, from its constructor and from a pickle alike).
+void require_finite_vertices(const std::vector<Vec3>& points, const std::string& argument);
 // net[i][j]: rows along u, columns along v.
 std::vector<std::vector<Vec3>> to_net(py::handle value, const std::string& argument);
 std::vector<std::vector<double>> to_double_rows(py::handle value, const std::string& argument);

@@ -40,6 +40,7 @@ struct Continuity {
     double curvature = 0;     // |kappa_a n_a - kappa_b n_b| (curves); max |II_a - II_b| over unit directions (patches)
 };
 
+// Throws Error naming "a" or "b" for a curve that is a single point (no tangent to compare).
 Continuity continuity(const NurbsCurve& a, const NurbsCurve& b);
 // The shared boundary is the pair of sides (and directions) whose points match best; when even that pair
 // is apart (position gap above the tolerance) the result is C^-1, G^-1 with that gap.

@@ -15,10 +15,12 @@ struct HermiteForm {
     Vec3 p0, t0, p1, t1;  // end points and end derivatives (in the curve's parameter on [0, 1])
 };
 
-// Throws Error naming the argument with a non-finite coordinate.
+// Throws Error naming the argument with a non-finite coordinate, or the tangent that puts an inner control
+// point beyond the double range.
 BezierCurve hermite_to_bezier(const Vec3& p0, const Vec3& t0, const Vec3& p1, const Vec3& t1);
 // The inverse for a polynomial Bézier curve of degree <= 3 (lower degrees are elevated: the same curve);
-// throws Error naming "curve" for a rational curve or a degree above 3 (no cubic Hermite form).
+// throws Error naming "curve" for a rational curve or a degree above 3 (no cubic Hermite form), and for end
+// tangents beyond the double range (control points near it, far apart).
 HermiteForm bezier_to_hermite(const BezierCurve& curve);
 
 }  // namespace ratbez

@@ -18,6 +18,9 @@ inline constexpr int max_degree = 25;
 inline constexpr std::size_t max_curve_points = 100'000;
 // Control points of one surface (rows x columns): a profile at max_curve_points revolved has 9 rows.
 inline constexpr std::size_t max_surface_points = 1'000'000;
+// Sections of one loft (skin, loft_surface, loft): the solve across them is linear in their number (a banded
+// system, geometry/interpolation.hpp), and so is everything after; 20,000 circles loft and measure in 19 s.
+inline constexpr std::size_t max_loft_sections = 100'000;
 // The highest derivative order asked of an evaluator (curves: C^(k); surfaces: k = du + dv).
 inline constexpr int max_derivative_order = 100;
 
@@ -29,6 +32,14 @@ inline constexpr int max_derivative_order = 100;
 inline constexpr double max_solid_coordinate = 1e100;
 inline constexpr double min_solid_size = 1e-100;
 inline constexpr double min_relative_solid_size = 1e-9;
+
+// The smallest feature of a primitive or extrusion against its largest dimension: a cylinder's radius and
+// height against each other, a cone's radii that are not 0 (an apex) and its height, a torus's tube and the
+// hole it leaves at the axis, an extrusion's distance and its profile's size against each other. Below it a
+// face's side would be shorter than the B-rep's consistency tolerance (1e-9 of a face's size) and taken
+// for a collapsed point (cone(1, 1e-12, 1) was refused naming the internal `sides`; torus(1, 1 - 1e-11)
+// built and then failed to mesh).
+inline constexpr double min_relative_feature = 1e-8;
 
 // Throws Error(argument) unless 0 <= degree <= max_degree.
 inline void require_degree(int degree, std::string_view argument) {
@@ -61,6 +72,14 @@ inline void require_surface_points(std::size_t rows, std::size_t columns, std::s
     require(columns == 0 || rows <= max_surface_points / columns, argument, [&] {
         return "has " + std::to_string(rows) + " x " + std::to_string(columns) + " control points, above the limit " +
                std::to_string(max_surface_points);
+    });
+}
+
+// Throws Error(argument) when a loft has more than max_loft_sections sections.
+inline void require_loft_sections(std::size_t count, std::string_view argument) {
+    require(count <= max_loft_sections, argument, [&] {
+        return "has " + std::to_string(count) + " sections, above the limit " + std::to_string(max_loft_sections) +
+               " of one loft";
     });
 }
 

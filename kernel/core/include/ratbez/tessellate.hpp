@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "ratbez/brep.hpp"
 #include "ratbez/error.hpp"
@@ -28,31 +30,59 @@ struct TessellationOptions {
 
 // A tolerance that needs more than max_triangles: an Error naming "tolerance", with the estimated count
 // (from a coarser tessellation that fits, scaled by the tolerance ratio: curved faces need triangles in
-// proportion to 1 / tolerance) so that callers can word the message after their own options.
+// proportion to 1 / tolerance) and, where known, a tolerance whose mesh fits, so that callers can word the
+// message after their own options (reworded). Thrown from the plan, before the mesh is built, and only
+// when the plan's count is one the mesh cannot fall below: a mesh within max_triangles is never refused.
 // Defined here whole: the planner throws it, the driver refines its estimate and callers catch it.
 class TooFine : public Error {
 public:
-    TooFine(double estimated_triangles, std::size_t max_triangles)
-        : Error("tolerance", "too fine: the mesh would need about " + about(estimated_triangles) +
-                                 " triangles, more than max_triangles = " + std::to_string(max_triangles) + " allows"),
+    // `fitting_tolerance`: a tolerance that fits (0: not known); `budget`: the words for the limit (default
+    // "max_triangles = N"); `tolerance_words`: how the fitting tolerance is introduced ("a tolerance of").
+    TooFine(double estimated_triangles, std::size_t max_triangles, double fitting_tolerance = 0, std::string budget = {},
+            std::string tolerance_words = "a tolerance of")
+        : Error("tolerance", message(estimated_triangles, max_triangles, fitting_tolerance, budget, tolerance_words)),
           estimated_(estimated_triangles),
-          max_triangles_(max_triangles) {}
+          max_triangles_(max_triangles),
+          fitting_tolerance_(fitting_tolerance),
+          budget_(budget.empty() ? "max_triangles = " + std::to_string(max_triangles) : std::move(budget)) {}
     double estimated_triangles() const noexcept { return estimated_; }
     std::size_t max_triangles() const noexcept { return max_triangles_; }
+    double fitting_tolerance() const noexcept { return fitting_tolerance_; }
+    const std::string& budget() const noexcept { return budget_; }
+    // The same refusal with the limit and the tolerance named as the caller knows them ("--max-triangles
+    // 1000", "--tolerance").
+    TooFine reworded(std::string budget, std::string tolerance_words) const {
+        return TooFine(estimated_, max_triangles_, fitting_tolerance_, std::move(budget), std::move(tolerance_words));
+    }
+
+    // Rounded up to two significant digits: an estimate, not a count (and a tolerance on the safe side).
+    static double two_digits_up(double value) {
+        if (!(value > 0) || !std::isfinite(value)) return value;
+        const double unit = std::pow(10.0, std::floor(std::log10(value)) - 1);
+        return std::ceil(value / unit * (1 - 1e-12)) * unit;
+    }
 
 private:
-    // Rounded to two significant digits: an estimate, not a count.
     static std::string about(double count) {
-        const double rounded = count < 100 ? std::ceil(count)
-                                           : [&] {
-                                                 const double unit = std::pow(10.0, std::floor(std::log10(count)) - 1);
-                                                 return std::ceil(count / unit) * unit;
-                                             }();
+        const double rounded = count < 100 ? std::ceil(count) : two_digits_up(count);
         return std::to_string(static_cast<long long>(std::min(rounded, 9e18)));
+    }
+    static std::string message(double estimated, std::size_t max_triangles, double fitting_tolerance,
+                               const std::string& budget, const std::string& tolerance_words) {
+        std::string text = "too fine: the mesh would need about " + about(estimated) + " triangles, more than " +
+                           (budget.empty() ? "max_triangles = " + std::to_string(max_triangles) : budget) + " allows";
+        if (fitting_tolerance > 0 && std::isfinite(fitting_tolerance)) {
+            char number[32];
+            std::snprintf(number, sizeof number, "%.2g", two_digits_up(fitting_tolerance));
+            text += "; " + tolerance_words + " " + number + " or coarser fits";
+        }
+        return text;
     }
 
     double estimated_;
     std::size_t max_triangles_;
+    double fitting_tolerance_;
+    std::string budget_;
 };
 
 Mesh tessellate(const Solid& solid, const TessellationOptions& options);

@@ -11,6 +11,7 @@
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/closest_point.hpp"
 #include "ratbez/curvature.hpp"
+#include "ratbez/error.hpp"
 
 namespace ratbez {
 
@@ -124,8 +125,11 @@ Continuity continuity(const NurbsCurve& a, const NurbsCurve& b) {
     out.derivative1 = distance(da[1], db[1]);
     out.derivative2 = distance(da[2], db[2]);
     const detail::CurveShape sa = detail::curve_shape(a, end, true), sb = detail::curve_shape(b, start, false);
-    const bool moves = norm(sa.tangent) > 0 && norm(sb.tangent) > 0;
-    out.tangent_angle = moves ? angle_between(sa.tangent, sb.tangent) : std::numeric_limits<double>::quiet_NaN();
+    // A curve that does not move (every control point the same) has no tangent, so no angle and no order
+    // of geometric continuity to report: an Error naming it, not a NaN tangent_angle (issue 29).
+    require(norm(sa.tangent) > 0, "a", "is a single point (all its control points coincide): it has no tangent to compare");
+    require(norm(sb.tangent) > 0, "b", "is a single point (all its control points coincide): it has no tangent to compare");
+    out.tangent_angle = angle_between(sa.tangent, sb.tangent);
     out.curvature = norm(sa.curvature_vector - sb.curvature_vector);
     if (std::isnan(out.curvature)) out.curvature = std::numeric_limits<double>::infinity();  // inf - inf at cusps
 
@@ -134,7 +138,7 @@ Continuity continuity(const NurbsCurve& a, const NurbsCurve& b) {
                                     out.derivative2 <= derivative_tolerance(da[2], db[2], size, width, 2)});
     const double curvature_tolerance =
         kRelative * std::max(norm(sa.curvature_vector), norm(sb.curvature_vector)) + kFloor / size;
-    out.geometric = order_reached({meet, moves && out.tangent_angle <= kAngle,
+    out.geometric = order_reached({meet, out.tangent_angle <= kAngle,
                                    std::isfinite(out.curvature) && out.curvature <= curvature_tolerance});
     return out;
 }

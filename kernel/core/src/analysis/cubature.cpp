@@ -102,12 +102,23 @@ struct Cell {
 // The integrals add up to within `tolerance`; `noise_scale` = kNoiseFactor · size^(k-1).
 // A `quick` problem (the orientation check) keeps a net whose weights pass the certificate as a whole
 // in `nets`, for the quick rule on its spans, instead of cutting it into cells.
+// Everything is held in `frame` (cubature.hpp): the cells' nets and the quick nets' points (kept in
+// `local_points`, which the nets' spans view); `power` scales the sum back to world units.
 struct Cubature::Problem {
     std::deque<Source> sources;
     std::vector<Cell> cells;
     double tolerance = 0, noise_scale = 0;
     bool quick = false;
     std::vector<std::pair<const Source*, SpanNet>> nets;
+    LocalFrame frame;
+    int power = 0;
+    std::deque<std::vector<Vec4>> local_points;
+
+    std::vector<Vec4> local(std::span<const Vec4> points) const {
+        std::vector<Vec4> moved(points.size());
+        for (std::size_t k = 0; k < points.size(); ++k) moved[k] = frame.to_local(points[k]);
+        return moved;
+    }
 };
 
 namespace {
@@ -118,21 +129,29 @@ using Problem = Cubature::Problem;
 // when the budget is spent; the measuring functions say that they cannot reach the accuracy.
 // Every kCellsPerPoll new cells the caller's progress callback is polled (progress.hpp), which is how
 // Ctrl-C reaches a measurement of a face that extreme weights cut into very many cells.
+// The budget grows with the pieces the problem starts from (kCellsPerPiece each, besides kMaxCells), so
+// that the work stays proportional to the input: a loft of 200 sections, whose 2,600 Bézier patches each
+// need a few halvings, ran out of a fixed 40,000 and was refused as if extreme weights crowded it (issue 29).
+constexpr std::size_t kCellsPerPiece = 16;
+
 struct Budget {
     static constexpr std::size_t kCellsPerPoll = 4096;
     std::string_view argument;
     bool quick = false;
     const Progress* progress = nullptr;
     std::size_t cells = 0;
+    std::size_t pieces = 0;  // the cells the problem started from
 
+    std::size_t limit() const { return kMaxCells + kCellsPerPiece * pieces; }
     // Counts n new cells; false (quick) or Error (measuring) once the budget is spent.
     bool spend(std::size_t n) {
         if (progress != nullptr && *progress && cells / kCellsPerPoll != (cells + n) / kCellsPerPoll) (*progress)(0.0);
         cells += n;
-        if (cells <= kMaxCells) return true;
+        if (cells <= limit()) return true;
         if (quick) return false;
         fail(argument, "the quadrature of its area or volume cannot reach a relative accuracy of 1e-14 within " +
-                           std::to_string(kMaxCells) + " cells (its rational weights crowd the surface into too small a parameter range)");
+                           std::to_string(limit()) + " cells for its " + std::to_string(pieces) +
+                           " Bézier pieces (its rational weights crowd the surface into too small a parameter range)");
     }
 };
 
@@ -346,6 +365,7 @@ double integrate(Problem problem, Budget& budget) {
     for (const Source& source : problem.sources)
         require(source.degree_u <= kMaxEvaluatorDegree && source.degree_v <= kMaxEvaluatorDegree,
                 budget.argument, "a face or edge of degree above 25 cannot be measured (OpenCASCADE's limit too)");
+    budget.pieces = problem.cells.size();
     std::vector<Cell> cells = certified(std::move(problem.cells), budget);
     return problem.quick ? quick_sum(cells, problem.nets) : adaptive_sum(std::move(cells), problem.tolerance, problem.noise_scale, budget);
 }
@@ -355,12 +375,16 @@ double integrate(Problem problem, Budget& budget) {
 // The source of a curve's or surface's integrand (`polynomial_factor` as in Source, if its weights are
 // all equal). Returns the source for the caller to add its Bézier pieces as cells, or nullptr when a
 // quick problem takes the net whole (its weights pass the certificate already).
-const Source* add_source(const SpanNet& net, Integrand integrand, int polynomial_factor, Problem& problem,
-                         double relative_noise = 0) {
+// `in_parameters`: the net is a curve in a surface's (u, v) (a trimming curve), which the local frame does not
+// move; `relative_noise` as in Source.
+const Source* add_source(SpanNet net, Integrand integrand, int polynomial_factor, Problem& problem,
+                         double relative_noise = 0, bool in_parameters = false) {
     const double weight_ratio = control_weight_ratio(net.points);
     const Source& source = problem.sources.emplace_back(
         Source{net.degree_u, net.degree_v, std::move(integrand), weight_ratio == 1 ? polynomial_factor : 0, relative_noise});
     if (!problem.quick || !(weight_ratio <= kMaxWeightSpread)) return &source;
+    net.points = problem.local_points.emplace_back(in_parameters ? std::vector<Vec4>(net.points.begin(), net.points.end())
+                                                                 : problem.local(net.points));
     problem.nets.emplace_back(&source, net);
     return nullptr;
 }
@@ -370,14 +394,16 @@ void add_surface(const NurbsSurface& surface, Integrand integrand, int polynomia
     const Source* source = add_source(span_net(surface), std::move(integrand), polynomial_factor, problem);
     if (source == nullptr) return;
     for (const auto& row : surface.bezier_patches())
-        for (const BezierSurface& patch : row) problem.cells.push_back(Cell{source, patch.homogeneous_points()});
+        for (const BezierSurface& patch : row) problem.cells.push_back(Cell{source, problem.local(patch.homogeneous_points())});
 }
 
 // The cells of one curve's Bézier segments for `factor` times Green's area integral (1/2)(x y' - y x'),
-// x = (C - origin)·x_axis, y = (C - origin)·y_axis, in the curve's own direction. The frame is copied
-// into the integrand, so the caller's vectors need not outlive the problem.
-void add_green(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, const Vec3& y_axis, double factor,
+// x = (C - origin)·x_axis, y = (C - origin)·y_axis, in the curve's own direction; `origin` in world
+// coordinates, `factor` in the problem's local units. The frame is copied into the integrand, so the
+// caller's vectors need not outlive the problem.
+void add_green(const NurbsCurve& curve, const Vec3& world_origin, const Vec3& x_axis, const Vec3& y_axis, double factor,
                Problem& problem) {
+    const Vec3 origin = problem.frame.to_local(world_origin);
     // x y' - y x' has degree 2p - 1 on a polynomial curve of degree p.
     const Source* source = add_source(
         span_net(curve),
@@ -389,7 +415,7 @@ void add_green(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axis, 
         2, problem);
     if (source == nullptr) return;
     for (const BezierCurve& segment : curve.bezier_segments())
-        problem.cells.push_back(Cell{source, segment.homogeneous_points()});
+        problem.cells.push_back(Cell{source, problem.local(segment.homogeneous_points())});
 }
 
 // The inner integral of a trimmed region (Cubature::add_trimmed_surface): G(u, v) = ∫ g(S(s, v)) ds from the
@@ -540,7 +566,12 @@ void add_trimmed_surface(const NurbsSurface& surface, const std::vector<Cubature
         start = std::min(start, along_u ? box.min.x : box.min.y);
     }
     start = std::clamp(start, domain.min, domain.max);
-    const auto inner = std::make_shared<const InnerIntegral>(surface, std::move(integrand), along_u, start);
+    // The integrand sees the surface in the problem's local frame (cubature.hpp), as every other source does;
+    // the trimming curves are parameters, which the frame leaves alone.
+    const NurbsSurface local = NurbsSurface::from_homogeneous(surface.degree_u(), surface.degree_v(), surface.knots_u(),
+                                                              surface.knots_v(), problem.local(surface.homogeneous_points()),
+                                                              surface.is_rational());
+    const auto inner = std::make_shared<const InnerIntegral>(local, std::move(integrand), along_u, start);
     for (const Cubature::TrimmingCurve& curve : boundary) {
         const double sign = along_u ? curve.sign : -curve.sign;
         // G is a sum of 12-point rules over the spans, each rounding at a few ulps of its terms, and the line
@@ -552,7 +583,7 @@ void add_trimmed_surface(const NurbsSurface& surface, const std::vector<Cubature
             [inner, sign, along_u](const SurfaceFirstDerivatives& d) {
                 return sign * (*inner)(d.s.x, d.s.y) * (along_u ? d.su.y : d.su.x);
             },
-            0, problem, 1e-13);
+            0, problem, 1e-13, /*in_parameters=*/true);
         if (source == nullptr) continue;
         // Cut where the curve crosses the surface's knot lines across the inner direction (H jumps there).
         const NurbsCurve cut = cut_at_crossings(*curve.pcurve, along_u ? 1 : 0, interior_breaks(surface, !along_u));
@@ -562,9 +593,34 @@ void add_trimmed_surface(const NurbsSurface& surface, const std::vector<Cubature
 
 }  // namespace
 
-Cubature::Cubature(double size, int power, bool quick) : problem_(std::make_unique<Problem>()) {
+LocalFrame LocalFrame::of(const Box& box) {
+    LocalFrame frame;
+    if (box.empty()) return frame;
+    frame.reference = box.center();
+    const double size = box.diagonal();
+    // ilogb: exact, and no rounding in 2^-exponent; a size of 0 or beyond the double range stays unscaled.
+    if (size > 0 && std::isfinite(size) && is_finite(frame.reference)) frame.exponent = std::ilogb(size);
+    else frame.reference = {};
+    return frame;
+}
+
+Vec3 LocalFrame::to_local(const Vec3& world) const {
+    return {std::ldexp(world.x - reference.x, -exponent), std::ldexp(world.y - reference.y, -exponent),
+            std::ldexp(world.z - reference.z, -exponent)};
+}
+
+Vec4 LocalFrame::to_local(const Vec4& p) const {
+    return {std::ldexp(std::fma(-p.w, reference.x, p.x), -exponent), std::ldexp(std::fma(-p.w, reference.y, p.y), -exponent),
+            std::ldexp(std::fma(-p.w, reference.z, p.z), -exponent), p.w};
+}
+
+Cubature::Cubature(const Box& box, int power, bool quick) : problem_(std::make_unique<Problem>()) {
     problem_->quick = quick;
-    // The tolerance and the rounding floor of kNoiseFactor in units of size^power and size^(power - 1).
+    problem_->frame = LocalFrame::of(box);
+    problem_->power = power;
+    const double size = problem_->frame.to_local(box.diagonal());
+    // The tolerance and the rounding floor of kNoiseFactor in units of size^power and size^(power - 1), in the
+    // local frame (size between 1 and 2).
     if (power == 3) {
         problem_->tolerance = kRelativeTolerance * size * size * size;
         problem_->noise_scale = kNoiseFactor * size * size;
@@ -597,13 +653,16 @@ void Cubature::add_trimmed_surface(const NurbsSurface& surface, const std::vecto
     detail::add_trimmed_surface(surface, boundary, std::move(integrand), *problem_);
 }
 
+const LocalFrame& Cubature::frame() const { return problem_->frame; }
+
 double Cubature::integrate(std::string_view argument, const Progress* progress) {
     Budget budget{argument, problem_->quick, progress};
-    return detail::integrate(std::move(*problem_), budget);
+    const int scale = problem_->power * problem_->frame.exponent;
+    return std::ldexp(detail::integrate(std::move(*problem_), budget), scale);
 }
 
 double surface_area(const NurbsSurface& surface, std::string_view argument) {
-    Cubature area(surface.control_box().diagonal(), 2);
+    Cubature area(surface.control_box(), 2);
     area.add_surface_area(surface);
     return area.integrate(argument);
 }
@@ -616,17 +675,27 @@ double green_area(const NurbsCurve& curve, const Vec3& origin, const Vec3& x_axi
     // The integrand x y' - y x' carries rounding noise of about ε · reach · |C'| (reach: how far the curve
     // gets from `origin`), so the integral cannot be known better than about ε · reach · (polygon length).
     // A tolerance below that would refine forever; it is raised to a few times that floor instead.
-    const Box box = curve.control_box();
-    const double reach = box.diagonal() + norm(box.min - origin);
-    double length = 0;
-    const std::vector<Vec4>& points = curve.homogeneous_points();
-    for (std::size_t i = 0; i + 1 < points.size(); ++i) length += distance(project(points[i]), project(points[i + 1]));
+    // In the LocalFrame of the curve's box with `origin` (cubature.hpp): the integral of a small curve far
+    // from the coordinate origin is then as accurate as at the origin.
+    Box box = curve.control_box();
     Problem problem;
+    problem.frame = LocalFrame::of([&] {
+        Box with_origin = box;
+        with_origin.add(origin);
+        return with_origin;
+    }());
+    const LocalFrame& frame = problem.frame;
+    const Vec3 local_origin = frame.to_local(origin);
+    const Box local_box{frame.to_local(box.min), frame.to_local(box.max)};
+    const double reach = local_box.diagonal() + norm(local_box.min - local_origin);
+    double length = 0;
+    const std::vector<Vec4> points = problem.local(curve.homogeneous_points());
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) length += distance(project(points[i]), project(points[i + 1]));
     problem.noise_scale = kNoiseFactor * reach;
-    problem.tolerance = std::max(absolute_tolerance, 4 * problem.noise_scale * length);
+    problem.tolerance = std::max(frame.to_local(frame.to_local(absolute_tolerance)), 4 * problem.noise_scale * length);
     add_green(curve, origin, x_axis, y_axis, 1.0, problem);
     Budget budget{argument};
-    return integrate(std::move(problem), budget);
+    return std::ldexp(integrate(std::move(problem), budget), 2 * frame.exponent);
 }
 
 }  // namespace ratbez::detail

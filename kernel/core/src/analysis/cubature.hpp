@@ -5,11 +5,13 @@
 // brep/face_integrals.hpp walks a shell's faces onto it (volume and area of solids, a Solid's orientation
 // check). Not installed, not part of the public API.
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string_view>
 
 #include "geometry/surface_evaluator.hpp"
+#include "ratbez/box.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/nurbs_surface.hpp"
 #include "ratbez/progress.hpp"
@@ -17,15 +19,37 @@
 
 namespace ratbez::detail {
 
-// One integral, the sum of integrands over surfaces (in (u, v)) and curves (in u, S_v = 0).
+// The frame every piece is measured in: coordinates relative to `reference` (the centre of the part's box),
+// in units of 2^exponent (the power of two nearest the box's size). Where the part lies and how large it is
+// then change nothing but that frame: a unit sphere at 1e8 is integrated with the accuracy it has at the
+// origin (its points are differences of about 1, not numbers of 1e8 whose last bits are the shape; and
+// (S - c) . (S_u x S_v) is no longer a difference of large terms), and a sphere of radius 1e80 or 1e-80 as
+// one of radius 1 (|S_u x S_v| neither overflows, 1e160 squared, nor underflows, 1e-160 squared); the
+// result is scaled back by 2^(power x exponent) exactly. Homogeneous points are moved with one rounding
+// each (w x - w c_x by a fused multiply-add), so the local net is the stored one to rounding of its own
+// size, not of its distance from the origin.
+struct LocalFrame {
+    Vec3 reference;
+    int exponent = 0;
+
+    static LocalFrame of(const Box& box);
+    Vec3 to_local(const Vec3& world) const;
+    Vec4 to_local(const Vec4& homogeneous) const;
+    double to_local(double length) const { return std::ldexp(length, -exponent); }
+};
+
+// One integral, the sum of integrands over surfaces (in (u, v)) and curves (in u, S_v = 0). The integrands
+// see the pieces in the problem's LocalFrame (frame()): a caller's points and lengths go through its to_local.
 class Cubature {
 public:
     using Integrand = std::function<double(const SurfaceFirstDerivatives&)>;
 
-    // An integral of something that scales as size^power (2: an area, 3: a volume; size is the box
-    // diagonal of the part), computed to about 1e-14 size^power. `quick` takes a fixed low-order rule
-    // instead of the adaptive one: enough for a sign (the orientation check of a new Solid).
-    Cubature(double size, int power, bool quick = false);
+    // An integral of something that scales as size^power (2: an area, 3: a volume) over a part that lies in
+    // `box`, computed in the box's LocalFrame to about 1e-14 size^power (size: the box diagonal). `quick`
+    // takes a fixed low-order rule instead of the adaptive one: enough for a sign (the orientation check of
+    // a new Solid).
+    Cubature(const Box& box, int power, bool quick = false);
+    const LocalFrame& frame() const;
     Cubature(Cubature&&) noexcept;
     Cubature& operator=(Cubature&&) noexcept;
     ~Cubature();
@@ -55,8 +79,8 @@ public:
     // surface's domain (Face::trimmed validates it); the caller keeps them alive until integrate().
     void add_trimmed_surface(const NurbsSurface& surface, const std::vector<TrimmingCurve>& boundary, Integrand integrand);
 
-    // The integral. Throws Error naming `argument` when the accuracy cannot be reached within the cell
-    // budget; `progress` (may be null or empty) is polled with 0 every few thousand cells, so that it can
+    // The integral, in world units (scaled back from the frame's). Throws Error naming `argument` when the
+    // accuracy cannot be reached within the cell budget; `progress` (may be null or empty) is polled with 0 every few thousand cells, so that it can
     // cancel (progress.hpp). Consumes the problem.
     double integrate(std::string_view argument, const Progress* progress = nullptr);
 

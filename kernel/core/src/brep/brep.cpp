@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
 
 #include "analysis/cubature.hpp"
+#include "brep/consistency.hpp"
 #include "brep/face_integrals.hpp"
 #include "math/numeric_internal.hpp"
 #include "math/solid_scale.hpp"
@@ -19,9 +21,6 @@ namespace ratbez {
 
 namespace {
 
-// Relative tolerance of every geometric consistency check: a face built from exact constructions
-// matches its edges to ~1e-15; a gap of 1e-9 of its size is a construction error, not rounding.
-constexpr double kRelativeTolerance = 1e-9;
 constexpr int kSideSamples = 9;
 
 const char* side_name(int side) {
@@ -37,7 +36,7 @@ VertexPtr traversal_end(const Coedge& c) { return c.reversed ? c.edge->start : c
 Face Face::from_surface(NurbsSurface surface, std::array<Coedge, 4> sides) {
     const double size = surface.control_box().diagonal();
     require(size > 0 && std::isfinite(size), "surface", "must not collapse to a single point");
-    const double tolerance = kRelativeTolerance * size;
+    const double tolerance = detail::consistency_tolerance(surface.control_box());
     const Interval du = surface.domain_u(), dv = surface.domain_v();
 
     for (int s = 0; s < 4; ++s) {
@@ -101,7 +100,7 @@ Face Face::from_surface(NurbsSurface surface, std::array<Coedge, 4> sides) {
 Face Face::from_surface(NurbsSurface surface) {
     const double size = surface.control_box().diagonal();
     require(size > 0 && std::isfinite(size), "surface", "must not collapse to a single point");
-    const double tolerance = kRelativeTolerance * size;
+    const double tolerance = detail::consistency_tolerance(surface.control_box());
     const Interval du = surface.domain_u(), dv = surface.domain_v();
     // The points of side s (Side order) at the validation's sample parameters, in increasing parameter.
     auto side_points = [&](int s) {
@@ -189,7 +188,7 @@ Face Face::planar(const Plane& plane, std::vector<std::vector<Coedge>> loops, do
     }
     const double size = box.diagonal();
     require(size > 0, "loops", "enclose no area");
-    const double off_plane = std::max(tolerance, kRelativeTolerance * size);
+    const double off_plane = std::max(tolerance, detail::consistency_tolerance(box));
 
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (std::size_t l = 0; l < loops.size(); ++l) {
@@ -312,7 +311,7 @@ Solid::Solid(std::vector<Face> faces, Construction construction) : construction_
     // A solid too large or too small to measure (limits.hpp) would fail the check below for the wrong reason.
     Box box;
     for (const Face& face : faces) box.add(face.surface().control_box());
-    detail::require_solid_scale(box.diagonal(), detail::reach_of(box), "faces", "faces");
+    detail::require_solid_scale(box.diagonal(), detail::reach_of(box), "faces", "faces", detail::largest_box_diagonal);
     // Coherent edge directions make each shell consistently oriented; the sign of the volume it encloses
     // tells outward from inward: positive for the outer shell, negative for a void (its normals point into it).
     std::vector<std::vector<std::size_t>> shells = connected_shells(faces);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "analysis/cubature.hpp"
+#include "brep/consistency.hpp"
 #include "math/numeric_internal.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/brep.hpp"
@@ -12,8 +13,6 @@
 namespace ratbez {
 namespace {
 
-// A gap of 1e-9 of the size is a construction error, not rounding (as brep.cpp's checks).
-constexpr double kRelativeTolerance = 1e-9;
 // Samples per knot span where the p-curve is held against its edge: the two curves are smooth inside a span
 // and agree at its ends, so a few interior points see any disagreement larger than rounding.
 constexpr int kSamplesPerSpan = 4;
@@ -62,10 +61,10 @@ Face Face::trimmed(NurbsSurface surface, std::vector<std::vector<Coedge>> loops,
     require(size > 0 && std::isfinite(size), "surface", "must not collapse to a single point");
     require(std::isfinite(tolerance) && tolerance >= 0, "tolerance", "must be a finite number >= 0");
     require(!loops.empty(), "loops", "a trimmed face needs an outer loop");
-    const double distance_tolerance = std::max(tolerance, kRelativeTolerance * size);
+    const double distance_tolerance = std::max(tolerance, detail::consistency_tolerance(surface.control_box()));
     const Interval du = surface.domain_u(), dv = surface.domain_v();
     const double domain_size = std::hypot(du.width(), dv.width());
-    const double uv_tolerance = kRelativeTolerance * domain_size;
+    const double uv_tolerance = detail::kRelativeConsistency * domain_size;
 
     for (std::size_t l = 0; l < loops.size(); ++l) {
         const auto& loop = loops[l];

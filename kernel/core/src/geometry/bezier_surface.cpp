@@ -266,7 +266,32 @@ Vec3 BezierSurface::normal(double u, double v) const {
     // apex of a cone, a pole) the limit of N along a path into the patch (limit_normal.hpp). Its first term
     // N_0 = S_u x S_v is Eq. 1.4 itself, so the regular case needs no separate test.
     constexpr std::size_t stride = detail::limit_normal_stride;
-    const auto derivatives_uv = derivatives(u, v, static_cast<int>(stride) - 1);  // validates u and v
+    Vec3 low = project(pw_.front()), high = low;
+    for (const Vec4& p : pw_) {
+        const Vec3 q = project(p);
+        low = {std::min(low.x, q.x), std::min(low.y, q.y), std::min(low.z, q.z)};
+        high = {std::max(high.x, q.x), std::max(high.y, q.y), std::max(high.z, q.z)};
+    }
+    // A net farther from the origin than 1e3 times its size: the partials of the net relative to its first
+    // point (one rounding per coordinate, fused multiply-add), the same partials with the rounding of the
+    // net's size rather than of its distance from the origin, which far from it (a unit patch at 1e8) would
+    // pass rounding off as a direction at a pole (issue 29). Nearer, the plain partials (normals() agrees).
+    // And scaled by a power of two (exactly) to the net's size, so that cross products of the partials of a
+    // patch of size 1e-85 do not underflow (nor of 1e80 overflow); the normal does not change with the scale.
+    const Vec3 anchor = project(pw_.front());
+    const double size = norm(high - low);
+    const bool far = norm(anchor) > 1e3 * size;
+    const int exponent = size > 0 && std::isfinite(size) ? -std::ilogb(size) : 0;
+    std::vector<Vec4> local(pw_.size());
+    for (std::size_t k = 0; k < pw_.size(); ++k) {
+        const Vec4& p = pw_[k];
+        const Vec4 moved = far ? Vec4{std::fma(-p.w, anchor.x, p.x), std::fma(-p.w, anchor.y, p.y),
+                                      std::fma(-p.w, anchor.z, p.z), p.w}
+                               : p;
+        local[k] = {std::ldexp(moved.x, exponent), std::ldexp(moved.y, exponent), std::ldexp(moved.z, exponent), p.w};
+    }
+    const BezierSurface shifted(rows_, columns_, std::move(local), rational_, weight_exponent_);
+    const auto derivatives_uv = shifted.derivatives(u, v, static_cast<int>(stride) - 1);  // validates u and v
     detail::LimitNormalPartials skl;
     for (std::size_t k = 0; k < stride; ++k)
         for (std::size_t l = 0; k + l < stride; ++l) skl[k * stride + l] = derivatives_uv[k][l];
@@ -284,14 +309,8 @@ Vec3 BezierSurface::normal(double u, double v) const {
 
     // "Vanishes" is measured against the control net's size, for derivatives of every order: rounding noise in
     // an exactly vanishing partial is never mistaken for a direction. (a, b) is a unit vector: path scale 1.
-    Vec3 low = project(pw_.front()), high = low;
-    for (const Vec4& p : pw_) {
-        const Vec3 q = project(p);
-        low = {std::min(low.x, q.x), std::min(low.y, q.y), std::min(low.z, q.z)};
-        high = {std::max(high.x, q.x), std::max(high.y, q.y), std::max(high.z, q.z)};
-    }
     std::array<double, stride> floors{};
-    std::fill(floors.begin() + 1, floors.end(), norm(high - low));
+    std::fill(floors.begin() + 1, floors.end(), std::ldexp(size, exponent));
     if (const auto n = detail::limit_normal(skl, a, b, floors, 1.0)) return *n;
     detail::throw_no_tangent_plane(std::to_string(u), std::to_string(v));
 }

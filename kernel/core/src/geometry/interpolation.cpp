@@ -1,6 +1,7 @@
 // Global B-spline interpolation (A9.1); see interpolation.hpp.
 #include "geometry/interpolation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -24,31 +25,43 @@ std::vector<double> averaged_knots(const std::vector<double>& parameters, int de
 std::vector<Vec4> interpolate(int degree, const std::vector<double>& knots, const std::vector<double>& parameters,
                               const std::vector<Vec4>& data) {
     const std::size_t size = data.size();
-    // The collocation matrix A[k][j] = N_{j,p}(t_k): p + 1 non-zero entries per row (A2.1, A2.2).
-    std::vector<std::vector<double>> a(size, std::vector<double>(size, 0.0));
+    // The collocation matrix A[k][j] = N_{j,p}(t_k) (A2.1, A2.2) has p + 1 non-zero entries per row, at
+    // columns span - p .. span with span - p <= k <= span (the diagonal is non-zero: Schoenberg–Whitney), so
+    // both its bandwidths are at most p. Gaussian elimination with partial pivoting among the p rows below
+    // keeps the multipliers within p of the diagonal and widens U to 2p above it (LAPACK's dgbtrf): in band
+    // storage the solve takes O(n p^2) time and O(n p) memory. It was a dense n x n matrix: 20,000 loft
+    // sections asked 3.2 GB and quadratic time (issue 29).
+    const std::size_t lower = to_size(degree), upper = 2 * to_size(degree);
+    const std::size_t width = lower + upper + 1;
+    // band[j * width + (i + upper - j)] holds A[i][j] for j - upper <= i <= j + lower.
+    std::vector<double> band(size * width, 0.0);
+    const auto at = [&](std::size_t i, std::size_t j) -> double& { return band[j * width + (i + upper - j)]; };
     std::vector<double> basis(to_size(degree + 1));
     for (std::size_t k = 0; k < size; ++k) {
         const int span = find_span(degree, knots, parameters[k]);
         basis_functions(span, parameters[k], degree, knots, basis);
-        for (int j = 0; j <= degree; ++j) a[k][to_size(span - degree + j)] = basis[to_size(j)];
+        for (int j = 0; j <= degree; ++j) at(k, to_size(span - degree + j)) = basis[to_size(j)];
     }
     std::vector<Vec4> x = data;
     for (std::size_t col = 0; col < size; ++col) {
+        const std::size_t last_row = std::min(size - 1, col + lower), last_col = std::min(size - 1, col + upper);
         std::size_t pivot = col;
-        for (std::size_t row = col + 1; row < size; ++row)
-            if (std::abs(a[row][col]) > std::abs(a[pivot][col])) pivot = row;
-        std::swap(a[col], a[pivot]);
-        std::swap(x[col], x[pivot]);
-        for (std::size_t row = col + 1; row < size; ++row) {
-            const double factor = a[row][col] / a[col][col];
+        for (std::size_t row = col + 1; row <= last_row; ++row)
+            if (std::abs(at(row, col)) > std::abs(at(pivot, col))) pivot = row;
+        if (pivot != col) {
+            for (std::size_t j = col; j <= last_col; ++j) std::swap(at(col, j), at(pivot, j));
+            std::swap(x[col], x[pivot]);
+        }
+        for (std::size_t row = col + 1; row <= last_row; ++row) {
+            const double factor = at(row, col) / at(col, col);
             if (factor == 0.0) continue;
-            for (std::size_t j = col; j < size; ++j) a[row][j] -= factor * a[col][j];
+            for (std::size_t j = col; j <= last_col; ++j) at(row, j) -= factor * at(col, j);
             x[row] -= factor * x[col];
         }
     }
     for (std::size_t col = size; col-- > 0;) {
-        for (std::size_t j = col + 1; j < size; ++j) x[col] -= a[col][j] * x[j];
-        x[col] *= 1.0 / a[col][col];
+        for (std::size_t j = col + 1; j <= std::min(size - 1, col + upper); ++j) x[col] -= at(col, j) * x[j];
+        x[col] *= 1.0 / at(col, col);
     }
     return x;
 }

@@ -15,7 +15,8 @@ namespace ratbez::detail {
 std::vector<double> averaged_knots(const std::vector<double>& parameters, int degree);
 
 // The control points P_j with sum_j N_{j,p}(t_k) P_j = D_k for every k (A9.1): the linear system solved by
-// Gaussian elimination with partial pivoting (its matrix is totally positive, so no pivot is small).
+// Gaussian elimination with partial pivoting (its matrix is totally positive, so no pivot is small) in band
+// storage, O(n p^2) time and O(n p) memory.
 std::vector<Vec4> interpolate(int degree, const std::vector<double>& knots, const std::vector<double>& parameters,
                               const std::vector<Vec4>& data);
 

@@ -245,8 +245,17 @@ namespace {
 // A3.6 on P^w at given spans: aw[k * (order + 1) + l] = d^{k+l} S^w / du^k dv^l for k + l <= order (zero
 // above the degrees), then A4.4 for the Euclidean partials skl[k * (order + 1) + l]. Allocation-free for
 // low orders and degrees (the normal's regular case).
+// `origin`: when given, the control points are taken relative to it (w (P - origin), w, one rounding each
+// by a fused multiply-add): the partials of order >= 1 are the same, with the rounding of the points' size
+// instead of their distance from the coordinate origin (normal(), far from it).
 void surface_partials(const NurbsSurface& s, double u, double v, int span_u, int span_v, int order,
-                      std::span<Vec4> aw, std::span<Vec3> skl) {
+                      std::span<Vec4> aw, std::span<Vec3> skl, const Vec3* origin = nullptr) {
+    const auto control = [&](int i, int j) {
+        const Vec4& pw = s.homogeneous_point(i, j);
+        if (origin == nullptr) return pw;
+        return Vec4{std::fma(-pw.w, origin->x, pw.x), std::fma(-pw.w, origin->y, pw.y), std::fma(-pw.w, origin->z, pw.z),
+                    pw.w};
+    };
     const int p = s.degree_u(), q = s.degree_v();
     const std::size_t stride = to_size(order) + 1;
     const int du = std::min(order, p), dv = std::min(order, q);
@@ -264,7 +273,7 @@ void surface_partials(const NurbsSurface& s, double u, double v, int span_u, int
             temp[column] = Vec4{};
             const int j = span_v - q + static_cast<int>(column);
             for (std::size_t r = 0; r < width_u; ++r)
-                temp[column] += nu[to_size(k) * width_u + r] * s.homogeneous_point(span_u - p + static_cast<int>(r), j);
+                temp[column] += nu[to_size(k) * width_u + r] * control(span_u - p + static_cast<int>(r), j);
         }
         const int highest_l = std::min(order - k, dv);
         for (int l = 0; l <= highest_l; ++l) {
@@ -314,14 +323,30 @@ Vec3 NurbsSurface::normal(double u, double v) const {
 
     // "Vanishes" is measured against the size of the control points of the current span patch divided by
     // the span lengths: rounding leaves partials of that relative size (about 1e-16) where a collapsed
-    // edge makes them exactly zero, and they must not be mistaken for a direction.
+    // edge makes them exactly zero, and they must not be mistaken for a direction. A patch farther from the
+    // origin than kFarFromOrigin times its size has its partials taken relative to its first control point
+    // (surface_partials' origin), so that their rounding is of the patch's size wherever it lies: a unit
+    // sphere at 1e8 keeps the normal at its poles (measured against the distance from the origin, as
+    // before, every partial there looked like rounding: "no tangent plane", issue 29). Nearer, the rounding
+    // of the distance is far below the floor, and the partials are the plain ones (normals() agrees).
+    const Vec3 anchor = project(homogeneous_point(span_u - degree_u_, span_v - degree_v_));
     double extent = 0.0;
-    {
-        const Vec3 anchor = project(homogeneous_point(span_u - degree_u_, span_v - degree_v_));
-        for (int i = span_u - degree_u_; i <= span_u; ++i)
-            for (int j = span_v - degree_v_; j <= span_v; ++j)
-                extent = std::max(extent, norm(project(homogeneous_point(i, j)) - anchor) + norm(anchor));
-    }
+    for (int i = span_u - degree_u_; i <= span_u; ++i)
+        for (int j = span_v - degree_v_; j <= span_v; ++j)
+            extent = std::max(extent, norm(project(homogeneous_point(i, j)) - anchor));
+    constexpr double kFarFromOrigin = 1e3;
+    const Vec3* shift = norm(anchor) > kFarFromOrigin * extent ? &anchor : nullptr;
+    if (!(extent > 0)) extent = norm(anchor);  // a patch collapsed to one point: no tangent plane anywhere
+    else if (!shift) extent += norm(anchor);
+    // The partials are scaled by a power of two (exactly) to the patch's size: S_u x S_v of a sphere of
+    // radius 1e-85 is 1e-170, whose squared length underflows, and 1e160 for 1e80, whose overflows; the
+    // normal and every test below are invariant under the common scale (issue 29: "no tangent plane" below
+    // a size of about 1e-85).
+    const int scale_exponent = extent > 0 && std::isfinite(extent) ? -std::ilogb(extent) : 0;
+    const auto scaled = [scale_exponent](const Vec3& v) {
+        return Vec3{std::ldexp(v.x, scale_exponent), std::ldexp(v.y, scale_exponent), std::ldexp(v.z, scale_exponent)};
+    };
+    extent = std::ldexp(extent, scale_exponent);
     const double length_u = knots_u_[to_size(span_u) + 1] - knots_u_[to_size(span_u)];
     const double length_v = knots_v_[to_size(span_v) + 1] - knots_v_[to_size(span_v)];
     const double span_length = std::min(length_u, length_v);
@@ -330,8 +355,8 @@ Vec3 NurbsSurface::normal(double u, double v) const {
     {
         std::array<Vec4, 4> aw;
         std::array<Vec3, 4> skl;
-        surface_partials(*this, u, v, span_u, span_v, 1, aw, skl);
-        const Vec3 su = skl[2], sv = skl[1];  // stride 2: [k * 2 + l]
+        surface_partials(*this, u, v, span_u, span_v, 1, aw, skl, shift);
+        const Vec3 su = scaled(skl[2]), sv = scaled(skl[1]);  // stride 2: [k * 2 + l]
         const Vec3 n = cross(su, sv);
         const double length = norm(n);
         const double floor_u = relative_tolerance * extent / length_u;
@@ -360,7 +385,8 @@ Vec3 NurbsSurface::normal(double u, double v) const {
     constexpr std::size_t stride = detail::limit_normal_stride;
     std::array<Vec4, stride * stride> aw;
     detail::LimitNormalPartials skl;
-    surface_partials(*this, u, v, path_span_u, path_span_v, static_cast<int>(stride) - 1, aw, skl);
+    surface_partials(*this, u, v, path_span_u, path_span_v, static_cast<int>(stride) - 1, aw, skl, shift);
+    for (Vec3& partial : skl) partial = scaled(partial);
 
     // Partials of total order k below extent / span_length^k are rounding noise (see above); the path is
     // not a unit vector, so N_q scales with max(|a|, |b|)^q.

@@ -38,8 +38,10 @@
 #include "mesh/tessellator.hpp"
 #include "mesh/triangle_grid.hpp"
 #include "mesh/domain_triangulation.hpp"
+#include "mesh/weight_limit.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/solid_transform.hpp"
 #include "ratbez/surface_grid.hpp"
 
 namespace ratbez {
@@ -158,8 +160,13 @@ public:
             }
             done += step;
         }
+        // The plans were held against the count their mesh cannot fall below; the zippers, split cells and
+        // trimmed faces may add more. The mesh's own count decides, so that max_triangles holds exactly.
+        Mesh mesh = assembler_.take();
+        if (mesh.triangles.size() > settings_.max_triangles)
+            throw TooFine(static_cast<double>(mesh.triangles.size()), settings_.max_triangles);
         settings_.report(1.0);
-        return assembler_.take();
+        return mesh;
     }
 
 private:
@@ -791,22 +798,53 @@ private:
 
 namespace {
 
-// The planner's estimate covers the face it stopped at, so it is a lower bound for the whole. A coarser
-// tessellation of all faces that fits (tolerance x4 each step, at most 20,000 triangles: about a second)
-// scaled by the tolerance ratio gives the estimate: a curved face's triangles grow as 1 / tolerance, flat
-// ones not at all (so it errs high).
-double estimate_triangles(std::span<const Face> faces, detail::TessellationSettings settings, double lower_bound) {
+// The planner's count covers the faces it planned before it stopped, so it is a lower bound for the whole.
+// A coarser tessellation of all faces that fits (tolerance x4 each step, at most 20,000 triangles: about a
+// second) scaled by the tolerance ratio gives the estimate: a curved face's triangles grow as 1 / tolerance,
+// flat ones not at all (so it errs high). The same scaling gives a tolerance that fits the budget (10%
+// coarser than the scaling says, and never finer than a coarse tolerance that was seen to fit).
+struct Estimate {
+    double triangles = 0;
+    double fitting_tolerance = 0;  // 0: no coarser tessellation fitted
+};
+
+Estimate estimate_triangles(std::span<const Face> faces, detail::TessellationSettings settings, double lower_bound) {
     const double requested = settings.tolerance;
+    const double budget = static_cast<double>(settings.max_triangles);
     settings.max_triangles = std::min<std::size_t>(settings.max_triangles, 20'000);
+    // The coarse runs are part of the refusal, not progress of the tessellation asked for: they poll the
+    // caller's callback (Ctrl-C) with the fraction reached so far instead of reporting their own.
+    const Progress* caller = settings.progress;
+    const double reached = settings.reported;
+    const Progress poll_only = [caller, reached](double) {
+        if (caller != nullptr && *caller) (*caller)(reached);
+    };
+    settings.progress = &poll_only;
     for (int step = 0; step < 24; ++step) {
         settings.tolerance *= 4;
         try {
-            const Mesh coarse = Tessellator(faces, settings).run();
-            return std::max(lower_bound, static_cast<double>(coarse.triangles.size()) * settings.tolerance / requested);
+            const double count = static_cast<double>(Tessellator(faces, settings).run().triangles.size());
+            const double estimate = std::max(lower_bound, count * settings.tolerance / requested);
+            // Scaled from the coarse mesh, and from the estimate at the requested tolerance (which does not fit,
+            // so the answer must be coarser than it).
+            const double scaled = TooFine::two_digits_up(1.1 * std::max(settings.tolerance * count, requested * estimate) / budget);
+            if (count > budget || scaled >= settings.tolerance) return {estimate, scaled};
+            // A small budget is near the coarsest meshes, where the count no longer scales with 1 / tolerance
+            // (every face keeps its fewest cells): the scaled tolerance is tried (a mesh of at most 20,000
+            // triangles), and the coarse one, seen to fit, named instead when it does not.
+            if (budget > static_cast<double>(settings.max_triangles)) return {estimate, scaled};
+            detail::TessellationSettings check = settings;
+            check.tolerance = scaled;
+            try {
+                (void)Tessellator(faces, check).run();
+                return {estimate, scaled};
+            } catch (const TooFine&) {
+                return {estimate, settings.tolerance};
+            }
         } catch (const TooFine&) {
         }
     }
-    return lower_bound;
+    return {lower_bound, 0};
 }
 
 }  // namespace
@@ -840,7 +878,8 @@ Mesh run_within_budget(std::span<const Face> faces, const detail::TessellationSe
         try {
             return Tessellator(faces, attempt).run();
         } catch (const TooFine& e) {
-            throw TooFine(estimate_triangles(faces, attempt, e.estimated_triangles()), settings.max_triangles);
+            const Estimate estimate = estimate_triangles(faces, attempt, e.estimated_triangles());
+            throw TooFine(estimate.triangles, settings.max_triangles, estimate.fitting_tolerance);
         } catch (const detail::CrossingLoops& e) {
             if (halving == 6) throw Error("solid", std::string(e.reason()) + " (also at 1/64 of the tolerance)");
             attempt.tolerance *= 0.5;
@@ -850,24 +889,69 @@ Mesh run_within_budget(std::span<const Face> faces, const detail::TessellationSe
 
 }  // namespace
 
-Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
-    Mesh mesh = run_within_budget(solid.faces(), settings_of(options));
-    // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
-    // solid whose faces fold onto each other — a profile that runs back over itself, found by
-    // fuzz_geometry — from handing out an open mesh.
-    require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
-                                       "back on each other, e.g. a profile that runs back over itself)");
+namespace {
+
+// Far from unit size the planner's curvature products (E G - F^2 grows as size^4) leave the double range:
+// below about 1e-75 and above 1e75 a sphere still meshed within its tolerance, with up to seven times the
+// triangles (radius 1e-99: 3000 for the 432 of radius 1). Such a solid is meshed at a power-of-two scale
+// near size 1, which is exact (every control point, vertex and tolerance scaled, nothing rounded), and the
+// mesh scaled back, exactly too. 0: the solid's own scale will do.
+int unit_scale_exponent(const Box& box) {
+    const double size = box.diagonal();
+    if (!(size > 0) || !std::isfinite(size)) return 0;
+    const int exponent = std::ilogb(size);
+    return std::abs(exponent) > 64 ? exponent : 0;
+}
+
+Mesh scaled_back(Mesh mesh, int exponent) {
+    for (Vec3& v : mesh.vertices) v = {std::ldexp(v.x, exponent), std::ldexp(v.y, exponent), std::ldexp(v.z, exponent)};
     return mesh;
 }
 
+// mesh_of(shape, options), at the power-of-two scale near size 1 when the shape's size calls for one
+// (unit_scale_exponent); a refusal's tolerance that fits is scaled back too.
+template <class Shape, class MeshOf>
+Mesh at_unit_scale(const Shape& shape, const Box& box, const TessellationOptions& options, MeshOf mesh_of) {
+    const int exponent = unit_scale_exponent(box);
+    if (exponent == 0) return mesh_of(shape, options);
+    (void)settings_of(options);  // the options are checked as given
+    TessellationOptions unit = options;
+    unit.tolerance = std::ldexp(options.tolerance, -exponent);
+    const Shape scaled = transformed(shape, AffineMap::scaling(std::ldexp(1.0, -exponent), {}));
+    try {
+        return scaled_back(mesh_of(scaled, unit), exponent);
+    } catch (const TooFine& e) {
+        throw TooFine(e.estimated_triangles(), e.max_triangles(), std::ldexp(e.fitting_tolerance(), exponent));
+    }
+}
+
+}  // namespace
+
+Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
+    detail::require_tessellatable_weights(solid.faces(), "solid");
+    return at_unit_scale(solid, solid.bounding_box(), options, [](const Solid& s, const TessellationOptions& o) {
+        Mesh mesh = run_within_budget(s.faces(), settings_of(o));
+        // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
+        // solid whose faces fold onto each other — a profile that runs back over itself, found by
+        // fuzz_geometry — from handing out an open mesh.
+        require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
+                                           "back on each other, e.g. a profile that runs back over itself)");
+        return mesh;
+    });
+}
+
 Mesh tessellate(const Face& face, const TessellationOptions& options) {
-    return run_within_budget(std::span<const Face>(&face, 1), settings_of(options));
+    detail::require_tessellatable_weights(std::span<const Face>(&face, 1), "face");
+    return at_unit_scale(face, face.surface().control_box(), options, [](const Face& f, const TessellationOptions& o) {
+        return run_within_budget(std::span<const Face>(&f, 1), settings_of(o));
+    });
 }
 
 Mesh tessellate(const NurbsSurface& surface, const TessellationOptions& options) {
-    const detail::TessellationSettings settings = settings_of(options);  // the options first, then the surface
+    (void)settings_of(options);  // the options first, then the surface
     const Face face = Face::from_surface(surface);
-    return run_within_budget(std::span<const Face>(&face, 1), settings);
+    detail::require_tessellatable_weights(std::span<const Face>(&face, 1), "surface");
+    return tessellate(face, options);
 }
 
 }  // namespace ratbez

@@ -127,8 +127,11 @@ std::vector<double> bisect_marked(const std::vector<double>& lines, const std::v
     return out;
 }
 
-// The largest number of cells a plan may have: two triangles per cell.
-double max_cells(const TessellationSettings& settings) { return static_cast<double>(settings.max_triangles) / 2; }
+// The largest number of cells a grid may have before its triangles are counted (triangles_at_least): one
+// triangle per cell, since a cell along a collapsed side (a pole) is one triangle, not two. The budget
+// itself is held against triangles_at_least, a count the mesh never falls below, so that a mesh within
+// max_triangles is never refused for an estimate above it.
+double max_cells(const TessellationSettings& settings) { return static_cast<double>(settings.max_triangles); }
 
 // ---- matching lines across crease edges
 
@@ -471,7 +474,7 @@ namespace {
 // sagitta) and as the angle, so the cells go as 1 / f. At least the budget + 1.
 double over_budget_triangles(const SurfacePlan& plan, const CurvatureSamples& curvature,
                              const TessellationSettings& settings) {
-    const double at_least = 2 * max_cells(settings) + 1;
+    const double at_least = static_cast<double>(settings.max_triangles) + 1;
     for (double f = 4; f <= 1e6; f *= 4) {
         const ParameterGrid coarse = choose_grid(curvature, settings.tolerance * f, settings.angle_rad * std::sqrt(f),
                                         plan.min_segments, plan.creases, max_cells(settings));
@@ -481,6 +484,18 @@ double over_budget_triangles(const SurfacePlan& plan, const CurvatureSamples& cu
 }
 
 }  // namespace
+
+double triangles_at_least(const SurfacePlan& plan, std::size_t lines_u, std::size_t lines_v) {
+    const double along_u = static_cast<double>(lines_u - 1), along_v = static_cast<double>(lines_v - 1);
+    double count = 2 * along_u * along_v;
+    // A cell along a collapsed side loses one of its two triangles (a fan at the pole), one along two
+    // collapsed sides both.
+    for (Side side : kSides)
+        if (plan.sides[side_slot(side)].degenerate) count -= runs_along_u(side) ? along_u : along_v;
+    return std::max(count, 0.0);
+}
+
+double triangles_at_least(const SurfacePlan& plan) { return triangles_at_least(plan, plan.grid.u.size(), plan.grid.v.size()); }
 
 bool may_straddle(std::span<const Face> faces) {
     for (const Face& face : faces) {
@@ -517,7 +532,7 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
     // pieces than the budget allows (a profile with many sharp corners) is refused here already.
     const double crease_cells = static_cast<double>(std::max<std::size_t>(plan.creases[0].size(), 2) - 1) *
                                 static_cast<double>(std::max<std::size_t>(plan.creases[1].size(), 2) - 1);
-    if (crease_cells > max_cells(settings)) throw TooFine(2 * crease_cells, settings.max_triangles);
+    if (crease_cells > max_cells(settings)) throw TooFine(crease_cells, settings.max_triangles);
     // The coarse samples first. Their line densities are a little more conservative (each is the
     // largest over a longer sample interval): that costs a few cells on a small grid, while the fine
     // sampling would cost more than checking the whole grid. Resampled finely once the grid has
@@ -606,8 +621,8 @@ bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
     bool changed = false, bisected = false;
     for (int iteration = 0; iteration < 40; ++iteration) {
         settings.poll();
-        if (plan.grid.cells() * 2 > static_cast<double>(settings.max_triangles))
-            throw TooFine(plan.grid.cells() * 2, settings.max_triangles);
+        if (const double at_least = triangles_at_least(plan); at_least > static_cast<double>(settings.max_triangles))
+            throw TooFine(at_least, settings.max_triangles);
         points(plan, corners);
         GridCheck check = check_grid(*plan.evaluator, plan.face->surface(), plan.grid, collapsed, plan.target,
                                      settings.angle_rad, new_u, new_v, corners, [&] { settings.poll(); });
@@ -623,13 +638,13 @@ bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
             plan.target = target = settings.tolerance;
             ParameterGrid g = choose_grid(curvature, target, settings.angle_rad, plan.min_segments, plan.creases,
                                           max_cells(settings), false);
-            if (g.u.empty()) throw TooFine(max_cells(settings) * 2, settings.max_triangles);
+            if (g.u.empty()) throw TooFine(max_cells(settings) + 1, settings.max_triangles);
             plan.grid = std::move(g);
         } else if (start.rescale && !bisected && iteration < 3 && check.worst_ratio < 1.5) {
             target *= 0.99 / check.worst_ratio;
             ParameterGrid g = choose_grid(curvature, target, settings.angle_rad, plan.min_segments, plan.creases,
                                           max_cells(settings), plan.straddle);
-            if (g.u.empty()) throw TooFine(max_cells(settings) * 2, settings.max_triangles);
+            if (g.u.empty()) throw TooFine(max_cells(settings) + 1, settings.max_triangles);
             plan.grid = std::move(g);
         } else if (some_marked) {
             plan.grid.u = bisect_marked(plan.grid.u, check.refine_u);
@@ -697,9 +712,11 @@ void match_lines_at_creases(std::vector<SurfacePlan>& plans, const TessellationS
                 merged = merge_params(std::move(merged), lines.front(), lines.back());
                 if (merged.size() > lines.size()) {
                     const std::size_t across = runs_along_u(to.side) ? to.plan->grid.v.size() : to.plan->grid.u.size();
-                    const double cells = static_cast<double>(merged.size() - 1) * static_cast<double>(across - 1);
-                    if (2 * cells > static_cast<double>(settings.max_triangles))
-                        throw TooFine(2 * cells, settings.max_triangles);
+                    const double at_least = runs_along_u(to.side)
+                                                ? triangles_at_least(*to.plan, merged.size(), across)
+                                                : triangles_at_least(*to.plan, across, merged.size());
+                    if (at_least > static_cast<double>(settings.max_triangles))
+                        throw TooFine(at_least, settings.max_triangles);
                     lines = std::move(merged);
                     changed = true;
                 }
@@ -727,15 +744,23 @@ void plan_surfaces(std::span<const Face> faces, const TessellationSettings& sett
         curvatures.emplace_back();
         plans.push_back(plan_face(face, settings, curvatures.back(), straddle && !beside_trimmed));
     }
-    // The estimate for the whole solid before any mesh is built: two triangles per cell, plus the
-    // planar faces (about one triangle per boundary sample, bounded by the cells along their edges).
-    double estimate = 0;
-    for (const SurfacePlan& plan : plans)
-        estimate += 2 * plan.grid.cells() + 2.0 * static_cast<double>(plan.grid.u.size() + plan.grid.v.size());
-    if (estimate > static_cast<double>(settings.max_triangles)) throw TooFine(estimate, settings.max_triangles);
+    // The count for the whole solid before any cell is checked or any mesh built: what the plans' grids
+    // give at least (triangles_at_least), and at least one triangle per planar face. Only a count the mesh
+    // cannot fall below may refuse it (a mesh within max_triangles must pass); the refinement below grows
+    // the grids, and is held against the same count of all faces after every face.
+    const auto planned_total = [&] {
+        double total = 0;
+        for (const Face& face : faces) total += face.kind() == Face::Kind::planar ? 1.0 : 0.0;
+        for (const SurfacePlan& plan : plans) total += triangles_at_least(plan);
+        return total;
+    };
+    if (const double total = planned_total(); total > static_cast<double>(settings.max_triangles))
+        throw TooFine(total, settings.max_triangles);
     for (std::size_t k = 0; k < plans.size(); ++k) {
         settings.report(kPlannedFraction * static_cast<double>(k) / static_cast<double>(plans.size()));
         refine_grid(plans[k], curvatures[k], settings, points);
+        if (const double total = planned_total(); total > static_cast<double>(settings.max_triangles))
+            throw TooFine(total, settings.max_triangles);
     }
     std::vector<std::size_t> cells_before;
     for (const SurfacePlan& plan : plans) cells_before.push_back(static_cast<std::size_t>(plan.grid.cells()));

@@ -144,6 +144,12 @@ std::array<int, 2> minimum_segments(const std::array<SideMap, 4>& sides);
 SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, CurvatureSamples& curvature,
                       bool straddle = true);
 
+// The fewest triangles the mesh of a plan's grid (or of a grid of lines_u x lines_v lines on its face) can
+// have: two per cell, one less for each collapsed side (a pole) a cell lies along. The zippers that close a
+// row to its neighbour's extra samples, and the centres of cells split in four, only add triangles.
+double triangles_at_least(const SurfacePlan& plan);
+double triangles_at_least(const SurfacePlan& plan, std::size_t lines_u, std::size_t lines_v);
+
 // False when any surface face's weights differ by more than kStraddleWeightRatio: weights far apart crowd
 // a surface's geometry into slivers of its parameter domain (the round trip test's weights within
 // 10^+-3), which the offsets, bilinear between curvature samples, follow poorly; their faces and the faces

@@ -26,14 +26,19 @@ void require_scale(const Profile& profile, double distance) {
     const double reach = detail::reach_of(box) + distance;
     const bool distance_sets_size = distance > profile.size();
     detail::require_solid_scale(std::max(profile.size(), distance), reach, distance_sets_size ? "distance" : "profile",
-                                "profile");
+                                "profile", distance_sets_size ? limits::max_solid_coordinate : detail::largest_box_diagonal);
+    // A unit square extruded by 1e9 (or by 1e-12) has faces of sides 1 and 1e9: the short side was taken
+    // for a collapsed point ("sides" named).
+    detail::require_feature(distance, profile.size(), "distance", "an extrusion distance");
+    detail::require_feature_ratio(distance, profile.size(), "distance", "the profile's size");
 }
 
 }  // namespace
 
 NurbsSurface extrude_surface(const NurbsCurve& curve, const Vec3& displacement) {
     require(is_finite(displacement), "displacement", "must have finite coordinates");
-    require(norm(displacement) > 0, "displacement", "must be a non-zero vector");
+    // Not norm(): a displacement of 1e-300 squares to 0.
+    require(displacement.x != 0 || displacement.y != 0 || displacement.z != 0, "displacement", "must be a non-zero vector");
     const std::vector<Vec4>& points = curve.homogeneous_points();
     std::vector<Vec4> net;
     net.reserve(points.size() * 2);

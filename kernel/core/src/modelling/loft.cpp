@@ -12,6 +12,7 @@
 #include "ratbez/compatible_curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/join.hpp"
+#include "ratbez/limits.hpp"
 
 namespace ratbez {
 
@@ -70,11 +71,35 @@ Vec3 control_centre(const Profile& profile) {
     return sum / count;
 }
 
+// Before the sections are made compatible (each refined to the union of all their knots): the net that gives,
+// sections x (union of the interior knots on [0, 1] + degree + 1), within limits::max_surface_points, so that
+// sections with many different knots are refused by their count instead of after the refinement.
+void require_compatible_net(const std::vector<NurbsCurve>& curves, const std::string& argument) {
+    int degree = 0;
+    for (const NurbsCurve& c : curves) degree = std::max(degree, c.degree());
+    std::vector<double> knots;
+    for (const NurbsCurve& c : curves) {
+        const Interval d = c.domain();
+        for (const double u : c.knots())
+            if (u > d.min && u < d.max) knots.push_back((u - d.min) / d.width());
+    }
+    std::sort(knots.begin(), knots.end());
+    // Distinct values, each at most `degree` times (a knot's multiplicity never exceeds the degree inside).
+    std::size_t columns = static_cast<std::size_t>(degree) + 1, run = 0;
+    for (std::size_t k = 0; k < knots.size(); ++k) {
+        run = k > 0 && knots[k] - knots[k - 1] <= 1e-12 ? run + 1 : 1;
+        if (run <= static_cast<std::size_t>(degree)) ++columns;
+    }
+    limits::require_surface_points(curves.size(), columns, argument);
+}
+
 }  // namespace
 
 Skin skin(const std::vector<NurbsCurve>& curves, int degree) {
     require(curves.size() >= 2, "curves", [&] { return "a loft needs at least 2 sections, got " + std::to_string(curves.size()); });
+    limits::require_loft_sections(curves.size(), "curves");
     require(degree >= 1, "degree", [&] { return "must be >= 1, got " + std::to_string(degree); });
+    require_compatible_net(curves, "curves");
     std::vector<NurbsCurve> sections = make_compatible(curves, "curves");
     // Each section's weights scaled so that its first is 1: the loft then does not depend on the
     // arbitrary common factor of a curve's weights.
@@ -115,6 +140,7 @@ Skin skin(const std::vector<NurbsCurve>& curves, int degree) {
 Solid loft(const std::vector<Profile>& profiles, int degree, bool ruled) {
     const std::size_t count = profiles.size();
     require(count >= 2, "profiles", [&] { return "a loft needs at least 2 profiles, got " + std::to_string(count); });
+    limits::require_loft_sections(count, "profiles");  // before every profile is analysed
     require(degree >= 1, "degree", [&] { return "must be >= 1, got " + std::to_string(degree); });
     auto name = [](std::size_t k) { return "profiles[" + std::to_string(k) + "]"; };
 

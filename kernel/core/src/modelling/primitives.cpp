@@ -39,22 +39,6 @@ void require_scale(double size, const Vec3& center, std::string_view size_argume
     detail::require_solid_scale(size, reach, size_argument, "center");
 }
 
-// The largest dimension over the smallest non-zero one a primitive may have: below about 1e-9 of the solid's
-// size (brep.cpp's relative tolerance) a side or circle cannot be told from a point, and the faces' own
-// checks would fail with their words ("sides: side u_max collapses to a point", "loops: ... degenerate
-// edges") instead of the argument's. 1e-8 keeps a margin of 10 for the box diagonal (up to 3x the largest
-// dimension).
-constexpr double kMinProportion = 1e-8;
-
-// `small` (the argument `small_argument`, non-zero) against the primitive's largest dimension `large`.
-void require_proportion(double small, std::string_view small_argument, double large, std::string_view large_argument) {
-    require(small >= kMinProportion * large, small_argument, [&] {
-        return "is " + detail::number(small) + ", less than " + detail::number(kMinProportion) + " of " +
-               std::string(large_argument) + " " + detail::number(large) +
-               ": the solid would be too thin for its faces to be told from their edges";
-    });
-}
-
 // The Solid of a primitive whose size passed require_scale. The Solid checks the scale again on the box of
 // its control points (up to about 3.5x the radius for a sphere): a primitive just under the limit by its
 // radius can exceed it there, and that Error ("faces: gives a solid of size ...") is about the primitive's
@@ -99,8 +83,8 @@ Solid cylinder(double radius, double height, const Vec3& center, const Vec3& axi
     require_positive(height, "height");
     const std::string_view larger = radius >= height ? "radius" : "height";
     require_scale(std::max(radius, height), center, larger);
-    if (radius < height) require_proportion(radius, "radius", height, "height");
-    else require_proportion(height, "height", radius, "radius");
+    detail::require_feature(radius, height, "radius", "a radius");
+    detail::require_feature(height, radius, "height", "a height");
     const Frame frame = placed_frame(center, axis);
     return scaled_solid(larger, [&] {
         return conical_solid(frame, radius, radius, height, Construction::Cylinder{center, frame.z_axis, radius, height});
@@ -117,9 +101,11 @@ Solid cone(double radius1, double radius2, double height, const Vec3& center, co
     const double radius = std::max(radius1, radius2);
     const std::string_view larger = radius < height ? "height" : radius1 >= radius2 ? "radius1" : "radius2";
     require_scale(std::max(radius, height), center, larger);
-    const double largest = std::max(radius, height);
-    for (const auto& [value, argument] : {std::pair<double, std::string_view>{radius1, "radius1"}, {radius2, "radius2"}, {height, "height"}})
-        if (value > 0 && argument != larger) require_proportion(value, argument, largest, larger);
+    // A radius is 0 (an apex) or a feature of the cone: cone(1, 1e-12, 1)'s top circle is no circle.
+    const double size = std::max(radius, height);
+    if (radius1 > 0) detail::require_feature(radius1, size, "radius1", "a radius (0 makes an apex)");
+    if (radius2 > 0) detail::require_feature(radius2, size, "radius2", "a radius (0 makes an apex)");
+    detail::require_feature(height, size, "height", "a height");
     const Frame frame = placed_frame(center, axis);
     return scaled_solid(larger, [&] {
         return conical_solid(frame, radius1, radius2, height, Construction::Cone{center, frame.z_axis, radius1, radius2, height});
@@ -145,7 +131,10 @@ Solid torus(double major_radius, double minor_radius, const Vec3& center, const 
     require(minor_radius < major_radius, "minor_radius", "must be less than major_radius (else the tube meets the axis)");
     require_scale(major_radius, center, "major_radius");
     require_scale(minor_radius, center, "minor_radius");
-    require_proportion(minor_radius, "minor_radius", major_radius, "major_radius");
+    detail::require_feature(minor_radius, major_radius, "minor_radius", "a tube radius");
+    // The hole at the axis: its equator circle (radius major - minor) is a side of the torus's face.
+    detail::require_feature(major_radius - minor_radius, major_radius, "minor_radius",
+                            "a hole at the axis (major_radius - minor_radius)");
     const Frame frame = placed_frame(center, axis);
     return scaled_solid("major_radius", [&] {
         // The tube's circle in the meridian plane, starting at its outer equator; revolved it gives one face

@@ -306,7 +306,7 @@ Solid revolve(const Profile& profile, const Vec3& axis_point, const Vec3& axis_d
         }
     require(norm(farthest) > tol, "profile", "lies on the axis");
     detail::require_solid_scale(profile.size(), reach_of_revolution(profile, axis_point, norm(farthest)), "profile",
-                                "profile");
+                                "profile", detail::largest_box_diagonal);
     require_thickness(angle_deg, norm(farthest), profile.size());
     const Vec3 e = farthest / norm(farthest);
     const Vec3 plane_normal = cross(d, e);

@@ -7,7 +7,7 @@
 //   at any moment sees the old file or the whole new one, never a truncated or spliced file; of concurrent
 //   writers to one path each produces a whole file and the last rename wins;
 // - on any error the temporary file is removed and the target left as it was; remove_temporaries_on_signals()
-//   (the command installs it) removes it on SIGINT and SIGTERM too;
+//   (the command installs it) removes it on every signal that ends the program too, and says so in one line;
 // - an existing target keeps its permission bits; one the user may not write (a read-only file, as a shell
 //   redirect or OpenSCAD would refuse it) is refused, and so is a symbolic link at the target (one rule for
 //   every format: the link is neither followed nor replaced; name the file it points to instead), a folder
@@ -29,8 +29,13 @@ void write_file(const std::string& path, const std::function<void(std::ostream& 
 // happens to its name meanwhile) and must write the whole file there.
 void write_file_by_name(const std::string& path, const std::function<void(const std::string& name)>& write);
 
-// SIGINT and SIGTERM remove the temporary files being written, then take their default action (the process
-// ends as it would have). For programs (the command), not for libraries hosted by another (Python, FreeCAD).
-void remove_temporaries_on_signals();
+// Every signal that ends the program from outside (SIGHUP, SIGINT, SIGQUIT, SIGPIPE, SIGALRM, SIGTERM, SIGUSR1,
+// SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGPOLL, SIGPWR, SIGSTKFLT; not those ignored at start) removes
+// the temporary files being written and writes one line on stderr, "<program>: stopped by SIGHUP (the terminal
+// hung up); 'out.step' not written (its temporary file was removed)", then takes its default action (the
+// process ends as it would have). SIGXFSZ, a write past the file size limit, is a write error instead:
+// "error: path: 'out.stl' reached the file size limit (ulimit -f) and was not written", exit code 2.
+// For programs (the command), not for libraries hosted by another (Python, FreeCAD).
+void remove_temporaries_on_signals(const char* program = "ratbez");
 
 }  // namespace ratbez::output

@@ -12,6 +12,7 @@
 #include "ratbez/export/writers.hpp"
 #include "ratbez/mesh.hpp"
 #include "ratbez/progress.hpp"
+#include "ratbez/tessellate.hpp"
 
 namespace ratbez::exporter {
 
@@ -27,6 +28,13 @@ struct ExportOptions {
     std::string source = "a mesh";  // the .scad header's "source:" line ("spec vase.json", "Python")
     Progress progress;              // export_tessellation: called with the fraction done after each step
 };
+
+// The tessellation of `solid` for an export whose mesh `checks` will check: options.max_triangles lowered to
+// checked_triangle_limit(checks) (the checks' limit, or the triangles the process's memory limit holds), so
+// that a mesh the checks would refuse is refused from the tessellation's plan, before it is built, with the
+// estimate and a tolerance that fits (TooFine, naming the checks' or the memory's limit when that is the
+// lower one).
+Mesh tessellate_for_export(const Solid& solid, TessellationOptions options, const MeshCheckOptions& checks = {});
 
 // Writes `mesh` as it is (a .scad header states its counts, bounding box and volume).
 void export_mesh(const Mesh& mesh, const std::string& path, const ExportOptions& options = {});

@@ -26,6 +26,21 @@ struct MeshCheckOptions {
 };
 inline constexpr std::size_t bytes_per_checked_triangle = 450;
 
+// What the process may still allocate under its address-space and data-segment limits (RLIMIT_AS and
+// RLIMIT_DATA, as `ulimit -v`, `prlimit --as` or Python's resource.setrlimit set them), less what it holds
+// already (/proc/self/status); nullopt when neither limit is set.
+std::optional<std::size_t> memory_left();
+
+// The most triangles the checks take: options.max_triangles, or fewer when memory_left() holds fewer at
+// bytes_per_checked_triangle each (450 bytes also covers the tessellation and the mesh written: an export of
+// 890k triangles peaked at 290 bytes per triangle). `limit` words it for messages ("the export's mesh
+// checks' limit of 4000000 triangles (about 1.8 GB at 450 bytes each)").
+struct TriangleLimit {
+    std::size_t triangles = 0;
+    std::string limit;
+};
+TriangleLimit checked_triangle_limit(const MeshCheckOptions& options = {});
+
 struct MeshReport {
     bool closed = false;
     bool manifold = false;
