@@ -53,36 +53,47 @@ TEST(Loft, CirclesOneTwoOnePassThroughEverySection) {
 }
 
 TEST(Loft, RandomSectionsRationalOrNotAreInterpolated) {
+    // align = false: every section is passed through at its own parameters. The sections are one random
+    // curve with its control points moved by up to 0.3 and its weights by up to 1.5x, 3 apart in z, so that
+    // the lofts do not cross themselves (those that would are refused, issue 26).
     Rng rng(1805);
-    int rational_lofted = 0;
+    int lofted = 0, rational_lofted = 0;
     for (int trial = 0; trial < 40; ++trial) {
         std::vector<NurbsCurve> sections;
         const int count = test::uniform_int(rng, 2, 6);
+        const NurbsCurve base = test::random_curve(rng, trial % 2 == 0, true, 3);
         for (int k = 0; k < count; ++k) {
-            NurbsCurve c = test::random_curve(rng, trial % 2 == 0, true, 3);
-            // Move section k up by 3k so that consecutive sections are apart.
-            std::vector<Vec4> pw = c.homogeneous_points();
-            for (Vec4& q : pw) q = homogenize(project(q) + Vec3{0, 0, 3.0 * k}, q.w);
-            sections.push_back(NurbsCurve::from_homogeneous(c.degree(), c.knots(), pw, c.is_rational()));
+            std::vector<Vec4> pw = base.homogeneous_points();
+            for (Vec4& q : pw) {
+                const Vec3 moved = project(q) + Vec3{test::uniform(rng, -0.3, 0.3), test::uniform(rng, -0.3, 0.3), 3.0 * k};
+                q = homogenize(moved, base.is_rational() ? q.w * test::uniform(rng, 2.0 / 3, 1.5) : 1.0);
+            }
+            sections.push_back(NurbsCurve::from_homogeneous(base.degree(), base.knots(), pw, base.is_rational()));
         }
         const int degree = test::uniform_int(rng, 1, 4);
         try {
-            const Skin skin = ratbez::skin(sections, degree);
+            const Skin skin = ratbez::skin(sections, degree, false);
             EXPECT_EQ(skin.surface.degree_v(), std::min(degree, count - 1));
             expect_through_sections(skin, sections, 1e-10 * (3.0 * count + 8));
+            ++lofted;
             if (trial % 2 == 0) ++rational_lofted;
         } catch (const Error& e) {
-            // Only the documented refusal: interpolated weights that would not stay positive.
-            EXPECT_TRUE(trial % 2 == 0 && std::string(e.what()).find("weights") != std::string::npos) << e.what();
+            // Only the documented refusals: interpolated weights that would not stay positive, a surface that
+            // meets itself.
+            const std::string what = e.what();
+            EXPECT_TRUE((trial % 2 == 0 && what.find("weights") != std::string::npos) ||
+                        what.find("lofted surface") != std::string::npos)
+                << what;
         }
     }
-    // Weights drawn from 0.3 .. 3 independently overshoot often; the rest must still be lofted (9 of 20 here).
-    EXPECT_GE(rational_lofted, 5);
+    // With this seed 10 are lofted; the rest are refused (wiggly random curves with C0 joints pinch or cross).
+    EXPECT_GE(lofted, 8);
+    EXPECT_GE(rational_lofted, 3);
 }
 
 TEST(Loft, DegreeOneIsPiecewiseRuledAndErrorsAreNamed) {
     const std::vector<NurbsCurve> circles{circle(1.0, {0, 0, 0}), circle(2.0, {0, 0, 1}), circle(1.0, {0, 0, 2})};
-    const NurbsSurface s = loft_surface(circles, 1);
+    const NurbsSurface s = loft_surface(circles, 1, false);
     for (int i = 0; i <= 8; ++i) {
         const Vec3 p = s.point(i / 8.0, 0.25);  // halfway up the first frustum
         EXPECT_NEAR(std::hypot(p.x, p.y), 1.5, 1e-12);

@@ -90,17 +90,19 @@ double ArcLength::parameter(double s) const {
     const double target = s - cumulative_[k], span_length = cumulative_[k + 1] - cumulative_[k];
     if (!(span_length > 0)) return lo;
     // Newton on f(u) = L(lo_k, u) - target, f' = speed, from the linear guess; a step that leaves the
-    // bracket [lo, hi] (where f changes sign) is replaced by bisection.
+    // bracket [lo, hi] (where f changes sign) is replaced by bisection. f is carried along, each step adding
+    // the length between the old and the new u (short: one rule usually suffices).
     const double a = lo;
     double u = lo + (hi - lo) * std::clamp(target / span_length, 0.0, 1.0);
+    double f = integral(a, u) - target;
     for (int iteration = 0; iteration < 100; ++iteration) {
-        const double f = integral(a, u) - target;
         if (std::abs(f) <= 4 * tolerance_ + 1e-15 * target) return u;
         if (f > 0) hi = u; else lo = u;
         const double v = speed(curve_, u);
         double next = v > 0 ? u - f / v : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         if (next == u || hi - lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi))) return next;
+        f += next > u ? integral(u, next) : -integral(next, u);
         u = next;
     }
     return u;
