@@ -36,6 +36,7 @@ struct Cell {
     Box box;
     std::size_t piece = 0;
     double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    bool sliver = false;  // smaller than the resolution (a knot span of negligible width): nothing to certify
 };
 
 // De Casteljau on one line of homogeneous points (A1.5 at one parameter): the part over [a, b] of [0, 1].
@@ -183,6 +184,7 @@ public:
             }
         }
         found_distance_ = 1e-10 * size_box_.diagonal();
+        for (Cell& c : cells_) c.sliver = c.box.diagonal() <= resolution_;
     }
 
     SelfIntersection run() {
@@ -208,6 +210,7 @@ private:
                 const double a0 = std::max(r.x0 - i, 0.0), a1 = std::min(r.x1 - i, 1.0);
                 const double b0 = std::max(r.y0 - j, 0.0), b1 = std::min(r.y1 - j, 1.0);
                 if (!(a1 > a0) || !(b1 > b0)) continue;
+                if (c.sliver) continue;  // within the resolution of its neighbours, which are certified
                 const bool whole = a0 == 0 && a1 == 1 && b0 == 0 && b1 == 1;
                 visit(whole ? c.net : restrict_net(c, a0, a1, b0, b1), c);
             }
@@ -429,7 +432,8 @@ private:
 
     // Gauss–Newton on N = S_u x S_v = 0 inside a rectangle (N's partials from the second derivatives): a point
     // without a tangent plane, where the surface pinches or folds (a Whitney umbrella's pinch point starts a
-    // curve along which the surface meets itself). Found when |N| <= 1e-10 |S_u| |S_v|.
+    // curve along which the surface meets itself). Found when |N| <= 1e-10 max(|S_u|, |S_v|)^2 (one partial
+    // vanishing, as at a pinch, counts too).
     bool singular_point(const Node& n) {
         double x = 0.5 * (n.r.x0 + n.r.x1), y = 0.5 * (n.r.y0 + n.r.y1);
         for (int iteration = 0; iteration < 25; ++iteration) {
@@ -440,7 +444,8 @@ private:
                                                               std::clamp(c.v0 + (y - j) * dv, c.v0, c.v1), 2);
             const Vec3 su = d[1][0] * du, sv = d[0][1] * dv, suu = d[2][0] * (du * du), suv = d[1][1] * (du * dv), svv = d[0][2] * (dv * dv);
             const Vec3 normal = cross(su, sv);
-            const double scale = norm(su) * norm(sv);
+            // Relative to the larger partial: a pinch, where one partial vanishes, counts as well as a fold.
+            const double scale = std::max(dot(su, su), dot(sv, sv));
             if (!(scale > 0)) return false;
             if (norm(normal) <= 1e-10 * scale) {
                 result_.found = result_.fold = true;
@@ -466,8 +471,14 @@ private:
                b.min.z <= a.max.z;
     }
 
+    // Whether a rectangle lies within one sliver cell.
+    bool in_sliver(const Rect& r) const {
+        const int i = static_cast<int>(std::floor(r.x0)), j = static_cast<int>(std::floor(r.y0));
+        return r.x1 <= i + 1 && r.y1 <= j + 1 && cell(i, j).sliver;
+    }
+
     void self(const Node& n) {
-        if (spent() || certified(n.r)) return;
+        if (spent() || in_sliver(n.r) || certified(n.r)) return;
         if (n.r.width() <= 1 && n.r.height() <= 1 && singular_point(n)) return;
         if (n.box.diagonal() < resolution_) return report(n, nullptr, true);
         const auto [a, b] = halves(n);
@@ -481,6 +492,7 @@ private:
         double sx = 0, sy = 0;
         const bool adjacent = touch(a.r.x0, a.r.x1, b.r.x0, b.r.x1, strip_.closed_u, nu_, sx) &&
                               touch(a.r.y0, a.r.y1, b.r.y0, b.r.y1, strip_.closed_v, nv_, sy);
+        if (adjacent && (in_sliver(a.r) || in_sliver(b.r))) return;  // a sliver only touches its neighbours
         // The rectangle spanning both (across a seam where that is nearer): one-to-one there means a and b
         // do not meet. Tried for touching pairs and for near ones (the span at most about twice their sizes).
         const auto [hull, near] = span(a, b);

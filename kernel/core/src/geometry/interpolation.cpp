@@ -242,7 +242,10 @@ NurbsCurve closed_interpolant(const std::vector<Vec3>& points, int degree, const
     for (int i = first; i <= last; ++i) {
         double sum = 0;
         for (int k = i - p; k <= i - 1; ++k) sum += T(k);
-        kappa.push_back(sum / p);
+        // A knot a rounding error away from a whole period (0, 1, ...) is that period exactly: the cut at Q_0
+        // below would otherwise leave a span of width 1e-17 there.
+        const double knot = sum / p, whole = std::round(knot);
+        kappa.push_back(std::abs(knot - whole) <= 1e-12 ? whole : knot);
     }
     auto knot_index = [&](int i) { return to_size(i - first); };
     auto control_index = [&](int i) { return to_size(((i % count) + count) % count); };
