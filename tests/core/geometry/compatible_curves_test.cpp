@@ -15,18 +15,6 @@ namespace {
 
 using test::Rng;
 
-// The same point set at the same (affinely mapped) parameters, to `tolerance` of the curve's size.
-void expect_same_curve(const NurbsCurve& original, const NurbsCurve& changed, double tolerance = 1e-12) {
-    const Interval a = original.domain(), b = changed.domain();
-    const double size = original.control_box().diagonal();
-    for (int k = 0; k <= 200; ++k) {
-        const double f = k / 200.0;
-        ASSERT_LE(distance(original.point(a.min + f * a.width()), changed.point(k == 200 ? b.max : b.min + f * b.width())),
-                  tolerance * size)
-            << "at fraction " << f;
-    }
-}
-
 TEST(MakeCompatible, CommonDegreeDomainAndKnotsSameCurves) {
     Rng rng(1802);
     for (int trial = 0; trial < 100; ++trial) {
@@ -39,7 +27,7 @@ TEST(MakeCompatible, CommonDegreeDomainAndKnotsSameCurves) {
             EXPECT_EQ(compatible[k].degree(), compatible[0].degree());
             EXPECT_EQ(compatible[k].knots(), compatible[0].knots());
             EXPECT_EQ(compatible[k].domain(), (Interval{0.0, 1.0}));
-            expect_same_curve(curves[k], compatible[k], 1e-11);
+            test::expect_same_curve(curves[k], compatible[k], 1e-11);
         }
     }
 }

@@ -16,18 +16,6 @@ namespace {
 
 using test::Rng;
 
-// The same point set at the same (affinely mapped) parameters, to `tolerance` of the curve's size.
-void expect_same_curve(const NurbsCurve& original, const NurbsCurve& changed, double tolerance = 1e-12) {
-    const Interval a = original.domain(), b = changed.domain();
-    const double size = original.control_box().diagonal();
-    for (int k = 0; k <= 200; ++k) {
-        const double f = k / 200.0;
-        ASSERT_LE(distance(original.point(a.min + f * a.width()), changed.point(k == 200 ? b.max : b.min + f * b.width())),
-                  tolerance * size)
-            << "at fraction " << f;
-    }
-}
-
 int multiplicity(const std::vector<double>& knots, double u) {
     return static_cast<int>(std::count(knots.begin(), knots.end(), u));
 }
@@ -40,7 +28,7 @@ TEST(ElevateDegree, RandomCurvesKeepTheirShapeAndContinuity) {
         const NurbsCurve elevated = elevate_degree(curve, times);
         ASSERT_EQ(elevated.degree(), curve.degree() + times);
         EXPECT_EQ(elevated.is_rational(), curve.is_rational());
-        expect_same_curve(curve, elevated, 1e-11);
+        test::expect_same_curve(curve, elevated, 1e-11);
         // Every interior break point keeps its continuity: multiplicity s becomes s + t.
         const std::vector<double> breaks = test::break_points(curve.degree(), curve.knots());
         for (std::size_t k = 1; k + 1 < breaks.size(); ++k)
