@@ -42,7 +42,9 @@ struct Skin {
 
 // At least two sections, degree >= 1 (the degree across: 1 is piecewise ruled); u runs along the sections
 // over [0, 1], v across them over [0, 1]. Consecutive sections must not coincide (all their control
-// points the same). Errors name "curves" or "degree".
+// points the same). A surface that meets itself (twisted, pinched, crossing: the certified test of
+// analysis/self_intersection.hpp) is refused, the place and the sections it lies between named. Errors name
+// "curves" or "degree".
 Skin skin(const std::vector<NurbsCurve>& curves, int degree = 3, bool align = true);
 inline NurbsSurface loft_surface(const std::vector<NurbsCurve>& curves, int degree = 3, bool align = true) {
     return skin(curves, degree, align).surface;
@@ -56,11 +58,12 @@ inline NurbsSurface loft_surface(const std::vector<NurbsCurve>& curves, int degr
 // points of least twist (the first profile's start sets the seam, moved to a crease when every profile has
 // a corner at matching places); without it their starting points and parameters are matched as given.
 // One side face per smooth run: the side surface is cut only along creases that run through every section
-// (a square lofted to a square has four side faces, a circle to a circle one, a circle to a square one). Validated (Error naming "profiles[k]" or "degree"): at least two profiles, each
-// closed, planar and simple (as for extrude), and every profile strictly in front of the previous one's
-// plane and the previous one strictly behind its plane (all control points, so the curves by the convex
-// hull property): sections that cut through each other give no solid. The surface between sections is not
-// otherwise checked for self-intersection.
+// (a square lofted to a square has four side faces, a circle to a circle one, a circle to a square one).
+// Validated (Error naming "profiles[k]" or "degree"): at least two profiles, each closed, planar and simple
+// (as for extrude), and every profile strictly in front of the previous one's plane and the previous one
+// strictly behind its plane (all control points, so the curves by the convex hull property): sections that
+// cut through each other give no solid; and (Error naming "profiles") a side surface that meets itself, as
+// skin() refuses it.
 Solid loft(const std::vector<Profile>& profiles, int degree = 3, bool ruled = false, bool align = true);
 
 }  // namespace ratbez
