@@ -42,7 +42,7 @@ TEST(RuledSurface, StraightRulingsBetweenAnyCurves) {
     // curves is most of them, and of these wiggly ones (random knots with C0 joints) still many.
     Rng rng(1804);
     int ruled = 0;
-    for (int trial = 0; trial < 100; ++trial) {
+    for (int trial = 0; trial < 40; ++trial) {
         const NurbsCurve a = test::random_curve(rng, trial % 2 == 0, trial % 3 != 0, 4);
         NurbsCurve b = test::random_curve(rng, trial % 4 < 2, true, 4);
         std::vector<Vec4> pw = b.homogeneous_points();
@@ -82,7 +82,7 @@ TEST(RuledSurface, StraightRulingsBetweenAnyCurves) {
             ASSERT_LE(t, 1 + 1e-12);
         }
     }
-    EXPECT_GE(ruled, 20);  // 27 with this seed
+    EXPECT_GE(ruled, 8);
 }
 
 TEST(RuledSurface, ALineToAnArcRaisesTheDegreeAndMergesKnots) {

@@ -60,6 +60,6 @@ struct SelfIntersection {
 
 // `resolution` (> 0, absolute): boxes smaller than this that still overlap without a certificate count as a
 // meeting. `budget`: at most this many rectangles and pairs examined.
-SelfIntersection find_self_intersection(const SurfaceStrip& strip, double resolution, std::size_t budget = 150'000);
+SelfIntersection find_self_intersection(const SurfaceStrip& strip, double resolution, std::size_t budget = 30'000);
 
 }  // namespace ratbez::detail
