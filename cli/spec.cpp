@@ -18,6 +18,7 @@
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/extrude.hpp"
+#include "ratbez/interpolation.hpp"
 #include "ratbez/join.hpp"
 #include "ratbez/loft.hpp"
 #include "ratbez/nurbs_curve.hpp"
@@ -279,7 +280,36 @@ NurbsCurve parse_curve(const json& value, const std::string& path) {
         return build(path, curve.fields(),
                      [&] { return circle(radius, center, normal); });
     }
-    throw SpecError(path + ".type", "unknown curve type '" + type + "' (expected bezier, nurbs, line, arc or circle)");
+    if (type == "interpolate") {
+        // Issue 26: the curve through points (A9.1), as ratbez.interpolate takes it.
+        const ObjectReader curve(value, path, {"type", "points", "degree", "parameterization", "tangents", "closed"});
+        std::vector<Vec3> points = point_list(curve.required("points"), curve.child("points"), 2);
+        int degree = 3;
+        if (const json* d = curve.optional("degree")) {
+            if (!d->is_number_integer() || d->get<long long>() < 1 || d->get<long long>() > 25)
+                throw SpecError(curve.child("degree"), "must be an integer from 1 to 25");
+            degree = static_cast<int>(d->get<long long>());
+        }
+        std::string kind = "chord";
+        if (const json* k = curve.optional("parameterization")) kind = text(*k, curve.child("parameterization"));
+        EndTangents tangents;
+        if (const json* t = curve.optional("tangents")) {
+            const std::string tangents_path = curve.child("tangents");
+            if (!t->is_array() || t->size() != 2)
+                throw SpecError(tangents_path, "must be [start, end], each a vector or null");
+            if (!(*t)[0].is_null()) tangents.start = direction((*t)[0], index_path(tangents_path, 0));
+            if (!(*t)[1].is_null()) tangents.end = direction((*t)[1], index_path(tangents_path, 1));
+        }
+        bool closed = false;
+        if (const json* c = curve.optional("closed")) {
+            if (!c->is_boolean()) throw SpecError(curve.child("closed"), "must be true or false");
+            closed = c->get<bool>();
+        }
+        return build(path, curve.fields(),
+                     [&] { return interpolate(points, degree, parse_parameterization(kind), tangents, closed); });
+    }
+    throw SpecError(path + ".type",
+                    "unknown curve type '" + type + "' (expected bezier, nurbs, line, arc, circle or interpolate)");
 }
 
 std::vector<NurbsCurve> parse_curve_list(const json& value, const std::string& path) {
@@ -314,6 +344,14 @@ NurbsCurve parse_path(const json& value, const std::string& path) {
     }
 }
 
+// An optional true/false field (`fallback` when absent).
+bool flag(const ObjectReader& shape, const char* key, bool fallback) {
+    const json* value = shape.optional(key);
+    if (!value) return fallback;
+    if (!value->is_boolean()) throw SpecError(shape.child(key), "must be true or false");
+    return value->get<bool>();
+}
+
 // The loft's kernel errors name "profiles[k]": they belong under shape.profiles[k].
 FieldNames indexed_fields(const std::string& name, std::size_t count, FieldNames fields) {
     for (std::size_t k = 0; k < count; ++k) fields.emplace(index_path(name, k), index_path(name, k));
@@ -322,15 +360,17 @@ FieldNames indexed_fields(const std::string& name, std::size_t count, FieldNames
 
 std::optional<BuiltShape> parse_modelling_shape(const std::string& type, const json& value, const std::string& path) {
     if (type == "ruled") {
-        const ObjectReader shape(value, path, {"type", "profile_a", "profile_b"});
+        const ObjectReader shape(value, path, {"type", "profile_a", "profile_b", "align"});
         Profile a = parse_profile(shape.required("profile_a"), shape.child("profile_a"));
         Profile b = parse_profile(shape.required("profile_b"), shape.child("profile_b"));
-        Solid solid = build(path, shape.fields({{"profiles[0]", "profile_a"}, {"profiles[1]", "profile_b"}}),
-                            [&] { return loft({a, b}, 1, true); });
+        const bool align = flag(shape, "align", true);
+        // A side surface that meets itself is about both profiles: named after the second, the one it is ruled to.
+        Solid solid = build(path, shape.fields({{"profiles[0]", "profile_a"}, {"profiles[1]", "profile_b"}, {"profiles", "profile_b"}}),
+                            [&] { return loft({a, b}, 1, true, align); });
         return BuiltShape{type, std::move(solid), };
     }
     if (type == "loft") {
-        const ObjectReader shape(value, path, {"type", "profiles", "degree", "ruled"});
+        const ObjectReader shape(value, path, {"type", "profiles", "degree", "ruled", "align"});
         const json& list = shape.required("profiles");
         const std::string list_path = shape.child("profiles");
         if (!list.is_array() || list.size() < 2) throw SpecError(list_path, "must be a list of at least 2 profiles");
@@ -342,13 +382,9 @@ std::optional<BuiltShape> parse_modelling_shape(const std::string& type, const j
                 throw SpecError(shape.child("degree"), "must be an integer from 1 to 10");
             degree = static_cast<int>(d->get<long long>());
         }
-        bool ruled = false;
-        if (const json* r = shape.optional("ruled")) {
-            if (!r->is_boolean()) throw SpecError(shape.child("ruled"), "must be true or false");
-            ruled = r->get<bool>();
-        }
+        const bool ruled = flag(shape, "ruled", false), align = flag(shape, "align", true);
         Solid solid = build(path, indexed_fields("profiles", profiles.size(), shape.fields()),
-                            [&] { return loft(profiles, degree, ruled); });
+                            [&] { return loft(profiles, degree, ruled, align); });
         return BuiltShape{type, std::move(solid), };
     }
     if (type == "sweep") {

@@ -71,6 +71,9 @@ BY_NAME = {
     "holes": "Optional[Sequence[Union[Curve, Sequence[Curve]]]]",
     "surface": "Surface",
     "points_or_uv": "ArrayLike",
+    "grid": "Sequence[Sequence[Point]]",
+    "tangents": "Optional[Tuple[Optional[Point], Optional[Point]]]",
+    **dict.fromkeys(["u0", "u1"], "Optional[float]"),
 }
 
 SIGNATURE = re.compile(r"^(?:\d+\. )?(\w+)\((.*)\) -> (.+)$")

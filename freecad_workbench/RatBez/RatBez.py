@@ -6,6 +6,7 @@ Scripting interface (works in freecadcmd, without the GUI):
     cyl = RatBez.make_cylinder(Radius=2, Height=5)
     rev = RatBez.make_revolve(Profile=sketch, Angle=270)
     loft = RatBez.make_loft(Sections=[bottom, middle, top])
+    spline = RatBez.make_interpolate(Source=[(sketch, ["Vertex1", "Vertex3", "Vertex2"])], Closed=True)
     swept = RatBez.make_sweep(Profile=circle, Path=(sketch, ["Edge1", "Edge2"]))
     RatBez.export_openscad(cyl, "/tmp/cyl.scad", tolerance=0.01)
     RatBez.export_openscad([cyl, sphere], "/tmp/parts.scad")   # a library: one module per solid, coloured
@@ -27,18 +28,18 @@ import tempfile
 import FreeCAD as App
 import Part
 
-from ratbez_wb import conversion, features, kernel
+from ratbez_wb import conversion, curve_tools, features, kernel  # noqa: F401 (curve_tools registers Interpolate)
 from ratbez_wb import text as text_tools
 
 __all__ = ["make_bezier_curve", "make_bezier_surface", "make_cylinder", "make_cone", "make_sphere",
-           "make_torus", "make_revolve", "make_extrude", "make_ruled", "make_loft", "make_sweep", "is_solid",
-           "solid_of", "export_openscad", "export_3mf", "exportable", "check_occt", "format_check_report",
+           "make_torus", "make_revolve", "make_extrude", "make_ruled", "make_loft", "make_sweep", "make_interpolate",
+           "is_solid", "solid_of", "export_openscad", "export_3mf", "exportable", "check_occt", "format_check_report",
            "check_passed", "safe_label", "export"]
 
 _DEFAULT_NAMES = {
     "bezier_curve": "BezierCurve", "bezier_surface": "BezierSurface", "cylinder": "Cylinder",
     "cone": "Cone", "sphere": "Sphere", "torus": "Torus", "revolve": "Revolve", "extrude": "Extrude",
-    "ruled": "Ruled", "loft": "Loft", "sweep": "Sweep",
+    "ruled": "Ruled", "loft": "Loft", "sweep": "Sweep", "interpolate": "Interpolate",
 }
 # Properties that link a profile (or a path): each takes what _profile_link accepts.
 _LINK_PROPERTIES = ("Profile", "Profile1", "Profile2", "Path")
@@ -193,6 +194,21 @@ def make_sweep(doc=None, **properties):
     make_revolve's), Path (a sketch, wire, edges, (object, subnames) or a Part shape: one tangent-continuous
     chain), Tolerance (mm, where the sweep is not rational; default 1e-6)."""
     return _make("sweep", doc, properties)
+
+
+def make_interpolate(doc=None, **properties):
+    """The B-spline curve through points (ratbez.interpolate, The NURBS Book A9.1). Properties: Source (a list,
+    in order, of (object, "VertexN") or (object, ["Vertex1", ...]) picks, or whole objects: a Draft wire or
+    B-spline gives its points, any other object its vertices), or Points (a list of vectors) when Source is
+    empty; Degree (default 3), Parameterization ("chord", "centripetal" or "uniform"), Closed (periodic
+    through the first point), EndTangents with StartTangent and EndTangent."""
+    if "Source" in properties:
+        links = []
+        for value in properties["Source"] or []:
+            obj, subs = value if isinstance(value, (tuple, list)) else (value, [])
+            links.append((obj, [subs] if isinstance(subs, str) else (list(subs) or [""])))
+        properties["Source"] = links
+    return _make("interpolate", doc, properties)
 
 
 # ---------------------------------------------------------------------------------------------------

@@ -134,7 +134,7 @@ TEST_F(Cli, UnknownTypeAndUnknownFields) {
                      "spec error: tolerence: unknown field (expected one of: name, description, tolerance, tessellation_angle, color, shape)");
     expect_bad_input(
         ratbez({"info", spec_file(R"({"shape": {"type": "revolve", "profile": [{"type": "spline", "points": []}]}})")}),
-        "spec error: shape.profile[0].type: unknown curve type 'spline' (expected bezier, nurbs, line, arc or circle)");
+        "spec error: shape.profile[0].type: unknown curve type 'spline' (expected bezier, nurbs, line, arc, circle or interpolate)");
 }
 
 TEST_F(Cli, NestedProfilePaths) {
@@ -167,6 +167,41 @@ TEST_F(Cli, KernelErrorsNameTheField) {
         {"type": "line", "from": [1, 0, 0], "to": [2, 0, 1]}, {"type": "line", "from": [2, 0, 1], "to": [2, 0, 0]},
         {"type": "line", "from": [2, 0, 0], "to": [1, 0, 1]}, {"type": "line", "from": [1, 0, 1], "to": [1, 0, 0]}]}})")}),
                      "spec error: shape.profile: pieces 0 and 2 cross or touch near (1.5, 0, 0.5) (a profile must not cross itself)");
+}
+
+// Issue 26: curves interpolated through points (closed profiles, sweep paths), lofts aligned by default.
+TEST_F(Cli, InterpolatedSectionsAndAlignment) {
+    const CommandResult loft = ratbez({"info", example("interpolated_loft.json")});
+    ASSERT_EQ(loft.exit_code, 0) << loft.err;
+    EXPECT_NE(loft.out.find("faces:                3"), std::string::npos) << loft.out;
+    // A circle of radius 2 swept along an interpolated S path (tangent-continuous, as a sweep needs).
+    const CommandResult swept = ratbez({"info", spec_file(R"({"shape": {"type": "sweep",
+        "profile": [{"type": "circle", "radius": 0.5, "normal": [0, 0, 1]}],
+        "path": [{"type": "interpolate", "points": [[0, 0, 0], [1, 0, 4], [-1, 0, 8], [0, 0, 12]], "tangents": [[0, 0, 1], [0, 0, 1]]}]}})")});
+    ASSERT_EQ(swept.exit_code, 0) << swept.err;
+    // The issue's circle -> square (the square from its SW corner): aligned it is about OpenCASCADE's 43.16,
+    // twisted (align false) it is refused naming the place.
+    const std::string square = R"([{"type": "line", "from": [-1.5, -1.5, 4], "to": [1.5, -1.5, 4]},
+        {"type": "line", "from": [1.5, -1.5, 4], "to": [1.5, 1.5, 4]}, {"type": "line", "from": [1.5, 1.5, 4], "to": [-1.5, 1.5, 4]},
+        {"type": "line", "from": [-1.5, 1.5, 4], "to": [-1.5, -1.5, 4]}])";
+    const CommandResult aligned = ratbez({"info", spec_file(R"({"shape": {"type": "ruled", "profile_a": [{"type": "circle", "radius": 2}],
+        "profile_b": )" + square + "}}")});
+    ASSERT_EQ(aligned.exit_code, 0) << aligned.err;
+    EXPECT_NE(aligned.out.find("volume:               43.15"), std::string::npos) << aligned.out;
+    expect_bad_input_prefix(ratbez({"info", spec_file(R"({"shape": {"type": "ruled", "align": false,
+        "profile_a": [{"type": "circle", "radius": 2}], "profile_b": )" + square + "}}")}),
+                            "spec error: shape.profile_b: the lofted surface folds back on itself (no tangent plane) near (");
+    // The interpolate kind's own fields.
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "extrude", "direction": [0, 0, 1], "distance": 1,
+        "profile": [{"type": "interpolate", "closed": true, "degree": 3, "points": [[0, 0], [1, 0], [0, 1]]}]}})")}),
+                     "spec error: shape.profile[0].points: a degree-3 curve through them needs at least 4 distinct points, got 3 "
+                     "(lower the degree for fewer points)");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "extrude", "direction": [0, 0, 1], "distance": 1,
+        "profile": [{"type": "interpolate", "closed": true, "parameterization": "arc", "points": [[0, 0], [1, 0], [0, 1], [-1, 0]]}]}})")}),
+                     "spec error: shape.profile[0].parameterization: must be \"chord\", \"centripetal\" or \"uniform\", got \"arc\"");
+    expect_bad_input(ratbez({"info", spec_file(R"({"shape": {"type": "ruled", "align": 1,
+        "profile_a": [{"type": "circle", "radius": 2}], "profile_b": [{"type": "circle", "radius": 1, "center": [0, 0, 1]}]}})")}),
+                     "spec error: shape.align: must be true or false");
 }
 
 TEST_F(Cli, ModellingKindsNameTheirFields) {

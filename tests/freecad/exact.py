@@ -37,6 +37,9 @@ def _piece(spec):
                           spec.get("normal", (0, 0, 1)))
     if kind == "circle":
         return ratbez.circle(spec["radius"], spec.get("center", (0, 0, 0)), spec.get("normal", (0, 0, 1)))
+    if kind == "interpolate":
+        return ratbez.interpolate(spec["points"], spec.get("degree", 3), spec.get("parameterization", "chord"),
+                                  spec.get("tangents"), spec.get("closed", False))
     raise ValueError("unknown profile piece " + kind)
 
 
@@ -61,10 +64,11 @@ def solid(shape):
         return ratbez.torus(shape["major_radius"], shape["minor_radius"], center, axis)
     if kind == "ruled":
         return ratbez.loft([[_piece(p) for p in shape[side]] for side in ("profile_a", "profile_b")], degree=1,
-                           ruled=True)
+                           ruled=True, align=shape.get("align", True))
     if kind == "loft":
         return ratbez.loft([[_piece(p) for p in profile] for profile in shape["profiles"]],
-                           degree=shape.get("degree", 3), ruled=shape.get("ruled", False))
+                           degree=shape.get("degree", 3), ruled=shape.get("ruled", False),
+                           align=shape.get("align", True))
     pieces = [_piece(p) for p in shape["profile"]]
     if kind == "sweep":
         return ratbez.sweep(pieces, [_piece(p) for p in shape["path"]], shape.get("tolerance", 1e-6))

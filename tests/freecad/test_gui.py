@@ -21,6 +21,7 @@ sys.path.insert(0, os.environ.get("RATBEZ_TEST_DIR", os.path.dirname(os.path.abs
 import FreeCAD as App  # noqa: E402
 import FreeCADGui as Gui  # noqa: E402
 import Part  # noqa: E402
+import Sketcher  # noqa: E402,F401
 from PySide import QtCore, QtGui  # noqa: E402
 
 from harness import Suite, check, close, say  # noqa: E402
@@ -542,6 +543,117 @@ def test_export_and_check_commands():
     finally:
         dialogs.ask_export_options = original
     check(asked == ["Cylinder"] and "polyhedron" in open(path).read(), "export")
+
+
+# ---------------------------------------------------------------------------------------------------
+# Issue 26: RatBez_Interpolate from picked vertices through its panel, and the Align / start vertex controls of
+# the Ruled and Loft panels (an unaligned twist refused in the status line, OK refused until aligned again).
+
+def corner_square(name, half, z):
+    sketch = doc.addObject("Sketcher::SketchObject", name)
+    corners = [(-half, -half), (half, -half), (half, half), (-half, half)]  # from the SW corner
+    for a, b in zip(corners, corners[1:] + corners[:1]):
+        sketch.addGeometry(Part.LineSegment(V(*a, 0), V(*b, 0)))
+    sketch.Placement.Base = V(0, 0, z)
+    doc.recompute()
+    return sketch
+
+
+def circle_at(name, radius, z):
+    obj = doc.addObject("Part::Feature", name)
+    obj.Shape = Part.Wire(Part.makeCircle(radius, V(0, 0, z)))
+    doc.recompute()
+    return obj
+
+
+@suite.test
+def test_interpolate_command_and_panel():
+    check(Gui.Command.get("RatBez_Interpolate") is not None, "RatBez_Interpolate not registered")
+    new_document("Interpolate")
+    sketch = corner_square("Square", 2.0, 0.0)
+    select(sketch, "Vertex1", "Vertex2", "Vertex3", "Vertex4")
+    obj, panel = run_command("RatBez_Interpolate")
+    check([s for _, subs in obj.Source for s in subs] == ["Vertex1", "Vertex2", "Vertex3", "Vertex4"],
+          "the vertices in the order picked: {}".format(obj.Source))
+    check(obj.isValid() and not panel.points.table.isEnabled(), "following the selection: " + obj.getStatusString())
+    check(panel.points.table.rowCount() == 4, "the panel shows the 4 points")
+    length = obj.Shape.Length
+    panel.closed.setChecked(True)
+    process_events()
+    check(obj.Closed and obj.Shape.Edges[0].isClosed() and obj.Shape.Length > length, "closed in the preview")
+    check(not panel.tangents.isEnabled(), "no end tangents for a closed curve")
+    panel.degree.setValue(5)
+    process_events()
+    check(not obj.isValid() and panel.status.text().startswith("Source: "), "status: " + panel.status.text())
+    check(panel.accept() is False, "OK refused while the curve does not build")
+    panel.degree.setValue(2)
+    panel.parameterization.setCurrentIndex(1)
+    process_events()
+    check(obj.isValid() and obj.Parameterization == "centripetal", "degree 2, centripetal: " + obj.getStatusString())
+    # Own points: the table takes over (starting from the selection's points) and can grow.
+    panel.own_points()
+    process_events()
+    check(not obj.Source and panel.points.table.isEnabled() and len(obj.Points) == 4, "own points")
+    panel.add_point()
+    process_events()
+    check(len(obj.Points) == 5 and obj.isValid(), "a fifth point")
+    Gui.Selection.clearSelection()
+    screenshot("RatBez_Interpolate")
+    accept(panel, "Interpolate")
+
+
+@suite.test
+def test_ruled_panel_align_and_start_vertices():
+    new_document("Ruled")
+    circle = circle_at("Circle", 2.0, 0.0)
+    square = corner_square("Square", 1.5, 4.0)
+    select_all(circle, square)
+    obj, panel = run_command("RatBez_Ruled")
+    check(panel.align.isChecked() and obj.isValid(), "aligned by default: " + obj.getStatusString())
+    aligned = obj.ExactVolume
+    close(aligned, 43.16, 0.01, "the issue's circle -> square")
+    check(not panel.starts[1].isEnabled(), "aligned: only the first profile's start vertex matters")
+    panel.align.setChecked(False)
+    process_events()
+    check(not obj.isValid() and "lofted surface" in panel.status.text(), "unaligned: " + panel.status.text())
+    check(panel.accept() is False and panel.starts[1].isEnabled(), "OK refused; both start vertices editable")
+    panel.align.setChecked(True)
+    panel.starts[0].setValue(1)
+    process_events()
+    check(obj.isValid() and list(obj.StartVertices) == [1, 0], "start vertex stored: {}".format(obj.StartVertices))
+    close(obj.ExactVolume, aligned, 1e-9, "a circle has one vertex: the same solid")
+    Gui.Selection.clearSelection()
+    screenshot("RatBez_Ruled_align")
+    accept(panel, "Ruled")
+
+
+@suite.test
+def test_loft_panel_align_and_section_start_vertex():
+    new_document("Loft")
+    bottom = corner_square("Bottom", 1.0, 0.0)
+    top = corner_square("Top", 1.0, 2.0)
+    select_all(bottom, top)
+    obj, panel = run_command("RatBez_Loft")
+    panel.ruled.setChecked(True)
+    process_events()
+    close(obj.ExactVolume, 8.0, 1e-9, "square to square: the prism")
+    panel.align.setChecked(False)
+    panel.list.setCurrentRow(1)
+    process_events()
+    check(panel.start.isEnabled(), "start vertex of section 2 editable while unaligned")
+    panel.start.setValue(3)  # half a turn round: every ruling through the axis
+    process_events()
+    check(list(obj.StartVertices) == [0, 3] and not obj.isValid(), "twisted: {}".format(panel.status.text()))
+    panel.align.setChecked(True)
+    process_events()
+    close(obj.ExactVolume, 8.0, 1e-9, "aligned again, whatever the start vertex")
+    check(not panel.start.isEnabled(), "aligned: section 2's start vertex does not matter")
+    panel.list.setCurrentRow(0)
+    process_events()
+    check(panel.start.isEnabled() and panel.start.value() == 0, "section 1's start vertex shown")
+    Gui.Selection.clearSelection()
+    screenshot("RatBez_Loft_align")
+    accept(panel, "Loft")
 
 
 @suite.test

@@ -22,9 +22,9 @@ def test_keywords_follow_the_contract():
     expected = [
         (ratbez.revolve_surface, ["curve", "axis_point", "axis_dir", "angle"]),
         (ratbez.extrude_surface, ["curve", "direction", "distance"]),
-        (ratbez.ruled_surface, ["curve_a", "curve_b"]),
-        (ratbez.loft_surface, ["curves", "degree"]),
-        (ratbez.loft, ["profiles", "degree", "ruled"]),
+        (ratbez.ruled_surface, ["curve_a", "curve_b", "align"]),
+        (ratbez.loft_surface, ["curves", "degree", "align"]),
+        (ratbez.loft, ["profiles", "degree", "ruled", "align"]),
         (ratbez.sweep_surface, ["curve", "path", "tolerance"]),
         (ratbez.sweep, ["profile", "path", "tolerance"]),
         (ratbez.continuity, ["a", "b"]),

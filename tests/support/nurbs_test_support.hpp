@@ -110,4 +110,17 @@ inline InteriorParameter random_interior_parameter(Rng& rng, int degree, const s
     return {a + uniform(rng, 0.1, 0.9) * (b - a), a, b};
 }
 
+// The same point set at the same (affinely mapped) parameters, to `tolerance` of the original's control-box
+// size: a representation changed (degree elevation, knot merging), never the curve.
+inline void expect_same_curve(const NurbsCurve& original, const NurbsCurve& changed, double tolerance = 1e-12) {
+    const Interval a = original.domain(), b = changed.domain();
+    const double size = original.control_box().diagonal();
+    for (int k = 0; k <= 200; ++k) {
+        const double f = k / 200.0;
+        ASSERT_LE(distance(original.point(a.min + f * a.width()), changed.point(k == 200 ? b.max : b.min + f * b.width())),
+                  tolerance * size)
+            << "at fraction " << f;
+    }
+}
+
 }  // namespace ratbez::test

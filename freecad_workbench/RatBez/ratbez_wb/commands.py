@@ -342,10 +342,13 @@ def _selected_exportable():
     import RatBez
     return [o for o in Gui.Selection.getSelection() if RatBez.exportable(o)]
 
+from .interpolate_command import InterpolateCommand  # noqa: E402 (it builds on _CreateCommand above)
+
+
 
 CREATE_COMMANDS = [BezierCurveCommand, BezierSurfaceCommand, CylinderCommand, ConeCommand,
                    SphereCommand, TorusCommand, RevolveCommand, ExtrudeCommand, RuledCommand, LoftCommand,
-                   SweepCommand]
+                   SweepCommand, InterpolateCommand]
 CREATE_COMMAND_NAMES = [c.command_name() for c in CREATE_COMMANDS]
 TOOL_COMMAND_NAMES = ["RatBez_ExportOpenSCAD", "RatBez_CheckOCCT"]
 

@@ -448,6 +448,36 @@ class SectionsFeature(ProfileFeature):
         return self.sections
 
 
+# Issue 26: how the sections are matched to one another (Ruled, Loft).
+_ALIGN = ("App::PropertyBool", "Align",
+          _tip("Match the profiles by arc length: each runs the same way, each starts where the rulings to the one "
+               "before it are shortest (least twist), and every corner or joint of one meets the point of the other at "
+               "the same fraction of its length; the first profile's start vertex sets the seam. Off: the profiles' "
+               "start vertices and parameters are matched as they are"), True)
+_START_VERTICES = ("App::PropertyIntegerList", "StartVertices",
+                   _tip("The vertex each profile starts at, in profile order, counted from 1 along its edges (0 or "
+                        "missing: where the profile starts). With Align only the first profile's matters (the seam); "
+                        "without, every profile's start is matched to the others'"), lambda: [])
+
+
+def start_at_vertex(curves, vertex, prop, where=""):
+    """The profile's curves (one closed loop, in order) started at its vertex number `vertex` (1-based, the start
+    of curve vertex - 1; 0: as it is)."""
+    if vertex == 0:
+        return curves
+    if not 1 <= vertex <= len(curves):
+        raise Failure(prop, "{}{}".format(where + ": " if where else "", translate(
+            "start vertex {} does not exist: the profile has {} vertices (0 for its own start)").format(vertex, len(curves))))
+    return curves[vertex - 1:] + curves[:vertex - 1]
+
+
+def matched_sections(obj, profiles, words):
+    """The curves of each profile, each started at its StartVertices entry."""
+    starts = list(obj.StartVertices) + [0] * len(profiles)
+    return [start_at_vertex(p.curves(), starts[k], "StartVertices", words[k][1] or words[k][0])
+            for k, p in enumerate(profiles)]
+
+
 class Ruled(SectionsFeature):
     TYPE = "RatBez::Ruled"
     PROPERTIES = (
@@ -456,15 +486,18 @@ class Ruled(SectionsFeature):
          None),
         ("App::PropertyLinkSub", "Profile2",
          _tip("Second closed planar profile, entirely in front of the first one's plane; straight rulings join "
-              "the two from their starting points on"), None),
+              "the two (matched as Align says)"), None),
+        _ALIGN,
+        _START_VERTICES,
     )
 
     def section_words(self, obj):
         return [("Profile1", ""), ("Profile2", "")]
 
     def build_solid(self, obj):
-        first, second = self.resolve_sections(obj, [obj.Profile1, obj.Profile2])
-        return kernel.ratbez().loft([first.curves(), second.curves()], degree=1, ruled=True)
+        profiles = self.resolve_sections(obj, [obj.Profile1, obj.Profile2])
+        return kernel.ratbez().loft(matched_sections(obj, profiles, self.section_words(obj)), degree=1, ruled=True,
+                                    align=obj.Align)
 
 
 LOFT_MAX_DEGREE = 25
@@ -482,6 +515,8 @@ class Loft(SectionsFeature):
               "the surface passes through every section exactly"), (3, 1, LOFT_MAX_DEGREE, 1)),
         ("App::PropertyBool", "Ruled", _tip("Join consecutive sections by straight rulings (degree 1 across)"),
          False),
+        _ALIGN,
+        _START_VERTICES,
     )
 
     def section_links(self, obj):
@@ -505,7 +540,8 @@ class Loft(SectionsFeature):
         if len(links) < 2:
             raise Failure("Sections", translate("a loft needs at least 2 sections, got {}").format(len(links)))
         sections = self.resolve_sections(obj, links)
-        return kernel.ratbez().loft([p.curves() for p in sections], degree=obj.Degree, ruled=obj.Ruled)
+        return kernel.ratbez().loft(matched_sections(obj, sections, self.section_words(obj)), degree=obj.Degree,
+                                    ruled=obj.Ruled, align=obj.Align)
 
 
 class Sweep(ProfileFeature):

@@ -786,21 +786,50 @@ class ExtrudePanel(ProfilePanel):
 # ---------------------------------------------------------------------------------------------------
 # Solids through several profiles (ruled, loft) and along a path (sweep)
 
+def start_vertex_spin(panel, tooltip):
+    """A spin box for a profile's start vertex (0: the profile's own start), connected to the live preview."""
+    spin = QtGui.QSpinBox()
+    spin.setRange(0, 999)
+    spin.setSpecialValueText(translate("its own start"))
+    spin.setToolTip(tooltip)
+    spin.valueChanged.connect(panel.changed)
+    return spin
+
+
 class RuledPanel(TaskPanel):
     TITLE, ICON = "RatBez ruled solid", "RatBez_Ruled"
 
     def build(self):
         self.rows = [LinkRow(self, prop, label, translate("Make the selected sketch, wire, edges or face this profile"))
                      for prop, label in (("Profile1", "First profile"), ("Profile2", "Second profile"))]
+        self.align = self.add_check("Align sections (least twist)", self.tooltip("Align"))
+        self.starts = []
+        for label in ("Start vertex, first", "Start vertex, second"):
+            spin = start_vertex_spin(self, self.tooltip("StartVertices"))
+            self.layout.addRow(translate(label), spin)
+            self.starts.append(spin)
 
     def load(self):
         for row in self.rows:
             row.load()
+        self.align.setChecked(self.obj.Align)
+        starts = list(self.obj.StartVertices) + [0, 0]
+        for spin, start in zip(self.starts, starts):
+            spin.setValue(start)
+
+    def store(self):
+        self.obj.Align = self.align.isChecked()
+        self.obj.StartVertices = [spin.value() for spin in self.starts]
+
+    def shown(self):
+        # Aligned, only the first profile's start matters (the seam).
+        self.starts[1].setEnabled(not self.align.isChecked())
 
 
 class LoftPanel(TaskPanel):
     """The sections as an ordered list (as Part Loft's), with buttons to add the selected profiles, remove
-    one and move one up or down; the degree across them and the Ruled switch."""
+    one and move one up or down; the degree across them, the Ruled and Align switches and the start vertex of
+    the section selected in the list."""
 
     TITLE, ICON = "RatBez loft", "RatBez_Loft"
 
@@ -827,14 +856,30 @@ class LoftPanel(TaskPanel):
         self.degree.valueChanged.connect(self.changed)
         self.layout.addRow(translate("Degree across"), self.degree)
         self.ruled = self.add_check("Ruled surface", self.tooltip("Ruled"))
+        self.align = self.add_check("Align sections (least twist)", self.tooltip("Align"))
+        self.start = start_vertex_spin(self, self.tooltip("StartVertices"))
+        self.layout.addRow(translate("Start vertex of the selected section"), self.start)
+        self.list.currentRowChanged.connect(self.section_picked)
         self.sections = []
+        self.starts = []
 
     def load(self):
         self.sections = self.proxy.section_links(self.obj)
+        self.starts = (list(self.obj.StartVertices) + [0] * len(self.sections))[:len(self.sections)]
         self.fill()
         self.degree.setValue(self.obj.Degree)
         self.ruled.setChecked(self.obj.Ruled)
         self.degree.setEnabled(not self.obj.Ruled)
+        self.align.setChecked(self.obj.Align)
+
+    def section_picked(self, index):
+        # Not filling(): this also runs inside load's filling, whose state it must leave as it was.
+        loading, self.loading = self.loading, True
+        try:
+            self.start.setValue(self.starts[index] if 0 <= index < len(self.starts) else 0)
+        finally:
+            self.loading = loading
+        self.shown()
 
     def fill(self, current=-1):
         self.list.clear()
@@ -851,6 +896,7 @@ class LoftPanel(TaskPanel):
         for obj, subs in links:
             faces = [s for s in subs if s.startswith("Face")]
             self.sections.extend([(obj, [f]) for f in faces] if faces and len(faces) == len(subs) else [(obj, subs)])
+        self.starts += [0] * (len(self.sections) - len(self.starts))
         self.fill(len(self.sections) - 1)
         self.changed()
 
@@ -858,6 +904,7 @@ class LoftPanel(TaskPanel):
         index = self.list.currentRow()
         if 0 <= index < len(self.sections):
             del self.sections[index]
+            del self.starts[index]
             self.fill(min(index, len(self.sections) - 1))
             self.changed()
 
@@ -866,6 +913,7 @@ class LoftPanel(TaskPanel):
         target = index + step
         if 0 <= index < len(self.sections) and 0 <= target < len(self.sections):
             self.sections[index], self.sections[target] = self.sections[target], self.sections[index]
+            self.starts[index], self.starts[target] = self.starts[target], self.starts[index]
             self.fill(target)
             self.changed()
 
@@ -874,9 +922,17 @@ class LoftPanel(TaskPanel):
         self.obj.Sections = [(obj, subs or [""]) for obj, subs in self.sections]
         self.obj.Degree = self.degree.value()
         self.obj.Ruled = self.ruled.isChecked()
+        self.obj.Align = self.align.isChecked()
+        index = self.list.currentRow()
+        if 0 <= index < len(self.starts) and self.start.isEnabled():
+            self.starts[index] = self.start.value()
+        self.obj.StartVertices = list(self.starts)
 
     def shown(self):
         self.degree.setEnabled(not self.ruled.isChecked())
+        # Aligned, only the first section's start matters (the seam).
+        index = self.list.currentRow()
+        self.start.setEnabled(0 <= index < len(self.sections) and (index == 0 or not self.align.isChecked()))
 
 
 class SweepPanel(TaskPanel):
@@ -1092,3 +1148,5 @@ PANELS = {
     "RatBez::BezierCurve": BezierCurvePanel,
     "RatBez::BezierSurface": BezierSurfacePanel,
 }
+
+from . import interpolate_panel  # noqa: E402,F401 (registers the Interpolate panel in PANELS)

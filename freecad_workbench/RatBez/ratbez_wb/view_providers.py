@@ -16,6 +16,7 @@ _ICONS = {
     "RatBez::Ruled": "RatBez_Ruled",
     "RatBez::Loft": "RatBez_Loft",
     "RatBez::Sweep": "RatBez_Sweep",
+    "RatBez::Interpolate": "RatBez_Interpolate",
 }
 
 # Edit mode 0 (Gui::ViewProvider::Default) is the task panel; other modes (Transform, ...) stay FreeCAD's.

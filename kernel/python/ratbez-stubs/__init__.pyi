@@ -52,6 +52,10 @@ class BezierCurve(object):
         """closest_point for many points at once (a list or N x 3 array of points): the list of their feet, the curve's or surface's search structure built once (much faster than calling closest_point in a loop)."""
     def curvature(self, u: float) -> float:
         """The curvature at u (1 / model units, >= 0): |C' x C''| / |C'|^3, its limit where C' vanishes, inf at a cusp (000 Ex1.3), 0 at an inflection."""
+    def length(self, u0: Optional[float] = ..., u1: Optional[float] = ...) -> float:
+        """The arc length from u0 to u1 (defaults: the domain's ends; negative when u1 < u0), by adaptive Gauss-Legendre quadrature on every knot span (about 1e-14 relative: a circle reads 2 pi r)."""
+    def parameter_at_length(self, s: float) -> float:
+        """The parameter u at which the arc length from the domain's start reaches s (0 <= s <= length()), to the same accuracy (Newton on the length, bracketed)."""
     def evaluate(self, us: ArrayLike, order: int = ...) -> numpy.ndarray:
         """The points (order 0) or the order-th derivatives at every parameter of us (any order, repeats
         allowed, each inside the domain): a float64 array of shape (len(us), 3). The GIL is released."""
@@ -329,6 +333,12 @@ class NurbsCurve(object):
         """closest_point for many points at once (a list or N x 3 array of points): the list of their feet, the curve's or surface's search structure built once (much faster than calling closest_point in a loop)."""
     def curvature(self, u: float) -> float:
         """The curvature at u (1 / model units, >= 0): |C' x C''| / |C'|^3, its limit where C' vanishes, inf at a cusp (000 Ex1.3), 0 at an inflection."""
+    def length(self, u0: Optional[float] = ..., u1: Optional[float] = ...) -> float:
+        """The arc length from u0 to u1 (defaults: the domain's ends; negative when u1 < u0), by adaptive Gauss-Legendre quadrature on every knot span (about 1e-14 relative: a circle reads 2 pi r)."""
+    def parameter_at_length(self, s: float) -> float:
+        """The parameter u at which the arc length from the domain's start reaches s (0 <= s <= length()), to the same accuracy (Newton on the length, bracketed)."""
+    def elevated(self, times: int = ...) -> NurbsCurve:
+        """The same curve with degree + times (The NURBS Book A5.9): every knot keeps its continuity (multiplicity s becomes s + times), rational curves exactly."""
     def evaluate(self, us: ArrayLike, order: int = ...) -> numpy.ndarray:
         """The points (order 0) or the order-th derivatives at every parameter of us (any order, repeats
         allowed, each inside the domain): a float64 array of shape (len(us), 3). The GIL is released."""
@@ -424,6 +434,8 @@ class NurbsSurface(object):
         """closest_point for many points at once (a list or N x 3 array of points): the list of their feet, the curve's or surface's search structure built once (much faster than calling closest_point in a loop)."""
     def curvatures(self, u: float, v: float) -> tuple:
         """Principal curvatures at (u, v): (k1, k2, dir1, dir2) with k1 >= k2 in 1 / model units, signed against normal(u, v) (a sphere with outward normal has -1/r), dir1, dir2 unit tangent directions. At poles the limit."""
+    def elevated(self, times_u: int = ..., times_v: int = ...) -> NurbsSurface:
+        """The same surface with degree_u + times_u and degree_v + times_v (A5.9 on every row and column of the net; the same surface, rational ones exactly)."""
     def evaluate(self, us: ArrayLike, vs: ArrayLike, du: int = ..., dv: int = ...) -> numpy.ndarray:
         """The (du, dv) partial d^(du+dv) S / du^du dv^dv (du = dv = 0: the points) at every (us[i], vs[j]):
         a float64 array of shape (len(us), len(vs), 3). us and vs in any order, inside the domain."""
@@ -558,6 +570,9 @@ def all_bernstein(n: int, u: float) -> List[float]:
 def all_bernstein_derivatives(n: int, k: int, u: float) -> List[float]:
     """[d^k/du^k B_{0,n}(u), ..., d^k/du^k B_{n,n}(u)], k >= 0 (003: B' = n (B_{i-1,n-1} - B_{i,n-1}))."""
 
+def approximate(points: Sequence[Point], tolerance: float, degree: int = ...) -> NurbsCurve:
+    """The least-squares B-spline (The NURBS Book 9.4.1: chord-length parameters, knots by Eq. 9.68-9.69, the end points interpolated) with the fewest control points that brings every point within `tolerance` of the curve at its parameter (found by bisection; one control point fewer misses the tolerance)."""
+
 def arc(radius: float, start_deg: float, end_deg: float, center: Point = ..., normal: Point = ...) -> NurbsCurve:
     """A circular arc from start_deg to end_deg as an exact NurbsCurve."""
 
@@ -642,17 +657,23 @@ def hermite_to_bezier(p0: Point, t0: Point, p1: Point, t1: Point) -> BezierCurve
 def horner(coefficients: Union[Sequence[float], Sequence[Point], Sequence[Sequence[Point]]], u: float, v: Optional[float] = ...) -> object:
     """Horner's rule. With u only: a_0 + a_1 u + ... for numbers (A1.1, a float) or points (a point). With u and v: the power basis surface sum a[i][j] u^i v^j of a net of points (A1.6, Horner2). Any finite u, v."""
 
+def interpolate(points: Sequence[Point], degree: int = ..., parameterization: str = ..., tangents: Optional[Tuple[Optional[Point], Optional[Point]]] = ..., closed: bool = ...) -> NurbsCurve:
+    """The B-spline curve of the given degree through every point (The NURBS Book A9.1): parameters by "chord" length (Eq. 9.5), "centripetal" (Eq. 9.6) or "uniform" (Eq. 9.3), knots averaged (Eq. 9.8), the banded system solved exactly; C(t_k) = points[k] to rounding, the domain [0, 1]. tangents=(start, end), either None: C'(0) and C'(1) along them, as long as the total chord (Eq. 9.22 knots). closed=True: the periodic curve through the points and back to the first (C^(p-1) there too), starting at it."""
+
+def interpolate_surface(grid: Sequence[Sequence[Point]], degree_u: int = ..., degree_v: int = ...) -> NurbsSurface:
+    """The B-spline surface through every grid point (The NURBS Book A9.4): grid[i][j], i along u, j along v; parameters averaged over the columns (u) and rows (v) from chord lengths, knots averaged; S(u_i, v_j) = grid[i][j] to rounding, the domain [0, 1] x [0, 1]."""
+
 def join(curves: Union[Curve, Sequence[Curve]]) -> NurbsCurve:
     """One NurbsCurve from curves meeting end to start: the highest degree, knots of multiplicity p - k at C^k joints."""
 
 def line_segment(start: Point, end: Point) -> NurbsCurve:
     """The straight segment from start to end as a degree-1 NurbsCurve."""
 
-def loft(profiles: Sequence[Union[Curve, Sequence[Curve]]], degree: int = ..., ruled: bool = ...) -> Solid:
-    """A solid lofted through >= 2 closed planar profiles (each a curve or a list of curves joined end to end), capped by the first and last; ruled=True uses straight rulings between consecutive profiles."""
+def loft(profiles: Sequence[Union[Curve, Sequence[Curve]]], degree: int = ..., ruled: bool = ..., align: bool = ...) -> Solid:
+    """A solid lofted through >= 2 closed planar profiles (each a curve or a list of curves joined end to end), capped by the first and last; ruled=True uses straight rulings between consecutive profiles. align=True (the default) matches the profiles by arc length from the start points of least twist; align=False by their own starts and parameters. One side face per smooth run (cut where every profile has a corner). A loft whose side surface meets itself raises ratbez.Error saying where."""
 
-def loft_surface(curves: Union[Curve, Sequence[Curve]], degree: int = ...) -> NurbsSurface:
-    """The skinned surface through >= 2 section curves (The NURBS Book 10.3), passing through every section exactly; degree across >= 1 (at most sections - 1 is used). u along the sections, v across, both [0, 1]."""
+def loft_surface(curves: Union[Curve, Sequence[Curve]], degree: int = ..., align: bool = ...) -> NurbsSurface:
+    """The skinned surface through >= 2 section curves (The NURBS Book 10.3), passing through every section exactly; degree across >= 1 (at most sections - 1 is used). u along the sections, v across, both [0, 1]. align=True (the default) matches the sections by normalised arc length from the start points of least twist (align=False: by parameter, as given). A surface that meets itself raises ratbez.Error."""
 
 def max_deviation(solid: Solid, mesh: Mesh, samples_per_edge: int = ..., progress: Optional[Callable[[float], object]] = ...) -> float:
     """The largest distance from a point of `mesh` to the solid's exact boundary (model units): every
@@ -737,8 +758,8 @@ def revolve(profile: Union[Curve, Sequence[Curve]], axis_point: Point = ..., axi
 def revolve_surface(curve: Curve, axis_point: Point = ..., axis_dir: Point = ..., angle: float = ...) -> NurbsSurface:
     """The exact surface of revolution of any curve (open or closed) about the axis by angle degrees in (0, 360]: u runs along the rotation over [0, 1], v along the curve (its domain)."""
 
-def ruled_surface(curve_a: Curve, curve_b: Curve) -> NurbsSurface:
-    """The exact ruled surface between two curves (degrees raised, knots merged): u along both over [0, 1], v from curve_a (0) to curve_b (1) along straight rulings."""
+def ruled_surface(curve_a: Curve, curve_b: Curve, align: bool = ...) -> NurbsSurface:
+    """The exact ruled surface between two curves (degrees raised, knots merged): u along both over [0, 1], v from curve_a (0) to curve_b (1) along straight rulings. align=True (the default) matches the curves by normalised arc length (closed ones oriented alike and started at the points of least twist, open ones end to end); align=False rules point u of one to point u of the other. A surface whose rulings cross raises ratbez.Error saying where."""
 
 def sphere(radius: float, center: Point = ...) -> Solid:
     """A sphere of radius > 0 about center, exact rational faces."""

@@ -203,29 +203,41 @@ void bind_modelling(py::module_& m) {
         "model units; u along the curve, v over [0, 1].");
     m.def(
         "ruled_surface",
-        [](const py::object& a, const py::object& b) { return ruled_surface(to_curve(a, "curve_a"), to_curve(b, "curve_b")); },
-        py::arg("curve_a"), py::arg("curve_b"),
+        [](const py::object& a, const py::object& b, bool align) {
+            return ruled_surface(to_curve(a, "curve_a"), to_curve(b, "curve_b"), align);
+        },
+        py::arg("curve_a"), py::arg("curve_b"), py::arg("align") = true,
         "The exact ruled surface between two curves (degrees raised, knots merged): u along both over [0, 1], "
-        "v from curve_a (0) to curve_b (1) along straight rulings.");
+        "v from curve_a (0) to curve_b (1) along straight rulings. align=True (the default) matches the curves "
+        "by normalised arc length (closed ones oriented alike and started at the points of least twist, open "
+        "ones end to end); align=False rules point u of one to point u of the other. A surface whose rulings "
+        "cross raises ratbez.Error saying where.");
     m.def(
         "loft_surface",
-        [](const py::object& curves, int degree) { return loft_surface(to_curves(curves, "curves"), degree); },
-        py::arg("curves"), py::arg("degree") = 3,
+        [](const py::object& curves, int degree, bool align) {
+            return loft_surface(to_curves(curves, "curves"), degree, align);
+        },
+        py::arg("curves"), py::arg("degree") = 3, py::arg("align") = true,
         "The skinned surface through >= 2 section curves (The NURBS Book 10.3), passing through every section "
-        "exactly; degree across >= 1 (at most sections - 1 is used). u along the sections, v across, both [0, 1].");
+        "exactly; degree across >= 1 (at most sections - 1 is used). u along the sections, v across, both [0, 1]. "
+        "align=True (the default) matches the sections by normalised arc length from the start points of least "
+        "twist (align=False: by parameter, as given). A surface that meets itself raises ratbez.Error.");
     m.def(
         "loft",
-        [](const py::object& profiles, int degree, bool ruled) {
+        [](const py::object& profiles, int degree, bool ruled, bool align) {
             if (py::isinstance<py::str>(profiles) || !PySequence_Check(profiles.ptr()))
                 throw Error("profiles", "expected a list of profiles");
             std::vector<Profile> list;
             std::size_t index = 0;
             for (py::handle p : profiles) list.push_back(to_profile(p, "profiles[" + std::to_string(index++) + "]"));
-            return loft(list, degree, ruled);
+            return loft(list, degree, ruled, align);
         },
-        py::arg("profiles"), py::arg("degree") = 3, py::arg("ruled") = false,
+        py::arg("profiles"), py::arg("degree") = 3, py::arg("ruled") = false, py::arg("align") = true,
         "A solid lofted through >= 2 closed planar profiles (each a curve or a list of curves joined end to "
-        "end), capped by the first and last; ruled=True uses straight rulings between consecutive profiles.");
+        "end), capped by the first and last; ruled=True uses straight rulings between consecutive profiles. "
+        "align=True (the default) matches the profiles by arc length from the start points of least twist; "
+        "align=False by their own starts and parameters. One side face per smooth run (cut where every "
+        "profile has a corner). A loft whose side surface meets itself raises ratbez.Error saying where.");
     m.def(
         "sweep_surface",
         [](const py::object& curve, const py::object& path, double tolerance) {

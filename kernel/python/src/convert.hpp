@@ -52,6 +52,7 @@ void bind_solids(py::module_& module);
 void bind_tessellation(py::module_& module);
 void bind_io(py::module_& module);
 void bind_modelling(py::module_& module);
+void bind_curve_tools(py::module_& module);
 void bind_evaluation(py::module_& module);
 void bind_transforms(py::module_& module);
 void bind_values(py::module_& module);

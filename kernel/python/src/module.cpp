@@ -64,6 +64,7 @@ PYBIND11_MODULE(ratbez, m) {
     ratbez::python::bind_tessellation(m);
     ratbez::python::bind_io(m);
     ratbez::python::bind_modelling(m);  // adds methods to the classes above
+    ratbez::python::bind_curve_tools(m);  // likewise
     ratbez::python::bind_evaluation(m);
     ratbez::python::bind_transforms(m);
     ratbez::python::bind_values(m);

@@ -10,12 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "ratbez/degree_elevation.hpp"
 #include "ratbez/nurbs_curve.hpp"
 
 namespace ratbez {
-
-// The same curve with degree + times (times >= 0), by A5.9. Throws Error naming "times" when negative.
-NurbsCurve elevate_degree(const NurbsCurve& curve, int times);
 
 // The curves on a common clamped knot vector over [0, 1], all of the highest degree among them; the k-th
 // result is the k-th curve. Knots of different curves closer than 1e-12 (on [0, 1]) are taken as one,

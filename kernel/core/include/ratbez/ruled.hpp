@@ -4,8 +4,12 @@
 // control polygons become the two columns of a degree (p, 1) net. The surface is exact for any rational
 // curves: at every u the isocurve in v is the straight segment from a(u) to b(u) (a convex combination of
 // the two points, rationally parameterised when their weights differ), and S(u, 0) = a(u), S(u, 1) = b(u).
-// Which point of b a point of a is ruled to is decided by the parameter on [0, 1]: to pair corners, give
-// the curves knots (or pieces) at the same fractions of their domains.
+// Which point of b a point of a is ruled to: with `align` (the default) the curves are first matched by
+// normalised arc length (section_alignment.hpp in the modelling sources: closed curves oriented alike and
+// started at the points of least twist, open curves end to end, breakpoints of either matched exactly by
+// arc length); without it, by the parameter on [0, 1], as given. A surface whose rulings cross or pinch is
+// refused (Error naming "curve_b" and the place; analysis/self_intersection.hpp), unless a side collapses to
+// a point (curves that share an end), which the certificate does not cover.
 
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/nurbs_surface.hpp"
@@ -13,6 +17,6 @@
 namespace ratbez {
 
 // u runs along the curves over [0, 1], v from curve_a (v = 0) to curve_b (v = 1).
-NurbsSurface ruled_surface(const NurbsCurve& curve_a, const NurbsCurve& curve_b);
+NurbsSurface ruled_surface(const NurbsCurve& curve_a, const NurbsCurve& curve_b, bool align = true);
 
 }  // namespace ratbez

@@ -38,7 +38,10 @@
 // (the control points' extent along the principal normal times the curvature >= 1 at any reference
 // point; conservative: the section's control points bound it), or two parts of the path more than half a
 // turn (pi rho along the path, rho the section's largest control-point distance from the path's start)
-// apart coming closer than 2 rho. Tolerance: finite, > 0 and at least 1e-12 of the sweep's size.
+// apart coming closer than 2 rho. Tolerance: finite, > 0 and at least 1e-12 of the sweep's size. Whatever
+// passes those checks is certified not to meet itself (analysis/self_intersection.hpp, on the swept surfaces
+// side by side, closed round and along as the sections and the path are), else refused naming the section
+// and the place.
 
 #include <vector>
 

@@ -47,23 +47,28 @@ NurbsCurve clamped(const NurbsCurve& curve) {
 
 NurbsCurve clamped_ends(const NurbsCurve& curve) {
     if (is_clamped(curve)) return curve;
-    const int p = curve.degree();
     const Interval d = curve.domain();
+    return restricted(curve, d.min, d.max);
+}
+
+NurbsCurve restricted(const NurbsCurve& curve, double a, double b) {
+    const int p = curve.degree();
     NurbsCurve c = curve;
-    for (const double end : {d.min, d.max}) {
+    for (const double end : {a, b}) {
         const int multiplicity = static_cast<int>(std::count(c.knots().begin(), c.knots().end(), end));
         if (multiplicity < p) c = c.insert_knot(end, p - multiplicity);
     }
-    // Keep U[s..e]: one knot before the first d.min and one after the last d.max, set to the ends. The basis
-    // function N_s (and N_{e-p-1}) only reaches the domain through the p equal knots after U[s], so moving
-    // U[s] onto them changes nothing there; the control points P_s .. P_{e-p-1} are the ones in use.
+    // Keep U[s..e]: one knot before the first a and one after the last b, set to the ends (or the end knots
+    // themselves where a or b already has multiplicity p + 1). The basis function N_s (and N_{e-p-1}) only
+    // reaches [a, b] through the p equal knots after U[s], so moving U[s] onto them changes nothing there;
+    // the control points P_s .. P_{e-p-1} are the ones in use.
     const std::vector<double>& knots = c.knots();
-    const std::size_t first = static_cast<std::size_t>(std::lower_bound(knots.begin(), knots.end(), d.min) - knots.begin());
-    const std::size_t last = static_cast<std::size_t>(std::upper_bound(knots.begin(), knots.end(), d.max) - knots.begin()) - 1;
-    const std::size_t s = first - 1, e = last + 1;
+    const std::size_t first = static_cast<std::size_t>(std::lower_bound(knots.begin(), knots.end(), a) - knots.begin());
+    const std::size_t last = static_cast<std::size_t>(std::upper_bound(knots.begin(), knots.end(), b) - knots.begin()) - 1;
+    const std::size_t s = first > 0 ? first - 1 : 0, e = last + 1 < knots.size() ? last + 1 : last;
     std::vector<double> new_knots(knots.begin() + static_cast<std::ptrdiff_t>(s), knots.begin() + static_cast<std::ptrdiff_t>(e) + 1);
-    new_knots.front() = d.min;
-    new_knots.back() = d.max;
+    new_knots.front() = a;
+    new_knots.back() = b;
     const std::vector<Vec4>& pw = c.homogeneous_points();
     std::vector<Vec4> points(pw.begin() + static_cast<std::ptrdiff_t>(s),
                              pw.begin() + static_cast<std::ptrdiff_t>(e - static_cast<std::size_t>(p)));

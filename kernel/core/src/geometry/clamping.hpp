@@ -16,6 +16,10 @@ NurbsCurve clamped(const NurbsCurve& curve);
 // the knots and control points outside the domain dropped): interior knots keep their multiplicities, so
 // the representation keeps the curve's continuity (clamped() makes every break point C0).
 NurbsCurve clamped_ends(const NurbsCurve& curve);
+// The part of the curve over [a, b] (inside its domain, a < b) on a clamped knot vector over [a, b]: knots a
+// and b inserted up to multiplicity p (A5.1), the knots and control points outside dropped. Same curve,
+// same parameterisation there.
+NurbsCurve restricted(const NurbsCurve& curve, double a, double b);
 // A clamped curve with its first (at_end = false) or last control point moved to `point`, keeping its weight.
 NurbsCurve with_end_point(const NurbsCurve& curve, bool at_end, const Vec3& point);
 

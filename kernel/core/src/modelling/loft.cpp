@@ -7,7 +7,9 @@
 
 #include "geometry/interpolation.hpp"
 #include "math/numeric_internal.hpp"
+#include "modelling/embedding_check.hpp"
 #include "modelling/planar_profile.hpp"
+#include "modelling/section_alignment.hpp"
 #include "modelling/tube_shell.hpp"
 #include "ratbez/compatible_curves.hpp"
 #include "ratbez/error.hpp"
@@ -93,14 +95,47 @@ void require_compatible_net(const std::vector<NurbsCurve>& curves, const std::st
     limits::require_surface_points(curves.size(), columns, argument);
 }
 
+// The surface cut along u at knots of multiplicity >= p (creases, where its control rows meet): the pieces
+// side by side, each with the rows between its ends and the knots between them (no change to the surface).
+std::vector<NurbsSurface> split_along_u(const NurbsSurface& surface, const std::vector<double>& at) {
+    const int p = surface.degree_u();
+    const std::vector<double>& knots = surface.knots_u();
+    const Interval d = surface.domain_u();
+    std::vector<std::pair<double, int>> cuts{{d.min, 0}};  // (knot, the control row at it)
+    for (const double c : at) {
+        const auto first = std::lower_bound(knots.begin(), knots.end(), c);
+        const auto count = std::count(knots.begin(), knots.end(), c);
+        if (c <= d.min || c >= d.max || count < p) continue;
+        cuts.emplace_back(c, static_cast<int>(first - knots.begin()) - 1);
+    }
+    cuts.emplace_back(d.max, surface.rows() - 1);
+    if (cuts.size() == 2) return {surface};
+    std::vector<NurbsSurface> pieces;
+    const std::vector<Vec4>& pw = surface.homogeneous_points();
+    const auto columns = static_cast<std::size_t>(surface.columns());
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+        const auto [a, row_a] = cuts[k];
+        const auto [b, row_b] = cuts[k + 1];
+        std::vector<double> piece_knots(to_size(p + 1), a);
+        for (const double u : knots)
+            if (u > a && u < b) piece_knots.push_back(u);
+        piece_knots.insert(piece_knots.end(), to_size(p + 1), b);
+        std::vector<Vec4> net(pw.begin() + static_cast<std::ptrdiff_t>(to_size(row_a) * columns),
+                              pw.begin() + static_cast<std::ptrdiff_t>(to_size(row_b + 1) * columns));
+        pieces.push_back(NurbsSurface::from_homogeneous(p, surface.degree_v(), std::move(piece_knots), surface.knots_v(),
+                                                        std::move(net), surface.is_rational()));
+    }
+    return pieces;
+}
+
 }  // namespace
 
-Skin skin(const std::vector<NurbsCurve>& curves, int degree) {
+Skin skin(const std::vector<NurbsCurve>& curves, int degree, bool align) {
     require(curves.size() >= 2, "curves", [&] { return "a loft needs at least 2 sections, got " + std::to_string(curves.size()); });
     limits::require_loft_sections(curves.size(), "curves");
     require(degree >= 1, "degree", [&] { return "must be >= 1, got " + std::to_string(degree); });
     require_compatible_net(curves, "curves");
-    std::vector<NurbsCurve> sections = make_compatible(curves, "curves");
+    std::vector<NurbsCurve> sections = make_compatible(align ? detail::align_sections(curves, "curves").curves : curves, "curves");
     // Each section's weights scaled so that its first is 1: the loft then does not depend on the
     // arbitrary common factor of a curve's weights.
     bool rational = false;
@@ -134,10 +169,25 @@ Skin skin(const std::vector<NurbsCurve>& curves, int degree) {
     }
     NurbsSurface surface = NurbsSurface::from_homogeneous(sections.front().degree(), q, sections.front().knots(),
                                                           knots_v, std::move(net), rational);
+    // Never a surface that meets itself (twisted or crossing sections): certified (self_intersection.hpp).
+    const double size = surface.control_box().diagonal();
+    const bool closed = std::all_of(sections.begin(), sections.end(), [&](const NurbsCurve& c) {
+        return distance(c.start_point(), c.end_point()) <= 1e-9 * size;
+    });
+    detail::require_embedded(
+        {{surface}, closed, false}, "curves", "lofted surface",
+        [&](const detail::SelfIntersection& at) {
+            const std::size_t k = static_cast<std::size_t>(std::upper_bound(v.begin(), v.end(), at.v) - v.begin());
+            const std::size_t after = std::clamp<std::size_t>(k, 1, v.size() - 1);
+            return " (between sections " + std::to_string(after - 1) + " and " + std::to_string(after) + ")";
+        },
+        align ? "sections that twist or cross give no valid surface"
+              : "sections that twist or cross give no valid surface; align=True matches them by arc length from the start "
+                "points of least twist");
     return Skin{std::move(surface), v};
 }
 
-Solid loft(const std::vector<Profile>& profiles, int degree, bool ruled) {
+Solid loft(const std::vector<Profile>& profiles, int degree, bool ruled, bool align) {
     const std::size_t count = profiles.size();
     require(count >= 2, "profiles", [&] { return "a loft needs at least 2 profiles, got " + std::to_string(count); });
     limits::require_loft_sections(count, "profiles");  // before every profile is analysed
@@ -178,15 +228,28 @@ Solid loft(const std::vector<Profile>& profiles, int degree, bool ruled) {
     }
     std::vector<NurbsCurve> sections;
     for (const Profile& p : oriented) sections.push_back(join(p.pieces()));
-    const NurbsSurface lateral = [&] {
+    if (align) {
+        // Oriented by the travel above; matched by arc length from the starts of least twist. When every
+        // profile has a corner at matching places, the seam goes to the first such crease, so that the side
+        // faces below are exactly the smooth runs.
+        sections = detail::align_sections(sections, "profiles", true).curves;
+        const std::vector<double> creases = detail::full_creases(sections, true);
+        if (!creases.empty() && creases.front() > 0) sections = detail::restarted_at(sections, creases.front());
+    }
+    const Skin lofted = [&] {
         try {
-            return skin(sections, ruled ? 1 : degree).surface;
+            return skin(sections, ruled ? 1 : degree, false);
         } catch (const Error& e) {
             // skin() names its sections "curves"; here they are the profiles.
             throw e.renamed("curves", "profiles");
         }
     }();
-    return detail::tube_solid({{lateral}}, detail::CapNormals{-normals.front(), normals.back()});
+    // One side face per smooth run: cut along the creases every section has (after make_compatible, the
+    // sections' common knots are the surface's u knots).
+    std::vector<NurbsCurve> compatible;
+    for (const double v : lofted.section_parameters) compatible.push_back(lofted.surface.isocurve_v(v));
+    const std::vector<NurbsSurface> sides = split_along_u(lofted.surface, detail::full_creases(compatible, true));
+    return detail::tube_solid({sides}, detail::CapNormals{-normals.front(), normals.back()});
 }
 
 }  // namespace ratbez

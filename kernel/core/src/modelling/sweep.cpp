@@ -18,6 +18,7 @@
 #include "math/numeric_internal.hpp"
 #include "math/vector_angle.hpp"
 #include "modelling/planar_profile.hpp"
+#include "modelling/embedding_check.hpp"
 #include "modelling/tube_shell.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
@@ -555,10 +556,9 @@ std::vector<double> measured_errors(const MovingFrame& frame, const Approximatio
     return errors;
 }
 
-}  // namespace
-
-Sweep sweep_surfaces(const std::vector<NurbsCurve>& sections, const NurbsCurve& path_curve, double tolerance,
-                     const char* argument) {
+// The sweep before the check that it does not meet itself.
+Sweep sweep_surfaces_unchecked(const std::vector<NurbsCurve>& sections, const NurbsCurve& path_curve, double tolerance,
+                               const char* argument) {
     require(!sections.empty(), argument, "nothing to sweep");
     require_finite(tolerance, "tolerance");
     require(tolerance > 0, "tolerance", "must be greater than 0");
@@ -678,6 +678,29 @@ Sweep sweep_surfaces(const std::vector<NurbsCurve>& sections, const NurbsCurve& 
     }
     const FrameData end = frame->at(path.spans() - 1, path.end(path.spans() - 1));
     result.end_frame = closed ? start_frame : Frame{end.x, end.r, end.s, end.t};
+    return result;
+}
+
+// Never a swept surface that meets itself: the bend and far-parts checks above refuse the usual causes in
+// their own words; this certifies the surfaces themselves (self_intersection.hpp), side by side as the
+// sections are, closed round where the sections close and along where the path does.
+void require_embedded_sweep(const Sweep& sweep, const std::vector<NurbsCurve>& sections, const char* argument) {
+    Box box;
+    for (const NurbsCurve& c : sections) box.add(c.control_box());
+    const bool closed_round = distance(sections.front().start_point(), sections.back().end_point()) <= 1e-9 * box.diagonal();
+    detail::require_embedded(
+        {sweep.surfaces, closed_round, sweep.closed}, argument, "swept surface",
+        [](const detail::SelfIntersection& at) { return " (at path parameter " + number(at.v) + " of [0, 1])"; },
+        "a section reaching further into a bend than the bend's radius, or a path that comes back to itself, gives no "
+        "valid sweep");
+}
+
+}  // namespace
+
+Sweep sweep_surfaces(const std::vector<NurbsCurve>& sections, const NurbsCurve& path_curve, double tolerance,
+                     const char* argument) {
+    Sweep result = sweep_surfaces_unchecked(sections, path_curve, tolerance, argument);
+    require_embedded_sweep(result, sections, argument);
     return result;
 }
 

@@ -1,0 +1,363 @@
+// Sections matched by arc length from the start points of least twist; see section_alignment.hpp.
+#include "modelling/section_alignment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "geometry/clamping.hpp"
+#include "math/numeric_internal.hpp"
+#include "math/vector_angle.hpp"
+#include "ratbez/arc_length.hpp"
+#include "ratbez/bspline_basis.hpp"
+#include "ratbez/error.hpp"
+
+namespace ratbez::detail {
+
+namespace {
+
+constexpr int kSamples = 128;         // points per section for the orientation and the coarse start search
+constexpr int kRefineSamples = 64;    // midpoint rule of E'(s0) in the refinement
+constexpr double kMergeBreaks = 1e-9; // breakpoints closer than this (normalised length) are one
+constexpr double kCornerAngle = 1e-7; // radians: a turn of the tangent this large is a corner
+
+double fraction(double s) { return s - std::floor(s); }
+
+// A section as it will be used: its orientation chosen, its arc length tabulated, its start at normalised
+// length `shift` from the curve's own start.
+struct Section {
+    NurbsCurve curve;
+    ArcLength table;
+    double shift = 0;
+    explicit Section(const NurbsCurve& c) : curve(c), table(c) {}
+
+    double parameter_at(double s) const {  // s: normalised length from the chosen start
+        const double f = fraction(s + shift);
+        return table.parameter(std::min(f * table.total(), table.total()));
+    }
+    Vec3 point_at(double s) const { return curve.point(parameter_at(s)); }
+    // dC/ds with s the normalised length: the unit tangent times the length.
+    Vec3 tangent_at(double s) const {
+        const Vec3 d = curve.derivative(parameter_at(s), 1);
+        const double speed = norm(d);
+        return speed > 0 ? d * (table.total() / speed) : Vec3{};
+    }
+    std::vector<Vec3> samples(int count) const {
+        std::vector<Vec3> points;
+        for (int i = 0; i < count; ++i) points.push_back(point_at(static_cast<double>(i) / count));
+        return points;
+    }
+};
+
+Vec3 area_vector(const std::vector<Vec3>& p) {
+    Vec3 centre{};
+    for (const Vec3& q : p) centre += q;
+    centre = centre / static_cast<double>(p.size());
+    Vec3 a{};
+    for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i] - centre, p[(i + 1) % p.size()] - centre);
+    return 0.5 * a;
+}
+
+// The coarse search: the whole-sample shift j minimising sum_i |b_{i+j} - a_i|^2, and that sum.
+std::pair<int, double> best_sample_shift(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    const int m = static_cast<int>(a.size());
+    int best = 0;
+    double best_sum = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < m; ++j) {
+        double sum = 0;
+        for (int i = 0; i < m; ++i) {
+            const Vec3 d = b[to_size((i + j) % m)] - a[to_size(i)];
+            sum += dot(d, d);
+        }
+        if (sum < best_sum) {
+            best_sum = sum;
+            best = j;
+        }
+    }
+    return {best, best_sum / m};
+}
+
+// E'(s0)/2 = integral (C_b(s + s0) - C_a(s)) . C_b'(s + s0) ds by the midpoint rule (spectral for periodic
+// integrands; and exactly 0 at a shift where every ruling is as short as it can be); `a_points` are C_a at
+// the rule's nodes.
+double twist_slope(const std::vector<Vec3>& a_points, const Section& b, double shift) {
+    double sum = 0;
+    for (int i = 0; i < kRefineSamples; ++i) {
+        const double s = (i + 0.5) / kRefineSamples;
+        const double u = b.parameter_at(s + shift);
+        const std::vector<Vec3> d = b.curve.derivatives(u, 1);
+        const double speed = norm(d[1]);
+        if (speed > 0) sum += dot(d[0] - a_points[to_size(i)], d[1]) * (b.table.total() / speed);
+    }
+    return sum / kRefineSamples;
+}
+
+// The start of `next` (its shift) for the least twist against `previous` (already placed): the best
+// whole-sample shift, then the root of E' between its neighbours.
+double least_twist_shift(const Section& previous, const Section& next, int coarse) {
+    std::vector<Vec3> a_points;
+    for (int i = 0; i < kRefineSamples; ++i) a_points.push_back(previous.point_at((i + 0.5) / kRefineSamples));
+    const double scale = previous.table.total() * next.table.total();
+    double lo = static_cast<double>(coarse - 1) / kSamples, hi = static_cast<double>(coarse + 1) / kSamples;
+    Section trial = next;
+    auto slope = [&](double shift) {
+        trial.shift = shift;
+        return twist_slope(a_points, trial, 0.0);
+    };
+    double f_lo = slope(lo), f_hi = slope(hi);
+    if (!(f_lo < 0 && f_hi > 0)) return static_cast<double>(coarse) / kSamples;  // no sign change: keep the sample
+    // Regula falsi with the Illinois modification (the stale end's value halved), to rounding.
+    int stale = 0;
+    for (int iteration = 0; iteration < 60 && hi - lo > 1e-15; ++iteration) {
+        const double x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        const double f = slope(x);
+        if (std::abs(f) <= 1e-15 * scale) return x;
+        if (f < 0) {
+            lo = x;
+            f_lo = f;
+            if (stale == -1) f_hi *= 0.5;
+            stale = -1;
+        } else {
+            hi = x;
+            f_hi = f;
+            if (stale == 1) f_lo *= 0.5;
+            stale = 1;
+        }
+    }
+    return 0.5 * (lo + hi);
+}
+
+double control_size(const std::vector<NurbsCurve>& curves) {
+    Box box;
+    for (const NurbsCurve& c : curves)
+        for (const Vec4& pw : c.homogeneous_points()) box.add(project(pw));
+    return box.diagonal();
+}
+
+// A Bézier piece's homogeneous control points in the scale its points and weights were given (a curve keeps
+// its own power-of-two scale inside).
+std::vector<Vec4> homogeneous(const BezierCurve& bezier) {
+    std::vector<Vec4> points;
+    const std::vector<Vec3> xyz = bezier.points();
+    const std::vector<double> w = bezier.is_rational() ? bezier.weights() : std::vector<double>(xyz.size(), 1.0);
+    for (std::size_t i = 0; i < xyz.size(); ++i) points.push_back(homogenize(xyz[i], w[i]));
+    return points;
+}
+
+// One curve from Bézier pieces on consecutive intervals [breaks[j], breaks[j + 1]]: knots of multiplicity p
+// at the breaks; each piece's weights scaled so that its first equals the previous piece's last (the same
+// curve, one homogeneous polygon).
+NurbsCurve assemble(const std::vector<std::vector<Vec4>>& pieces, const std::vector<double>& breaks, bool rational) {
+    const std::size_t p = pieces.front().size() - 1;
+    std::vector<double> knots(p + 1, breaks.front());
+    std::vector<Vec4> points;
+    for (std::size_t j = 0; j < pieces.size(); ++j) {
+        std::vector<Vec4> pw = pieces[j];
+        if (j == 0) {
+            points = pw;
+        } else {
+            const double factor = points.back().w / pw.front().w;
+            for (Vec4& q : pw) q *= factor;
+            points.insert(points.end(), pw.begin() + 1, pw.end());  // the joint: the previous piece's end
+        }
+        knots.insert(knots.end(), j + 1 < pieces.size() ? p : p + 1, breaks[j + 1]);
+    }
+    if (!rational)
+        for (Vec4& q : points) q.w = 1.0;
+    return NurbsCurve::from_homogeneous(static_cast<int>(p), std::move(knots), std::move(points), rational);
+}
+
+// The closed curve started at parameter u: its part over [u, end] followed by its part over [start, u],
+// each span keeping its parameter width.
+NurbsCurve started_at(const NurbsCurve& curve, double u) {
+    const Interval d = curve.domain();
+    // At a knot within 1e-9 of the domain's width: at that knot (no sliver of a span before it).
+    for (const double k : breakpoints(curve.degree(), curve.knots()))
+        if (std::abs(k - u) <= 1e-9 * d.width()) u = k;
+    std::vector<std::vector<Vec4>> pieces;
+    std::vector<double> breaks{0.0};
+    for (const auto& [a, b] : {std::pair{u, d.max}, std::pair{d.min, u}}) {
+        const NurbsCurve part = restricted(curve, a, b);
+        const std::vector<double> spans = breakpoints(part.degree(), part.knots());
+        const std::vector<BezierCurve> segments = part.bezier_segments();
+        for (std::size_t k = 0; k < segments.size(); ++k) {
+            pieces.push_back(homogeneous(segments[k]));
+            breaks.push_back(breaks.back() + (spans[k + 1] - spans[k]));
+        }
+    }
+    return assemble(pieces, breaks, curve.is_rational());
+}
+
+// The Bézier control points of the curve between parameters ua < ub (no knot between them), in normal
+// form when rational (end weights 1).
+std::vector<Vec4> piece(const NurbsCurve& curve, double ua, double ub) {
+    require(ub > ua, "sections", "a section stands still over a stretch of its parameter (no length to match)");
+    const std::vector<BezierCurve> segments = restricted(curve, ua, ub).bezier_segments();
+    require(segments.size() == 1, "sections",
+            "a section has knots closer together than 1e-9 of its length; remove the sliver of a span between them");
+    BezierCurve bezier = segments.front();
+    if (bezier.is_rational()) bezier = bezier.normal_form();
+    return homogeneous(bezier);
+}
+
+// The parameters of a section at the merged breaks: its own breakpoints where a break was merged from
+// one of them (so that no piece straddles a knot), else where the normalised length reaches the break.
+std::vector<double> break_parameters(const Section& section, const std::vector<double>& breaks) {
+    const std::vector<double> own = breakpoints(section.curve.degree(), section.curve.knots());
+    std::vector<double> own_lengths;
+    for (const double u : own) own_lengths.push_back(section.table.at(u) / section.table.total());
+    std::vector<double> parameters;
+    for (const double b : breaks) {
+        const auto near = std::min_element(own_lengths.begin(), own_lengths.end(),
+                                           [&](double x, double y) { return std::abs(x - b) < std::abs(y - b); });
+        parameters.push_back(std::abs(*near - b) <= kMergeBreaks ? own[to_size(static_cast<int>(near - own_lengths.begin()))]
+                                                                 : section.parameter_at(b));
+    }
+    parameters.front() = own.front();
+    parameters.back() = own.back();
+    return parameters;
+}
+
+// The direction in which a Bézier piece leaves its start (or arrives at its end): along the first control
+// point that differs from the end one (the end tangent of a rational or polynomial piece, its limit where
+// the derivative vanishes). Zero for a piece that is a point.
+Vec3 end_direction(const BezierCurve& piece, bool at_end) {
+    const std::vector<Vec3> p = piece.points();
+    const std::size_t n = p.size() - 1;
+    const Vec3 end = at_end ? p[n] : p[0];
+    for (std::size_t i = 1; i <= n; ++i) {
+        const Vec3 d = at_end ? end - p[n - i] : p[i] - end;
+        if (norm(d) > 0) return d;
+    }
+    return {};
+}
+
+bool is_corner(const BezierCurve& arriving, const BezierCurve& leaving) {
+    const Vec3 in = end_direction(arriving, true), out = end_direction(leaving, false);
+    if (norm(in) == 0 || norm(out) == 0) return true;  // a piece that is a point: no tangent to continue
+    return angle_between(in, out) > kCornerAngle;
+}
+
+}  // namespace
+
+AlignedSections align_sections(const std::vector<NurbsCurve>& input, const std::string& argument, bool keep_orientation) {
+    const double size = control_size(input);
+    const double closure = 1e-9 * size;
+    std::vector<NurbsCurve> curves;
+    for (const NurbsCurve& c : input) curves.push_back(clamped_ends(c));
+    const bool closed = distance(curves.front().start_point(), curves.front().end_point()) <= closure;
+    for (std::size_t k = 0; k < curves.size(); ++k) {
+        const bool this_closed = distance(curves[k].start_point(), curves[k].end_point()) <= closure;
+        require(this_closed == closed, argument, [&] {
+            return "section " + std::to_string(k) + " is " + (this_closed ? "closed" : "open") + " but section 0 is " +
+                   (closed ? "closed" : "open") + "; aligned sections are all closed or all open (align=False joins them by parameter)";
+        });
+    }
+
+    std::vector<Section> sections;
+    for (std::size_t k = 0; k < curves.size(); ++k) {
+        sections.emplace_back(curves[k]);
+        require(sections.back().table.total() > 1e-12 * size, argument,
+                [&] { return "section " + std::to_string(k) + " has no length (a point cannot be aligned)"; });
+    }
+
+    // Orientation and start, each section against the one before it.
+    for (std::size_t k = 1; k < sections.size(); ++k) {
+        const Section& previous = sections[k - 1];
+        const std::vector<Vec3> a = previous.samples(kSamples);
+        if (!closed) {
+            const Vec3 a0 = previous.point_at(0.0), a1 = previous.curve.end_point();
+            const Vec3 b0 = sections[k].curve.start_point(), b1 = sections[k].curve.end_point();
+            if (distance(a0, b1) + distance(a1, b0) < distance(a0, b0) + distance(a1, b1))
+                sections[k] = Section(sections[k].curve.reversed());
+            continue;
+        }
+        std::optional<bool> reverse;
+        if (keep_orientation) {
+            reverse = false;
+        } else {
+            const Vec3 area_a = area_vector(a), area_b = area_vector(sections[k].samples(kSamples));
+            const double scale = 0.1 * sections[k - 1].table.total() * sections[k].table.total() / (4 * std::numbers::pi);
+            const double d = dot(area_a, area_b) / std::max(norm(area_a) * norm(area_b), 1e-300);
+            if (norm(area_a) > scale && norm(area_b) > scale && std::abs(d) > 0.1) reverse = d < 0;
+        }
+        Section forward = sections[k];
+        auto [shift, twist] = best_sample_shift(a, forward.samples(kSamples));
+        if (!reverse.has_value() || *reverse) {
+            Section backward(sections[k].curve.reversed());
+            const auto [back_shift, back_twist] = best_sample_shift(a, backward.samples(kSamples));
+            if (reverse.has_value() || back_twist < twist) {
+                forward = backward;
+                shift = back_shift;
+            }
+        }
+        forward.shift = least_twist_shift(previous, forward, shift);
+        forward.shift = fraction(forward.shift);
+        sections[k] = forward;
+    }
+
+    // Every closed section restarted at its chosen start (its old start becomes an interior break).
+    for (Section& s : sections) {
+        if (s.shift == 0) continue;
+        const double u = s.parameter_at(0.0);
+        const Interval d = s.curve.domain();
+        if (u - d.min <= 1e-9 * d.width() || d.max - u <= 1e-9 * d.width()) {
+            s.shift = 0;
+            continue;
+        }
+        s = Section(started_at(s.curve, u));
+    }
+
+    // The merged breakpoints in normalised length from each section's start.
+    std::vector<double> breaks;
+    for (const Section& s : sections)
+        for (const double u : breakpoints(s.curve.degree(), s.curve.knots())) breaks.push_back(s.table.at(u) / s.table.total());
+    std::sort(breaks.begin(), breaks.end());
+    std::vector<double> merged{0.0};
+    for (const double b : breaks)
+        if (b - merged.back() > kMergeBreaks && 1.0 - b > kMergeBreaks) merged.push_back(b);
+    merged.push_back(1.0);
+
+    AlignedSections result;
+    result.closed = closed;
+    result.breaks = merged;
+    for (const Section& s : sections) {
+        std::vector<std::vector<Vec4>> pieces;
+        const std::vector<double> u = break_parameters(s, merged);
+        try {
+            for (std::size_t j = 0; j + 1 < merged.size(); ++j) pieces.push_back(piece(s.curve, u[j], u[j + 1]));
+        } catch (const Error& e) {
+            throw e.renamed("sections", argument);
+        }
+        result.curves.push_back(assemble(pieces, merged, s.curve.is_rational()));
+    }
+    return result;
+}
+
+std::vector<NurbsCurve> restarted_at(const std::vector<NurbsCurve>& sections, double parameter) {
+    std::vector<NurbsCurve> result;
+    for (const NurbsCurve& c : sections) result.push_back(started_at(c, parameter));
+    return result;
+}
+
+std::vector<double> full_creases(const std::vector<NurbsCurve>& sections, bool closed) {
+    const NurbsCurve& first = sections.front();
+    const std::vector<double> breaks = breakpoints(first.degree(), first.knots());
+    std::vector<std::vector<BezierCurve>> segments;
+    for (const NurbsCurve& c : sections) segments.push_back(c.bezier_segments());
+    std::vector<double> creases;
+    // Break j joins segment j - 1 to segment j (the last to the first at 0 for a closed section).
+    for (std::size_t j = closed ? 0 : 1; j + 1 < breaks.size(); ++j) {
+        bool everywhere = true;
+        for (const std::vector<BezierCurve>& s : segments)
+            if (!is_corner(j == 0 ? s.back() : s[j - 1], s[j])) {
+                everywhere = false;
+                break;
+            }
+        if (everywhere) creases.push_back(breaks[j]);
+    }
+    return creases;
+}
+
+}  // namespace ratbez::detail

@@ -1,0 +1,118 @@
+// section_alignment.hpp (issue 26): sections matched by normalised arc length from the start points of
+// least twist. A circle lofted to itself turned by any angle is a cylinder (rulings vertical to 1e-13);
+// breakpoints of every section land at the same normalised arc length on all; orientation, open sections,
+// creases and the restart at a crease.
+
+#include "modelling/section_alignment.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "nurbs_test_support.hpp"
+#include "ratbez/arc_length.hpp"
+#include "ratbez/bspline_basis.hpp"
+#include "ratbez/curves.hpp"
+#include "ratbez/join.hpp"
+#include "ratbez/ruled.hpp"
+
+namespace ratbez::detail {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+NurbsCurve turned_circle(double radius, double z, double degrees, const Vec3& normal = {0, 0, 1}) {
+    // The circle of circle(), its start turned by `degrees` about z (its own parameterisation moves with it).
+    const NurbsCurve c = circle(radius, {0, 0, z}, normal);
+    std::vector<Vec4> pw = c.homogeneous_points();
+    const double a = degrees * pi / 180, cs = std::cos(a), sn = std::sin(a);
+    for (Vec4& q : pw) q = Vec4{cs * q.x - sn * q.y, sn * q.x + cs * q.y, q.z, q.w};
+    return NurbsCurve::from_homogeneous(c.degree(), c.knots(), pw, true);
+}
+
+NurbsCurve square(double half, double z, int start_corner, bool clockwise = false) {
+    std::vector<Vec3> corners{{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
+    if (clockwise) std::reverse(corners.begin(), corners.end());
+    std::vector<NurbsCurve> sides;
+    for (int k = 0; k < 4; ++k) sides.push_back(line_segment(corners[(start_corner + k) % 4], corners[(start_corner + k + 1) % 4]));
+    return join(sides);
+}
+
+TEST(SectionAlignment, ACircleTurnedByAnyAngleLoftsToACylinder) {
+    for (const double angle : {0.0, 30.0, 90.0, 120.0, 180.0, 237.5}) {
+        SCOPED_TRACE(angle);
+        const AlignedSections aligned = align_sections({circle(2.0), turned_circle(2.0, 4, angle)}, "curves");
+        ASSERT_TRUE(aligned.closed);
+        const NurbsSurface s = ruled_surface(aligned.curves[0], aligned.curves[1], false);
+        for (int i = 0; i <= 64; ++i) {
+            const double u = i / 64.0;
+            const Vec3 bottom = s.point(u, 0), top = s.point(u, 1), middle = s.point(u, 0.5);
+            EXPECT_LE(std::hypot(top.x - bottom.x, top.y - bottom.y), 1e-13);  // a vertical ruling
+            EXPECT_NEAR(std::hypot(middle.x, middle.y), 2.0, 1e-13);
+        }
+    }
+}
+
+TEST(SectionAlignment, BreakpointsMeetAtTheSameNormalisedArcLength) {
+    // A circle (4 arcs from +x) and a square (4 sides from a corner at 225 degrees): the square's corners
+    // land where the circle has travelled the same fraction of its length from its chosen start.
+    const AlignedSections aligned = align_sections({circle(2.0), square(1.5, 4, 0)}, "curves");
+    ASSERT_EQ(aligned.curves.size(), 2u);
+    const NurbsCurve& round = aligned.curves[0];
+    const NurbsCurve& square_curve = aligned.curves[1];
+    EXPECT_EQ(breakpoints(round.degree(), round.knots()), breakpoints(square_curve.degree(), square_curve.knots()));
+    const ArcLength circle_length(round), square_length(square_curve);
+    for (const double b : aligned.breaks) {
+        EXPECT_NEAR(circle_length.at(b) / circle_length.total(), b, 1e-12);
+        EXPECT_NEAR(square_length.at(b) / square_length.total(), b, 1e-12);
+    }
+    // The first section keeps its start (+x); the least twist starts the square at the middle of its side
+    // facing +x, and puts its corners at 1/8, 3/8, ... where the circle points the same way.
+    EXPECT_LE(distance(square_curve.start_point(), {1.5, 0, 4}), 1e-9);
+    for (int k = 0; k < 4; ++k) {
+        const double b = (2 * k + 1) / 8.0;
+        const Vec3 corner = square_curve.point(b), on_circle = round.point(b);
+        EXPECT_NEAR(std::abs(corner.x), 1.5, 1e-9) << k;
+        EXPECT_NEAR(std::abs(corner.y), 1.5, 1e-9) << k;
+        EXPECT_NEAR(std::atan2(corner.y, corner.x), std::atan2(on_circle.y, on_circle.x), 1e-9) << k;
+    }
+}
+
+TEST(SectionAlignment, OrientationStartAndOpenSections) {
+    // A clockwise copy is turned round: the result runs as the first section does.
+    const AlignedSections closed = align_sections({circle(1.0), turned_circle(1.0, 2, 40, {0, 0, -1})}, "curves");
+    const Vec3 a = closed.curves[0].derivative(0.1), b = closed.curves[1].derivative(0.1);
+    EXPECT_GT(dot(a, b), 0.99 * norm(a) * norm(b));
+    // Open sections: matched end to end, the second reversed when its ends are nearer that way.
+    const AlignedSections open = align_sections({line_segment({0, 0, 0}, {4, 0, 0}), line_segment({4, 0, 1}, {0, 0, 1})}, "curves");
+    EXPECT_FALSE(open.closed);
+    EXPECT_LE(distance(open.curves[1].start_point(), {0, 0, 1}), 1e-15);
+    // A half circle of 2 arcs against a segment: at every break both have gone the same fraction of their
+    // lengths (the arcs' joint at 90 degrees meets the segment's midpoint).
+    const AlignedSections mixed = align_sections({arc(1.0, 0, 180), line_segment({1, 0, 1}, {-1, 0, 1})}, "curves");
+    ASSERT_EQ(mixed.breaks.size(), 3u);
+    EXPECT_LE(distance(mixed.curves[0].point(0.5), {0, 1, 0}), 1e-12);
+    EXPECT_LE(distance(mixed.curves[1].point(0.5), {0, 0, 1}), 1e-12);
+    // Errors: a point has no length; closed with open.
+    EXPECT_ERROR_NAMING(align_sections({circle(1.0), arc(1.0, 0, 90, {0, 0, 1})}, "sections"), "sections");
+}
+
+TEST(SectionAlignment, CreasesRunThroughEverySection) {
+    // Square to square: four creases; circle to square: none (the circle is one smooth run).
+    const AlignedSections squares = align_sections({square(1, 0, 0), square(1, 2, 2)}, "curves");
+    EXPECT_EQ(full_creases(squares.curves, true).size(), 4u);
+    const AlignedSections mixed = align_sections({circle(1.5), square(1, 2, 0)}, "curves");
+    EXPECT_TRUE(full_creases(mixed.curves, true).empty());
+    EXPECT_TRUE(full_creases({circle(1.0), circle(2.0, {0, 0, 1})}, true).empty());
+    // Restarted at a crease, the matching is kept: the same points at the same parameters, shifted.
+    const std::vector<NurbsCurve> restarted = restarted_at(squares.curves, 0.25);
+    for (int k = 0; k <= 20; ++k) {
+        const double u = k / 20.0;
+        for (std::size_t i = 0; i < 2; ++i)
+            EXPECT_LE(distance(restarted[i].point(u), squares.curves[i].point(std::fmod(u + 0.25, 1.0))), 1e-14);
+    }
+}
+
+}  // namespace
+}  // namespace ratbez::detail
