@@ -298,11 +298,12 @@ def test_bad_input_is_one_line_in_property_words():
 def test_out_of_range_sizes_are_blamed_on_their_property():
     # Issue 25: Radius 1e100 was "faces: gives a solid of size 3.46e+100"; a thin cylinder "sides: side u_max ...".
     doc = new_document("Range")
-    for make, expected in ((lambda: RatBez.make_sphere(doc, Radius=1e100), "Radius: gives a solid of size"),
-                           (lambda: RatBez.make_torus(doc, MajorRadius=4e99, MinorRadius=2e99),
+    for make, expected in ((lambda: RatBez.make_sphere(doc, Radius=2e100), "Radius: gives a solid of size"),
+                           (lambda: RatBez.make_torus(doc, MajorRadius=2e100, MinorRadius=1e100),
                             "MajorRadius: gives a solid of size"),
-                           (lambda: RatBez.make_cylinder(doc, Radius=1e100, Height=1), "Height: is 1, less than 1e-08"),
-                           (lambda: RatBez.make_cone(doc, Radius1=1, Radius2=1e-10, Height=1), "Radius2: is 1e-10")):
+                           (lambda: RatBez.make_sphere(doc, Radius=1e100), "the solid reaches"),
+                           (lambda: RatBez.make_cylinder(doc, Radius=1e100, Height=1), "Height: gives a height of 1"),
+                           (lambda: RatBez.make_cone(doc, Radius1=1, Radius2=1e-10, Height=1), "Radius2: gives a radius")):
         text = output_of(make)
         obj = doc.Objects[-1]
         check(not obj.isValid() and obj.getStatusString().startswith(expected),

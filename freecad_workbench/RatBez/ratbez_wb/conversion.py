@@ -385,9 +385,19 @@ def straight_line(link, prop):
 
 def shape_from_solid(solid):
     """The exact B-spline B-rep of a ratbez solid as a valid Part.Solid (one face per Bézier patch)."""
+    # OpenCASCADE takes coordinates from 1e100 on as infinite (Precision::Infinite is 2e100): the kernel
+    # builds such a solid (up to its own limit of 1e100), FreeCAD's shape cannot hold it.
+    (low, high) = solid.bounding_box()
+    reach = max(abs(c) for c in low + high)
+    if reach > 1e99:
+        raise Failure("", translate("the solid reaches {:.3g} from the origin, more than OpenCASCADE can hold "
+                                    "(1e99)").format(reach))
     text = kernel.ratbez().brep_string(solid, bezier_faces=True)
     shape = Part.Shape()
-    shape.importBrepFromString(text, False)
+    try:
+        shape.importBrepFromString(text, False)
+    except Exception as error:  # OCCT's own failure, as one line
+        raise Failure("", translate("OpenCASCADE could not read the kernel's B-rep ({})").format(error))
     if shape.isNull():
         raise Failure("", translate("the kernel's B-rep could not be read by OpenCASCADE"))
     if len(shape.Solids) != 1:

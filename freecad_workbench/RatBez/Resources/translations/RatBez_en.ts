@@ -74,6 +74,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Close the curve smoothly back to the first point (a periodic B-spline, smooth at the first point too)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Closed planar profile to extrude: a sketch, a 2D object, a wire, edges or one face. Closed loops inside the outer one (a face&apos;s holes, inner loops of a sketch) become holes through the solid</source>
         <translation type="unfinished"></translation>
@@ -99,6 +109,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Degree</source>
         <translation type="unfinished"></translation>
@@ -121,6 +132,11 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Degree in v: every row has DegreeV + 1 poles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Degree of the curve (needs at least Degree + 1 points, fewer with end tangents)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -179,6 +195,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>End Tangent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>End Tangents</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Exact Area</source>
         <translation type="unfinished"></translation>
@@ -201,6 +227,11 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>First closed planar profile: a sketch, a 2D object, a wire, edges or one face (without holes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Give the curve&apos;s direction at its ends (StartTangent, EndTangent); open curves only</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -245,6 +276,11 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
+        <source>Match the profiles by arc length: each runs the same way, each starts where the rulings to the one before it are shortest (least twist), and every corner or joint of one meets the point of the other at the same fraction of its length; the first profile&apos;s start vertex sets the seam. Off: the profiles&apos; start vertices and parameters are matched as they are</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/features.py"/>
         <source>Minor Radius</source>
         <translation type="unfinished"></translation>
     </message>
@@ -264,6 +300,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Parameterization</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Path</source>
         <translation type="unfinished"></translation>
@@ -271,6 +312,11 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Path to sweep along: a sketch, a wire or edges making one tangent-continuous chain. The profile is carried with a rotation-minimising frame; a closed path closes the solid on itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Points</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -365,12 +411,22 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Second closed planar profile, entirely in front of the first one&apos;s plane; straight rulings join the two from their starting points on</source>
+        <source>Second closed planar profile, entirely in front of the first one&apos;s plane; straight rulings join the two (matched as Align says)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Sections</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Source</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Start Tangent</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -381,6 +437,26 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Symmetric</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>The direction the curve arrives at its last point in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>The direction the curve leaves its first point in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>The points to pass through, in order (used when Source is empty)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/features.py"/>
+        <source>The vertex each profile starts at, in profile order, counted from 1 along its edges (0 or missing: where the profile starts). With Align only the first profile&apos;s matters (the seam); without, every profile&apos;s start is matched to the others&apos;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -401,6 +477,16 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Weights</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Where along the curve each point falls: chord (steps as long as the distances, Eq. 9.5), centripetal (their square roots, Eq. 9.6: no overshoot at sharp turns) or uniform (Eq. 9.3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>Where the points come from, in order: selected vertices, or a Draft wire or B-spline (its points), or any object (its vertices). Empty: the Points list</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -437,6 +523,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Add point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Add pole</source>
         <translation type="unfinished"></translation>
@@ -444,6 +535,11 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Add selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/task_panels.py"/>
+        <source>Align sections (least twist)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -507,6 +603,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Cone</source>
         <translation type="unfinished"></translation>
@@ -542,6 +643,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/interpolate_command.py"/>
+        <source>Create the B-spline curve through the selected vertices (in the order picked), through a selected Draft wire&apos;s or B-spline&apos;s points, or through points edited in the task panel (The NURBS Book A9.1: chord-length, centripetal or uniform parameters; closed curves; end tangents)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Create {}</source>
         <translation type="unfinished"></translation>
@@ -564,6 +670,11 @@
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>Default chordal tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Degree</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -610,6 +721,16 @@
         <location filename="../../ratbez_wb/task_panels.py"/>
         <location filename="../../ratbez_wb/view_providers.py"/>
         <source>Edit {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>End tangent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>End tangents</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -665,6 +786,16 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_command.py"/>
+        <source>Interpolate points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Interpolate the selected vertices (in the order picked), or the points of the selected Draft wire or B-spline, or the selected object&apos;s vertices</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -733,8 +864,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/conversion.py"/>
+        <source>OpenCASCADE could not read the kernel&apos;s B-rep ({})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>OpenCASCADE&apos;s geometry departs from the kernel&apos;s by {:.3g}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Own points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Parameterization</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -745,6 +891,11 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Picked edge or datum line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Points from</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -828,6 +979,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>RatBez interpolate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>RatBez loft</source>
         <translation type="unfinished"></translation>
@@ -898,6 +1054,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Remove point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Remove pole</source>
         <translation type="unfinished"></translation>
@@ -963,6 +1124,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Select two or more vertices, a Draft wire or B-spline, or an object first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Select...</source>
         <translation type="unfinished"></translation>
@@ -970,6 +1136,31 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Sphere</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Start tangent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/task_panels.py"/>
+        <source>Start vertex of the selected section</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/task_panels.py"/>
+        <source>Start vertex, first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/task_panels.py"/>
+        <source>Start vertex, second</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>Stop following the selection: interpolate the table of points below</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1008,6 +1199,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Use selection</source>
         <translation type="unfinished"></translation>
@@ -1098,6 +1290,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/task_panels.py"/>
+        <source>its own start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>its {} closed loops do not make a face ({})</source>
         <translation type="unfinished"></translation>
@@ -1145,6 +1342,11 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>one weight per pole is needed ({}), got {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>point {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1204,6 +1406,11 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
+        <source>start vertex {} does not exist: the profile has {} vertices (0 for its own start)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/features.py"/>
         <source>the Bézier surface does not give a valid face</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1248,8 +1455,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/conversion.py"/>
+        <source>the solid reaches {:.3g} from the origin, more than OpenCASCADE can hold (1e99)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_panel.py"/>
+        <source>the table below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>weight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>{} has no points to interpolate</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1260,6 +1482,11 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>{} of {} is not a number: &apos;{}&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/curve_tools.py"/>
+        <source>{}: {} is not a vertex</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1351,6 +1578,19 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Extrude the selected closed planar sketch, wire, edges or face into an exact prism; inner loops become holes. Direction (the profile&apos;s normal to start with), distance, reversed and symmetric are set in the task panel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>RatBez_Interpolate</name>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_command.py"/>
+        <source>Create the B-spline curve through the selected vertices (in the order picked), through a selected Draft wire&apos;s or B-spline&apos;s points, or through points edited in the task panel (The NURBS Book A9.1: chord-length, centripetal or uniform parameters; closed curves; end tangents)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/interpolate_command.py"/>
+        <source>Interpolate points</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

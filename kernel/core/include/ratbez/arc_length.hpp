@@ -7,6 +7,7 @@
 // ulps. The parameter at a length is found by Newton's method on L(u0, u) - s (its derivative is the
 // speed), kept in a bracket by bisection, to the same accuracy.
 
+#include <memory>
 #include <vector>
 
 #include "ratbez/nurbs_curve.hpp"
@@ -29,6 +30,8 @@ public:
     // stands still over an interval of parameters (zero speed), the smallest such u.
     double parameter(double s) const;
 
+    class Speed;  // |C'(u)| from the curve's Bézier segments (arc_length.cpp)
+
 private:
     // The length over [a, b] inside span k.
     double integral(double a, double b) const;
@@ -36,6 +39,7 @@ private:
     std::vector<double> breaks_;      // the span ends (breakpoints of the domain)
     std::vector<double> cumulative_;  // cumulative_[k]: the length up to breaks_[k]
     double tolerance_ = 0;            // absolute, for one span's integral
+    std::shared_ptr<const Speed> speed_;
 };
 
 // The length of the curve between u0 and u1 (defaults: the whole domain); u1 < u0 gives the negative.

@@ -3,6 +3,7 @@
 
 #include "math/numeric_internal.hpp"
 #include "ratbez/box.hpp"
+#include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
 
 namespace ratbez::detail {
@@ -38,7 +39,13 @@ void require_embedded(const SurfaceStrip& strip, const std::string& argument, co
     if (has_collapsed_side(strip)) return;
     Box box;
     for (const NurbsSurface& s : strip.pieces) box.add(s.control_box());
-    const SelfIntersection found = find_self_intersection(strip, 1e-7 * box.diagonal());
+    // The search's work grows with the patches (a loft of 2,000 sections: 8,000, each a rectangle and some
+    // pairs with its neighbours): a budget per patch, so that a long valid strip is certified, not refused
+    // as undecided, and a hostile one still costs bounded work.
+    std::size_t patches = 0;
+    for (const NurbsSurface& s : strip.pieces)
+        patches += (breakpoints(s.degree_u(), s.knots_u()).size() - 1) * (breakpoints(s.degree_v(), s.knots_v()).size() - 1);
+    const SelfIntersection found = find_self_intersection(strip, 1e-7 * box.diagonal(), 30'000 + 64 * patches);
     if (!found.found) return;
     if (found.undecided)
         fail(argument, "could not certify that the " + what + " does not meet itself (too intricate to decide); " + advice);
