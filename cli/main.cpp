@@ -1,10 +1,12 @@
-// The `ratbez` command: JSON shape spec in, files and reports out.
+// The `ratbez` command: a JSON shape spec or a STEP/BREP model file in, files and reports out.
 //
-//   ratbez export SPEC.json -o OUT.{scad,stl,off,3mf,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
-//                [--import-stl]
-//                 [--max-triangles N] [--skip-self-intersection-check]
-//   ratbez check SPEC.json [--json]
-//   ratbez info SPEC.json [--json]
+//   ratbez export INPUT -o OUT.{scad,stl,off,3mf,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
+//                [--import-stl] [--max-triangles N] [--skip-self-intersection-check]
+//   ratbez check INPUT [--json]
+//   ratbez info INPUT [--json]
+//
+// INPUT is SPEC.json (one solid) or a .step/.stp/.brep file (every solid in it: several export into one library,
+// check and info report each; inputs.hpp).
 //   ratbez demo [DIR] [--examples DIR] [--no-render]
 //   ratbez --version
 //
@@ -47,6 +49,7 @@
 #include "ratbez/occt/files.hpp"
 #include "ratbez/output_file.hpp"
 #include "ratbez/tessellate.hpp"
+#include "inputs.hpp"
 #include "spec.hpp"
 
 extern char** environ;
@@ -58,16 +61,18 @@ using ratbez::spec::ShapeSpec;
 
 constexpr const char* usage_text =
     "usage: ratbez <command> ...\n"
-    "  ratbez export SPEC.json -o OUT.{scad,stl,off,3mf,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
+    "  ratbez export INPUT -o OUT.{scad,stl,off,3mf,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
     "                [--max-triangles N] [--import-stl] [--skip-self-intersection-check]\n"
     "                --import-stl: a .scad whose module import()s the mesh from a binary STL beside it (faster in\n"
     "                OpenSCAD for large meshes); --skip-self-intersection-check: for very large meshes\n"
-    "  ratbez check SPEC.json [--json]      check against OpenCASCADE; exit 1 when a check fails\n"
-    "  ratbez info SPEC.json [--json]       faces, edges, vertices, Euler characteristic, area, volume, box\n"
+    "  ratbez check INPUT [--json]          check against OpenCASCADE; exit 1 when a check fails\n"
+    "  ratbez info INPUT [--json]           faces, edges, vertices, shells, Euler characteristic, area, volume, box\n"
     "  ratbez demo [DIR] [--examples DIR] [--no-render]\n"
     "                                       build, export and check every example into DIR (default ratbez-demo)\n"
     "  ratbez --version                     the version of ratbez\n"
-    "The JSON spec is documented in examples/README.md.\n";
+    "INPUT is a JSON shape spec (documented in examples/README.md) or a .step/.stp/.brep file: every solid in it\n"
+    "is read (an assembly with its placements); several export into one library (.scad: a module each and one\n"
+    "placing them all) and check and info report each (--json: an array).\n";
 
 // Bad command-line arguments: exit 2, reported as "usage error: <argument>: <reason>".
 class UsageError : public std::runtime_error {
@@ -153,10 +158,17 @@ double parse_positive(const std::string& option, const std::string& text) {
     return value;
 }
 
-const std::string& single_spec(const Arguments& args, const std::string& command) {
-    if (args.positional.empty()) throw UsageError("SPEC.json", "missing (usage: ratbez " + command + " SPEC.json ...)");
+const std::string& single_input(const Arguments& args, const std::string& command) {
+    if (args.positional.empty())
+        throw UsageError("SPEC.json", "missing (usage: ratbez " + command + " SPEC.json|MODEL.step|MODEL.brep ...)");
     if (args.positional.size() > 1) throw UsageError(args.positional[1], "unexpected argument for '" + command + "'");
     return args.positional.front();
+}
+
+std::string joined(const std::vector<std::string>& words, const char* separator = ", ") {
+    std::string text;
+    for (const auto& w : words) text += (text.empty() ? "" : separator) + w;
+    return text;
 }
 
 // ---- shared steps ----------------------------------------------------------------------------------
@@ -258,100 +270,212 @@ private:
     bool shown_ = false;
 };
 
+// The input of a command, with a progress line while a large model file is read.
+ratbez::cli::Input load_for(const std::string& path) {
+    ProgressLine progress("reading " + path);
+    return ratbez::cli::load_input(path, [&progress](double fraction) { progress(fraction); });
+}
+
 // The tessellation's share of an export's progress line (it is usually less than the checks').
 constexpr double kTessellationShare = 0.3;
 
-int command_export(const std::vector<std::string>& raw) {
+// The export options as parsed and checked against the output format, before anything is read.
+struct ExportRequest {
+    std::string input, output, extension;
+    std::optional<double> tolerance, angle;
+    std::optional<std::size_t> max_triangles;
+    std::optional<std::string> module_name;
+    bool ascii = false, import_stl = false, skip_self_intersection_check = false;
+    bool exact() const { return extension == ".step" || extension == ".stp" || extension == ".brep"; }
+};
+
+ExportRequest parse_export(const std::vector<std::string>& raw) {
     const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module", "--max-triangles"},
                                             {"--ascii", "--import-stl", "--skip-self-intersection-check"});
-    const std::string& spec_path = single_spec(args, "export");
+    ExportRequest request;
+    request.input = single_input(args, "export");
     const auto output = args.value("--output");
     if (!output || output->empty()) throw UsageError("-o", "the output file is required (-o OUT.scad|stl|off|3mf|step|brep)");
-    const std::string extension = lowercase_extension(*output);
+    request.output = *output;
+    const std::string& extension = request.extension = lowercase_extension(*output);
     const bool mesh_format = extension == ".scad" || extension == ".stl" || extension == ".off" || extension == ".3mf";
-    const bool brep_format = extension == ".step" || extension == ".stp" || extension == ".brep";
-    if (!mesh_format && !brep_format)
+    if (!mesh_format && !request.exact())
         throw UsageError("-o", "unknown extension '" + extension + "' in '" + *output +
                                    "' (expected .scad, .stl, .off, .3mf, .step or .brep)");
     // Options that cannot apply are errors rather than silently ignored (they are usually typos).
     if (args.value("--module") && extension != ".scad") throw UsageError("--module", "applies only to .scad output");
     if (args.flag("--ascii") && extension != ".stl") throw UsageError("--ascii", "applies only to .stl output");
     if (args.flag("--import-stl") && extension != ".scad") throw UsageError("--import-stl", "applies only to .scad output");
-    if (brep_format && args.value("--tolerance")) throw UsageError("--tolerance", "does not apply to exact " + extension + " output");
-    if (brep_format && args.value("--angle")) throw UsageError("--angle", "does not apply to exact " + extension + " output");
-    if (brep_format && args.value("--max-triangles"))
-        throw UsageError("--max-triangles", "does not apply to exact " + extension + " output");
-    std::optional<std::size_t> max_triangles;
-    if (auto m = args.value("--max-triangles")) max_triangles = parse_count("--max-triangles", *m);
-    std::optional<double> tolerance, angle;
-    if (auto t = args.value("--tolerance")) tolerance = parse_positive("--tolerance", *t);
+    for (const char* option : {"--tolerance", "--angle", "--max-triangles"})
+        if (request.exact() && args.value(option)) throw UsageError(option, "does not apply to exact " + extension + " output");
+    if (auto m = args.value("--max-triangles")) request.max_triangles = parse_count("--max-triangles", *m);
+    if (auto t = args.value("--tolerance")) request.tolerance = parse_positive("--tolerance", *t);
     if (auto a = args.value("--angle")) {
-        angle = parse_positive("--angle", *a);
-        if (*angle >= 180) throw UsageError("--angle", "must be less than 180 degrees");
+        request.angle = parse_positive("--angle", *a);
+        if (*request.angle >= 180) throw UsageError("--angle", "must be less than 180 degrees");
     }
-    std::optional<std::string> module_name = args.value("--module");
-    if (module_name)
-        if (const std::string problem = ratbez::exporter::module_name_problem(*module_name); !problem.empty())
+    request.module_name = args.value("--module");
+    if (request.module_name)
+        if (const std::string problem = ratbez::exporter::module_name_problem(*request.module_name); !problem.empty())
             throw UsageError("--module", problem);
+    request.ascii = args.flag("--ascii");
+    request.import_stl = args.flag("--import-stl");
+    request.skip_self_intersection_check = args.flag("--skip-self-intersection-check");
+    return request;
+}
 
-    const ShapeSpec spec = ratbez::spec::load_spec(spec_path);
+// The tolerance a shape is meshed at: --tolerance, else the spec's, else the default for its size.
+double tolerance_for(const ShapeSpec& spec, const ExportRequest& request) {
+    return request.tolerance ? *request.tolerance : spec.tolerance ? *spec.tolerance : ratbez::default_tolerance(spec.solid);
+}
 
-    if (brep_format) {
-        if (extension == ".brep")
-            ratbez::occt::write_brep(spec.solid, *output);
-        else
-            ratbez::occt::write_step(spec.solid, *output);
-        std::cout << "wrote " << *output << " (exact B-rep, " << spec.solid.faces().size() << " faces)\n";
-        return 0;
-    }
+ratbez::Mesh tessellate_for(const ShapeSpec& spec, const ExportRequest& request, const ratbez::Progress& progress) {
+    return tessellate_for(spec, MeshRequest{tolerance_for(spec, request), request.angle ? request.angle : spec.tessellation_angle,
+                                            request.max_triangles, request.tolerance.has_value(), progress});
+}
 
-    const double used_tolerance = tolerance ? *tolerance : spec.tolerance ? *spec.tolerance : ratbez::default_tolerance(spec.solid);
-    if (!angle) angle = spec.tessellation_angle;
-    ProgressLine progress("exporting " + *output);
-    const ratbez::Progress line = [&progress](double fraction) { progress(fraction); };
-    const ratbez::Mesh mesh =
-        tessellate_for(spec, MeshRequest{used_tolerance, angle, max_triangles, tolerance.has_value(),
-                                         ratbez::progress_part(line, 0, kTessellationShare)});
-    ratbez::exporter::ExportOptions options;
-    // The module is named by --module, else by the spec's `name`, else after the file written. A 3MF
-    // object's name is any text: the spec's name or the file's stem as they are.
-    options.openscad.module_name =
-        extension == ".3mf" ? (spec.named ? spec.name : fs::path(*output).stem().string())
-        : module_name       ? *module_name
-        : spec.named ? derived_module_name(spec.name, "the spec's name")
-                     : derived_module_name(fs::path(*output).stem().string(), "the file name");
-    options.binary_stl = !args.flag("--ascii");
-    options.import_stl = args.flag("--import-stl");
-    if (spec.color) {
-        try {
-            options.openscad.color = ratbez::exporter::parse_color(*spec.color, "color");
-        } catch (const ratbez::Error& e) {
-            throw ratbez::spec::SpecError(e);
-        }
-    }
-    options.source = "spec " + spec_path;
-    options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, used_tolerance);
-    // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but
-    // heavy CGAL self-intersection test is skipped, at the user's explicit request.
-    options.checks.check_self_intersections = !args.flag("--skip-self-intersection-check");
-    options.progress = ratbez::progress_part(line, kTessellationShare, 1);
+std::optional<ratbez::exporter::Color> color_of(const ShapeSpec& spec) {
+    if (!spec.color) return std::nullopt;
     try {
-        ratbez::exporter::export_tessellation(spec.solid, mesh, used_tolerance, *output, options);
+        return ratbez::exporter::parse_color(*spec.color, "color");
+    } catch (const ratbez::Error& e) {
+        throw ratbez::spec::SpecError(e);
+    }
+}
+
+// Runs the mesh export; a mesh refused by the CGAL checks is our failure (exit 1), not the user's input.
+template <class Export>
+int checked_export(ProgressLine& progress, Export&& write) {
+    try {
+        write();
         progress.finish();
+        return 0;
     } catch (const ratbez::Error& e) {
         progress.finish();
-        // A mesh refused by the CGAL checks is our failure, not the user's input.
         if (e.argument() == "mesh") {
             std::cerr << "error: " << one_line(e.what()) << '\n';
             return 1;
         }
         throw;
     }
-    std::cout << "wrote " << *output
-              << (options.import_stl ? " and " + fs::path(*output).replace_extension(".stl").string() : std::string())
+}
+
+// One solid: a spec's, or a model file's only one.
+int export_one(const ShapeSpec& spec, bool model_file, const ExportRequest& request) {
+    const double used_tolerance = tolerance_for(spec, request);
+    ProgressLine progress("exporting " + request.output);
+    const ratbez::Progress line = [&progress](double fraction) { progress(fraction); };
+    const ratbez::Mesh mesh = tessellate_for(spec, request, ratbez::progress_part(line, 0, kTessellationShare));
+    ratbez::exporter::ExportOptions options;
+    // The module is named by --module, else by the spec's `name`, else after the file written (a model file's
+    // product name is whatever the CAD program chose: the output's name is the one the user picked). A 3MF
+    // object's name is any text: the name or the file's stem as they are.
+    const bool by_name = spec.named && !model_file;
+    options.openscad.module_name =
+        request.extension == ".3mf" ? (spec.named ? spec.name : fs::path(request.output).stem().string())
+        : request.module_name       ? *request.module_name
+        : by_name ? derived_module_name(spec.name, "the spec's name")
+                  : derived_module_name(fs::path(request.output).stem().string(), "the file name");
+    options.binary_stl = !request.ascii;
+    options.import_stl = request.import_stl;
+    options.openscad.color = color_of(spec);
+    options.source = (model_file ? "file " : "spec ") + request.input;
+    options.checks = ratbez::exporter::tessellation_checks(spec.solid, mesh, used_tolerance);
+    // Closure, manifoldness, orientation and volume are still checked; only the O(n log n) but
+    // heavy CGAL self-intersection test is skipped, at the user's explicit request.
+    options.checks.check_self_intersections = !request.skip_self_intersection_check;
+    options.progress = ratbez::progress_part(line, kTessellationShare, 1);
+    if (const int failed = checked_export(progress, [&] {
+            ratbez::exporter::export_tessellation(spec.solid, mesh, used_tolerance, request.output, options);
+        }))
+        return failed;
+    std::cout << "wrote " << request.output
+              << (options.import_stl ? " and " + fs::path(request.output).replace_extension(".stl").string() : std::string())
               << " (" << mesh.triangles.size() << " triangles, " << mesh.vertices.size()
               << " vertices, tolerance " << format_number(used_tolerance, 6) << ")\n";
     return 0;
+}
+
+// OpenSCAD module names for the parts of a library: each name made an identifier, repeats numbered, none equal
+// to the module that places them all.
+std::vector<std::string> part_module_names(const std::vector<ShapeSpec>& shapes, const std::string& placing) {
+    std::set<std::string> taken{placing};
+    std::vector<std::string> names;
+    for (const ShapeSpec& shape : shapes) {
+        const std::string base = derived_module_name(shape.name, "the solid's name");
+        std::string name = base;
+        for (int k = 2; !taken.insert(name).second; ++k) name = base + "_" + std::to_string(k);
+        names.push_back(name);
+    }
+    return names;
+}
+
+// Several solids of a model file into one library (.scad: one module each and one placing them all; .3mf: one
+// object each; .stl/.off: one mesh of them all), each meshed at its own tolerance unless --tolerance is given.
+int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& request) {
+    if (request.import_stl) throw UsageError("--import-stl", "applies to one solid, and '" + request.input + "' holds " +
+                                                                 std::to_string(shapes.size()));
+    ProgressLine progress("exporting " + request.output);
+    const ratbez::Progress line = [&progress](double fraction) { progress(fraction); };
+    ratbez::exporter::ExportOptions options;
+    options.openscad.module_name =
+        request.module_name ? *request.module_name : derived_module_name(fs::path(request.output).stem().string(), "the file name");
+    const std::vector<std::string> module_names = request.extension == ".scad"
+                                                      ? part_module_names(shapes, options.openscad.module_name)
+                                                      : std::vector<std::string>();
+    std::vector<ratbez::Mesh> meshes;
+    meshes.reserve(shapes.size());  // the parts point into it
+    std::vector<ratbez::exporter::LibraryPart> parts;
+    const double share = kTessellationShare / static_cast<double>(shapes.size());
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        const ShapeSpec& shape = shapes[i];
+        meshes.push_back(tessellate_for(shape, request,
+                                        ratbez::progress_part(line, share * static_cast<double>(i), share * static_cast<double>(i + 1))));
+        ratbez::exporter::LibraryPart part;
+        part.module_name = module_names.empty() ? shape.name : module_names[i];
+        part.solid = &shape.solid;
+        part.mesh = &meshes.back();
+        part.tolerance = tolerance_for(shape, request);
+        part.checks = ratbez::exporter::tessellation_checks(shape.solid, meshes.back(), part.tolerance);
+        part.checks.check_self_intersections = !request.skip_self_intersection_check;
+        part.color = color_of(shape);
+        parts.push_back(std::move(part));
+    }
+    options.binary_stl = !request.ascii;
+    options.source = "file " + request.input;
+    options.progress = ratbez::progress_part(line, kTessellationShare, 1);
+    std::vector<ratbez::exporter::WrittenMesh> written;
+    if (const int failed = checked_export(progress, [&] { written = ratbez::exporter::export_library(parts, request.output, options); }))
+        return failed;
+    std::size_t triangles = 0;
+    for (const auto& w : written) triangles += w.mesh.triangles.size();
+    std::cout << "wrote " << request.output << " (" << shapes.size() << " solids"
+              << (request.extension == ".scad" ? " in modules " + joined(module_names) + " placed by " + options.openscad.module_name + "()"
+                                               : std::string())
+              << ", " << triangles << " triangles)\n";
+    return 0;
+}
+
+int command_export(const std::vector<std::string>& raw) {
+    const ExportRequest request = parse_export(raw);
+    const ratbez::cli::Input input = load_for(request.input);
+    if (request.exact()) {
+        std::vector<ratbez::Solid> solids;
+        std::size_t faces = 0;
+        for (const ShapeSpec& shape : input.shapes) {
+            solids.push_back(shape.solid);
+            faces += shape.solid.faces().size();
+        }
+        if (request.extension == ".brep")
+            ratbez::occt::write_brep(solids, request.output);
+        else
+            ratbez::occt::write_step(solids, request.output);
+        std::cout << "wrote " << request.output << " (exact B-rep, "
+                  << (solids.size() > 1 ? std::to_string(solids.size()) + " solids, " : std::string()) << faces << " faces)\n";
+        return 0;
+    }
+    if (input.shapes.size() == 1) return export_one(input.shapes.front(), input.model_file, request);
+    return export_several(input.shapes, request);
 }
 
 // ---- check -----------------------------------------------------------------------------------------
@@ -367,60 +491,96 @@ nlohmann::json report_json(const ratbez::occt::CheckReport& report) {
     return j;
 }
 
+// check and info print one block per solid; --json prints the spec's object, or a model file's array of them.
+void print_json(const std::vector<nlohmann::json>& reports, bool model_file) {
+    std::cout << (model_file ? nlohmann::json(reports) : reports.front()).dump(2) << '\n';
+}
+
 int command_check(const std::vector<std::string>& raw) {
     const Arguments args = parse_arguments("check", raw, {}, {"--json"});
-    const ShapeSpec spec = ratbez::spec::load_spec(single_spec(args, "check"));
-    const ratbez::occt::CheckReport report = ratbez::occt::check(spec.solid);
-    if (args.flag("--json")) {
-        nlohmann::json j = report_json(report);
-        j["name"] = spec.name;
-        std::cout << j.dump(2) << '\n';
-    } else {
+    const ratbez::cli::Input input = load_for(single_input(args, "check"));
+    bool passed = true;
+    std::vector<nlohmann::json> reports;
+    for (const ShapeSpec& spec : input.shapes) {
+        const ratbez::occt::CheckReport report = ratbez::occt::check(spec.solid);
+        passed = passed && report.passed;
+        if (args.flag("--json")) {
+            nlohmann::json j = report_json(report);
+            j["name"] = spec.name;
+            reports.push_back(std::move(j));
+            continue;
+        }
+        if (&spec != &input.shapes.front()) std::cout << '\n';
         std::cout << spec.name << " (" << spec.type << ")\n" << ratbez::occt::format_report(report);
         if (!report.passed) std::cout << "FAILED\n";
     }
-    return report.passed ? 0 : 1;
+    if (args.flag("--json")) print_json(reports, input.model_file);
+    return passed ? 0 : 1;
 }
 
 // ---- info ------------------------------------------------------------------------------------------
 
+struct Facts {
+    std::size_t faces = 0, edges = 0, degenerate_edges = 0, vertices = 0, shells = 0;
+    int euler = 0;
+    double area = 0, volume = 0;
+    ratbez::Box box;
+};
+
+Facts facts_of(const ratbez::Solid& solid) {
+    Facts facts;
+    const auto edges = solid.edges();
+    facts.degenerate_edges =
+        static_cast<std::size_t>(std::count_if(edges.begin(), edges.end(), [](const auto& e) { return e->degenerate; }));
+    facts.edges = edges.size() - facts.degenerate_edges;
+    facts.faces = solid.faces().size();
+    facts.vertices = solid.vertices().size();
+    facts.shells = solid.shells().size();
+    facts.euler = solid.euler_characteristic();
+    facts.area = solid.area();
+    facts.volume = solid.volume();
+    facts.box = solid.bounding_box();
+    return facts;
+}
+
 int command_info(const std::vector<std::string>& raw) {
     const Arguments args = parse_arguments("info", raw, {}, {"--json"});
-    const ShapeSpec spec = ratbez::spec::load_spec(single_spec(args, "info"));
-    const ratbez::Solid& solid = spec.solid;
-    const auto edges = solid.edges();
-    const auto degenerate = static_cast<std::size_t>(std::count_if(edges.begin(), edges.end(), [](const auto& e) { return e->degenerate; }));
-    const std::size_t vertices = solid.vertices().size();
-    const int euler = solid.euler_characteristic();
-    const double area = solid.area(), volume = solid.volume();
-    const auto box = solid.bounding_box();
-    if (args.flag("--json")) {
-        nlohmann::json j;
-        j["name"] = spec.name;
-        j["type"] = spec.type;
-        j["faces"] = solid.faces().size();
-        j["edges"] = edges.size() - degenerate;
-        j["degenerate_edges"] = degenerate;
-        j["vertices"] = vertices;
-        j["euler_characteristic"] = euler;
-        j["area"] = area;
-        j["volume"] = volume;
-        j["bounding_box"] = {{"min", {box.min.x, box.min.y, box.min.z}}, {"max", {box.max.x, box.max.y, box.max.z}}};
-        std::cout << j.dump(2) << '\n';
-        return 0;
+    const ratbez::cli::Input input = load_for(single_input(args, "info"));
+    std::vector<nlohmann::json> reports;
+    for (const ShapeSpec& spec : input.shapes) {
+        const Facts f = facts_of(spec.solid);
+        if (args.flag("--json")) {
+            nlohmann::json j;
+            j["name"] = spec.name;
+            j["type"] = spec.type;
+            j["faces"] = f.faces;
+            j["edges"] = f.edges;
+            j["degenerate_edges"] = f.degenerate_edges;
+            j["vertices"] = f.vertices;
+            j["shells"] = f.shells;
+            j["euler_characteristic"] = f.euler;
+            j["area"] = f.area;
+            j["volume"] = f.volume;
+            j["bounding_box"] = {{"min", {f.box.min.x, f.box.min.y, f.box.min.z}}, {"max", {f.box.max.x, f.box.max.y, f.box.max.z}}};
+            reports.push_back(std::move(j));
+            continue;
+        }
+        const auto point = [](const ratbez::Vec3& p) {
+            return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
+        };
+        if (&spec != &input.shapes.front()) std::cout << '\n';
+        std::cout << "name:                 " << spec.name << '\n'
+                  << "type:                 " << spec.type << '\n'
+                  << "faces:                " << f.faces << '\n'
+                  << "edges:                " << f.edges << " (+" << f.degenerate_edges << " degenerate)\n"
+                  << "vertices:             " << f.vertices << '\n'
+                  << "shells:               " << f.shells << (f.shells > 1 ? " (the outer one and voids)" : "") << '\n'
+                  << "euler characteristic: " << f.euler << '\n'
+                  << "area:                 " << format_number(f.area, 15) << '\n'
+                  << "volume:               " << format_number(f.volume, 15) << '\n'
+                  << "bounding box:         " << point(f.box.min) << " .. " << point(f.box.max) << '\n';
     }
-    const auto point = [](const ratbez::Vec3& p) {
-        return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
-    };
-    std::cout << "name:                 " << spec.name << '\n'
-              << "type:                 " << spec.type << '\n'
-              << "faces:                " << solid.faces().size() << '\n'
-              << "edges:                " << edges.size() - degenerate << " (+" << degenerate << " degenerate)\n"
-              << "vertices:             " << vertices << '\n'
-              << "euler characteristic: " << euler << '\n'
-              << "area:                 " << format_number(area, 15) << '\n'
-              << "volume:               " << format_number(volume, 15) << '\n'
-              << "bounding box:         " << point(box.min) << " .. " << point(box.max) << '\n';
+    if (args.flag("--json")) print_json(reports, input.model_file);
     return 0;
 }
 

@@ -32,14 +32,14 @@ inline constexpr std::size_t max_spec_bytes = 16u << 20;
 inline constexpr int max_json_depth = 64;
 
 struct ShapeSpec {
-    std::string name;                         // `name`, else the fallback (the file's stem)
-    std::string description;
-    std::string type;                         // shape.type
-    std::optional<double> tolerance;          // absolute chordal tolerance for tessellation
-    std::optional<double> tessellation_angle; // degrees
+    std::string name{};                       // `name`, else the fallback (the file's stem)
+    std::string description{};
+    std::string type{};                       // shape.type
+    std::optional<double> tolerance{};        // absolute chordal tolerance for tessellation
+    std::optional<double> tessellation_angle{};  // degrees
     Solid solid;                              // solid.construction(): what it was built as
     bool named = false;                       // the document gave `name` (else it is the fallback)
-    std::optional<std::string> color;         // `color`, "#rrggbb" or "#rrggbbaa": .scad output wraps the body in color()
+    std::optional<std::string> color{};       // `color`, "#rrggbb" or "#rrggbbaa": .scad output wraps the body in color()
 };
 
 // Parses and builds. `fallback_name` is used when the document has no `name`; it must itself be a

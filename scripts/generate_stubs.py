@@ -44,6 +44,8 @@ BY_FUNCTION = {
     ("Mesh.__init__", "triangles"): "Sequence[Sequence[int]]",
     ("Mesh.__init__", "vertices"): "Sequence[Point]",
     ("write_3mf", "solid"): "Union[Solid, Dict[str, Solid]]",
+    ("write_step", "solid"): "Union[Solid, Sequence[Solid]]",
+    ("write_brep", "solid"): "Union[Solid, Sequence[Solid]]",
     ("write_3mf", "name"): "Optional[str]",
     ("write_3mf", "color"): "Union[str, Dict[str, str]]",
     ("_restore_state", "state"): "Any",

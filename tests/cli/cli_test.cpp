@@ -270,7 +270,7 @@ TEST_F(Cli, UsageErrors) {
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--module", "polyhedron"}),
                      "usage error: --module: 'polyhedron' is an OpenSCAD built-in or keyword: a module of that name would "
                      "shadow OpenSCAD's own in every file that uses the library (try 'polyhedron_solid')");
-    expect_bad_input(ratbez({"info"}), "usage error: SPEC.json: missing (usage: ratbez info SPEC.json ...)");
+    expect_bad_input(ratbez({"info"}), "usage error: SPEC.json: missing (usage: ratbez info SPEC.json|MODEL.step|MODEL.brep ...)");
     expect_bad_input(ratbez({"info", sphere, "other.json"}), "usage error: other.json: unexpected argument for 'info'");
     EXPECT_FALSE(fs::exists(path("a.scad")));
     EXPECT_FALSE(fs::exists(path("a.stl")));
@@ -617,4 +617,82 @@ TEST_F(Cli, SpecColourWrapsTheModuleBody) {
                      "spec error: color: 'red' is not a colour (expected \"#rrggbb\" or \"#rrggbbaa\", hexadecimal)");
     expect_bad_input(ratbez({"info", spec_file(R"({"color": 3, "shape": {"type": "sphere", "radius": 1}})")}),
                      "spec error: color: must be a string");
+}
+
+// ---- model files (issue 24): a .step/.stp/.brep works wherever a spec does, every solid in it ----------
+
+std::string corpus(const std::string& name) { return std::string(RATBEZ_CORPUS_DIR) + "/" + name; }
+
+TEST_F(Cli, InfoListsEverySolidOfAModelFile) {
+    const CommandResult run = ratbez({"info", "--json", corpus("two_solids.step")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto solids = nlohmann::json::parse(run.out);
+    ASSERT_TRUE(solids.is_array());
+    ASSERT_EQ(solids.size(), 2u);
+    // FreeCAD's Part.export names no product: the solids are named after the file, numbered.
+    EXPECT_EQ(solids[0]["name"], "two_solids_1");
+    EXPECT_EQ(solids[1]["name"], "two_solids_2");
+    EXPECT_EQ(solids[0]["type"], "STEP solid");
+    EXPECT_NEAR(solids[0]["volume"].get<double>(), 125, 1e-9);                                   // a 5 mm cube
+    EXPECT_NEAR(solids[1]["volume"].get<double>(), std::numbers::pi * 4 * 6 / 3 * 3, 1e-9);       // a cylinder r 2 h 6
+    // A box with a spherical void: one solid of two shells, its volume the box's less the ball's.
+    const CommandResult void_run = ratbez({"info", corpus("box_with_void.brep")});
+    ASSERT_EQ(void_run.exit_code, 0) << void_run.err;
+    EXPECT_NE(void_run.out.find("shells:               2 (the outer one and voids)"), std::string::npos) << void_run.out;
+    EXPECT_NE(void_run.out.find("euler characteristic: 4"), std::string::npos) << void_run.out;
+}
+
+TEST_F(Cli, ExportsEverySolidOfAModelFileIntoOneLibrary) {
+    const CommandResult run = ratbez({"export", corpus("two_solids.step"), "-o", path("parts.scad")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("2 solids in modules two_solids_1, two_solids_2 placed by parts()"), std::string::npos) << run.out;
+    const std::string scad = read_file(path("parts.scad"));
+    for (const char* module : {"module two_solids_1() {", "module two_solids_2() {", "module parts() {"})
+        EXPECT_NE(scad.find(module), std::string::npos) << module;
+    // Exact formats keep every solid: the STEP written reads back as two.
+    for (const char* exact : {"parts.step", "parts.brep"}) {
+        const CommandResult written = ratbez({"export", corpus("two_solids.step"), "-o", path(exact)});
+        ASSERT_EQ(written.exit_code, 0) << written.err;
+        EXPECT_NE(written.out.find("(exact B-rep, 2 solids, 9 faces)"), std::string::npos) << written.out;
+        const CommandResult back = ratbez({"info", "--json", path(exact)});
+        ASSERT_EQ(back.exit_code, 0) << back.err;
+        EXPECT_EQ(nlohmann::json::parse(back.out).size(), 2u) << exact;
+    }
+    // One mesh of both for .stl and .off, one object each for .3mf.
+    for (const char* mesh : {"parts.stl", "parts.off", "parts.3mf"}) {
+        const CommandResult written = ratbez({"export", corpus("two_solids.step"), "-o", path(mesh)});
+        EXPECT_EQ(written.exit_code, 0) << mesh << ": " << written.err;
+        EXPECT_TRUE(fs::exists(path(mesh))) << mesh;
+    }
+}
+
+TEST_F(Cli, OneSolidOfAModelFileIsNamedAfterTheOutput) {
+    // A solid with a void and a trimmed sphere: exported as any single solid, module after the file written.
+    for (const char* input : {"box_with_void.brep", "sphere_minus_box.step"}) {
+        const CommandResult run = ratbez({"export", corpus(input), "-o", path("part.scad")});
+        ASSERT_EQ(run.exit_code, 0) << input << ": " << run.err;
+        EXPECT_NE(read_file(path("part.scad")).find("module part() {"), std::string::npos) << input;
+    }
+}
+
+TEST_F(Cli, CheckReportsEverySolidOfAModelFile) {
+    const CommandResult run = ratbez({"check", "--json", corpus("two_solids.brep")});
+    ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+    const auto reports = nlohmann::json::parse(run.out);
+    ASSERT_EQ(reports.size(), 2u);
+    for (const auto& report : reports) {
+        EXPECT_EQ(report["valid"], true);
+        EXPECT_EQ(report["passed"], true);
+    }
+    const CommandResult text = ratbez({"check", corpus("sphere_minus_box.step")});
+    EXPECT_EQ(text.exit_code, 0) << text.out;
+    EXPECT_EQ(text.out.rfind("sphere_minus_box (STEP solid)\nOpenCASCADE check: PASSED\n", 0), 0u) << text.out;
+}
+
+TEST_F(Cli, ModelFileErrorsAreOneLine) {
+    expect_bad_input(ratbez({"info", path("missing.step")}), "error: path: '" + path("missing.step") + "' does not exist");
+    std::ofstream(path("garbage.step")) << "not STEP at all\n";
+    expect_bad_input(ratbez({"info", path("garbage.step")}), "error: path: '" + path("garbage.step") + "' is not a readable STEP file");
+    expect_bad_input(ratbez({"export", corpus("two_solids.step"), "-o", path("x.scad"), "--import-stl"}),
+                     "usage error: --import-stl: applies to one solid, and '" + corpus("two_solids.step") + "' holds 2");
 }

@@ -4,6 +4,8 @@
 // then ("ERROR: The given mesh is not closed!"), so the test reads its output, and then reads the STL it
 // wrote back to compare the volume.
 //
+// Then the same for the users' models of the corpus (tests/corpus), read from STEP.
+//
 // Registered only with RATBEZ_TEST_OPENSCAD=ON (slow: CGAL Nef inside OpenSCAD).
 
 #include <gtest/gtest.h>
@@ -21,6 +23,7 @@
 #include <vector>
 
 #include "ratbez/export/export.hpp"
+#include "ratbez/occt/files.hpp"
 #include "ratbez/tessellate.hpp"
 #include "spec.hpp"
 
@@ -62,6 +65,15 @@ std::string read_file(const fs::path& path) {
     return {std::istreambuf_iterator<char>(in), {}};
 }
 
+// Runs OpenSCAD in `dir` on `input`, writing `output`; returns what it printed (stdout and stderr).
+std::string openscad(const fs::path& dir, const std::string& input, const std::string& output) {
+    const std::string command = "cd '" + dir.string() + "' && '" RATBEZ_OPENSCAD_EXECUTABLE "' -o " + output + " " + input +
+                                " > openscad.log 2>&1";
+    const int status = std::system(command.c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(dir / "openscad.log");
+    return read_file(dir / "openscad.log");
+}
+
 struct Case {
     std::string example;
     double relative_tolerance;
@@ -99,13 +111,7 @@ TEST_P(OpenScadRender, RendersWithoutWarningsAndKeepsTheVolume) {
     std::ofstream(dir / "wrapper.scad") << "use <shape.scad>\ndifference() {\n  " << spec.name << "();\n  translate(["
                                         << box.max.x + size << ", " << box.max.y + size << ", " << box.max.z + size
                                         << "]) cube(" << size * 1e-3 << ");\n}\n";
-    const auto run_openscad = [&](const std::string& input, const std::string& output) {
-        const std::string command = "cd '" + dir.string() + "' && '" RATBEZ_OPENSCAD_EXECUTABLE "' -o " + output +
-                                    " " + input + " > openscad.log 2>&1";
-        const int status = std::system(command.c_str());
-        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(dir / "openscad.log");
-        return read_file(dir / "openscad.log");
-    };
+    const auto run_openscad = [&](const std::string& input, const std::string& output) { return openscad(dir, input, output); };
     if (c.relative_tolerance == 1e-2) {
         // Opened on its own, the file's call renders the solid.
         const std::string alone = run_openscad("shape.scad", "alone.stl");
@@ -165,6 +171,60 @@ TEST(OpenScadImportStl, AUsedLibraryFindsItsStlBesideItAndRendersCleanly) {
     EXPECT_NEAR(volume, written.mesh.volume(), 2e-5 * std::abs(written.mesh.volume()));
     fs::remove_all(dir);
 }
+
+// Users' models (issue 24): every STEP model of the corpus (FreeCAD's booleans, fillets, PartDesign features,
+// compounds; tests/corpus) read, each solid a module of one library at its default tolerance, the module placing
+// them all used from another file inside a boolean.
+class CorpusRender : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(CorpusRender, RendersThroughUseInABooleanWithoutWarnings) {
+    const std::vector<ratbez::Solid> solids = ratbez::occt::read_step_all(GetParam().string());
+    ASSERT_FALSE(solids.empty());
+    std::vector<ratbez::Mesh> meshes;
+    meshes.reserve(solids.size());  // the parts point into it
+    std::vector<ratbez::exporter::LibraryPart> parts;
+    ratbez::Box box;
+    for (std::size_t i = 0; i < solids.size(); ++i) {
+        const double tolerance = ratbez::default_tolerance(solids[i]);
+        meshes.push_back(ratbez::tessellate(solids[i], tolerance));
+        parts.push_back({"part_" + std::to_string(i), &solids[i], &meshes.back(), tolerance,
+                         ratbez::exporter::tessellation_checks(solids[i], meshes.back(), tolerance), std::nullopt});
+        box.add(solids[i].bounding_box());
+    }
+    const fs::path dir = fs::temp_directory_path() / ("ratbez_openscad_corpus_" + GetParam().stem().string());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    ratbez::exporter::ExportOptions options;
+    options.openscad.module_name = "model";
+    const auto written = ratbez::exporter::export_library(parts, (dir / "model.scad").string(), options);
+    const double size = box.diagonal();
+    std::ofstream(dir / "wrapper.scad") << "use <model.scad>\ndifference() {\n  model();\n  translate(["
+                                        << box.max.x + size << ", " << box.max.y + size << ", " << box.max.z + size
+                                        << "]) cube(" << size * 1e-3 << ");\n}\n";
+    const std::string log = openscad(dir, "wrapper.scad", "out.stl");
+    EXPECT_EQ(log.find("WARNING"), std::string::npos) << log;
+    EXPECT_EQ(log.find("ERROR"), std::string::npos) << log;
+    std::size_t facets = 0;
+    const double stl_volume = ascii_stl_volume(read_file(dir / "out.stl"), facets);
+    ASSERT_GT(facets, 0u) << "OpenSCAD dropped the model:\n" << log;
+    // Several solids may touch or overlap, and OpenSCAD's union merges them. One keeps its volume to OpenSCAD's
+    // STL precision (6 significant digits, relative 1e-5 on each coordinate and so a few 1e-5 on the volume).
+    if (solids.size() == 1) {
+        EXPECT_NEAR(stl_volume, written.front().mesh.volume(), 1e-4 * std::abs(written.front().mesh.volume()));
+    }
+    fs::remove_all(dir);
+}
+
+std::vector<fs::path> corpus_step_files() {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(RATBEZ_CORPUS_DIR))
+        if (entry.path().extension() == ".step") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, CorpusRender, ::testing::ValuesIn(corpus_step_files()),
+                         [](const ::testing::TestParamInfo<fs::path>& info) { return info.param.stem().string(); });
 
 std::vector<Case> all_cases() {
     std::vector<Case> cases;

@@ -79,3 +79,25 @@ def test_progress_and_ctrl_c(tmp_path):
 
     with pytest.raises(KeyboardInterrupt):
         ratbez.read_brep(path, progress=interrupt)
+
+
+@needs_occt
+@pytest.mark.parametrize("reader, writer, suffix", [("read_brep_all", "write_brep", ".brep"),
+                                                    ("read_step_all", "write_step", ".step")])
+def test_a_list_of_solids_writes_one_file_read_back_in_order_with_names(tmp_path, reader, writer, suffix):
+    """What read_step_all returns goes back out whole: one STEP product per solid, named, or a .brep compound."""
+    bolt = ratbez.cylinder(1, 6)
+    bolt.name = "Bolt"
+    nut = ratbez.torus(3, 1, center=(10, 0, 0))
+    nut.name = "Écrou"                        # a name outside ASCII comes back as written
+    plain = ratbez.sphere(2, center=(0, 10, 0))  # no name: none comes back
+    path = tmp_path / ("parts" + suffix)
+    getattr(ratbez, writer)([bolt, nut, plain], path)
+    back = getattr(ratbez, reader)(path)
+    assert [s.volume() for s in back] == pytest.approx([bolt.volume(), nut.volume(), plain.volume()], rel=1e-9)
+    if suffix == ".step":
+        assert [s.name for s in back] == ["Bolt", "Écrou", ""]
+    getattr(ratbez, writer)((bolt,), path)  # a tuple of one is one solid
+    assert len(getattr(ratbez, reader)(path)) == 1
+    for bad, argument in (([], "solid"), ([bolt, 3], "solid[1]"), (5, "solid")):
+        raises_naming(argument, getattr(ratbez, writer), bad, path)

@@ -23,10 +23,12 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <STEPControl_StepModelType.hxx>
-#include <STEPControl_Writer.hxx>
+#include <STEPCAFControl_Writer.hxx>
+#include <TCollection_ExtendedString.hxx>
 #include <Standard_Failure.hxx>
 
 #include <algorithm>
+#include <span>
 #include <array>
 #include <exception>
 #include <filesystem>
@@ -203,11 +205,14 @@ Solid one_solid(std::vector<NamedShape> shapes, const std::string& path, const P
     return solid;
 }
 
-// The name XCAF keeps on a label (a STEP product's name), or "".
+// The name XCAF keeps on a label (a STEP product's name), or "" where there is none. OpenCASCADE's STEP writer
+// names a product it was given no name for "Open CASCADE STEP translator <version> <n>" (FreeCAD's
+// Part.export, our own unnamed solids): that is no name either.
 std::string label_name(const TDF_Label& label) {
     Handle(TDataStd_Name) name;
     if (!label.FindAttribute(TDataStd_Name::GetID(), name)) return "";
     const TCollection_ExtendedString& text = name->Get();
+    if (text.Search("Open CASCADE STEP translator ") == 1) return "";
     std::string out;
     for (int i = 1; i <= text.Length(); ++i) {
         const char16_t c = static_cast<char16_t>(text.Value(i));
@@ -313,26 +318,61 @@ std::vector<NamedShape> read_brep_shapes(const std::string& path, const Progress
 
 // Both writers go through output_file.hpp: the path is checked and a temporary file made first (cheap
 // checks before the conversion), OpenCASCADE writes that file by name, and it is renamed over the target.
-void write_step(const Solid& solid, const std::string& path, const ConvertOptions& options) {
+// STEP goes through XCAF so that each solid is a product named after Solid::name, which read_step_all gives back.
+void write_step(std::span<const Solid> solids, const std::string& path, const ConvertOptions& options) {
+    require(!solids.empty(), "solids", "is empty");
     output::write_file_by_name(path, [&](const std::string& name) {
-        const TopoDS_Solid shape = to_occt(solid, options);
+        std::vector<TopoDS_Solid> shapes;
+        shapes.reserve(solids.size());
+        for (const Solid& solid : solids) shapes.push_back(to_occt(solid, options));
         QuietMessenger quiet;
         try {
-            STEPControl_Writer writer;  // its constructor initialises the STEP statics (STEPControl_Controller::Init)
+            Handle(TDocStd_Document) document;
+            XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", document);
+            const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
+            for (std::size_t i = 0; i < solids.size(); ++i) {
+                const TDF_Label label = tool->AddShape(shapes[i], /*makeAssembly=*/false);
+                // XCAF names a new label after its shape type ("SOLID"); an unnamed solid stays unnamed.
+                if (solids[i].name().empty())
+                    label.ForgetAttribute(TDataStd_Name::GetID());
+                else
+                    TDataStd_Name::Set(label, TCollection_ExtendedString(solids[i].name().c_str(), /*isMultiByte=*/true));
+            }
+            STEPCAFControl_Writer writer;  // its constructor initialises the STEP statics (STEPControl_Controller::Init)
             Interface_Static::SetCVal("write.step.schema", "AP214IS");
-            require(writer.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone, "solid",
-                    "OpenCASCADE could not translate it to STEP");
+            require(writer.Transfer(document, STEPControl_AsIs), "solids", "OpenCASCADE could not translate them to STEP");
             require(writer.Write(name.c_str()) == IFSelect_RetDone, "path", "cannot write '" + path + "'");
+            XCAFApp_Application::GetApplication()->Close(document);
         } catch (const Standard_Failure& failure) {
             throw Error("path", "writing STEP to '" + path + "' failed: " + failure.GetMessageString());
         }
     });
 }
 
-void write_brep(const Solid& solid, const std::string& path, const ConvertOptions& options) {
+void write_step(const Solid& solid, const std::string& path, const ConvertOptions& options) {
+    write_step(std::span(&solid, 1), path, options);
+}
+
+void write_brep(std::span<const Solid> solids, const std::string& path, const ConvertOptions& options) {
+    require(!solids.empty(), "solids", "is empty");
     output::write_file_by_name(path, [&](const std::string& name) {
-        require(BRepTools::Write(to_occt(solid, options), name.c_str()), "path", "cannot write '" + path + "'");
+        // One solid is written bare, as OpenCASCADE and FreeCAD write a solid (the text brep_string gives).
+        TopoDS_Shape shape;
+        if (solids.size() == 1) {
+            shape = to_occt(solids.front(), options);
+        } else {
+            TopoDS_Compound compound;
+            BRep_Builder builder;
+            builder.MakeCompound(compound);
+            for (const Solid& solid : solids) builder.Add(compound, to_occt(solid, options));
+            shape = compound;
+        }
+        require(BRepTools::Write(shape, name.c_str()), "path", "cannot write '" + path + "'");
     });
+}
+
+void write_brep(const Solid& solid, const std::string& path, const ConvertOptions& options) {
+    write_brep(std::span(&solid, 1), path, options);
 }
 
 std::string brep_string(const Solid& solid, const ConvertOptions& options) {

@@ -789,8 +789,9 @@ def write_3mf(solid: Union[Solid, Dict[str, Solid]], path: Path, tolerance: Opti
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""
 
-def write_brep(solid: Solid, path: Path, bezier_faces: bool = ...) -> None:
-    """Write OpenCASCADE's native .brep text (bezier_faces: as brep_string)."""
+def write_brep(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: bool = ...) -> None:
+    """Write OpenCASCADE's native .brep text (bezier_faces: as brep_string); a list of solids writes a compound
+    of them, read back by read_brep_all."""
 
 def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with
@@ -800,8 +801,9 @@ def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""
 
-def write_step(solid: Solid, path: Path, bezier_faces: bool = ...) -> None:
-    """Write the exact B-spline B-rep as an AP214 STEP file (bezier_faces: as brep_string)."""
+def write_step(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: bool = ...) -> None:
+    """Write the exact B-spline B-rep as an AP214 STEP file (bezier_faces: as brep_string). A list of solids
+    (what read_step_all returns) writes one product each, named after solid.name, read back by read_step_all."""
 
 def write_stl(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., binary: bool = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),

@@ -173,6 +173,24 @@ void export_library(const py::dict& solids, const std::string& file, const py::o
     return shape.cast<const Solid&>();
 }
 
+// A Solid, or a list or tuple of them (what read_step_all returns), for the writers of several solids.
+[[maybe_unused]] std::vector<Solid> solids_of(const py::object& shapes) {
+    std::vector<Solid> solids;
+    if (py::isinstance<Solid>(shapes)) {
+        solids.push_back(shapes.cast<const Solid&>());
+        return solids;
+    }
+    if (!py::isinstance<py::list>(shapes) && !py::isinstance<py::tuple>(shapes))
+        throw Error("solid", "expected a ratbez.Solid or a list of them");
+    for (const py::handle item : shapes) {
+        if (!py::isinstance<Solid>(item))
+            throw Error("solid[" + std::to_string(solids.size()) + "]", "expected a ratbez.Solid");
+        solids.push_back(item.cast<const Solid&>());
+    }
+    if (solids.empty()) throw Error("solid", "is an empty list");
+    return solids;
+}
+
 }  // namespace
 
 void bind_io(py::module_& m) {
@@ -319,23 +337,25 @@ void bind_io(py::module_& m) {
     m.def(
         "write_step",
         [](const py::object& solid, const py::object& path, bool bezier_faces) {
-            const Solid& s = solid_of(solid);
+            const std::vector<Solid> solids = solids_of(solid);
             const std::string file = to_path(path, "path");
             py::gil_scoped_release release;
-            occt::write_step(s, file, occt::ConvertOptions{bezier_faces});
+            occt::write_step(solids, file, occt::ConvertOptions{bezier_faces});
         },
         py::arg("solid"), py::arg("path"), py::arg("bezier_faces") = false,
-        "Write the exact B-spline B-rep as an AP214 STEP file (bezier_faces: as brep_string).");
+        "Write the exact B-spline B-rep as an AP214 STEP file (bezier_faces: as brep_string). A list of solids\n"
+        "(what read_step_all returns) writes one product each, named after solid.name, read back by read_step_all.");
     m.def(
         "write_brep",
         [](const py::object& solid, const py::object& path, bool bezier_faces) {
-            const Solid& s = solid_of(solid);
+            const std::vector<Solid> solids = solids_of(solid);
             const std::string file = to_path(path, "path");
             py::gil_scoped_release release;
-            occt::write_brep(s, file, occt::ConvertOptions{bezier_faces});
+            occt::write_brep(solids, file, occt::ConvertOptions{bezier_faces});
         },
         py::arg("solid"), py::arg("path"), py::arg("bezier_faces") = false,
-        "Write OpenCASCADE's native .brep text (bezier_faces: as brep_string).");
+        "Write OpenCASCADE's native .brep text (bezier_faces: as brep_string); a list of solids writes a compound\n"
+        "of them, read back by read_brep_all.");
     m.def(
         "read_step",
         [](const py::object& path, const py::object& progress) { return read_released(path, progress, occt::read_step); },

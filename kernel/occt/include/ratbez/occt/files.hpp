@@ -2,6 +2,7 @@
 // Writing and reading solids through OpenCASCADE. This header includes no OCCT header, so the Python module and
 // the CLI can use it beside CGAL (whose headers clash with OCCT's Handle macro).
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -11,10 +12,15 @@
 
 namespace ratbez::occt {
 
-// AP214 STEP file of the solid's exact B-spline B-rep; throws ratbez::Error naming "path" if unwritable.
+// AP214 STEP file of the solid's exact B-spline B-rep, a product named after Solid::name; throws ratbez::Error
+// naming "path" if unwritable.
 void write_step(const Solid& solid, const std::string& path, const ConvertOptions& options = {});
 // OpenCASCADE's native .brep text.
 void write_brep(const Solid& solid, const std::string& path, const ConvertOptions& options = {});
+// Several solids in one file, as read_step_all / read_brep_all read them back: one STEP product per solid (in
+// order, named), or a .brep compound. Error "solids" when empty.
+void write_step(std::span<const Solid> solids, const std::string& path, const ConvertOptions& options = {});
+void write_brep(std::span<const Solid> solids, const std::string& path, const ConvertOptions& options = {});
 // The same .brep text as a string (what FreeCAD's Part.Shape.importBrepFromString reads).
 std::string brep_string(const Solid& solid, const ConvertOptions& options = {});
 
