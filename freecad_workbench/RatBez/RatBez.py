@@ -12,6 +12,7 @@ Scripting interface (works in freecadcmd, without the GUI):
     RatBez.export_openscad([cyl, sphere], "/tmp/parts.scad")   # a library: one module per solid, coloured
     RatBez.export_3mf([cyl, sphere], "/tmp/parts.3mf")          # one 3MF object per solid, named and coloured
     print(RatBez.check_occt(cyl))
+    for name, report in RatBez.check_occt_all(part_cut): ...   # any solid: Part, PartDesign, imported STEP
 
 Every make_<thing>(doc=None, **properties) adds a Part::FeaturePython to `doc` (default: the active
 document, or a new one), sets the given FreeCAD-style properties, recomputes and returns the object (a
@@ -33,7 +34,8 @@ from ratbez_wb import text as text_tools
 
 __all__ = ["make_bezier_curve", "make_bezier_surface", "make_cylinder", "make_cone", "make_sphere",
            "make_torus", "make_revolve", "make_extrude", "make_ruled", "make_loft", "make_sweep", "make_interpolate",
-           "is_solid", "solid_of", "export_openscad", "export_3mf", "exportable", "check_occt", "format_check_report",
+           "is_solid", "solid_of", "export_openscad", "export_3mf", "exportable", "check_occt", "check_occt_all",
+           "format_check_report",
            "check_passed", "safe_label", "export"]
 
 _DEFAULT_NAMES = {
@@ -340,8 +342,10 @@ def export_openscad(objects, path, tolerance=None, module=None, color=True):
     Transparency). A non-identity Placement is applied to the solid (on its control points) before
     tessellating, so `use <file>` imports the solids where FreeCAD shows them."""
     rb = kernel.ratbez()
-    several = isinstance(objects, (list, tuple))
     named = _named_solids(objects, identifiers=True)
+    # One object holding several solids (a compound, an imported assembly) is a library too: a module per solid
+    # and the placing one, named as the single solid's module would be.
+    several = isinstance(objects, (list, tuple)) or len(named) > 1
     if not several:
         name, solid, shape_color = named[0]
         rb.export_openscad(solid, path, tolerance, module=module, color=shape_color if color else None)
@@ -362,7 +366,7 @@ def export_openscad(objects, path, tolerance=None, module=None, color=True):
                     raise
                 named = [(n + "_solid" if n == refused else n, s, c) for n, s, c in named]
                 names = [n for n, _, _ in named]
-        labels = [obj.Label for obj in objects]
+        labels = [obj.Label for obj in (objects if isinstance(objects, (list, tuple)) else [objects])]
     # The kernel's writer (a new file renamed over the target, the rules of every ratbez export) writes the
     # library file; write_text_file then adds the Labels in comment lines of their own, escaped, by the same
     # rules.
@@ -380,7 +384,7 @@ def export_3mf(objects, path, tolerance=None, color=True):
     applied."""
     rb = kernel.ratbez()
     named = _named_solids(objects, identifiers=False)
-    if not isinstance(objects, (list, tuple)):
+    if len(named) == 1:
         name, solid, shape_color = named[0]
         rb.write_3mf(solid, path, tolerance, name=name, color=shape_color if color else None)
     else:
@@ -390,9 +394,26 @@ def export_3mf(objects, path, tolerance=None, color=True):
 
 
 def check_occt(obj):
-    """ratbez.occt_check of the object's solid in the representation FreeCAD gets (bezier_faces): a dict
-    with at least valid, max_deviation, volume and occt_volume."""
-    return dict(kernel.ratbez().occt_check(solid_of(obj), bezier_faces=True))
+    """ratbez.occt_check of the object's solid: a dict with at least valid, max_deviation, volume and
+    occt_volume. A RatBez feature is checked in the representation FreeCAD gets (bezier_faces); any other
+    solid (Part, PartDesign, an imported STEP) as the kernel reads it. An object holding several solids is
+    refused: check_occt_all reports each."""
+    reports = check_occt_all(obj)
+    if len(reports) != 1:
+        raise ValueError("'{}' holds {} solids: check_occt_all reports each".format(safe_label(obj.Label),
+                                                                                  len(reports)))
+    return reports[0][1]
+
+
+def check_occt_all(obj):
+    """[(name, report)] of ratbez.occt_check for every solid of the object, in order: the object's Label, or
+    Label_1, Label_2, ... when it holds several (a compound, an imported assembly)."""
+    rb = kernel.ratbez()
+    if is_solid(obj):
+        return [(obj.Label, dict(rb.occt_check(solid_of(obj), bezier_faces=True)))]
+    if not exportable(obj):
+        raise TypeError("'{}' holds no solid".format(safe_label(obj.Label)))
+    return [(name, dict(rb.occt_check(solid))) for name, solid, _ in _named_solids(obj, identifiers=False)]
 
 
 _REPORT_ROWS = (
@@ -403,9 +424,12 @@ _REPORT_ROWS = (
 )
 
 
-def format_check_report(obj, report):
-    """A readable, multi-line text of a check_occt report: each quantity once, none that does not apply."""
-    lines = ["RatBez OpenCASCADE check of '{}' ({}):".format(safe_label(obj.Label), obj.Name)]
+def format_check_report(obj, report, name=None):
+    """A readable, multi-line text of a check_occt report: each quantity once, none that does not apply.
+    `name`: the solid's name among several of the object (check_occt_all)."""
+    title = safe_label(obj.Label) if name is None or name == obj.Label else "{}' solid '{}".format(
+        safe_label(obj.Label), safe_label(name))
+    lines = ["RatBez OpenCASCADE check of '{}' ({}):".format(title, obj.Name)]
     width = max(len(title) for _, title in _REPORT_ROWS)
     for key, title in _REPORT_ROWS:
         value = report.get(key)

@@ -145,19 +145,100 @@ def test_several_solids_make_one_library_and_one_3mf():
     # The union of the three: the knob overlaps the peg's top, the peg stands on the plate.
     volume = Mesh.Mesh(stl).Volume
     check(800 + PI * 40 < volume < 800 + PI * 40 + 36 * PI, "union volume {}".format(volume))
-    # A solid the kernel cannot read (yet) is refused with the object's Label, and nothing is written.
+
+
+def freecads_own_solids(doc):
+    """Solids FreeCAD makes with its own tools, as users combine them: a Part Cut (a box with a cylindrical hole),
+    a Part Fillet, a PartDesign Body (pad, pocket and a revolution), and one Part compound of two solids."""
     holed = doc.addObject("Part::Cut", "Holed")
     holed.Base, holed.Tool = doc.addObject("Part::Box", "B2"), doc.addObject("Part::Cylinder", "C2")
     holed.Tool.Placement.Base = V(5, 5, -1)
+    holed.Tool.Height = 12
+    filleted = doc.addObject("Part::Fillet", "Filleted")
+    filleted.Base = doc.addObject("Part::Box", "B3")
+    filleted.Base.Placement.Base = V(20, 0, 0)
     doc.recompute()
+    filleted.Edges = [(i, 1.5, 1.5) for i in range(1, 13)]
+    body = doc.addObject("PartDesign::Body", "Body")
+    sketch = body.newObject("Sketcher::SketchObject", "PadSketch")
+    sketch.Support = (doc.getObject("XY_Plane"), [""])
+    sketch.MapMode = "FlatFace"
+    corners = [V(0, 0, 0), V(8, 0, 0), V(8, 6, 0), V(0, 6, 0)]
+    for a, b in zip(corners, corners[1:] + corners[:1]):
+        sketch.addGeometry(Part.LineSegment(a, b))
+    pad = body.newObject("PartDesign::Pad", "Pad")
+    pad.Profile, pad.Length = sketch, 4
+    doc.recompute()
+    hole_sketch = body.newObject("Sketcher::SketchObject", "HoleSketch")
+    hole_sketch.Support = (pad, ["Face6"])
+    hole_sketch.MapMode = "FlatFace"
+    hole_sketch.addGeometry(Part.Circle(V(4, 3, 0), V(0, 0, 1), 1.5))
+    doc.recompute()
+    pocket = body.newObject("PartDesign::Pocket", "Pocket")
+    pocket.Profile, pocket.Type = hole_sketch, "ThroughAll"
+    body.Placement.Base = V(0, 20, 0)
+    pair = doc.addObject("Part::Compound", "Pair")
+    sphere, cone = doc.addObject("Part::Sphere", "S4"), doc.addObject("Part::Cone", "K4")
+    sphere.Radius, sphere.Placement.Base = 3, V(40, 0, 3)
+    cone.Radius1, cone.Radius2, cone.Height, cone.Placement.Base = 3, 1, 5, V(50, 0, 0)
+    pair.Links = [sphere, cone]
+    doc.recompute()
+    for obj in (holed, filleted, body, pair):
+        check(obj.isValid() and obj.Shape.isValid(), obj.Label + " did not build in FreeCAD")
+    return holed, filleted, body, pair
+
+
+@suite.test
+def test_freecads_own_solids_export_and_check():
+    """Part booleans, fillets, a PartDesign Body and a compound export like RatBez solids (issue 24): each
+    object's solids become modules rendered clean by openscad with FreeCAD's volume (these are analytic
+    faces, where Shape.Volume is exact), one object holding two solids is a library of its own, and "Check
+    against OpenCASCADE" reports every solid."""
+    doc = App.newDocument("FreeCADSolids")
+    objects = freecads_own_solids(doc)
+    folder = os.path.join(OUT, "freecad_solids")
+    os.makedirs(folder, exist_ok=True)
+    scad = os.path.join(folder, "workshop.scad")
+    RatBez.export_openscad(list(objects), scad, TOLERANCE)
+    text = open(scad).read()
+    expected = {"Holed": objects[0].Shape.Volume, "Filleted": objects[1].Shape.Volume,
+                "Body": objects[2].Shape.Volume, "Pair_1": objects[3].Shape.Solids[0].Volume,
+                "Pair_2": objects[3].Shape.Solids[1].Volume}
+    for module, volume in expected.items():
+        check("\nmodule {}() {{\n".format(module) in text, module + " module missing")
+        stl = os.path.join(folder, module + ".stl")
+        openscad_log("use <workshop.scad>\ndifference() {{ {}(); translate([1e4, 1e4, 1e4]) cube(0.01); }}\n"
+                     .format(module), folder, stl)
+        close(Mesh.Mesh(stl).Volume, volume, 0.01, module + " rendered volume")
+    # The compound alone: one object, two solids, still a library (it wrote only the first solid before).
+    alone = os.path.join(folder, "pair.scad")
+    RatBez.export_openscad(objects[3], alone, TOLERANCE)
+    text = open(alone).read()
+    check("module Pair_1()" in text and "module Pair_2()" in text, text[-300:])
+    check(text.endswith("module pair() {\nPair_1();\nPair_2();\n}\npair();\n"), text[-200:])
+    stl = os.path.join(folder, "pair.stl")
+    openscad_log("use <pair.scad>\ndifference() { pair(); translate([1e4, 1e4, 1e4]) cube(0.01); }\n", folder, stl)
+    close(Mesh.Mesh(stl).Volume, objects[3].Shape.Volume, 0.01, "pair rendered volume")
+    path = os.path.join(folder, "pair.3mf")
+    RatBez.export_3mf(objects[3], path, TOLERANCE)
+    import zipfile
+    model = zipfile.ZipFile(path).read("3D/3dmodel.model").decode()
+    check('name="Pair_1"' in model and 'name="Pair_2"' in model, "the compound's 3MF objects")
+    # Check against OpenCASCADE: every solid of every object, each passing, with FreeCAD's volume.
+    for obj in objects:
+        reports = RatBez.check_occt_all(obj)
+        check(len(reports) == len(obj.Shape.Solids), "{}: {} reports".format(obj.Label, len(reports)))
+        for (name, report), solid in zip(reports, obj.Shape.Solids):
+            check(RatBez.check_passed(report), RatBez.format_check_report(obj, report, name))
+            close(report["volume"], solid.Volume, 1e-6, name + " volume")
+        text = RatBez.format_check_report(obj, reports[-1][1], reports[-1][0])
+        check(text.startswith("RatBez OpenCASCADE check of '{}".format(obj.Label)), text)
+    check(RatBez.check_occt(objects[0])["passed"], "check_occt of a Part Cut")
     try:
-        RatBez.export_openscad([peg, holed], os.path.join(folder, "holed.scad"), TOLERANCE)
-        readable = True
+        RatBez.check_occt(objects[3])
+        check(False, "check_occt of a compound of two solids did not refuse")
     except ValueError as error:
-        readable = False
-        check(str(error).startswith("'Holed': the ratbez kernel cannot read this solid yet: face "), str(error))
-        check(not os.path.exists(os.path.join(folder, "holed.scad")), "a refused export left a file")
-    print("a Part Cut with a cylindrical hole: {}".format("read by the kernel" if readable else "refused"))
+        check("holds 2 solids: check_occt_all" in str(error), str(error))
 
 
 suite.run_and_exit()

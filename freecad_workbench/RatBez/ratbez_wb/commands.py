@@ -310,31 +310,29 @@ class CheckOCCTCommand:
         return {"Pixmap": resources.icon("RatBez_CheckOCCT"),
                 "MenuText": QT_TRANSLATE_NOOP("RatBez_CheckOCCT", "Check against OpenCASCADE"),
                 "ToolTip": QT_TRANSLATE_NOOP("RatBez_CheckOCCT",
-                                             "Check the selected RatBez solids against OpenCASCADE (B-rep "
-                                             "validity, deviation of the evaluations, volumes) and print the "
-                                             "report to the report view")}
+                                             "Check the selected solids (RatBez, Part, PartDesign, imported) "
+                                             "against OpenCASCADE: B-rep validity, deviation of the "
+                                             "evaluations, volumes and areas; the report goes to the report "
+                                             "view")}
 
     def IsActive(self):
-        return App.ActiveDocument is not None and len(_selected_solids()) > 0
+        return App.ActiveDocument is not None and len(_selected_exportable()) > 0
 
     def Activated(self):
         import RatBez
-        for obj in _selected_solids():
+        for obj in _selected_exportable():
             try:
-                report = RatBez.check_occt(obj)
+                reports = RatBez.check_occt_all(obj)
             except kernel.error_types() as error:
                 App.Console.PrintError(translate("RatBez: cannot check '{}': {}\n").format(
                     one_line(obj.Label), one_line(error)))
                 continue
-            text = RatBez.format_check_report(obj, report)
-            if RatBez.check_passed(report):
-                App.Console.PrintMessage(text)
-            else:
-                App.Console.PrintWarning(text)
-
-
-def _selected_solids():
-    return [o for o in Gui.Selection.getSelection() if features.is_solid_feature(o)]
+            for name, report in reports:
+                text = RatBez.format_check_report(obj, report, name)
+                if RatBez.check_passed(report):
+                    App.Console.PrintMessage(text)
+                else:
+                    App.Console.PrintWarning(text)
 
 
 def _selected_exportable():

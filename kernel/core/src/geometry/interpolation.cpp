@@ -331,7 +331,8 @@ NurbsCurve interpolate(const std::vector<Vec3>& input, int degree, Parameterizat
 
 NurbsSurface interpolate_surface(const std::vector<std::vector<Vec3>>& grid, int degree_u, int degree_v) {
     for (const auto& [degree, name] : {std::pair{degree_u, "degree_u"}, std::pair{degree_v, "degree_v"}}) {
-        require(degree >= 1, name, [&] { return "must be >= 1, got " + std::to_string(degree); });
+        // (captured by copy: clang 14 cannot capture a structured binding, and the fuzzers build with it)
+        require(degree >= 1, name, [d = degree] { return "must be >= 1, got " + std::to_string(d); });
         limits::require_degree(degree, name);
     }
     const std::size_t rows = grid.size();
