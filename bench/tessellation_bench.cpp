@@ -12,6 +12,12 @@
 //
 // Names: tess/<solid>/<ours|BRepMesh>/<tolerance exponent>, e.g. tess/sphere/ours/3 for 1e-3.
 //
+// Issue 24's corpus (tests/corpus/freecad/*.brep, solids made by FreeCAD): corpus/<model>/<ours|BRepMesh>/3,
+// every solid of the file at 1e-3 of its size: ours tessellates the solid read by read_brep_all, BRepMesh
+// meshes the file's own shape (analytic faces, as an OpenCASCADE user meshes it). `deviation` is the
+// two-sided distance here (max_deviation and max_surface_to_mesh_distance, the larger), measured the same way
+// on both meshes; `deviation_over_tolerance` the worst solid's.
+//
 // Issue 17's sphere: bound/sphere_r10_tol0.01/ours meshes a sphere of radius 10 at tolerance 0.01 and adds
 // the counter `bound`, the fewest triangles any mesh with its vertices on the sphere needs,
 // 4 pi r^2 / ((3 sqrt 3 / 4) 2 r tol) = 4,837 (equilateral triangles whose circumcircle's sagitta is the
@@ -21,7 +27,10 @@
 
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <IMeshTools_Parameters.hxx>
 #include <Poly_Triangulation.hxx>
 #include <TopAbs_Orientation.hxx>
@@ -29,14 +38,17 @@
 #include <TopoDS_Face.hxx>
 #include <gp_Trsf.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "bench_shapes.hpp"
 #include "ratbez/deviation.hpp"
+#include "ratbez/occt/files.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/topology.hpp"
 #include "ratbez/primitives.hpp"
@@ -47,11 +59,12 @@ namespace {
 
 constexpr int tolerance_exponents[] = {2, 3, 4};
 
-// BRepMesh's triangulation of every face as one ratbez::Mesh: nodes moved by the face's location, and
-// triangles flipped on REVERSED faces so they stay outward (ours are all FORWARD, topology.hpp).
-Mesh mesh_from_occt(const occt::ConvertedSolid& converted) {
+// BRepMesh's triangulation of every face of `shape` as one ratbez::Mesh: nodes moved by the face's location,
+// and triangles flipped on REVERSED faces so they stay outward.
+Mesh mesh_from_occt(const TopoDS_Shape& shape) {
     Mesh mesh;
-    for (const TopoDS_Face& face : converted.faces) {
+    for (TopExp_Explorer faces(shape, TopAbs_FACE); faces.More(); faces.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(faces.Current());
         TopLoc_Location location;
         const Handle(Poly_Triangulation) triangulation = BRep_Tool::Triangulation(face, location);
         if (triangulation.IsNull()) continue;
@@ -69,6 +82,15 @@ Mesh mesh_from_occt(const occt::ConvertedSolid& converted) {
         }
     }
     return mesh;
+}
+
+IMeshTools_Parameters brepmesh_parameters(double tolerance) {
+    IMeshTools_Parameters parameters;
+    parameters.Deflection = tolerance;
+    parameters.Angle = 0.5;
+    parameters.Relative = Standard_False;
+    parameters.InParallel = Standard_False;
+    return parameters;
 }
 
 void report(benchmark::State& state, const Solid& solid, const Mesh& mesh, double tolerance) {
@@ -92,11 +114,7 @@ void ours(benchmark::State& state, const Solid& solid, double tolerance) {
 
 void brepmesh(benchmark::State& state, const Solid& solid, double tolerance) {
     const occt::ConvertedSolid converted = occt::convert(solid);
-    IMeshTools_Parameters parameters;
-    parameters.Deflection = tolerance;
-    parameters.Angle = 0.5;
-    parameters.Relative = Standard_False;
-    parameters.InParallel = Standard_False;
+    const IMeshTools_Parameters parameters = brepmesh_parameters(tolerance);
     for (auto _ : state) {
         state.PauseTiming();
         BRepTools::Clean(converted.solid);
@@ -104,7 +122,85 @@ void brepmesh(benchmark::State& state, const Solid& solid, double tolerance) {
         BRepMesh_IncrementalMesh mesher(converted.solid, parameters);
         benchmark::DoNotOptimize(mesher.IsDone());
     }
-    report(state, solid, mesh_from_occt(converted), tolerance);
+    report(state, solid, mesh_from_occt(converted.solid), tolerance);
+}
+
+// A corpus model: its solids as read_brep_all reads them, and the file's own TopoDS_Solids in the same order
+// (TopExp_Explorer, as the reader walks them); the tolerance is 1e-3 of the largest solid's size.
+struct CorpusModel {
+    std::vector<Solid> solids;
+    std::vector<TopoDS_Shape> shapes;
+    double tolerance = 0;
+};
+
+CorpusModel corpus_model(const std::filesystem::path& file) {
+    CorpusModel model;
+    model.solids = occt::read_brep_all(file.string());
+    TopoDS_Shape shape;
+    BRep_Builder builder;
+    BRepTools::Read(shape, file.string().c_str(), builder);
+    for (TopExp_Explorer solids(shape, TopAbs_SOLID); solids.More(); solids.Next()) model.shapes.push_back(solids.Current());
+    double size = 0;
+    for (const Solid& solid : model.solids) size = std::max(size, solid.bounding_box().diagonal());
+    model.tolerance = size * 1e-3;
+    return model;
+}
+
+// The counters of a corpus run: triangles summed over the solids, the worst two-sided deviation.
+void report_corpus(benchmark::State& state, const CorpusModel& model, const std::vector<Mesh>& meshes) {
+    double deviation = 0, triangles = 0;
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        deviation = std::max({deviation, max_deviation(model.solids[k], meshes[k]),
+                              max_surface_to_mesh_distance(model.solids[k], meshes[k])});
+        triangles += static_cast<double>(meshes[k].triangles.size());
+    }
+    state.counters["solids"] = static_cast<double>(meshes.size());
+    state.counters["triangles"] = triangles;
+    state.counters["tolerance"] = model.tolerance;
+    state.counters["deviation"] = deviation;
+    state.counters["deviation_over_tolerance"] = deviation / model.tolerance;
+}
+
+void corpus_ours(benchmark::State& state, const CorpusModel& model) {
+    std::vector<Mesh> meshes(model.solids.size());
+    for (auto _ : state)
+        for (std::size_t k = 0; k < meshes.size(); ++k) meshes[k] = tessellate(model.solids[k], model.tolerance);
+    report_corpus(state, model, meshes);
+}
+
+void corpus_brepmesh(benchmark::State& state, const CorpusModel& model) {
+    const IMeshTools_Parameters parameters = brepmesh_parameters(model.tolerance);
+    for (auto _ : state)
+        for (const TopoDS_Shape& shape : model.shapes) {
+            state.PauseTiming();
+            BRepTools::Clean(shape);
+            state.ResumeTiming();
+            BRepMesh_IncrementalMesh mesher(shape, parameters);
+            benchmark::DoNotOptimize(mesher.IsDone());
+        }
+    std::vector<Mesh> meshes;
+    for (const TopoDS_Shape& shape : model.shapes) meshes.push_back(mesh_from_occt(shape));
+    report_corpus(state, model, meshes);
+}
+
+void register_corpus() {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(RATBEZ_CORPUS_DIR))
+        if (entry.path().extension() == ".brep") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    static std::vector<CorpusModel> models;
+    models.reserve(files.size());
+    for (const auto& file : files) {
+        const CorpusModel* model = &models.emplace_back(corpus_model(file));
+        const std::string stem = file.stem().string();
+        if (model->solids.size() != model->shapes.size()) continue;  // the file's open shells are not solids
+        benchmark::RegisterBenchmark(benchmark_name({"corpus", stem, "ours", "3"}).c_str(),
+                                     [model](benchmark::State& s) { corpus_ours(s, *model); })
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(benchmark_name({"corpus", stem, "BRepMesh", "3"}).c_str(),
+                                     [model](benchmark::State& s) { corpus_brepmesh(s, *model); })
+            ->Unit(benchmark::kMillisecond);
+    }
 }
 
 }  // namespace
@@ -132,6 +228,7 @@ void register_benchmarks() {
                 ->Unit(benchmark::kMillisecond);
         }
     }
+    register_corpus();
 }
 
 }  // namespace ratbez::bench

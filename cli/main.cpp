@@ -31,6 +31,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -234,9 +235,10 @@ std::string derived_module_name(const std::string& text, const std::string& from
     return name;
 }
 
-// One line on stderr, rewritten in place ("\r"), once an export has run for more than a second
-// (RATBEZ_PROGRESS_AFTER seconds when set: tests use 0): percent done and the time left at the rate so
-// far. finish() (or the destructor) ends the line if one was printed.
+// One line on a terminal's stderr, rewritten in place ("\r") when its percent changes, once an export has
+// run for more than a second: percent done and the time left at the rate so far. Not on a redirected stderr,
+// where every "\r" would be one more line of a log, unless RATBEZ_PROGRESS_AFTER sets the seconds (tests use
+// 0). finish() (or the destructor) ends the line if one was printed.
 class ProgressLine {
 public:
     explicit ProgressLine(std::string what) : what_(std::move(what)), start_(std::chrono::steady_clock::now()) {
@@ -244,13 +246,18 @@ public:
             char* end = nullptr;
             const double seconds = std::strtod(after, &end);
             if (end != after && std::isfinite(seconds)) after_ = seconds;
+        } else if (!isatty(STDERR_FILENO)) {
+            after_ = std::numeric_limits<double>::infinity();
         }
     }
     void operator()(double fraction) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
         if (elapsed < after_ || fraction <= 0) return;
+        const int percent = static_cast<int>(std::lround(100 * std::min(fraction, 1.0)));
+        if (percent == percent_) return;
+        percent_ = percent;
         const double left = elapsed * (1 - fraction) / fraction;
-        std::fprintf(stderr, "\r%s: %3.0f%% (about %.0f s left)   ", what_.c_str(), 100 * fraction, std::ceil(left));
+        std::fprintf(stderr, "\r%s: %3d%% (about %.0f s left)   ", what_.c_str(), percent, std::ceil(left));
         std::fflush(stderr);
         shown_ = true;
     }
@@ -267,6 +274,7 @@ private:
     std::string what_;
     std::chrono::steady_clock::time_point start_;
     double after_ = 1;
+    int percent_ = -1;
     bool shown_ = false;
 };
 

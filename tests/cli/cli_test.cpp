@@ -418,6 +418,14 @@ TEST_F(Cli, ProgressLineOnStderrForALongExport) {
     EXPECT_NE(run.err.find("100% (about 0 s left)"), std::string::npos) << run.err;
     EXPECT_EQ(run.err.back(), '\n');
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;  // one line, rewritten in place
+    // Rewritten only when its percent grows: each percent once, in order.
+    int last = -1;
+    for (std::size_t at = run.err.find(": "); at != std::string::npos; at = run.err.find(": ", at + 1)) {
+        const int percent = std::stoi(run.err.substr(at + 2, 3));
+        EXPECT_GT(percent, last) << run.err;
+        last = percent;
+    }
+    EXPECT_EQ(last, 100);
 }
 
 TEST_F(Cli, ModuleNameFromSpecNameElseOutputStem) {

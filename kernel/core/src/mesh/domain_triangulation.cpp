@@ -173,18 +173,41 @@ public:
     }
 
 private:
-    // The average speeds |S_u| and |S_v| over a 9 x 9 grid of the loops' (u, v) box, for the metric.
+    // The metric the Delaunay triangulation runs in: (u, v) scaled per direction by the density of points the
+    // chord error asks for, averaged over a 9 x 9 grid of the loops' (u, v) box. Along a direction of normal
+    // curvature k a chord of length h sags k h^2 / 8, so the tolerance t allows h = sqrt(8 t / k) in space and
+    // h / |S_u| in u; a straight direction (a cylinder's rulings) is capped at the box's diagonal. Triangles
+    // equilateral in this metric are long along the rulings and short across them, as the error allows (in
+    // |S_u|, |S_v| alone, a trimmed cylinder wall took 7x BRepMesh's triangles); the refinement's error
+    // check stays what decides, the metric only shapes the triangles.
     void choose_scale(std::span<const std::vector<BoundarySample>> loops) {
         double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+        Vec3 low{1e300, 1e300, 1e300}, high{-1e300, -1e300, -1e300};
         for (const auto& loop : loops)
-            for (const BoundarySample& s : loop) u0 = std::min(u0, s.u), u1 = std::max(u1, s.u), v0 = std::min(v0, s.v), v1 = std::max(v1, s.v);
+            for (const BoundarySample& s : loop) {
+                u0 = std::min(u0, s.u), u1 = std::max(u1, s.u), v0 = std::min(v0, s.v), v1 = std::max(v1, s.v);
+                low = {std::min(low.x, s.point.x), std::min(low.y, s.point.y), std::min(low.z, s.point.z)};
+                high = {std::max(high.x, s.point.x), std::max(high.y, s.point.y), std::max(high.z, s.point.z)};
+            }
+        const double longest = norm(high - low), tolerance = settings_.check_tolerance();
+        const auto density = [&](const Vec3& d, const Vec3& dd, const Vec3& normal) {
+            const double speed = norm(d);
+            const double curvature = std::abs(dot(dd, normal)) / (speed * speed);
+            return speed * std::max(std::sqrt(curvature / (8 * tolerance)), 1 / longest);
+        };
         double su = 0, sv = 0;
         int n = 0;
         for (int i = 0; i <= 8; ++i)
             for (int j = 0; j <= 8; ++j) {
-                const SurfaceFirstDerivatives d = evaluate(u0 + (u1 - u0) * i / 8.0, v0 + (v1 - v0) * j / 8.0);
-                if (!is_finite(d.su) || !is_finite(d.sv)) continue;
-                su += norm(d.su), sv += norm(d.sv), ++n;
+                const Interval du = surface_.domain_u(), dv = surface_.domain_v();
+                const SurfaceJet jet = surface_.jet(std::clamp(u0 + (u1 - u0) * i / 8.0, du.min, du.max),
+                                                    std::clamp(v0 + (v1 - v0) * j / 8.0, dv.min, dv.max));
+                const Vec3 normal = cross(jet.su, jet.sv);
+                const double area = norm(normal);
+                if (!(area > 1e-10 * (dot(jet.su, jet.su) + dot(jet.sv, jet.sv))) || !std::isfinite(area)) continue;
+                const double a = density(jet.su, jet.suu, normal / area), b = density(jet.sv, jet.svv, normal / area);
+                if (!std::isfinite(a) || !std::isfinite(b)) continue;
+                su += a, sv += b, ++n;
             }
         scale_u_ = n > 0 && su > 0 && std::isfinite(su) ? su / n : 1.0;
         scale_v_ = n > 0 && sv > 0 && std::isfinite(sv) ? sv / n : 1.0;
