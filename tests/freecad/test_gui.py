@@ -13,6 +13,7 @@ watchdog ends FreeCAD if anything hangs (a modal dialog, a crash).
 
 import math
 import os
+import re
 import sys
 import threading
 
@@ -543,6 +544,31 @@ def test_export_and_check_commands():
     finally:
         dialogs.ask_export_options = original
     check(asked == ["Cylinder"] and "polyhedron" in open(path).read(), "export")
+    # Any solid (issue 24): a Part Cut with a hole and a Part Fillet, checked and exported as FreeCAD made them.
+    holed = doc.addObject("Part::Cut", "Holed")
+    holed.Base, holed.Tool = doc.addObject("Part::Box", "Block"), doc.addObject("Part::Cylinder", "Drill")
+    holed.Tool.Height = 12
+    holed.Base.Placement.Base = App.Vector(15, 0, 0)
+    holed.Tool.Placement.Base = App.Vector(20, 5, -1)
+    doc.recompute()
+    select_all(holed)
+    for name in ("RatBez_ExportOpenSCAD", "RatBez_CheckOCCT"):
+        check(is_active(name), name + " inactive with a Part Cut selected")
+    Gui.runCommand("RatBez_CheckOCCT")
+    process_events()
+    report = report_text()
+    at = report.find("OpenCASCADE check of 'Holed'")
+    check(at >= 0, "no check report of the Part Cut:\n" + report[-2000:])
+    check(re.search(r"passed\s+yes", report[at:]) is not None, "the Part Cut's check:\n" + report[at:])
+    path = os.path.join(OUT, "ratbez_gui_holed.scad")
+    dialogs.ask_export_options = lambda objects: (path, 0.05)
+    try:
+        Gui.runCommand("RatBez_ExportOpenSCAD")
+        process_events()
+    finally:
+        dialogs.ask_export_options = original
+    check("module ratbez_gui_holed()" in open(path).read(), "export of the Part Cut")
+    screenshot("RatBez_CheckOCCT_PartCut")
 
 
 # ---------------------------------------------------------------------------------------------------

@@ -154,11 +154,11 @@ def freecads_own_solids(doc):
     holed.Base, holed.Tool = doc.addObject("Part::Box", "B2"), doc.addObject("Part::Cylinder", "C2")
     holed.Tool.Placement.Base = V(5, 5, -1)
     holed.Tool.Height = 12
+    rounded = doc.addObject("Part::Box", "B3")
+    rounded.Placement.Base = V(20, 0, 0)
+    doc.recompute()  # the box first: a Fillet without its edges does not recompute
     filleted = doc.addObject("Part::Fillet", "Filleted")
-    filleted.Base = doc.addObject("Part::Box", "B3")
-    filleted.Base.Placement.Base = V(20, 0, 0)
-    doc.recompute()
-    filleted.Edges = [(i, 1.5, 1.5) for i in range(1, 13)]
+    filleted.Base, filleted.Edges = rounded, [(i, 1.5, 1.5) for i in range(1, 13)]
     body = doc.addObject("PartDesign::Body", "Body")
     sketch = body.newObject("Sketcher::SketchObject", "PadSketch")
     sketch.Support = (doc.getObject("XY_Plane"), [""])

@@ -1525,7 +1525,7 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
-        <source>Check the selected RatBez solids against OpenCASCADE (B-rep validity, deviation of the evaluations, volumes) and print the report to the report view</source>
+        <source>Check the selected solids (RatBez, Part, PartDesign, imported) against OpenCASCADE: B-rep validity, deviation of the evaluations, volumes and areas; the report goes to the report view</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
