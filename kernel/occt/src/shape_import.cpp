@@ -324,9 +324,10 @@ private:
         const double gap_end = distance(converted.end_point(), from_occt(BRep_Tool::Pnt(end)));
         const double allowed = BRep_Tool::Tolerance(e) + std::max(BRep_Tool::Tolerance(start), BRep_Tool::Tolerance(end)) +
                                1e-9 * size_;
+        const TopoDS_Vertex& farther = gap_start >= gap_end ? start : end;  // (clang 14 cannot capture a binding)
         require(std::max(gap_start, gap_end) <= allowed, "shape", [&] {
             return "an edge's " + std::string(gap_start >= gap_end ? "start" : "end") + " vertex " +
-                   detail_point(BRep_Tool::Pnt(gap_start >= gap_end ? start : end)) + " is " +
+                   detail_point(BRep_Tool::Pnt(farther)) + " is " +
                    std::to_string(std::max(gap_start, gap_end)) + " away from the edge's curve, more than the file's tolerance " +
                    std::to_string(allowed);
         });
@@ -396,7 +397,8 @@ private:
         NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}), {}};
         // Pcurves made by projection (STEP files without them) sit on the sides to about 1e-7 of the rectangle.
         const double tol_u = 1e-6 * (u1 - u0), tol_v = 1e-6 * (v1 - v0);
-        for (const auto& [e, samples] : uses) {
+        for (const auto& use : uses) {
+            const auto& samples = use.second;  // (not a structured binding: clang 14 cannot capture one)
             const auto on = [&](int side) {
                 return std::all_of(samples.begin(), samples.end(), [&](const gp_Pnt2d& p) {
                     switch (side) {
@@ -413,7 +415,7 @@ private:
             if (side < 0) return std::nullopt;  // an edge inside the rectangle
             auto& slot = out.sides[static_cast<std::size_t>(side)];
             if (slot) return std::nullopt;  // a side of several edges
-            slot = e;
+            slot = use.first;
         }
         for (int s = 0; s < 4; ++s)
             if (!out.sides[static_cast<std::size_t>(s)].has_value()) return std::nullopt;
