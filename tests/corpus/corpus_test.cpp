@@ -3,6 +3,7 @@
 // and every STEP part FreeCAD ships in its Idf library, read as a user's model (issue 24):
 //  - every solid converts, and the volume agrees with OpenCASCADE's BRepGProp at epsilon 1e-11 on the file's own
 //    shapes to 1e-6 (or to area x the file's tolerance, where the file's edges sit that far off their faces);
+//    each passes occt::check (`ratbez check`);
 //  - its mesh at the default tolerance is CGAL-clean (closed, 2-manifold, outward, no self-intersection) and within
 //    the tolerance both ways, measured (mesh to surface and surface to mesh);
 //  - the STEP ratbez writes of it reads back as the same solids, valid for BRepCheck.
@@ -38,6 +39,7 @@
 #include "ratbez/deviation.hpp"
 #include "ratbez/export/export.hpp"
 #include "ratbez/export/mesh_checks.hpp"
+#include "ratbez/occt/check.hpp"
 #include "ratbez/occt/files.hpp"
 #include "ratbez/occt/topology.hpp"
 #include "ratbez/tessellate.hpp"
@@ -120,7 +122,7 @@ std::vector<Solid> read_all(const fs::path& file) {
 
 class CorpusModel : public ::testing::TestWithParam<fs::path> {};
 
-TEST_P(CorpusModel, ReadsWithOpenCascadesVolume) {
+TEST_P(CorpusModel, ReadsWithOpenCascadesVolumeAndPassesItsCheck) {
     const std::vector<Solid> solids = read_all(GetParam());
     ASSERT_FALSE(solids.empty());
     double volume = 0, area_times_tolerance = 0;
@@ -134,6 +136,13 @@ TEST_P(CorpusModel, ReadsWithOpenCascadesVolume) {
     const double bound = std::max(1e-6 * reference, area_times_tolerance);
     EXPECT_NEAR(volume, reference, bound) << solids.size() << " solids; relative difference "
                                           << std::abs(volume - reference) / reference;
+    // `ratbez check` of each solid passes: converted back, valid for BRepCheck, its evaluations, volume and area
+    // OpenCASCADE's, within the file's tolerance (check.hpp).
+    for (const Solid& solid : solids) {
+        const occt::CheckReport report = occt::check(solid);
+        for (const std::string& failure : report.failures) ADD_FAILURE() << solid.name() << ": " << failure;
+        EXPECT_TRUE(report.passed) << solid.name();
+    }
 }
 
 TEST_P(CorpusModel, MeshesWithinToleranceBothWaysCgalClean) {

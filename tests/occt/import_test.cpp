@@ -303,7 +303,8 @@ TEST(ImportShapes, TrimmedFacesImportExactly) {
     }
     EXPECT_NEAR(from_occt(drilled).volume(), 16 - pi, 1e-12 * 16);
     std::size_t trimmed = 0;
-    for (const Face& face : from_occt(scooped).faces()) trimmed += face.kind() == Face::Kind::trimmed;
+    const Solid scooped_solid = from_occt(scooped);  // (a range-for over a temporary's faces() would dangle)
+    for (const Face& face : scooped_solid.faces()) trimmed += face.kind() == Face::Kind::trimmed;
     EXPECT_EQ(trimmed, 1u);
 }
 
