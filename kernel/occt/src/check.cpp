@@ -33,7 +33,6 @@
 #include <optional>
 #include <sstream>
 
-#include "ratbez/arc_length.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/topology.hpp"
@@ -224,9 +223,15 @@ Slack tolerance_slack(const Solid& solid, double area) {
     double tolerance = 0;
     for (const Face& face : solid.faces()) tolerance = std::max(tolerance, face.tolerance());
     if (tolerance == 0) return {};
+    // The edges' control polygons bound their lengths from above (de Casteljau and knot insertion put every new
+    // projected point on a segment of the old polygon, so its length never grows as it converges to the
+    // curve), without an integration that creeps near a point where a file's edge curve stands still.
     double edge_length = 0;
-    for (const EdgePtr& edge : solid.edges())
-        if (!edge->degenerate) edge_length += length(edge->curve);
+    for (const EdgePtr& edge : solid.edges()) {
+        if (edge->degenerate) continue;
+        const std::vector<Vec3> points = edge->curve.points();
+        for (std::size_t k = 1; k < points.size(); ++k) edge_length += distance(points[k - 1], points[k]);
+    }
     return {area * tolerance, 2 * edge_length * tolerance};
 }
 
