@@ -45,6 +45,23 @@ TEST(ArcLength, SegmentsAndTheParabola) {
     EXPECT_NEAR(length(parabola, 0.5, 0.0), -(std::sqrt(2.0) / 4 + std::asinh(1.0) / 4), 1e-14);
 }
 
+TEST(ArcLength, AShortEdgeFarFromTheOriginIsMeasuredAtOnce) {
+    // An edge of FreeCAD's Idf part 2512_SMD.stp as read: a straight cubic 0.002 long at z = 1.6, its inner points
+    // rounded in the 16th digit. Held in absolute coordinates, its speed carried 3e-13 relative rounding, the
+    // rule never met 1e-14 and halved 2^30 times (minutes); relative to the segment it is measured at once (a
+    // relapse runs into the suite's timeout).
+    const NurbsCurve edge(3, {0, 0, 0, 0, 1, 1, 1, 1},
+                          {{-1.4163241068519998, -0.36829134949299996, 1.5999999999999999},
+                           {-1.4163241068519998, -0.36829134949299996, 1.6006666666669997},
+                           {-1.4163241068519998, -0.36829134949299996, 1.6013333333329998},
+                           {-1.4163241068519998, -0.36829134949299996, 1.6019999999999999}});
+    EXPECT_NEAR(length(edge), 0.002, 1e-12 * 0.002);
+    for (const double far : {1e3, 1e6}) {
+        const double top = far + 1e-3, gap = top - far;  // (1e-3 as the doubles hold it)
+        EXPECT_NEAR(length(line_segment({far, far, far}, {far, far, top})), gap, 1e-12 * gap) << far;
+    }
+}
+
 TEST(ArcLength, ParameterAtLengthInvertsIt) {
     test::Rng rng(2605);
     for (int trial = 0; trial < 40; ++trial) {
