@@ -81,10 +81,13 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
             const auto& [u0, u1, v0, v1] = converted.face_domains[k];
             double occt_u0 = u0, occt_u1 = u1, occt_v0 = v0, occt_v1 = v1;
             if (plane.IsNull()) occt_surface->Bounds(occt_u0, occt_u1, occt_v0, occt_v1);
+            // Our parameters of OCCT's sample: the affine map of the domains, or the arc's map (topology.hpp).
+            const auto& [to_u, to_v] = converted.face_parameters[k];
             for (int i = 0; i < grid; ++i) {
                 if (progress) progress((static_cast<double>(f) + static_cast<double>(i) / grid) / static_cast<double>(solid.faces().size()));
+                const double u = to_u ? to_u(sample(occt_u0, occt_u1, i, grid)) : sample(u0, u1, i, grid);
                 for (int j = 0; j < grid; ++j) {
-                    const Vec3 ours = surface.point(sample(u0, u1, i, grid), sample(v0, v1, j, grid));
+                    const Vec3 ours = surface.point(u, to_v ? to_v(sample(occt_v0, occt_v1, j, grid)) : sample(v0, v1, j, grid));
                     if (!plane.IsNull()) {
                         // Our plane patch (or flat patch) against OCCT's plane: the distance from it (the
                         // patch's own (u, v) are not the plane's).
@@ -102,9 +105,11 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
             double first = 0, last = 0;
             const Handle(Geom_Curve) curve = BRep_Tool::Curve(occt_edge, first, last);
             const GeomAdaptor_Curve adaptor(curve, first, last);
+            const auto map = converted.edge_parameters.find(edge);
             for (int i = 0; i < grid; ++i) {
                 const double t = sample(first, last, i, grid);
-                worst = std::max(worst, distance(edge->curve.point(t), from_occt(adaptor.Value(t))));
+                const double ours = map == converted.edge_parameters.end() ? t : map->second(t);
+                worst = std::max(worst, distance(edge->curve.point(ours), from_occt(adaptor.Value(t))));
             }
         }
     return worst;

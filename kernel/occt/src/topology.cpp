@@ -26,6 +26,8 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
+#include <optional>
 #include <cmath>
 #include <set>
 #include <string>
@@ -33,6 +35,7 @@
 
 #include "face_sides.hpp"
 #include "gprop_patches.hpp"
+#include "smooth_arcs.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 
@@ -108,6 +111,7 @@ public:
             for (std::size_t f : solid_.shells()[k]) shell_of_face_[f] = k;
         }
         if (options_.bezier_faces) plan_patches();
+        else plan_arcs();
         for (std::size_t i = 0; i < faces.size(); ++i) {
             out_.first_face.push_back(out_.faces.size());
             current_shell_ = shell_of_face_[i];
@@ -120,7 +124,7 @@ public:
                 } else if (options_.bezier_faces) {
                     patch_faces(faces[i], grids_.at(i));
                 } else {
-                    add(surface_face(faces[i]), {du.min, du.max, dv.min, dv.max});
+                    add(surface_face(i), {du.min, du.max, dv.min, dv.max}, kernel_parameters(i));
                 }
             } catch (const Error& e) {
                 throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
@@ -144,10 +148,66 @@ public:
 
 private:
     // `domain`: our parameter rectangle the face covers (u0, u1, v0, v1).
-    void add(const TopoDS_Face& face, const std::array<double, 4>& domain) {
+    void add(const TopoDS_Face& face, const std::array<double, 4>& domain,
+             std::array<std::function<double(double)>, 2> parameters = {}) {
         builder_.Add(out_.shells[current_shell_], face);
         out_.faces.push_back(face);
         out_.face_domains.push_back(domain);
+        out_.face_parameters.push_back(std::move(parameters));
+    }
+
+    // The curve an edge is handed over as: its own, or its arc in the one-span form (plan_arcs).
+    const NurbsCurve& curve_of(const Edge& e) const {
+        auto it = smooth_curves_.find(&e);
+        return it == smooth_curves_.end() ? e.curve : it->second;
+    }
+
+    // Natural conversion: which arc directions of the surface faces, and which arc edges, go over in the
+    // one-span form (smooth_arcs.hpp). A face side and its edge share their parameter (SameParameter), so a
+    // direction changes only together with the edges along it, and an edge only where every face using it
+    // agrees: a trimmed face's p-curves are in the edge's parameter and keep it; a planar face's p-curves are
+    // made from whichever curve the edge has. Dropping one drops its partners until nothing changes.
+    void plan_arcs() {
+        arc_tolerance_ = 1e-11 * std::max(1.0, solid_.bounding_box().diagonal());
+        const double tolerance = arc_tolerance_;
+        const auto& faces = solid_.faces();
+        for (std::size_t i = 0; i < faces.size(); ++i)
+            if (faces[i].kind() == Face::Kind::surface) {
+                const NurbsSurface& surface = faces[i].surface();
+                auto& [u, v] = face_arcs_[i];
+                u = detail::find_arc(surface, true, tolerance);
+                v = detail::find_arc(surface, false, tolerance);
+                // v is smoothed after u: it must be an arc whether u is changed or not (surface_face).
+                if (u && v && !detail::find_arc(detail::smooth(surface, true, *u), false, tolerance)) v.reset();
+            }
+        std::map<const Edge*, detail::ArcDirection> edge_arcs;
+        for (const EdgePtr& edge : solid_.edges())
+            if (!edge->degenerate)
+                if (auto arc = detail::find_arc(edge->curve, tolerance)) edge_arcs.emplace(edge.get(), std::move(*arc));
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (std::size_t i = 0; i < faces.size(); ++i) {
+                if (faces[i].kind() == Face::Kind::trimmed) {
+                    for (const auto& loop : faces[i].loops())
+                        for (const Coedge& coedge : loop) changed = edge_arcs.erase(coedge.edge.get()) > 0 || changed;
+                    continue;
+                }
+                if (faces[i].kind() != Face::Kind::surface) continue;
+                for (int s = 0; s < 4; ++s) {
+                    const Coedge& coedge = faces[i].sides()[static_cast<std::size_t>(s)];
+                    if (coedge.edge->degenerate) continue;
+                    std::optional<detail::ArcDirection>& direction = face_arcs_[i][along_u(s) ? 0 : 1];
+                    if (direction.has_value() == (edge_arcs.count(coedge.edge.get()) > 0)) continue;
+                    direction.reset();
+                    edge_arcs.erase(coedge.edge.get());
+                    changed = true;
+                }
+            }
+        }
+        for (auto& [edge, arc] : edge_arcs) {
+            smooth_curves_.emplace(edge, detail::smooth(edge->curve, arc));
+            out_.edge_parameters.emplace(edge, [arc](double t) { return arc.to_kernel(t); });
+        }
     }
 
     TopoDS_Vertex vertex(const VertexPtr& v) {
@@ -191,7 +251,7 @@ private:
         at.push_back(vertex(e->start));
         for (std::size_t k = 1; k + 1 < cuts.size(); ++k) at.push_back(new_vertex(e->curve.point(cuts[k])));
         at.push_back(vertex(e->end));
-        const Handle(Geom_BSplineCurve) whole = to_occt(e->curve);
+        const Handle(Geom_BSplineCurve) whole = to_occt(curve_of(*e));
         std::vector<TopoDS_Edge> made;
         for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
             Handle(Geom_BSplineCurve) piece = whole;
@@ -302,8 +362,25 @@ private:
         return s == 0 ? v0 : s == 1 ? u1 : s == 2 ? v1 : u0;
     }
 
-    TopoDS_Face surface_face(const Face& face) {
-        const NurbsSurface& surface = face.surface();
+    // OCCT's (u, v) -> ours on face i (ConvertedSolid::face_parameters): the arc directions plan_arcs changed.
+    std::array<std::function<double(double)>, 2> kernel_parameters(std::size_t i) const {
+        std::array<std::function<double(double)>, 2> parameters;
+        if (auto planned = face_arcs_.find(i); planned != face_arcs_.end())
+            for (std::size_t d = 0; d < 2; ++d)
+                if (const auto& arc = planned->second[d]) parameters[d] = [a = *arc](double t) { return a.to_kernel(t); };
+        return parameters;
+    }
+
+    // Face i bounded by its four sides; its arc directions in the one-span form where plan_arcs chose so.
+    TopoDS_Face surface_face(std::size_t i) {
+        const Face& face = solid_.faces()[i];
+        NurbsSurface surface = face.surface();
+        if (auto planned = face_arcs_.find(i); planned != face_arcs_.end()) {
+            const auto& [u, v] = planned->second;
+            if (u) surface = detail::smooth(surface, true, *u);
+            // The rows across v are now the smoothed u's: the same arc, found again on them (plan_arcs made sure).
+            if (v) surface = detail::smooth(surface, false, *detail::find_arc(surface, false, arc_tolerance_));
+        }
         const Interval du = surface.domain_u(), dv = surface.domain_v();
         std::array<std::vector<Use>, 4> sides;
         const std::size_t before = degenerate_ranges_.size();
@@ -313,8 +390,28 @@ private:
                                                            fixed_of(s, du.min, du.max, dv.min, dv.max), range.min, range.max,
                                                            false);
         }
-        return bounded_face(to_occt(surface), sides, before);
+        return bounded_face(refined_for_gauss(to_occt(surface)), sides, before);
     }
+
+    // The same surface with a richer representation for OCCT's fixed Gauss rule, which it sizes by degree and
+    // spans (gprop_patches.hpp): a straight direction (a cylinder's or an extrusion's, degree 1, one span)
+    // gets 8 points, and reads a cylinder's centre of mass to only 8e-5 of its size. Degree elevation and knot
+    // insertion are exact and keep the parameter, so the edges along the direction keep theirs.
+    static Handle(Geom_BSplineSurface) refined_for_gauss(Handle(Geom_BSplineSurface) surface) {
+        if (surface->UDegree() == 1 || surface->VDegree() == 1)
+            surface->IncreaseDegree(std::max(surface->UDegree(), 2), std::max(surface->VDegree(), 2));
+        constexpr int kSpans = 4;
+        if (surface->NbUKnots() == 2) {
+            const double a = surface->UKnot(1), b = surface->UKnot(2);
+            for (int k = 1; k < kSpans; ++k) surface->InsertUKnot(a + (b - a) * k / kSpans, 1, 0.0);
+        }
+        if (surface->NbVKnots() == 2) {
+            const double a = surface->VKnot(1), b = surface->VKnot(2);
+            for (int k = 1; k < kSpans; ++k) surface->InsertVKnot(a + (b - a) * k / kSpans, 1, 0.0);
+        }
+        return surface;
+    }
+
 
     // bezier_faces: the patch grid of every surface face, and where every edge is cut: at the grid lines
     // of the faces beside it (in its own parameter) and at its own knots.
@@ -513,7 +610,7 @@ private:
             for (const Coedge& coedge : loop) {
                 const std::vector<TopoDS_Edge>& edge_pieces = pieces(coedge.edge);
                 const std::vector<double>& cuts = cut_parameters_.at(coedge.edge.get());
-                const Handle(Geom2d_BSplineCurve) whole = to_occt_2d(coedge.edge->curve, plane.origin, plane.x_axis, plane.y_axis);
+                const Handle(Geom2d_BSplineCurve) whole = to_occt_2d(curve_of(*coedge.edge), plane.origin, plane.x_axis, plane.y_axis);
                 std::vector<Use> piece_uses;
                 for (std::size_t k = 0; k < edge_pieces.size(); ++k) {
                     Handle(Geom2d_BSplineCurve) pcurve = whole;
@@ -543,6 +640,9 @@ private:
     std::map<const Edge*, std::set<double>> cuts_;                     // bezier_faces: interior cuts per edge
     std::map<const Edge*, std::vector<double>> cut_parameters_;        // the pieces' ends, domain ends included
     std::map<const Edge*, std::vector<TopoDS_Vertex>> cut_vertices_;   // a vertex per entry of cut_parameters_
+    std::map<std::size_t, std::array<std::optional<detail::ArcDirection>, 2>> face_arcs_;  // natural: by face
+    double arc_tolerance_ = 0;                                         // natural: find_arc's fit tolerance
+    std::map<const Edge*, NurbsCurve> smooth_curves_;                  // natural: edges in the one-span form
     std::vector<std::size_t> shell_of_face_;                           // Solid::shells, by face index
     std::size_t current_shell_ = 0;                                    // the shell the face being built goes to
 };
