@@ -420,7 +420,9 @@ _REPORT_ROWS = (
     ("valid", "BRepCheck valid"), ("closed", "shell closed"), ("max_deviation", "max |ours - OCCT| (mm)"),
     ("max_analytic_deviation", "max distance to the analytic surface (mm)"), ("volume", "volume, exact (mm^3)"),
     ("occt_volume", "volume, OCCT (mm^3)"), ("closed_form_volume", "volume, closed form (mm^3)"),
-    ("area", "area, exact (mm^2)"), ("occt_area", "area, OCCT (mm^2)"), ("passed", "passed"),
+    ("area", "area, exact (mm^2)"), ("occt_area", "area, OCCT (mm^2)"), ("bop_clean", "BOP check clean"),
+    ("self_intersections", "self-intersections (BOP check)"), ("small_edges", "small edges (BOP check)"),
+    ("passed", "passed"),
 )
 
 
