@@ -468,9 +468,9 @@ TEST_F(Cli, InfoOfSphereAndTorus) {
     EXPECT_NEAR(cylinder["volume"].get<double>(), std::numbers::pi * 25 * 20, 1e-8);
 }
 
-// Whether every failure of a check report is one the BOP analysis still finds on lofts, ruled solids and faces read
-// from files whose surfaces keep C0 knots (the natural conversion cuts no face at its creases yet, and a trimmed
-// face keeps its surface's parameter): GeomAbs_C0 and the face self-intersection test.
+// Whether every failure of a check report is one the BOP analysis still finds on faces read from files whose
+// surfaces keep C0 knots (a trimmed face keeps its surface's parameter): GeomAbs_C0 and the face
+// self-intersection test.
 bool only_known_bop_findings(const nlohmann::json& report) {
     for (const auto& failure : report["failures"]) {
         const std::string text = failure.get<std::string>();
@@ -481,21 +481,14 @@ bool only_known_bop_findings(const nlohmann::json& report) {
 }
 
 TEST_F(Cli, CheckPassesOnEveryExample) {
-    // Lofts and ruled solids whose sections are not all circles keep C0 knots (only_known_bop_findings).
-    const std::set<std::string> with_c0_knots{"interpolated_loft.json", "loft.json", "ruled.json"};
     for (const auto& entry : fs::directory_iterator(RATBEZ_EXAMPLES_DIR)) {
         if (entry.path().extension() != ".json") continue;
         const CommandResult run = ratbez({"check", entry.path().string(), "--json"});
         const auto report = nlohmann::json::parse(run.out, nullptr, false);
         ASSERT_FALSE(report.is_discarded()) << run.out;
-        if (with_c0_knots.count(entry.path().filename().string())) {
-            EXPECT_TRUE(only_known_bop_findings(report)) << entry.path() << ": " << run.out;
-            EXPECT_EQ(run.exit_code, report["passed"] == true ? 0 : 1) << entry.path() << ": " << run.err;
-        } else {
-            EXPECT_EQ(run.exit_code, 0) << entry.path() << ": " << run.out << run.err;
-            EXPECT_EQ(report["passed"], true) << entry.path();
-            EXPECT_EQ(report["bop_clean"], true) << entry.path();
-        }
+        EXPECT_EQ(run.exit_code, 0) << entry.path() << ": " << run.out << run.err;
+        EXPECT_EQ(report["passed"], true) << entry.path();
+        EXPECT_EQ(report["bop_clean"], true) << entry.path();
         EXPECT_EQ(report["valid"], true) << entry.path();
         EXPECT_NEAR(report["volume"].get<double>(), report["occt_volume"].get<double>(),
                     1e-6 * std::abs(report["volume"].get<double>()))

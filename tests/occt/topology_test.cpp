@@ -34,6 +34,7 @@
 #include "ratbez/occt/check.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/topology.hpp"
+#include "ratbez/loft.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
 #include "ratbez/revolve.hpp"
@@ -366,6 +367,30 @@ TEST(Topology, NaturalFacesAreReadByOcctsFixedRule) {
     expect_natural(cone(4, 0, 9), "pointed cone", 2, Vec3{0, 0, 9.0 / 4});
     expect_natural(torus(10, 3, c, axis), "torus", 1, c);
     expect_natural(revolve(vase_profile()), "vase", revolve(vase_profile()).faces().size());
+}
+
+// A face that keeps a C0 direction which is not an arc (a ruled loft's crease at its middle circle, a revolved
+// rational C1 profile) goes over as Bézier patches even in the natural conversion: read right by OCCT's fixed
+// rule (9 % off as one face), nothing C0 left; the faces beside it stay whole (the planar caps: one each).
+TEST(Topology, RoughFacesGoOverAsPatchesInTheNaturalConversion) {
+    std::vector<Profile> sections;
+    for (const auto& [r, z] : {std::pair{1.0, 0.0}, std::pair{2.0, 1.0}, std::pair{1.0, 2.0}})
+        sections.push_back(Profile({circle(r, {0, 0, z})}));
+    const Profile rational_side({NurbsCurve(2, {0, 0, 0, 0.5, 1, 1, 1}, {{10, 0, 0}, {10, 0, 3}, {8, 0, 5}, {6, 0, 3}},
+                                            {1, 0.8, 1.2, 1}),
+                                 line_segment({6, 0, 3}, {6, 0, 0}), line_segment({6, 0, 0}, {10, 0, 0})});
+    for (const auto& [name, solid] : {std::pair{std::string("ruled loft"), loft(sections, 3, true)},
+                                      std::pair{std::string("partial revolve"), revolve(rational_side, {}, {0, 0, 1}, 270)}}) {
+        SCOPED_TRACE(name);
+        const ConvertedSolid natural = convert(solid);
+        EXPECT_TRUE(BRepCheck_Analyzer(natural.solid).IsValid());
+        EXPECT_LE(natural.faces.size(), convert(solid, ConvertOptions{true}).faces.size());
+        EXPECT_GT(natural.faces.size(), solid.faces().size());
+        const FixedRule read = fixed_rule(natural.solid);
+        EXPECT_LT(std::abs(read.volume - solid.volume()) / solid.volume(), 1e-8);
+        for (TopExp_Explorer it(natural.solid, TopAbs_FACE); it.More(); it.Next())
+            EXPECT_NE(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_C0);
+    }
 }
 
 TEST(Topology, BezierFacesCutEachFaceAtItsKnots) {

@@ -14,6 +14,7 @@
 #include <gp_Pln.hxx>
 #include <gp_Vec.hxx>
 #include <Precision.hxx>
+#include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
@@ -91,7 +92,9 @@ Handle(Geom2d_Curve) linear_pcurve(const gp_Pnt2d& a, const gp_Pnt2d& b, double 
 
 class Converter {
 public:
-    Converter(const Solid& solid, const ConvertOptions& options) : solid_(solid), options_(options) {
+    // patch_rough: natural conversion hands rough faces over as Bézier patches (plan_arcs).
+    Converter(const Solid& solid, const ConvertOptions& options, bool patch_rough)
+        : solid_(solid), options_(options), patch_rough_(patch_rough) {
         const Box box = solid.bounding_box();
         // Our geometry is exact to rounding, but OCCT evaluates an edge's 3D curve and the face
         // surface through its pcurve by different routes, and with rational weights 10^+-3 these
@@ -110,8 +113,12 @@ public:
             builder_.MakeShell(out_.shells[k]);
             for (std::size_t f : solid_.shells()[k]) shell_of_face_[f] = k;
         }
-        if (options_.bezier_faces) plan_patches();
-        else plan_arcs();
+        if (options_.bezier_faces) {
+            plan_patches([](std::size_t) { return true; });
+        } else {
+            plan_arcs();
+            if (!patched_.empty()) plan_patches([this](std::size_t i) { return patched_.count(i) > 0; });
+        }
         for (std::size_t i = 0; i < faces.size(); ++i) {
             out_.first_face.push_back(out_.faces.size());
             current_shell_ = shell_of_face_[i];
@@ -121,13 +128,18 @@ public:
                     add(planar_face(faces[i]), {du.min, du.max, dv.min, dv.max});
                 } else if (faces[i].kind() == Face::Kind::trimmed) {
                     add(trimmed_face(faces[i]), {du.min, du.max, dv.min, dv.max});
-                } else if (options_.bezier_faces) {
+                } else if (grids_.count(i)) {
                     patch_faces(faces[i], grids_.at(i));
                 } else {
                     add(surface_face(i), {du.min, du.max, dv.min, dv.max}, kernel_parameters(i));
                 }
             } catch (const Error& e) {
                 throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
+            } catch (const Standard_Failure& failure) {
+                // OpenCASCADE refusing a construction (a curve it cannot hold): named, never an unknown exception.
+                const char* message = failure.GetMessageString();
+                throw Error("solid", "face " + std::to_string(i) + ": OpenCASCADE raised " + failure.DynamicType()->Name() +
+                                         (message && *message ? std::string(": ") + message : std::string()));
             }
         }
         out_.first_face.push_back(out_.faces.size());
@@ -167,6 +179,9 @@ private:
     // direction changes only together with the edges along it, and an edge only where every face using it
     // agrees: a trimmed face's p-curves are in the edge's parameter and keep it; a planar face's p-curves are
     // made from whichever curve the edge has. Dropping one drops its partners until nothing changes.
+    // A surface face that keeps a direction OCCT's fixed rule cannot read (rough_direction: a loft through a
+    // square, a ruled crease) goes over one face per Bézier patch instead, as bezier_faces hands over every
+    // face (gprop_patches.hpp), and its edges keep their parameter; every other face stays one face.
     void plan_arcs() {
         arc_tolerance_ = 1e-11 * std::max(1.0, solid_.bounding_box().diagonal());
         const double tolerance = arc_tolerance_;
@@ -193,6 +208,14 @@ private:
                     continue;
                 }
                 if (faces[i].kind() != Face::Kind::surface) continue;
+                auto& [arc_u, arc_v] = face_arcs_[i];
+                if (patch_rough_ && !patched_.count(i) && ((!arc_u && rough_direction(faces[i].surface(), true)) ||
+                                           (!arc_v && rough_direction(faces[i].surface(), false)))) {
+                    patched_.insert(i);
+                    arc_u.reset();
+                    arc_v.reset();
+                    changed = true;
+                }
                 for (int s = 0; s < 4; ++s) {
                     const Coedge& coedge = faces[i].sides()[static_cast<std::size_t>(s)];
                     if (coedge.edge->degenerate) continue;
@@ -208,6 +231,25 @@ private:
             smooth_curves_.emplace(edge, detail::smooth(edge->curve, arc));
             out_.edge_parameters.emplace(edge, [arc](double t) { return arc.to_kernel(t); });
         }
+    }
+
+    // A direction with an interior knot of multiplicity degree or more (C0 by multiplicity: a crease, or the
+    // joint of two rational arcs that is not an arc direction), or on a rational surface degree - 1 or more (C1:
+    // the second derivative of a rational joint jumps): OCCT's single Gauss rule over the face converges slowly
+    // across it (0.9 % on the kernel's own circle joints, 9 % on the ruled example, 0.09 % on the partial
+    // revolve example's rational C1 profile), and BOPAlgo flags a C0 one.
+    static bool rough_direction(const NurbsSurface& surface, bool along_u) {
+        const std::vector<double>& knots = along_u ? surface.knots_u() : surface.knots_v();
+        const int degree = along_u ? surface.degree_u() : surface.degree_v();
+        const Interval domain = along_u ? surface.domain_u() : surface.domain_v();
+        for (std::size_t k = 0; k < knots.size();) {
+            std::size_t end = k;
+            while (end < knots.size() && knots[end] == knots[k]) ++end;
+            if (knots[k] > domain.min && knots[k] < domain.max && static_cast<int>(end - k) >= std::max(1, surface.is_rational() ? degree - 1 : degree))
+                return true;
+            k = end;
+        }
+        return false;
     }
 
     TopoDS_Vertex vertex(const VertexPtr& v) {
@@ -415,11 +457,13 @@ private:
 
     // bezier_faces: the patch grid of every surface face, and where every edge is cut: at the grid lines
     // of the faces beside it (in its own parameter) and at its own knots.
-    void plan_patches() {
+    // `patched`: which surface faces (all with bezier_faces; the rough ones otherwise, plan_arcs). An edge in
+    // its one-span arc form is never cut (its knots are not the kernel's).
+    void plan_patches(const std::function<bool(std::size_t)>& patched) {
         const auto& faces = solid_.faces();
         for (std::size_t i = 0; i < faces.size(); ++i) {
             const Face& face = faces[i];
-            if (face.kind() != Face::Kind::surface) continue;
+            if (face.kind() != Face::Kind::surface || !patched(i)) continue;
             detail::PatchGrid grid = detail::gprop_patch_grid(face.surface(), kGPropTolerance);
             out_.gprop_tolerance_reached = out_.gprop_tolerance_reached && grid.reached;
             for (int s = 0; s < 4; ++s) {
@@ -434,7 +478,7 @@ private:
             grids_.emplace(i, std::move(grid));
         }
         for (const EdgePtr& edge : solid_.edges())
-            if (!edge->degenerate)
+            if (!edge->degenerate && !smooth_curves_.count(edge.get()))
                 for (double knot : interior_knots(edge->curve)) cuts_[edge.get()].insert(knot);
     }
 
@@ -535,6 +579,33 @@ private:
         return new Geom_Plane(plane);
     }
 
+    // The curve in the plane's coordinates: a B-spline's poles mapped affinely (exact, the same knots and
+    // weights; GeomAPI::To2d approximates by projection and throws on the one-span arcs of smooth_arcs.hpp).
+    static Handle(Geom2d_Curve) in_plane(const Handle(Geom_Curve)& curve, const gp_Pln& plane) {
+        Handle(Geom_BSplineCurve) spline = Handle(Geom_BSplineCurve)::DownCast(curve);
+        if (spline.IsNull()) return GeomAPI::To2d(curve, plane);
+        if (spline->IsPeriodic()) {  // its knots then do not count its poles: the same curve, clamped
+            spline = Handle(Geom_BSplineCurve)::DownCast(spline->Copy());
+            spline->SetNotPeriodic();
+        }
+        const gp_Ax3& frame = plane.Position();
+        const gp_Pnt origin = frame.Location();
+        const gp_Vec x(frame.XDirection()), y(frame.YDirection());
+        TColgp_Array1OfPnt2d poles(1, spline->NbPoles());
+        for (int i = 1; i <= spline->NbPoles(); ++i) {
+            const gp_Vec d(origin, spline->Pole(i));
+            poles.SetValue(i, gp_Pnt2d(d.Dot(x), d.Dot(y)));
+        }
+        TColStd_Array1OfReal knots(1, spline->NbKnots());
+        TColStd_Array1OfInteger multiplicities(1, spline->NbKnots());
+        spline->Knots(knots);
+        spline->Multiplicities(multiplicities);
+        if (!spline->IsRational()) return new Geom2d_BSplineCurve(poles, knots, multiplicities, spline->Degree());
+        TColStd_Array1OfReal weights(1, spline->NbPoles());
+        spline->Weights(weights);
+        return new Geom2d_BSplineCurve(poles, weights, knots, multiplicities, spline->Degree());
+    }
+
     // A plane face bounded by the uses of a flat patch's sides: degenerate uses dropped (a plane has no
     // singular point), pcurves the edges' 3D curves in the plane's coordinates (exact: GeomAPI::To2d of a
     // B-spline in the plane maps its poles).
@@ -547,7 +618,7 @@ private:
                 if (BRep_Tool::Degenerated(use.edge)) continue;
                 double first = 0, last = 0;
                 const Handle(Geom_Curve) curve = BRep_Tool::Curve(use.edge, first, last);
-                uses.push_back(Use{use.edge, use.orientation, GeomAPI::To2d(curve, plane->Pln())});
+                uses.push_back(Use{use.edge, use.orientation, in_plane(curve, plane->Pln())});
             }
         attach_pcurves(made, uses);
         builder_.Add(made, wire(uses));
@@ -632,6 +703,7 @@ private:
 
     const Solid& solid_;
     const ConvertOptions& options_;
+    const bool patch_rough_;
     BRep_Builder builder_;
     ConvertedSolid out_;
     std::vector<std::pair<TopoDS_Edge, Interval>> ranges_;             // every non-degenerate edge made
@@ -641,6 +713,7 @@ private:
     std::map<const Edge*, std::vector<double>> cut_parameters_;        // the pieces' ends, domain ends included
     std::map<const Edge*, std::vector<TopoDS_Vertex>> cut_vertices_;   // a vertex per entry of cut_parameters_
     std::map<std::size_t, std::array<std::optional<detail::ArcDirection>, 2>> face_arcs_;  // natural: by face
+    std::set<std::size_t> patched_;                                    // natural: faces handed over as patches
     double arc_tolerance_ = 0;                                         // natural: find_arc's fit tolerance
     std::map<const Edge*, NurbsCurve> smooth_curves_;                  // natural: edges in the one-span form
     std::vector<std::size_t> shell_of_face_;                           // Solid::shells, by face index
@@ -649,6 +722,16 @@ private:
 
 }  // namespace
 
-ConvertedSolid convert(const Solid& solid, const ConvertOptions& options) { return Converter(solid, options).run(); }
+ConvertedSolid convert(const Solid& solid, const ConvertOptions& options) {
+    if (options.bezier_faces) return Converter(solid, options, true).run();
+    // The rough faces' patches (plan_arcs) go through the Bézier-patch construction, which OpenCASCADE still
+    // refuses on some faces read back from files (a patch edge with knots too close): then every face goes over
+    // whole, as it did before rough faces were patched, rather than not at all.
+    try {
+        return Converter(solid, options, true).run();
+    } catch (const Error&) {
+        return Converter(solid, options, false).run();
+    }
+}
 
 }  // namespace ratbez::occt

@@ -27,7 +27,11 @@
 // the exact one-span rational form of the same arc (src/smooth_arcs.hpp): the same points, another parameter
 // along the arc (ConvertedSolid::face_parameters / edge_parameters map it back). OpenCASCADE's fixed Gauss rule
 // (FreeCAD's Shape.Volume) then reads the face to ~1e-9 instead of ~1e-2, and no C0 knot is left for FreeCAD's
-// BOP check to flag, with one OCCT face per face of ours.
+// BOP check to flag, with one OCCT face per face of ours. A surface face that still has a C0 direction which is
+// not an arc (a crease, a loft through a polygon) or a rational C1 one goes over one face per Bézier patch, as
+// with bezier_faces below, and only that face; should OCCT refuse those patches (seen on faces read back from
+// files) every face goes over whole instead.
+// Straight and one-span directions are degree-elevated and knot-refined (exact) for OCCT's rule as well.
 // Tolerance: 1e-10 of the solid's size (exact geometry), or the largest tolerance of its faces (what an
 // imported model's edges carry, Face::tolerance) when that is larger.
 // Errors: ratbez::Error naming "solid" when the geometry cannot be represented (degree 0 or > 25).
