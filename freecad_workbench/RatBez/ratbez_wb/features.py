@@ -1,7 +1,7 @@
 """The Part::FeaturePython proxies of the RatBez workbench.
 
 Every feature rebuilds its shape from the ratbez kernel on each recompute. Solids are handed to FreeCAD
-as the exact B-spline B-rep, one face per Bézier patch (see conversion.shape_from_solid); Bézier curves
+as the exact B-spline B-rep, one face per face of the kernel (see conversion.shape_from_solid); Bézier curves
 and surfaces, which OpenCASCADE represents exactly, become Part.BezierCurve / Part.BezierSurface built
 from the same poles and weights the kernel validated, cross-checked point by point against the kernel.
 
