@@ -227,9 +227,10 @@ private:
                 }
             }
         }
-        for (auto& [edge, arc] : edge_arcs) {
-            smooth_curves_.emplace(edge, detail::smooth(edge->curve, arc));
-            out_.edge_parameters.emplace(edge, [arc](double t) { return arc.to_kernel(t); });
+        for (const auto& entry : edge_arcs) {  // not a structured binding: clang 14 cannot capture one
+            const detail::ArcDirection& arc = entry.second;
+            smooth_curves_.emplace(entry.first, detail::smooth(entry.first->curve, arc));
+            out_.edge_parameters.emplace(entry.first, [arc](double t) { return arc.to_kernel(t); });
         }
     }
 
