@@ -142,8 +142,9 @@ class SolidFeature(RatBezFeature):
         ("App::PropertyFloat", "ExactVolume",
          _tip("Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the "
               "exact surfaces), in mm^3, Placement not applied. FreeCAD's own Shape.Volume, Part > Check "
-              "geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per Bézier patch, "
-              "refined for OpenCASCADE's fixed Gauss rule) and agree with this to about 1e-9")),
+              "geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per face, as Part "
+              "makes them, each arc in an exact form OpenCASCADE's fixed Gauss rule reads) and agree with "
+              "this to about 1e-9")),
         ("App::PropertyFloat", "ExactArea",
          _tip("Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD's Shape.Area "
               "agrees with it to about 1e-9 (see ExactVolume)")),
