@@ -382,7 +382,7 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
             converted.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::SurfaceProperties(s, p, eps); },
             report.area, options.volume_limit, slack.area);
         report_progress(0.85);
-        bop_analysis(converted, report);
+        if (options.bop_analysis) bop_analysis(converted, report);
     } catch (const Standard_Failure& failure) {
         const char* message = failure.GetMessageString();
         report.failures.push_back(std::string("OpenCASCADE raised ") + failure.DynamicType()->Name() +
@@ -414,7 +414,7 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
         report.failures.push_back("volume " + number(report.volume) + " differs from the closed form " +
                                   number(*report.closed_form_volume));
     for (const std::string& finding : report.bop_findings) report.failures.push_back("BOP check: " + finding);
-    if (!report.bop_clean && report.bop_findings.empty() && report.failures.empty())
+    if (options.bop_analysis && !report.bop_clean && report.bop_findings.empty() && report.failures.empty())
         report.failures.push_back("BOP check: not completed");
     report.passed = report.failures.empty();
     report_progress(1.0);

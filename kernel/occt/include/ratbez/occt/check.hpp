@@ -19,6 +19,9 @@ struct CheckOptions {
     double deviation_limit = 1e-9;    // relative to the solid's size: larger deviations fail the check
     double volume_limit = 1e-6;       // relative volume disagreement that fails the check
     ConvertOptions convert{};         // the representation checked (validity, deviation, OCCT's volume)
+    // OpenCASCADE's BOP argument analysis (below). Off only for callers that assert validity and deviation
+    // alone on many random solids: its face self-intersection search can take minutes on extreme weights.
+    bool bop_analysis = true;
     Progress progress;                // optional: called between the steps and faces; may throw to cancel
 };
 
