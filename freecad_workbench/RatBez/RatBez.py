@@ -395,7 +395,7 @@ def export_3mf(objects, path, tolerance=None, color=True):
 
 def check_occt(obj):
     """ratbez.occt_check of the object's solid: a dict with at least valid, max_deviation, volume and
-    occt_volume. A RatBez feature is checked in the representation FreeCAD gets (bezier_faces); any other
+    occt_volume. A RatBez feature is checked in the representation FreeCAD gets (the natural one); any other
     solid (Part, PartDesign, an imported STEP) as the kernel reads it. An object holding several solids is
     refused: check_occt_all reports each."""
     reports = check_occt_all(obj)
@@ -410,7 +410,7 @@ def check_occt_all(obj):
     Label_1, Label_2, ... when it holds several (a compound, an imported assembly)."""
     rb = kernel.ratbez()
     if is_solid(obj):
-        return [(obj.Label, dict(rb.occt_check(solid_of(obj), bezier_faces=True)))]
+        return [(obj.Label, dict(rb.occt_check(solid_of(obj))))]
     if not exportable(obj):
         raise TypeError("'{}' holds no solid".format(safe_label(obj.Label)))
     return [(name, dict(rb.occt_check(solid))) for name, solid, _ in _named_solids(obj, identifiers=False)]
@@ -420,7 +420,9 @@ _REPORT_ROWS = (
     ("valid", "BRepCheck valid"), ("closed", "shell closed"), ("max_deviation", "max |ours - OCCT| (mm)"),
     ("max_analytic_deviation", "max distance to the analytic surface (mm)"), ("volume", "volume, exact (mm^3)"),
     ("occt_volume", "volume, OCCT (mm^3)"), ("closed_form_volume", "volume, closed form (mm^3)"),
-    ("area", "area, exact (mm^2)"), ("occt_area", "area, OCCT (mm^2)"), ("passed", "passed"),
+    ("area", "area, exact (mm^2)"), ("occt_area", "area, OCCT (mm^2)"), ("bop_clean", "BOP check clean"),
+    ("self_intersections", "self-intersections (BOP check)"), ("small_edges", "small edges (BOP check)"),
+    ("passed", "passed"),
 )
 
 

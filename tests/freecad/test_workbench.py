@@ -128,6 +128,23 @@ def test_primitives_measure_exactly_in_freecad():
 
 
 @suite.test
+def test_solids_have_parts_topology():
+    # Issue 25: one face per face of the kernel, as Part makes them (a cylinder's rim one edge, filleted as one),
+    # not one per rational Bézier patch; FreeCAD's BOP check clean at a placement that used to fail.
+    doc = new_document("Topology")
+    cylinder = RatBez.make_cylinder(doc, Radius=2, Height=5)
+    sphere = RatBez.make_sphere(doc, Radius=3, Center=V(0, 40, 0))
+    torus = RatBez.make_torus(doc, MajorRadius=5, MinorRadius=1.5)
+    doc.recompute()
+    for obj, faces, edges in ((cylinder, 3, 3), (sphere, 1, 3), (torus, 1, 2)):
+        check(len(obj.Shape.Faces) == faces and len(obj.Shape.Edges) == edges,
+              "{}: {} faces, {} edges".format(obj.Label, len(obj.Shape.Faces), len(obj.Shape.Edges)))
+    part = Part.makeCylinder(2, 5)
+    check(len(cylinder.Shape.Faces) == len(part.Faces), "as many faces as Part's cylinder")
+    assert_measures(sphere.Shape, 4 / 3 * math.pi * 27, 4 * math.pi * 9, (0, 40, 0), "sphere at (0, 40, 0)")
+
+
+@suite.test
 def test_every_example_measures_exactly_in_freecad():
     paths = sorted(glob.glob(os.path.join(EXAMPLES, "*.json")))
     check(len(paths) >= 9, "examples not found in " + EXAMPLES)
@@ -738,7 +755,9 @@ def test_export_sanitises_labels_and_check_report_reads_once():
     check(RatBez.check_passed(report), "check passed")
     formatted = RatBez.format_check_report(cylinder, report)
     check("None" not in formatted and formatted.count("volume, exact") == 1, "report:\n" + formatted)
-    check(formatted.count("\n") <= 12, "one line per quantity:\n" + formatted)
+    check(formatted.count("\n") <= 15, "one line per quantity:\n" + formatted)
+    check("BOP check clean" in formatted and "self-intersections (BOP check)" in formatted
+          and "small edges (BOP check)" in formatted, "the BOP analysis in the report:\n" + formatted)
     try:
         RatBez.export_openscad(RatBez.make_bezier_curve(doc), os.path.join(OUT, "curve.scad"))
     except TypeError:

@@ -4,13 +4,21 @@
 
 #include <gtest/gtest.h>
 
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <gp_Pnt.hxx>
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 
 #include "occt_test_support.hpp"
+#include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/extrude.hpp"
+#include "ratbez/occt/shape_import.hpp"
 #include "ratbez/occt/check.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
@@ -47,6 +55,10 @@ void expect_passes(const Solid& solid, const CheckOptions& options, const std::s
         EXPECT_NEAR(*report.closed_form_volume, report.volume, 1e-6 * report.volume) << name;
     }
     EXPECT_TRUE(report.failures.empty()) << name;
+    EXPECT_TRUE(report.bop_clean) << name;
+    EXPECT_EQ(report.self_intersections, 0) << name;
+    EXPECT_EQ(report.small_edges, 0) << name;
+    EXPECT_TRUE(report.bop_findings.empty()) << name;
 }
 
 TEST(Check, EveryPrimitivePassesAgainstItsAnalyticSurface) {
@@ -127,6 +139,33 @@ TEST(Check, BadOptionsThrowNamingTheOption) {
     }
     // A claim with a zero axis is refused where it is made, before it reaches the check.
     EXPECT_THROW((void)claimed_as(solid, Construction::Torus{{}, {0, 0, 0}, 2, 1}), Error);
+}
+
+// The BOP argument analysis (FreeCAD's "Run BOP check") is part of the check. A sphere cut by a box, read from
+// OpenCASCADE, has a trimmed face on the exact rational sphere, whose double knots are C0 by multiplicity (a
+// trimmed face keeps its surface's parameter): BOPAlgo reports GeomAbs_C0, which a fillet trips over. The
+// report names it, counts no self-intersection or small edge, and does not pass, although all else agrees.
+TEST(Check, TheBopAnalysisIsPartOfTheCheck) {
+    const TopoDS_Shape cut = BRepAlgoAPI_Cut(BRepPrimAPI_MakeSphere(3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 4, 4, 4).Shape()).Shape();
+    const CheckReport report = check(from_occt(cut), with_grid(5));
+    EXPECT_TRUE(report.valid && report.closed);
+    EXPECT_FALSE(report.bop_clean);
+    EXPECT_FALSE(report.passed);
+    EXPECT_EQ(report.self_intersections, 0);
+    EXPECT_EQ(report.small_edges, 0);
+    ASSERT_FALSE(report.bop_findings.empty());
+    EXPECT_EQ(report.bop_findings.front().rfind("BOPAlgo GeomAbs_C0", 0), 0u) << report.bop_findings.front();
+    EXPECT_NE(std::find(report.failures.begin(), report.failures.end(), "BOP check: " + report.bop_findings.front()),
+              report.failures.end());
+    const std::string table = format_report(report);
+    EXPECT_NE(table.find("BOP check clean"), std::string::npos) << table;
+    EXPECT_NE(table.find("self-intersections (BOP)"), std::string::npos) << table;
+    EXPECT_NE(table.find("small edges (BOP)"), std::string::npos) << table;
+    // Every entry under its name, as `ratbez check --json` and Python's occt_check give them.
+    std::vector<std::string> names;
+    for_each_entry(report, [&](const char* name, const auto&) { names.emplace_back(name); });
+    for (const char* name : {"bop_clean", "self_intersections", "small_edges", "bop_findings"})
+        EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
 }
 
 }  // namespace

@@ -34,12 +34,17 @@ std::vector<Profile> circles(const std::vector<std::pair<double, double>>& radiu
     return out;
 }
 
-// Valid through our conversion (BRepCheck, our evaluation against OCCT's, volumes) and written as STEP.
+// Valid through our conversion (BRepCheck, our evaluation against OCCT's, volumes, FreeCAD's BOP check) and
+// written as STEP; one face per Bézier patch as well.
 void expect_valid_and_writable(const Solid& solid, const std::string& name) {
-    const CheckReport report = check(solid);
-    EXPECT_TRUE(report.valid) << name;
-    EXPECT_TRUE(report.closed) << name;
-    EXPECT_TRUE(report.passed) << name << "\n" << format_report(report);
+    for (const bool bezier_faces : {false, true}) {
+        CheckOptions options;
+        options.convert.bezier_faces = bezier_faces;
+        const CheckReport report = check(solid, options);
+        EXPECT_TRUE(report.valid) << name;
+        EXPECT_TRUE(report.closed) << name;
+        EXPECT_TRUE(report.passed) << name << (bezier_faces ? " (bezier_faces)\n" : "\n") << format_report(report);
+    }
     const fs::path file = fs::temp_directory_path() / ("ratbez_modelling_" + name + ".step");
     write_step(solid, file.string());
     EXPECT_GT(fs::file_size(file), 1000u) << name;

@@ -224,6 +224,10 @@ def test_occt_check(make, volume):
     assert report["valid"] is True and report["closed"] is True
     assert report["passed"] is True, report["failures"]
     assert report["failures"] == []
+    # FreeCAD's BOP check, run by occt_check too: clean on the primitives
+    assert report["bop_clean"] is True and report["bop_findings"] == []
+    assert report["self_intersections"] == 0 and report["small_edges"] == 0
+    assert "BOP check clean" in report["report"]
     assert report["max_deviation"] < 1e-9
     assert report["volume"] == pytest.approx(volume, rel=1e-8)
     assert report["occt_volume"] == pytest.approx(volume, rel=1e-5)

@@ -8,8 +8,9 @@ ratbez.NurbsCurve pieces. Several closed loops (a face's wires, or a sketch with
 an outer loop and holes by FreeCAD's own face maker (Part::FaceMakerBullseye), as Part Extrude does.
 
 ratbez -> FreeCAD: a solid is handed over as OpenCASCADE's .brep text of its exact B-spline B-rep
-(ratbez.brep_string with bezier_faces=True: one face per rational Bézier patch, so that FreeCAD's
-Shape.Volume, Area and CenterOfMass read the exact values and "Run BOP check" passes), never as a mesh.
+(ratbez.brep_string: one face per face of the kernel, as Part makes them, with every arc in its exact one-span
+form so that FreeCAD's Shape.Volume, Area and CenterOfMass read the exact values and "Run BOP check" passes;
+only a face with a crease goes over as Bézier patches), never as a mesh.
 """
 
 import FreeCAD as App
@@ -384,7 +385,7 @@ def straight_line(link, prop):
 # ratbez -> FreeCAD
 
 def shape_from_solid(solid):
-    """The exact B-spline B-rep of a ratbez solid as a valid Part.Solid (one face per Bézier patch)."""
+    """The exact B-spline B-rep of a ratbez solid as a valid Part.Solid (one face per face of the kernel)."""
     # OpenCASCADE takes coordinates from 1e100 on as infinite (Precision::Infinite is 2e100): the kernel
     # builds such a solid (up to its own limit of 1e100), FreeCAD's shape cannot hold it.
     (low, high) = solid.bounding_box()
@@ -392,7 +393,7 @@ def shape_from_solid(solid):
     if reach > 1e99:
         raise Failure("", translate("the solid reaches {:.3g} from the origin, more than OpenCASCADE can hold "
                                     "(1e99)").format(reach))
-    text = kernel.ratbez().brep_string(solid, bezier_faces=True)
+    text = kernel.ratbez().brep_string(solid)
     shape = Part.Shape()
     try:
         shape.importBrepFromString(text, False)

@@ -1,7 +1,7 @@
 """The Part::FeaturePython proxies of the RatBez workbench.
 
 Every feature rebuilds its shape from the ratbez kernel on each recompute. Solids are handed to FreeCAD
-as the exact B-spline B-rep, one face per Bézier patch (see conversion.shape_from_solid); Bézier curves
+as the exact B-spline B-rep, one face per face of the kernel (see conversion.shape_from_solid); Bézier curves
 and surfaces, which OpenCASCADE represents exactly, become Part.BezierCurve / Part.BezierSurface built
 from the same poles and weights the kernel validated, cross-checked point by point against the kernel.
 
@@ -142,8 +142,9 @@ class SolidFeature(RatBezFeature):
         ("App::PropertyFloat", "ExactVolume",
          _tip("Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the "
               "exact surfaces), in mm^3, Placement not applied. FreeCAD's own Shape.Volume, Part > Check "
-              "geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per Bézier patch, "
-              "refined for OpenCASCADE's fixed Gauss rule) and agree with this to about 1e-9")),
+              "geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per face, as Part "
+              "makes them, each arc in an exact form OpenCASCADE's fixed Gauss rule reads) and agree with "
+              "this to about 1e-9")),
         ("App::PropertyFloat", "ExactArea",
          _tip("Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD's Shape.Area "
               "agrees with it to about 1e-9 (see ExactVolume)")),

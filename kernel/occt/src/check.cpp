@@ -4,6 +4,9 @@
 
 #include "ratbez/occt/check.hpp"
 
+#include <BOPAlgo_ArgumentAnalyzer.hxx>
+#include <BOPAlgo_CheckResult.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepCheck_Shell.hxx>
 #include <BRepGProp.hxx>
@@ -32,6 +35,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <string>
 
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
@@ -80,10 +84,13 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
             const auto& [u0, u1, v0, v1] = converted.face_domains[k];
             double occt_u0 = u0, occt_u1 = u1, occt_v0 = v0, occt_v1 = v1;
             if (plane.IsNull()) occt_surface->Bounds(occt_u0, occt_u1, occt_v0, occt_v1);
+            // Our parameters of OCCT's sample: the affine map of the domains, or the arc's map (topology.hpp).
+            const auto& [to_u, to_v] = converted.face_parameters[k];
             for (int i = 0; i < grid; ++i) {
                 if (progress) progress((static_cast<double>(f) + static_cast<double>(i) / grid) / static_cast<double>(solid.faces().size()));
+                const double u = to_u ? to_u(sample(occt_u0, occt_u1, i, grid)) : sample(u0, u1, i, grid);
                 for (int j = 0; j < grid; ++j) {
-                    const Vec3 ours = surface.point(sample(u0, u1, i, grid), sample(v0, v1, j, grid));
+                    const Vec3 ours = surface.point(u, to_v ? to_v(sample(occt_v0, occt_v1, j, grid)) : sample(v0, v1, j, grid));
                     if (!plane.IsNull()) {
                         // Our plane patch (or flat patch) against OCCT's plane: the distance from it (the
                         // patch's own (u, v) are not the plane's).
@@ -101,9 +108,11 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
             double first = 0, last = 0;
             const Handle(Geom_Curve) curve = BRep_Tool::Curve(occt_edge, first, last);
             const GeomAdaptor_Curve adaptor(curve, first, last);
+            const auto map = converted.edge_parameters.find(edge);
             for (int i = 0; i < grid; ++i) {
                 const double t = sample(first, last, i, grid);
-                worst = std::max(worst, distance(edge->curve.point(t), from_occt(adaptor.Value(t))));
+                const double ours = map == converted.edge_parameters.end() ? t : map->second(t);
+                worst = std::max(worst, distance(edge->curve.point(ours), from_occt(adaptor.Value(t))));
             }
         }
     return worst;
@@ -255,6 +264,79 @@ double occt_measure(const TopoDS_Shape& shape, Measure&& measure, double ours, d
     return value;
 }
 
+// The words FreeCAD's BOP check report uses for a status ("BOPAlgo SelfIntersect"), so that a finding reads the
+// same in both.
+const char* status_name(BOPAlgo_CheckStatus status) {
+    switch (status) {
+        case BOPAlgo_BadType: return "BOPAlgo BadType";
+        case BOPAlgo_SelfIntersect: return "BOPAlgo SelfIntersect";
+        case BOPAlgo_TooSmallEdge: return "BOPAlgo TooSmallEdge";
+        case BOPAlgo_NonRecoverableFace: return "BOPAlgo NonRecoverableFace";
+        case BOPAlgo_IncompatibilityOfVertex: return "BOPAlgo IncompatibilityOfVertex";
+        case BOPAlgo_IncompatibilityOfEdge: return "BOPAlgo IncompatibilityOfEdge";
+        case BOPAlgo_IncompatibilityOfFace: return "BOPAlgo IncompatibilityOfFace";
+        case BOPAlgo_OperationAborted: return "BOPAlgo OperationAborted";
+        case BOPAlgo_GeomAbs_C0: return "BOPAlgo GeomAbs_C0";
+        case BOPAlgo_InvalidCurveOnSurface: return "BOPAlgo InvalidCurveOnSurface";
+        case BOPAlgo_NotValid: return "BOPAlgo NotValid";
+        default: return "BOPAlgo CheckUnknown";
+    }
+}
+
+const char* shape_kind(TopAbs_ShapeEnum type) {
+    switch (type) {
+        case TopAbs_VERTEX: return "vertex";
+        case TopAbs_EDGE: return "edge";
+        case TopAbs_WIRE: return "wire";
+        case TopAbs_FACE: return "face";
+        case TopAbs_SHELL: return "shell";
+        case TopAbs_SOLID: return "solid";
+        default: return "shape";
+    }
+}
+
+// BOPAlgo_ArgumentAnalyzer set up as FreeCAD's "Run BOP check" sets it up (TopoShape::isValid / TaskCheckGeometry:
+// every mode on), on a copy of the shape as FreeCAD does: the analysis intersects the shape with itself and may
+// raise the tolerances of what it runs on, which would change the measurements taken after it. Each finding
+// names its status, the kinds of its shapes and, for faces, which face of ours (face i of the Solid).
+void bop_analysis(const ConvertedSolid& converted, CheckReport& report) {
+    BRepBuilderAPI_Copy copier(converted.solid);
+    BOPAlgo_ArgumentAnalyzer analyzer;
+    analyzer.SetShape1(copier.Shape());
+    analyzer.ArgumentTypeMode() = true;
+    analyzer.SelfInterMode() = true;
+    analyzer.SmallEdgeMode() = true;
+    analyzer.RebuildFaceMode() = true;
+    analyzer.ContinuityMode() = true;
+    analyzer.TangentMode() = true;
+    analyzer.MergeVertexMode() = true;
+    analyzer.CurveOnSurfaceMode() = true;
+    analyzer.MergeEdgeMode() = true;
+    analyzer.Perform();
+    const auto our_face = [&](const TopoDS_Shape& shape) -> std::optional<std::size_t> {
+        for (std::size_t k = 0; k < converted.faces.size(); ++k)
+            if (copier.ModifiedShape(converted.faces[k]).IsSame(shape)) {
+                const auto after = std::upper_bound(converted.first_face.begin(), converted.first_face.end(), k);
+                return static_cast<std::size_t>(after - converted.first_face.begin()) - 1;
+            }
+        return std::nullopt;
+    };
+    for (const BOPAlgo_CheckResult& result : analyzer.GetCheckResult()) {
+        const BOPAlgo_CheckStatus status = result.GetCheckStatus();
+        if (status == BOPAlgo_SelfIntersect) ++report.self_intersections;
+        if (status == BOPAlgo_TooSmallEdge) ++report.small_edges;
+        std::string kinds, faces;
+        for (const TopoDS_Shape& shape : result.GetFaultyShapes1()) {
+            kinds += (kinds.empty() ? "" : ", ") + std::string(shape_kind(shape.ShapeType()));
+            if (shape.ShapeType() == TopAbs_FACE)
+                if (const auto f = our_face(shape)) faces += (faces.empty() ? "" : ", ") + std::to_string(*f);
+        }
+        report.bop_findings.push_back(std::string(status_name(status)) + (kinds.empty() ? "" : ": " + kinds) +
+                                      (faces.empty() ? "" : " (face " + faces + ")"));
+    }
+    report.bop_clean = !analyzer.HasFaulty() && report.bop_findings.empty();
+}
+
 }  // namespace
 
 CheckReport check(const Solid& solid, const CheckOptions& options) {
@@ -304,6 +386,8 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
         report.occt_area = occt_measure(
             converted.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::SurfaceProperties(s, p, eps); },
             report.area, options.volume_limit, slack.area);
+        report_progress(0.85);
+        if (options.bop_analysis) bop_analysis(converted, report);
     } catch (const Standard_Failure& failure) {
         const char* message = failure.GetMessageString();
         report.failures.push_back(std::string("OpenCASCADE raised ") + failure.DynamicType()->Name() +
@@ -334,6 +418,9 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
     if (report.closed_form_volume && !(relative_difference(report.volume, *report.closed_form_volume) <= options.volume_limit))
         report.failures.push_back("volume " + number(report.volume) + " differs from the closed form " +
                                   number(*report.closed_form_volume));
+    for (const std::string& finding : report.bop_findings) report.failures.push_back("BOP check: " + finding);
+    if (options.bop_analysis && !report.bop_clean && report.bop_findings.empty() && report.failures.empty())
+        report.failures.push_back("BOP check: not completed");
     report.passed = report.failures.empty();
     report_progress(1.0);
     return report;
@@ -362,6 +449,9 @@ std::string format_report(const CheckReport& report) {
             number(*report.closed_form_volume) + " rel " + relative(report.volume, *report.closed_form_volume), std::nullopt);
     row("area (ours)", number(report.area), std::nullopt);
     row("area (OCCT)", number(report.occt_area) + " rel " + relative(report.area, report.occt_area), std::nullopt);
+    row("BOP check clean", report.bop_clean ? "yes" : "no", report.bop_clean);
+    row("self-intersections (BOP)", std::to_string(report.self_intersections), report.self_intersections == 0);
+    row("small edges (BOP)", std::to_string(report.small_edges), report.small_edges == 0);
     for (const std::string& failure : report.failures) out << "  FAIL: " << failure << '\n';
     return out.str();
 }

@@ -14,6 +14,7 @@
 #include <gp_Pln.hxx>
 #include <gp_Vec.hxx>
 #include <Precision.hxx>
+#include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
@@ -26,6 +27,8 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
+#include <optional>
 #include <cmath>
 #include <set>
 #include <string>
@@ -33,6 +36,7 @@
 
 #include "face_sides.hpp"
 #include "gprop_patches.hpp"
+#include "smooth_arcs.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 
@@ -88,7 +92,9 @@ Handle(Geom2d_Curve) linear_pcurve(const gp_Pnt2d& a, const gp_Pnt2d& b, double 
 
 class Converter {
 public:
-    Converter(const Solid& solid, const ConvertOptions& options) : solid_(solid), options_(options) {
+    // patch_rough: natural conversion hands rough faces over as Bézier patches (plan_arcs).
+    Converter(const Solid& solid, const ConvertOptions& options, bool patch_rough)
+        : solid_(solid), options_(options), patch_rough_(patch_rough) {
         const Box box = solid.bounding_box();
         // Our geometry is exact to rounding, but OCCT evaluates an edge's 3D curve and the face
         // surface through its pcurve by different routes, and with rational weights 10^+-3 these
@@ -107,7 +113,12 @@ public:
             builder_.MakeShell(out_.shells[k]);
             for (std::size_t f : solid_.shells()[k]) shell_of_face_[f] = k;
         }
-        if (options_.bezier_faces) plan_patches();
+        if (options_.bezier_faces) {
+            plan_patches([](std::size_t) { return true; });
+        } else {
+            plan_arcs();
+            if (!patched_.empty()) plan_patches([this](std::size_t i) { return patched_.count(i) > 0; });
+        }
         for (std::size_t i = 0; i < faces.size(); ++i) {
             out_.first_face.push_back(out_.faces.size());
             current_shell_ = shell_of_face_[i];
@@ -117,13 +128,18 @@ public:
                     add(planar_face(faces[i]), {du.min, du.max, dv.min, dv.max});
                 } else if (faces[i].kind() == Face::Kind::trimmed) {
                     add(trimmed_face(faces[i]), {du.min, du.max, dv.min, dv.max});
-                } else if (options_.bezier_faces) {
+                } else if (grids_.count(i)) {
                     patch_faces(faces[i], grids_.at(i));
                 } else {
-                    add(surface_face(faces[i]), {du.min, du.max, dv.min, dv.max});
+                    add(surface_face(i), {du.min, du.max, dv.min, dv.max}, kernel_parameters(i));
                 }
             } catch (const Error& e) {
                 throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
+            } catch (const Standard_Failure& failure) {
+                // OpenCASCADE refusing a construction (a curve it cannot hold): named, never an unknown exception.
+                const char* message = failure.GetMessageString();
+                throw Error("solid", "face " + std::to_string(i) + ": OpenCASCADE raised " + failure.DynamicType()->Name() +
+                                         (message && *message ? std::string(": ") + message : std::string()));
             }
         }
         out_.first_face.push_back(out_.faces.size());
@@ -144,10 +160,97 @@ public:
 
 private:
     // `domain`: our parameter rectangle the face covers (u0, u1, v0, v1).
-    void add(const TopoDS_Face& face, const std::array<double, 4>& domain) {
+    void add(const TopoDS_Face& face, const std::array<double, 4>& domain,
+             std::array<std::function<double(double)>, 2> parameters = {}) {
         builder_.Add(out_.shells[current_shell_], face);
         out_.faces.push_back(face);
         out_.face_domains.push_back(domain);
+        out_.face_parameters.push_back(std::move(parameters));
+    }
+
+    // The curve an edge is handed over as: its own, or its arc in the one-span form (plan_arcs).
+    const NurbsCurve& curve_of(const Edge& e) const {
+        auto it = smooth_curves_.find(&e);
+        return it == smooth_curves_.end() ? e.curve : it->second;
+    }
+
+    // Natural conversion: which arc directions of the surface faces, and which arc edges, go over in the
+    // one-span form (smooth_arcs.hpp). A face side and its edge share their parameter (SameParameter), so a
+    // direction changes only together with the edges along it, and an edge only where every face using it
+    // agrees: a trimmed face's p-curves are in the edge's parameter and keep it; a planar face's p-curves are
+    // made from whichever curve the edge has. Dropping one drops its partners until nothing changes.
+    // A surface face that keeps a direction OCCT's fixed rule cannot read (rough_direction: a loft through a
+    // square, a ruled crease) goes over one face per Bézier patch instead, as bezier_faces hands over every
+    // face (gprop_patches.hpp), and its edges keep their parameter; every other face stays one face.
+    void plan_arcs() {
+        arc_tolerance_ = 1e-11 * std::max(1.0, solid_.bounding_box().diagonal());
+        const double tolerance = arc_tolerance_;
+        const auto& faces = solid_.faces();
+        for (std::size_t i = 0; i < faces.size(); ++i)
+            if (faces[i].kind() == Face::Kind::surface) {
+                const NurbsSurface& surface = faces[i].surface();
+                auto& [u, v] = face_arcs_[i];
+                u = detail::find_arc(surface, true, tolerance);
+                v = detail::find_arc(surface, false, tolerance);
+                // v is smoothed after u: it must be an arc whether u is changed or not (surface_face).
+                if (u && v && !detail::find_arc(detail::smooth(surface, true, *u), false, tolerance)) v.reset();
+            }
+        std::map<const Edge*, detail::ArcDirection> edge_arcs;
+        for (const EdgePtr& edge : solid_.edges())
+            if (!edge->degenerate)
+                if (auto arc = detail::find_arc(edge->curve, tolerance)) edge_arcs.emplace(edge.get(), std::move(*arc));
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (std::size_t i = 0; i < faces.size(); ++i) {
+                if (faces[i].kind() == Face::Kind::trimmed) {
+                    for (const auto& loop : faces[i].loops())
+                        for (const Coedge& coedge : loop) changed = edge_arcs.erase(coedge.edge.get()) > 0 || changed;
+                    continue;
+                }
+                if (faces[i].kind() != Face::Kind::surface) continue;
+                auto& [arc_u, arc_v] = face_arcs_[i];
+                if (patch_rough_ && !patched_.count(i) && ((!arc_u && rough_direction(faces[i].surface(), true)) ||
+                                           (!arc_v && rough_direction(faces[i].surface(), false)))) {
+                    patched_.insert(i);
+                    arc_u.reset();
+                    arc_v.reset();
+                    changed = true;
+                }
+                for (int s = 0; s < 4; ++s) {
+                    const Coedge& coedge = faces[i].sides()[static_cast<std::size_t>(s)];
+                    if (coedge.edge->degenerate) continue;
+                    std::optional<detail::ArcDirection>& direction = face_arcs_[i][along_u(s) ? 0 : 1];
+                    if (direction.has_value() == (edge_arcs.count(coedge.edge.get()) > 0)) continue;
+                    direction.reset();
+                    edge_arcs.erase(coedge.edge.get());
+                    changed = true;
+                }
+            }
+        }
+        for (const auto& entry : edge_arcs) {  // not a structured binding: clang 14 cannot capture one
+            const detail::ArcDirection& arc = entry.second;
+            smooth_curves_.emplace(entry.first, detail::smooth(entry.first->curve, arc));
+            out_.edge_parameters.emplace(entry.first, [arc](double t) { return arc.to_kernel(t); });
+        }
+    }
+
+    // A direction with an interior knot of multiplicity degree or more (C0 by multiplicity: a crease, or the
+    // joint of two rational arcs that is not an arc direction), or on a rational surface degree - 1 or more (C1:
+    // the second derivative of a rational joint jumps): OCCT's single Gauss rule over the face converges slowly
+    // across it (0.9 % on the kernel's own circle joints, 9 % on the ruled example, 0.09 % on the partial
+    // revolve example's rational C1 profile), and BOPAlgo flags a C0 one.
+    static bool rough_direction(const NurbsSurface& surface, bool along_u) {
+        const std::vector<double>& knots = along_u ? surface.knots_u() : surface.knots_v();
+        const int degree = along_u ? surface.degree_u() : surface.degree_v();
+        const Interval domain = along_u ? surface.domain_u() : surface.domain_v();
+        for (std::size_t k = 0; k < knots.size();) {
+            std::size_t end = k;
+            while (end < knots.size() && knots[end] == knots[k]) ++end;
+            if (knots[k] > domain.min && knots[k] < domain.max && static_cast<int>(end - k) >= std::max(1, surface.is_rational() ? degree - 1 : degree))
+                return true;
+            k = end;
+        }
+        return false;
     }
 
     TopoDS_Vertex vertex(const VertexPtr& v) {
@@ -191,7 +294,7 @@ private:
         at.push_back(vertex(e->start));
         for (std::size_t k = 1; k + 1 < cuts.size(); ++k) at.push_back(new_vertex(e->curve.point(cuts[k])));
         at.push_back(vertex(e->end));
-        const Handle(Geom_BSplineCurve) whole = to_occt(e->curve);
+        const Handle(Geom_BSplineCurve) whole = to_occt(curve_of(*e));
         std::vector<TopoDS_Edge> made;
         for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
             Handle(Geom_BSplineCurve) piece = whole;
@@ -302,8 +405,25 @@ private:
         return s == 0 ? v0 : s == 1 ? u1 : s == 2 ? v1 : u0;
     }
 
-    TopoDS_Face surface_face(const Face& face) {
-        const NurbsSurface& surface = face.surface();
+    // OCCT's (u, v) -> ours on face i (ConvertedSolid::face_parameters): the arc directions plan_arcs changed.
+    std::array<std::function<double(double)>, 2> kernel_parameters(std::size_t i) const {
+        std::array<std::function<double(double)>, 2> parameters;
+        if (auto planned = face_arcs_.find(i); planned != face_arcs_.end())
+            for (std::size_t d = 0; d < 2; ++d)
+                if (const auto& arc = planned->second[d]) parameters[d] = [a = *arc](double t) { return a.to_kernel(t); };
+        return parameters;
+    }
+
+    // Face i bounded by its four sides; its arc directions in the one-span form where plan_arcs chose so.
+    TopoDS_Face surface_face(std::size_t i) {
+        const Face& face = solid_.faces()[i];
+        NurbsSurface surface = face.surface();
+        if (auto planned = face_arcs_.find(i); planned != face_arcs_.end()) {
+            const auto& [u, v] = planned->second;
+            if (u) surface = detail::smooth(surface, true, *u);
+            // The rows across v are now the smoothed u's: the same arc, found again on them (plan_arcs made sure).
+            if (v) surface = detail::smooth(surface, false, *detail::find_arc(surface, false, arc_tolerance_));
+        }
         const Interval du = surface.domain_u(), dv = surface.domain_v();
         std::array<std::vector<Use>, 4> sides;
         const std::size_t before = degenerate_ranges_.size();
@@ -313,16 +433,38 @@ private:
                                                            fixed_of(s, du.min, du.max, dv.min, dv.max), range.min, range.max,
                                                            false);
         }
-        return bounded_face(to_occt(surface), sides, before);
+        return bounded_face(refined_for_gauss(to_occt(surface)), sides, before);
     }
+
+    // The same surface with a richer representation for OCCT's fixed Gauss rule, which it sizes by degree and
+    // spans (gprop_patches.hpp): a straight direction (a cylinder's or an extrusion's, degree 1, one span)
+    // gets 8 points, and reads a cylinder's centre of mass to only 8e-5 of its size. Degree elevation and knot
+    // insertion are exact and keep the parameter, so the edges along the direction keep theirs.
+    static Handle(Geom_BSplineSurface) refined_for_gauss(Handle(Geom_BSplineSurface) surface) {
+        if (surface->UDegree() == 1 || surface->VDegree() == 1)
+            surface->IncreaseDegree(std::max(surface->UDegree(), 2), std::max(surface->VDegree(), 2));
+        constexpr int kSpans = 4;
+        if (surface->NbUKnots() == 2) {
+            const double a = surface->UKnot(1), b = surface->UKnot(2);
+            for (int k = 1; k < kSpans; ++k) surface->InsertUKnot(a + (b - a) * k / kSpans, 1, 0.0);
+        }
+        if (surface->NbVKnots() == 2) {
+            const double a = surface->VKnot(1), b = surface->VKnot(2);
+            for (int k = 1; k < kSpans; ++k) surface->InsertVKnot(a + (b - a) * k / kSpans, 1, 0.0);
+        }
+        return surface;
+    }
+
 
     // bezier_faces: the patch grid of every surface face, and where every edge is cut: at the grid lines
     // of the faces beside it (in its own parameter) and at its own knots.
-    void plan_patches() {
+    // `patched`: which surface faces (all with bezier_faces; the rough ones otherwise, plan_arcs). An edge in
+    // its one-span arc form is never cut (its knots are not the kernel's).
+    void plan_patches(const std::function<bool(std::size_t)>& patched) {
         const auto& faces = solid_.faces();
         for (std::size_t i = 0; i < faces.size(); ++i) {
             const Face& face = faces[i];
-            if (face.kind() != Face::Kind::surface) continue;
+            if (face.kind() != Face::Kind::surface || !patched(i)) continue;
             detail::PatchGrid grid = detail::gprop_patch_grid(face.surface(), kGPropTolerance);
             out_.gprop_tolerance_reached = out_.gprop_tolerance_reached && grid.reached;
             for (int s = 0; s < 4; ++s) {
@@ -337,7 +479,7 @@ private:
             grids_.emplace(i, std::move(grid));
         }
         for (const EdgePtr& edge : solid_.edges())
-            if (!edge->degenerate)
+            if (!edge->degenerate && !smooth_curves_.count(edge.get()))
                 for (double knot : interior_knots(edge->curve)) cuts_[edge.get()].insert(knot);
     }
 
@@ -438,6 +580,33 @@ private:
         return new Geom_Plane(plane);
     }
 
+    // The curve in the plane's coordinates: a B-spline's poles mapped affinely (exact, the same knots and
+    // weights; GeomAPI::To2d approximates by projection and throws on the one-span arcs of smooth_arcs.hpp).
+    static Handle(Geom2d_Curve) in_plane(const Handle(Geom_Curve)& curve, const gp_Pln& plane) {
+        Handle(Geom_BSplineCurve) spline = Handle(Geom_BSplineCurve)::DownCast(curve);
+        if (spline.IsNull()) return GeomAPI::To2d(curve, plane);
+        if (spline->IsPeriodic()) {  // its knots then do not count its poles: the same curve, clamped
+            spline = Handle(Geom_BSplineCurve)::DownCast(spline->Copy());
+            spline->SetNotPeriodic();
+        }
+        const gp_Ax3& frame = plane.Position();
+        const gp_Pnt origin = frame.Location();
+        const gp_Vec x(frame.XDirection()), y(frame.YDirection());
+        TColgp_Array1OfPnt2d poles(1, spline->NbPoles());
+        for (int i = 1; i <= spline->NbPoles(); ++i) {
+            const gp_Vec d(origin, spline->Pole(i));
+            poles.SetValue(i, gp_Pnt2d(d.Dot(x), d.Dot(y)));
+        }
+        TColStd_Array1OfReal knots(1, spline->NbKnots());
+        TColStd_Array1OfInteger multiplicities(1, spline->NbKnots());
+        spline->Knots(knots);
+        spline->Multiplicities(multiplicities);
+        if (!spline->IsRational()) return new Geom2d_BSplineCurve(poles, knots, multiplicities, spline->Degree());
+        TColStd_Array1OfReal weights(1, spline->NbPoles());
+        spline->Weights(weights);
+        return new Geom2d_BSplineCurve(poles, weights, knots, multiplicities, spline->Degree());
+    }
+
     // A plane face bounded by the uses of a flat patch's sides: degenerate uses dropped (a plane has no
     // singular point), pcurves the edges' 3D curves in the plane's coordinates (exact: GeomAPI::To2d of a
     // B-spline in the plane maps its poles).
@@ -450,7 +619,7 @@ private:
                 if (BRep_Tool::Degenerated(use.edge)) continue;
                 double first = 0, last = 0;
                 const Handle(Geom_Curve) curve = BRep_Tool::Curve(use.edge, first, last);
-                uses.push_back(Use{use.edge, use.orientation, GeomAPI::To2d(curve, plane->Pln())});
+                uses.push_back(Use{use.edge, use.orientation, in_plane(curve, plane->Pln())});
             }
         attach_pcurves(made, uses);
         builder_.Add(made, wire(uses));
@@ -513,7 +682,7 @@ private:
             for (const Coedge& coedge : loop) {
                 const std::vector<TopoDS_Edge>& edge_pieces = pieces(coedge.edge);
                 const std::vector<double>& cuts = cut_parameters_.at(coedge.edge.get());
-                const Handle(Geom2d_BSplineCurve) whole = to_occt_2d(coedge.edge->curve, plane.origin, plane.x_axis, plane.y_axis);
+                const Handle(Geom2d_BSplineCurve) whole = to_occt_2d(curve_of(*coedge.edge), plane.origin, plane.x_axis, plane.y_axis);
                 std::vector<Use> piece_uses;
                 for (std::size_t k = 0; k < edge_pieces.size(); ++k) {
                     Handle(Geom2d_BSplineCurve) pcurve = whole;
@@ -535,6 +704,7 @@ private:
 
     const Solid& solid_;
     const ConvertOptions& options_;
+    const bool patch_rough_;
     BRep_Builder builder_;
     ConvertedSolid out_;
     std::vector<std::pair<TopoDS_Edge, Interval>> ranges_;             // every non-degenerate edge made
@@ -543,12 +713,26 @@ private:
     std::map<const Edge*, std::set<double>> cuts_;                     // bezier_faces: interior cuts per edge
     std::map<const Edge*, std::vector<double>> cut_parameters_;        // the pieces' ends, domain ends included
     std::map<const Edge*, std::vector<TopoDS_Vertex>> cut_vertices_;   // a vertex per entry of cut_parameters_
+    std::map<std::size_t, std::array<std::optional<detail::ArcDirection>, 2>> face_arcs_;  // natural: by face
+    std::set<std::size_t> patched_;                                    // natural: faces handed over as patches
+    double arc_tolerance_ = 0;                                         // natural: find_arc's fit tolerance
+    std::map<const Edge*, NurbsCurve> smooth_curves_;                  // natural: edges in the one-span form
     std::vector<std::size_t> shell_of_face_;                           // Solid::shells, by face index
     std::size_t current_shell_ = 0;                                    // the shell the face being built goes to
 };
 
 }  // namespace
 
-ConvertedSolid convert(const Solid& solid, const ConvertOptions& options) { return Converter(solid, options).run(); }
+ConvertedSolid convert(const Solid& solid, const ConvertOptions& options) {
+    if (options.bezier_faces) return Converter(solid, options, true).run();
+    // The rough faces' patches (plan_arcs) go through the Bézier-patch construction, which OpenCASCADE still
+    // refuses on some faces read back from files (a patch edge with knots too close): then every face goes over
+    // whole, as it did before rough faces were patched, rather than not at all.
+    try {
+        return Converter(solid, options, true).run();
+    } catch (const Error&) {
+        return Converter(solid, options, false).run();
+    }
+}
 
 }  // namespace ratbez::occt

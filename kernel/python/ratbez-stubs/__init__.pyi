@@ -689,7 +689,9 @@ def occt_check(solid: Solid, grid: int = ..., deviation_limit: float = ..., volu
     """Convert to an OpenCASCADE solid (bezier_faces: as brep_string) and compare: validity, evaluation
     deviation, volume and area; for a cylinder, cone, sphere, torus or revolution also the distance to
     OCCT's analytic surface of that kind (max_analytic_deviation) and, for the four primitives, the
-    closed-form volume (closed_form_volume); both None otherwise.
+    closed-form volume (closed_form_volume); both None otherwise. Also OpenCASCADE's BOP argument analysis
+    as FreeCAD's 'Run BOP check' runs it: bop_clean, self_intersections, small_edges and bop_findings (one
+    line each, also in failures); passed only when everything, the BOP analysis included, is clean.
     
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt

@@ -429,7 +429,9 @@ void bind_io(py::module_& m) {
         (std::string("Convert to an OpenCASCADE solid (bezier_faces: as brep_string) and compare: validity, evaluation\n"
                      "deviation, volume and area; for a cylinder, cone, sphere, torus or revolution also the distance to\n"
                      "OCCT's analytic surface of that kind (max_analytic_deviation) and, for the four primitives, the\n"
-                     "closed-form volume (closed_form_volume); both None otherwise.\n\n") +
+                     "closed-form volume (closed_form_volume); both None otherwise. Also OpenCASCADE's BOP argument analysis\n"
+                     "as FreeCAD's 'Run BOP check' runs it: bop_clean, self_intersections, small_edges and bop_findings (one\n"
+                     "line each, also in failures); passed only when everything, the BOP analysis included, is clean.\n\n") +
          progress_doc).c_str());
 #else
     m.attr("has_occt") = false;

@@ -471,7 +471,7 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per Bézier patch, refined for OpenCASCADE&apos;s fixed Gauss rule) and agree with this to about 1e-9</source>
+        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per face, as Part makes them, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -19,6 +19,9 @@ struct CheckOptions {
     double deviation_limit = 1e-9;    // relative to the solid's size: larger deviations fail the check
     double volume_limit = 1e-6;       // relative volume disagreement that fails the check
     ConvertOptions convert{};         // the representation checked (validity, deviation, OCCT's volume)
+    // OpenCASCADE's BOP argument analysis (below). Off only for callers that assert validity and deviation
+    // alone on many random solids: its face self-intersection search can take minutes on extreme weights.
+    bool bop_analysis = true;
     Progress progress;                // optional: called between the steps and faces; may throw to cancel
 };
 
@@ -32,14 +35,20 @@ struct CheckReport {
     double volume = 0, occt_volume = 0, area = 0, occt_area = 0;
     std::optional<double> closed_form_volume;      // Construction::exact_volume()
     double size = 0;                  // bounding-box diagonal, the scale deviations are relative to
-    bool passed = false;              // everything above within the limits
+    // OpenCASCADE's BOP argument analysis (BOPAlgo_ArgumentAnalyzer with every check FreeCAD's "Check geometry"
+    // > "Run BOP check" turns on): what a boolean, fillet or offset would trip over.
+    bool bop_clean = false;           // it found nothing
+    int self_intersections = 0;       // BOPAlgo SelfIntersect findings (sub-shapes of the solid that meet)
+    int small_edges = 0;              // BOPAlgo TooSmallEdge findings
+    std::vector<std::string> bop_findings;  // every finding: "BOPAlgo <status>: <shape kinds> (our face i)"
+    bool passed = false;              // everything above within the limits and the BOP analysis clean
     std::vector<std::string> failures;  // one line per failed check
 };
 
 CheckReport check(const Solid& solid, const CheckOptions& options = {});
 
 // Every entry of the report under its name, the keys of `ratbez check --json` and of Python's occt_check
-// dict: visit(name, value) with a bool, a double, a std::optional<double> or the failures.
+// dict: visit(name, value) with a bool, an int, a double, a std::optional<double> or a list of strings.
 template <class Visit>
 void for_each_entry(const CheckReport& report, Visit&& visit) {
     visit("valid", report.valid);
@@ -52,6 +61,10 @@ void for_each_entry(const CheckReport& report, Visit&& visit) {
     visit("occt_area", report.occt_area);
     visit("closed_form_volume", report.closed_form_volume);
     visit("size", report.size);
+    visit("bop_clean", report.bop_clean);
+    visit("self_intersections", report.self_intersections);
+    visit("small_edges", report.small_edges);
+    visit("bop_findings", report.bop_findings);
     visit("passed", report.passed);
     visit("failures", report.failures);
 }

@@ -22,6 +22,16 @@
 //    TopAbs_FORWARD, because ours are outward (S_u x S_v, and the plane normal, point out of the solid),
 //    so every shell is closed and the solid has positive volume. One TopoDS_Shell per shell of the Solid
 //    (Solid::shells), the outer one first; a void's faces point into the void, as OCCT wants.
+// Arcs: a direction of a surface face that is an arc of a circle in the kernel's piecewise quadratic form (the
+// turning direction of every revolution and primitive, a sphere's meridian), and the edges along it, go over in
+// the exact one-span rational form of the same arc (src/smooth_arcs.hpp): the same points, another parameter
+// along the arc (ConvertedSolid::face_parameters / edge_parameters map it back). OpenCASCADE's fixed Gauss rule
+// (FreeCAD's Shape.Volume) then reads the face to ~1e-9 instead of ~1e-2, and no C0 knot is left for FreeCAD's
+// BOP check to flag, with one OCCT face per face of ours. A surface face that still has a C0 direction which is
+// not an arc (a crease, a loft through a polygon) or a rational C1 one goes over one face per Bézier patch, as
+// with bezier_faces below, and only that face; should OCCT refuse those patches (seen on faces read back from
+// files) every face goes over whole instead.
+// Straight and one-span directions are degree-elevated and knot-refined (exact) for OCCT's rule as well.
 // Tolerance: 1e-10 of the solid's size (exact geometry), or the largest tolerance of its faces (what an
 // imported model's edges carry, Face::tolerance) when that is larger.
 // Errors: ratbez::Error naming "solid" when the geometry cannot be represented (degree 0 or > 25).
@@ -45,6 +55,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -65,8 +76,13 @@ struct ConvertedSolid {
     // face_domains[k]: the rectangle (u0, u1, v0, v1) of our parameters that faces[k] covers. A Bézier patch's
     // own parameters run over [0, 1]^2 there, affinely; otherwise OCCT's parameters are ours.
     std::vector<std::array<double, 4>> face_domains;
+    // face_parameters[k]: OCCT's u and v on faces[k] -> ours, where they differ by more than the affine map of
+    // face_domains (an arc direction in its one-span form, src/smooth_arcs.hpp); empty where they do not.
+    std::vector<std::array<std::function<double(double)>, 2>> face_parameters;
     // The pieces of each non-degenerate edge in increasing parameter (one unless bezier_faces).
     std::map<const Edge*, std::vector<TopoDS_Edge>> edges;
+    // OCCT's parameter on an edge -> ours, for the edges handed over as an arc in its one-span form.
+    std::map<const Edge*, std::function<double(double)>> edge_parameters;
     std::map<const Vertex*, TopoDS_Vertex> vertices;
     double tolerance = 0;                             // the tolerance given to every vertex, edge and face
     bool gprop_tolerance_reached = true;              // bezier_faces: every patch met kGPropTolerance
