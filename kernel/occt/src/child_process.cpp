@@ -17,6 +17,7 @@
 #include <fstream>
 #include <new>
 #include <optional>
+#include <vector>
 
 #include "ratbez/error.hpp"
 
@@ -130,6 +131,7 @@ public:
             start_ += kHeader + size_of;
             if (tag == kProgress && bytes.size() == sizeof(double)) {
                 std::memcpy(&fraction_, bytes.data(), sizeof(double));
+                fresh_.push_back(fraction_);
             } else if (tag == kResult || tag == kError) {
                 answer_ = std::move(bytes);
                 failed_ = tag == kError;
@@ -140,7 +142,14 @@ public:
             start_ = 0;
         }
     }
-    double fraction() const { return fraction_; }
+    // The fractions the child reported since the last call (each one: a caller counting reports sees them
+    // all), or the latest again when there is none new (so that the caller's Progress is polled anyway).
+    std::vector<double> take_fractions() {
+        std::vector<double> out;
+        out.swap(fresh_);
+        if (out.empty()) out.push_back(fraction_);
+        return out;
+    }
     const std::optional<std::string>& answer() const { return answer_; }
     bool failed() const { return failed_; }
 
@@ -148,6 +157,7 @@ private:
     std::string buffer_;
     std::size_t start_ = 0;
     double fraction_ = 0;
+    std::vector<double> fresh_;
     std::optional<std::string> answer_;
     bool failed_ = false;
 };
@@ -238,7 +248,8 @@ std::string run_in_child(const std::string& what, const ChildLimits& limits, con
     Records records;
     std::string chunk(65536, '\0');
     for (;;) {
-        if (progress) progress(records.fraction());  // may throw: the guard kills the child
+        if (progress)
+            for (double fraction : records.take_fractions()) progress(fraction);  // may throw: the guard kills the child
         if (std::chrono::steady_clock::now() > deadline) {
             child.kill();
             fail("path", what + ": reading it took longer than the reader's limit of " + seconds_text(limits.seconds) +

@@ -42,6 +42,7 @@
 #include <streambuf>
 
 #include "child_process.hpp"
+#include "file_prescan.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/shape_import.hpp"
 #include "ratbez/occt/topology.hpp"
@@ -373,11 +374,19 @@ std::vector<NamedShape> unpack(const std::string& bytes, const std::string& path
 // (child_process.hpp): OpenCASCADE crashing, looping or allocating without bound on a hostile file ends the
 // child, not the caller, and the caller's Progress (Ctrl-C) kills it within a poll interval. The reading
 // is the first half of the progress.
+// `prescan` looks at the file's text first (file_prescan.hpp), in the parent: its refusals name the count.
 std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress& progress,
-                                        std::vector<NamedShape> (*read_here)(const std::string&, const Progress&)) {
+                                        std::vector<NamedShape> (*read_here)(const std::string&, const Progress&),
+                                        void (*prescan)(const std::string&, const std::string&)) {
     require_readable(path);
     std::error_code error;
     const auto size = static_cast<std::size_t>(std::filesystem::file_size(path, error));
+    {
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        prescan(path, text.str());
+    }
     const Progress first_half = progress_part(progress, 0, 0.5);
     const std::string packed = detail::run_in_child(
         "'" + path + "'", detail::reader_limits(error ? 0 : size), first_half, [&](const detail::ChildProgress& report) {
@@ -395,11 +404,11 @@ std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress&
 }
 
 std::vector<NamedShape> read_step_shapes(const std::string& path, const Progress& progress) {
-    return isolated_shapes(path, progress, read_step_shapes_here);
+    return isolated_shapes(path, progress, read_step_shapes_here, detail::prescan_step);
 }
 
 std::vector<NamedShape> read_brep_shapes(const std::string& path, const Progress& progress) {
-    return isolated_shapes(path, progress, read_brep_shapes_here);
+    return isolated_shapes(path, progress, read_brep_shapes_here, detail::prescan_brep);
 }
 
 }  // namespace
