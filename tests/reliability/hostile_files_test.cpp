@@ -3,6 +3,12 @@
 // after a pre-scan of the file's counts and numbers (file_prescan.hpp). Each case runs where a crash or a
 // hang of the fix cannot take the test binary down (completes_in_child), with a time limit.
 
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -168,6 +174,63 @@ TEST_F(HostileFiles, AProgressMayWriteAndReadAgain) {
             if (nested == 0 || solid.faces().empty()) _exit(2);
         },
         4'000'000'000, 60));
+}
+
+// ---------------------------------------------------------------- solids held against themselves (item 2)
+
+// FreeCAD's Part.makeBox(2, 3, 4) written by its exportBrep (tests/reliability/files/freecad_box.brep).
+std::string freecad_box() { return test::read_file(std::string(RATBEZ_RELIABILITY_FILES_DIR) + "/freecad_box.brep"); }
+
+std::string replaced_once(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? text : text.substr(0, at) + to + text.substr(at + from.size());
+}
+
+// Finding: a FreeCAD box with one vertex moved off its edges ((2,0,0) -> (2,-5,0)) read without complaint; its
+// exact volume came from the edges (24) and its mesh from the vertices (37.33). Refused naming face, edge and
+// distance.
+TEST_F(HostileFiles, AVertexOffItsEdgesIsRefusedNamingTheFaceTheEdgeAndTheDistance) {
+    EXPECT_NEAR(read_brep(written("box.brep", freecad_box())).volume(), 24, 1e-12);
+    const std::string file = written("moved.brep", replaced_once(freecad_box(), "\nVe\n1e-07\n2 0 0\n", "\nVe\n1e-07\n2 -5 0\n"));
+    const std::string message = error_of([&] { read_brep(file); });
+    EXPECT_NE(message.find("moved.brep': solid 0: face "), std::string::npos) << message;
+    EXPECT_NE(message.find(": edge "), std::string::npos) << message;
+    EXPECT_NE(message.find("the vertex (2, -5, 0) is 5 from the end of its edge's curve"), std::string::npos) << message;
+}
+
+// A p-curve moved off its edge's 3D curve (its line shifted by 1 in the face's parameters).
+TEST_F(HostileFiles, APCurveOffItsEdgeIsRefusedNamingTheDistance) {
+    const std::string text = freecad_box();
+    const std::size_t second = text.find("1 0 0 1 0 \n", text.find("Curve2ds")) + 11;
+    const std::string moved = text.substr(0, second) + "1 0 1 1 0 \n" + text.substr(second + 11);
+    const std::string message = error_of([&] { read_brep(written("pcurve.brep", moved)); });
+    EXPECT_NE(message.find("its p-curve on the face is 1 from its 3D curve"), std::string::npos) << message;
+}
+
+// A shell missing a face, and one with a face turned inside out: open, and not oriented.
+TEST_F(HostileFiles, OpenAndMisorientedShellsAreRefused) {
+    TopoDS_Shape box;
+    BRep_Builder builder;
+    ASSERT_TRUE(BRepTools::Read(box, written("box.brep", freecad_box()).c_str(), builder));
+    const auto rebuilt = [&](const std::string& name, bool drop_first, bool reverse_first) {
+        TopoDS_Shell shell;
+        builder.MakeShell(shell);
+        int k = 0;
+        for (TopExp_Explorer it(box, TopAbs_FACE); it.More(); it.Next(), ++k) {
+            if (k == 0 && drop_first) continue;
+            builder.Add(shell, k == 0 && reverse_first ? it.Current().Reversed() : it.Current());
+        }
+        TopoDS_Solid solid;
+        builder.MakeSolid(solid);
+        builder.Add(solid, shell);
+        EXPECT_TRUE(BRepTools::Write(solid, path(name).c_str()));
+        return path(name);
+    };
+    const std::string open = error_of([&] { read_brep(rebuilt("open.brep", true, false)); });
+    EXPECT_NE(open.find("is used by 1 face (the shell is open)"), std::string::npos) << open;
+    const std::string inside_out = error_of([&] { read_brep(rebuilt("inside_out.brep", false, true)); });
+    EXPECT_NE(inside_out.find("both faces run it the same way (the shell is not oriented)"), std::string::npos) << inside_out;
 }
 
 // The child's own ways of ending: a crash and memory past its limit are Errors naming the file; the work's

@@ -43,6 +43,7 @@
 
 #include "child_process.hpp"
 #include "file_prescan.hpp"
+#include "self_consistency.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/shape_import.hpp"
 #include "ratbez/occt/topology.hpp"
@@ -331,14 +332,19 @@ std::vector<NamedShape> read_brep_shapes_here(const std::string& path, const Pro
 
 // The child's answer: the names, then the shapes as one compound in OpenCASCADE's binary format (exact
 // doubles, unlike the .brep text's 15 digits).
-std::string pack(const std::vector<NamedShape>& shapes) {
-    std::ostringstream out(std::ios::binary);
-    out << shapes.size() << '\n';
-    for (const NamedShape& s : shapes) out << s.name.size() << '\n' << s.name;
+TopoDS_Compound compound_of(const std::vector<NamedShape>& shapes) {
     TopoDS_Compound all;
     BRep_Builder builder;
     builder.MakeCompound(all);
     for (const NamedShape& s : shapes) builder.Add(all, s.shape);
+    return all;
+}
+
+std::string pack(const std::vector<NamedShape>& shapes) {
+    std::ostringstream out(std::ios::binary);
+    out << shapes.size() << '\n';
+    for (const NamedShape& s : shapes) out << s.name.size() << '\n' << s.name;
+    const TopoDS_Compound all = compound_of(shapes);
     BinTools::Write(all, out, /*theWithTriangles=*/false, /*theWithNormals=*/false, BinTools_FormatVersion_CURRENT);
     return out.str();
 }
@@ -393,7 +399,10 @@ std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress&
             // The child reports the whole read as [0, 1] of its part; the readers report [0, 0.5] of theirs.
             const Progress child_progress = [&report](double fraction) { report(2 * fraction); };
             try {
-                return pack(read_here(path, child_progress));
+                const std::vector<NamedShape> shapes = read_here(path, child_progress);
+                // Held against itself where OpenCASCADE's checks on a hostile shape cannot hurt the caller.
+                blamed_on(path, [&] { detail::check_self_consistency(compound_of(shapes)); });
+                return pack(shapes);
             } catch (const Standard_OutOfMemory&) {
                 throw std::bad_alloc();
             } catch (const Standard_Failure& failure) {
