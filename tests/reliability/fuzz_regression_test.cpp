@@ -87,8 +87,8 @@ std::size_t replay_mutated(const std::string& target, Harness harness, std::uint
     return count;
 }
 
-TEST(FuzzCorpus, DISABLED_MutatedReadBrepSeedsReplayCleanly) { EXPECT_GT(replay_mutated("fuzz_read_brep", fuzz::run_read_brep, 4), 0u); }
-TEST(FuzzCorpus, DISABLED_MutatedReadStepSeedsReplayCleanly) { EXPECT_GT(replay_mutated("fuzz_read_step", fuzz::run_read_step, 4), 0u); }
+TEST(FuzzCorpus, MutatedReadBrepSeedsReplayCleanly) { EXPECT_GT(replay_mutated("fuzz_read_brep", fuzz::run_read_brep, 4), 0u); }
+TEST(FuzzCorpus, MutatedReadStepSeedsReplayCleanly) { EXPECT_GT(replay_mutated("fuzz_read_step", fuzz::run_read_step, 4), 0u); }
 #ifdef RATBEZ_HAVE_SPEC_FUZZER
 TEST(FuzzCorpus, SpecSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_spec", fuzz::run_spec), 0u); }
 

@@ -25,6 +25,7 @@
 #include "ratbez/occt/files.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/progress.hpp"
+#include "ratbez/tessellate.hpp"
 #include "temp_directory_test_support.hpp"
 
 namespace ratbez::reliability {
@@ -231,6 +232,21 @@ TEST_F(HostileFiles, OpenAndMisorientedShellsAreRefused) {
     EXPECT_NE(open.find("is used by 1 face (the shell is open)"), std::string::npos) << open;
     const std::string inside_out = error_of([&] { read_brep(rebuilt("inside_out.brep", false, true)); });
     EXPECT_NE(inside_out.find("both faces run it the same way (the shell is not oriented)"), std::string::npos) << inside_out;
+}
+
+// fuzz_read_step found: FreeCAD's cone_fillet.step with a direction made (0, 1e100, -1) and a SURFACE_CURVE naming
+// itself reads as a solid whose trimmed face's curve in (u, v) strays from its edge; the tessellation's boundary
+// refinement doubled its samples 30 times (minutes, gigabytes, Ctrl-C unpolled). Refused at 1,000,000 samples.
+TEST_F(HostileFiles, ATrimmedFaceThatStraysFromItsEdgeIsRefusedByTheTessellation) {
+    const std::string file = std::string(RATBEZ_FUZZ_CORPUS_DIR) + "/fuzz_read_step/regression_trimmed_edge_strays.step";
+    EXPECT_TRUE(completes_in_child(
+        [&] {
+            for (const Solid& solid : read_step_all(file)) {
+                const std::string message = error_of([&] { (void)tessellate(solid, 10 * default_tolerance(solid)); });
+                if (message.find("strays from the edge") == std::string::npos) _exit(2);
+            }
+        },
+        4'000'000'000, 60));
 }
 
 // The child's own ways of ending: a crash and memory past its limit are Errors naming the file; the work's

@@ -64,6 +64,7 @@ std::optional<double> environment_number(const char* name) {
     return value;
 }
 
+#ifndef RATBEZ_CHILD_UNDER_ASAN
 // Bytes of address space the process holds now (the child inherits the parent's: the libraries, the
 // interpreter); the child's limit is this plus its budget.
 std::size_t address_space_now() {
@@ -72,6 +73,7 @@ std::size_t address_space_now() {
     statm >> pages;
     return pages * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
 }
+#endif
 
 // The child's side: limits, a quiet stdout, default signal actions (the parent's handlers — Python's, the
 // CLI's that remove its temporaries — are not the child's business), then the work; never returns.
