@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -77,7 +78,11 @@ std::size_t address_space_now() {
 
 // The child's side: limits, a quiet stdout, default signal actions (the parent's handlers — Python's, the
 // CLI's that remove its temporaries — are not the child's business), then the work; never returns.
-[[noreturn]] void child_main(int fd, const ChildLimits& limits, const std::function<std::string(const ChildProgress&)>& work) {
+[[noreturn]] void child_main(int fd, pid_t parent, const ChildLimits& limits, const std::function<std::string(const ChildProgress&)>& work) {
+    // A parent that ends without reaping it (killed, or a signal handler that re-raises, as the CLI's does) takes
+    // the child with it instead of leaving it running to its time limit.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(4);  // the parent ended before the line above
     // Ctrl-C reaches the whole process group: the parent decides, the child ignores it.
     ::signal(SIGINT, SIG_IGN);
     for (int s : {SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGUSR1, SIGUSR2, SIGALRM, SIGXFSZ, SIGXCPU, SIGSEGV, SIGBUS,
@@ -235,11 +240,12 @@ std::string run_in_child(const std::string& what, const ChildLimits& limits, con
     int fds[2];
     require(::pipe2(fds, O_CLOEXEC) == 0, "path", what + ": cannot start the reader (" + std::strerror(errno) + ")");
     FileDescriptor read_end(fds[0]), write_end(fds[1]);
+    const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     require(pid >= 0, "path", what + ": cannot start the reader (" + std::strerror(errno) + ")");
     if (pid == 0) {
         ::close(fds[0]);
-        child_main(fds[1], limits, work);
+        child_main(fds[1], parent, limits, work);
     }
     ChildGuard child(pid);
     write_end.reset();  // so that the read end sees end-of-file when the child ends, however it ends
