@@ -10,6 +10,7 @@
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
 #include <gtest/gtest.h>
+#include <sys/prctl.h>
 
 #include <chrono>
 #include <csignal>
@@ -86,6 +87,31 @@ TEST_F(HostileFiles, AReadThatNeverEndsIsCancelledWithinHalfASecond) {
                 if (Clock::now() - cancelled < std::chrono::milliseconds(500)) return;
             }
             _exit(2);
+        },
+        4'000'000'000, 20));
+}
+
+// A caller killed while OpenCASCADE reads (the CLI's signal handlers re-raise and end it at once) leaves no reader
+// behind: the child dies with it instead of reading on to its time limit.
+TEST_F(HostileFiles, AKilledCallerLeavesNoReaderBehind) {
+    const std::string file = written("cut.brep", cut_after_first_edge(corpus("box_with_hole.brep")));
+    EXPECT_TRUE(completes_in_child(
+        [&] {
+            // Orphans are reparented to this process, where waitpid sees them.
+            ::prctl(PR_SET_CHILD_SUBREAPER, 1);
+            const pid_t caller = ::fork();
+            if (caller == 0) {
+                (void)error_of([&] { read_brep(file); });
+                ::_exit(0);
+            }
+            ::usleep(500'000);
+            ::kill(caller, SIGKILL);
+            ::waitpid(caller, nullptr, 0);
+            ::usleep(300'000);
+            // The reader, reparented here, must have ended: reaped now, and then no child is left.
+            while (::waitpid(-1, nullptr, WNOHANG) > 0) {
+            }
+            if (::waitpid(-1, nullptr, WNOHANG) != -1) _exit(2);
         },
         4'000'000'000, 20));
 }
