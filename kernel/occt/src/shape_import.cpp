@@ -318,7 +318,9 @@ private:
         if (basis.IsNull()) fail("shape", "an edge's " + type_name(curve) + " has no exact NURBS form");
         const Handle(Geom_BSplineCurve) nurbs =
             GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(basis, first, last));
-        const auto [start, end] = ends(e);
+        // Plain variables, not a structured binding: clang 14 (the fuzz build's) cannot capture one in the lambda below.
+        const auto vertices = ends(e);
+        const TopoDS_Vertex start = vertices.first, end = vertices.second;
         NurbsCurve converted = from_occt(nurbs);
         const double gap_start = distance(converted.start_point(), from_occt(BRep_Tool::Pnt(start)));
         const double gap_end = distance(converted.end_point(), from_occt(BRep_Tool::Pnt(end)));
@@ -396,7 +398,10 @@ private:
         NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}), {}};
         // Pcurves made by projection (STEP files without them) sit on the sides to about 1e-7 of the rectangle.
         const double tol_u = 1e-6 * (u1 - u0), tol_v = 1e-6 * (v1 - v0);
-        for (const auto& [e, samples] : uses) {
+        for (const auto& use : uses) {
+            // use.second by name, not a structured binding: clang 14 cannot capture one in the lambdas below.
+            const auto& e = use.first;
+            const auto& samples = use.second;
             const auto on = [&](int side) {
                 return std::all_of(samples.begin(), samples.end(), [&](const gp_Pnt2d& p) {
                     switch (side) {
