@@ -109,5 +109,7 @@ void run_spec(const std::uint8_t* data, std::size_t size);      // fuzz_spec.cpp
 void run_geometry(const std::uint8_t* data, std::size_t size);  // fuzz_geometry.cpp
 void run_mesh(const std::uint8_t* data, std::size_t size);      // fuzz_mesh.cpp
 void run_output(const std::uint8_t* data, std::size_t size);    // fuzz_output.cpp
+void run_read_brep(const std::uint8_t* data, std::size_t size); // fuzz_read_brep.cpp
+void run_read_step(const std::uint8_t* data, std::size_t size); // fuzz_read_step.cpp
 
 }  // namespace ratbez::fuzz

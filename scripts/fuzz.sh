@@ -12,7 +12,7 @@ exec </dev/null
 seconds="${1:-20}"
 shift || true
 targets=("$@")
-[ "${#targets[@]}" -gt 0 ] || targets=(fuzz_spec fuzz_geometry fuzz_mesh fuzz_output)
+[ "${#targets[@]}" -gt 0 ] || targets=(fuzz_spec fuzz_geometry fuzz_mesh fuzz_output fuzz_read_brep fuzz_read_step)
 jobs="${RATBEZ_JOBS:-2}"
 build=build-fuzz
 export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
@@ -35,9 +35,12 @@ for target in "${targets[@]}"; do
   dict=()
   [ -f "fuzz/$target.dict" ] && dict=(-dict="fuzz/$target.dict")
   echo "== $target: ${seconds}s on a copy of fuzz/corpus/$target ($(ls "$work/corpus" | wc -l) seeds)"
+  # The readers' inputs are whole model files (their seeds up to ~9 KB, mutated longer); the others' 4 KB.
+  max_len=4096
+  case "$target" in fuzz_read_*) max_len=65536 ;; esac
   set +e
   "$build/fuzz/$target" "$work/corpus" "${dict[@]}" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 \
-    -max_len=4096 -print_final_stats=1 -artifact_prefix="$findings/" >"$work/log.txt" 2>&1
+    -max_len="$max_len" -print_final_stats=1 -artifact_prefix="$findings/" >"$work/log.txt" 2>&1
   rc=$?
   set -e
   runs=$(grep -E '^stat::number_of_executed_units:' "$work/log.txt" | awk '{print $2}' | tail -n 1)

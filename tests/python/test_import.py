@@ -112,3 +112,46 @@ def test_a_list_of_solids_writes_one_file_read_back_in_order_with_names(tmp_path
     assert len(getattr(ratbez, reader)(path)) == 1
     for bad, argument in (([], "solid"), ([bolt, 3], "solid[1]"), (5, "solid")):
         raises_naming(argument, getattr(ratbez, writer), bad, path)
+
+
+@needs_occt
+def test_hostile_files_raise_ratbez_error_naming_file_and_count_and_ctrl_c_lands(tmp_path):
+    """Issue 29: a claimed 150,000,000 poles is a ratbez.Error naming the file and the count (it was MemoryError);
+    a .brep OpenCASCADE reads forever stops within 0.5 s of Ctrl-C; a progress callback may read and write again
+    (it deadlocked on the bridge's messenger lock)."""
+    import time
+    path = tmp_path / "cylinder.brep"
+    ratbez.write_brep(ratbez.cylinder(1, 2), path)
+    lines = path.read_text().split("\n")
+    k = next(i for i, line in enumerate(lines) if line.startswith("Surfaces ")) + 1
+    fields = lines[k].split(" ")
+    fields[7] = "150000000"  # "9 urational vrational uperiodic vperiodic udegree vdegree nbupoles ..."
+    lines[k] = " ".join(fields)
+    poles = tmp_path / "poles.brep"
+    poles.write_text("\n".join(lines))
+    error = raises_naming("path", ratbez.read_brep, poles)
+    assert "poles.brep" in str(error) and "150000000" in str(error)
+
+    text = path.read_text()
+    cut = tmp_path / "cut.brep"
+    cut.write_text(text[:text.index("\nEd\n") + 4])
+    start = time.monotonic()
+
+    def interrupt_after_a_while(fraction):
+        if time.monotonic() - start > 0.3:
+            os.kill(os.getpid(), signal.SIGINT)
+
+    with pytest.raises(KeyboardInterrupt):
+        ratbez.read_brep(cut, progress=interrupt_after_a_while)
+    assert time.monotonic() - start < 0.3 + 0.5
+
+    again = []
+
+    def read_and_write_again(fraction):
+        if not again:
+            again.append(fraction)
+            ratbez.write_step(ratbez.sphere(1), tmp_path / "inner.step")
+            ratbez.read_step(tmp_path / "inner.step")
+
+    ratbez.write_step(ratbez.sphere(2), tmp_path / "outer.step")
+    assert ratbez.read_step(tmp_path / "outer.step", progress=read_and_write_again).volume() > 0 and again

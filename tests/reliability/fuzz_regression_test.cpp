@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "harness.hpp"
+#include "model_file_mutation.hpp"
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/extrude.hpp"
 #include "ratbez/nurbs_curve.hpp"
@@ -63,6 +64,31 @@ std::vector<std::uint8_t> bytes(std::string_view text) { return {text.begin(), t
 TEST(FuzzCorpus, GeometrySeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_geometry", fuzz::run_geometry), 0u); }
 TEST(FuzzCorpus, MeshSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_mesh", fuzz::run_mesh), 0u); }
 TEST(FuzzCorpus, OutputSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_output", fuzz::run_output), 0u); }
+// The readers' seeds are real files and the files of the issue 29 findings (regression_*; their expected errors
+// are hostile_files_test.cpp's); each also replays mutated as the fuzzer and the soak mutate it, a few seeds
+// each (the campaign itself is scripts/soak.sh).
+TEST(FuzzCorpus, ReadBrepSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_read_brep", fuzz::run_read_brep), 0u); }
+TEST(FuzzCorpus, ReadStepSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_read_step", fuzz::run_read_step), 0u); }
+
+std::size_t replay_mutated(const std::string& target, Harness harness, std::uint64_t mutations_per_seed) {
+    const std::filesystem::path dir = std::filesystem::path(RATBEZ_FUZZ_CORPUS_DIR) / target;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        if (entry.is_regular_file() && entry.path().filename().string().rfind("regression_", 0) != 0) files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    std::size_t count = 0;
+    for (const auto& file : files) {
+        const std::vector<std::uint8_t> seed = read_file(file);
+        for (std::uint64_t k = 0; k < mutations_per_seed; ++k, ++count) {
+            const std::string mutated = fuzz::mutate_model_file(std::string(seed.begin(), seed.end()), k);
+            replay(harness, bytes(mutated), file.filename().string() + " mutation " + std::to_string(k));
+        }
+    }
+    return count;
+}
+
+TEST(FuzzCorpus, MutatedReadBrepSeedsReplayCleanly) { EXPECT_GT(replay_mutated("fuzz_read_brep", fuzz::run_read_brep, 4), 0u); }
+TEST(FuzzCorpus, MutatedReadStepSeedsReplayCleanly) { EXPECT_GT(replay_mutated("fuzz_read_step", fuzz::run_read_step, 4), 0u); }
 #ifdef RATBEZ_HAVE_SPEC_FUZZER
 TEST(FuzzCorpus, SpecSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_spec", fuzz::run_spec), 0u); }
 

@@ -38,9 +38,12 @@
 #include "ratbez/revolve.hpp"
 #include "ratbez/solid_transform.hpp"
 #include "ratbez/tessellate.hpp"
+#include "child_test_support.hpp"
 
 namespace ratbez::reliability {
 namespace {
+
+using test::completes_in_child;
 
 constexpr double pi = std::numbers::pi;
 
@@ -283,31 +286,6 @@ TEST(Construction, ARecordMustDescribeItsFaces) {
 }
 
 // ---------------------------------------------------------------------------------------- loft (item 8)
-
-// Runs `body` in a child process with at most `address_space` bytes of memory (none under AddressSanitizer,
-// which reserves terabytes of address space) and `seconds` of time; true when it returned normally.
-bool completes_in_child(const std::function<void()>& body, rlim_t address_space, unsigned seconds) {
-    std::fflush(nullptr);
-    const pid_t pid = fork();
-    if (pid == 0) {
-#if !defined(__SANITIZE_ADDRESS__)
-        const rlimit limit{address_space, address_space};
-        setrlimit(RLIMIT_AS, &limit);
-#else
-        (void)address_space;
-#endif
-        alarm(seconds);  // a hang ends the child (SIGALRM), and the test fails
-        try {
-            body();
-        } catch (...) {
-            _exit(1);
-        }
-        _exit(0);
-    }
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
 
 // Finding: a loft's section count was unbounded and its time about quadratic (CLI info: 1,000 sections 2.6 s,
 // 5,000 25 s, 20,000 over 300 s): the skinning solve was a dense n x n system (20,000 sections: 3.2 GB). The

@@ -3,6 +3,9 @@
 #include "ratbez/occt/files.hpp"
 
 #include <BRepTools.hxx>
+#include <BinTools.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <Standard_OutOfMemory.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -38,6 +41,9 @@
 #include <sstream>
 #include <streambuf>
 
+#include "child_process.hpp"
+#include "file_prescan.hpp"
+#include "self_consistency.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/shape_import.hpp"
 #include "ratbez/occt/topology.hpp"
@@ -49,9 +55,14 @@ namespace {
 // STEPControl_Writer prints statistics through the default messenger's stdout printer. Detach the
 // ostream printers while writing and put them back afterwards, so the caller's own OCCT messages are
 // not silenced for good (SETUP-NOTES). OCCT's messenger is global: one writer at a time.
+// The readers run in a child process of one thread (child_process.hpp): there the messenger is the child's
+// own, and the lock is not taken (a thread of the parent may have held it when the child was forked, and
+// a reader's Progress, called by the parent, may itself write or read without meeting a held lock).
 class QuietMessenger {
 public:
-    QuietMessenger() : lock_(mutex()) {
+    enum class Lock { take, skip_in_child };
+    explicit QuietMessenger(Lock lock = Lock::take) {
+        if (lock == Lock::take) lock_ = std::unique_lock<std::mutex>(mutex());
         const Handle(Message_Messenger)& messenger = Message::DefaultMessenger();
         for (Message_SequenceOfPrinters::Iterator it(messenger->Printers()); it.More(); it.Next())
             if (it.Value()->IsKind(STANDARD_TYPE(Message_PrinterOStream))) removed_.Append(it.Value());
@@ -69,7 +80,7 @@ private:
         static std::mutex m;
         return m;
     }
-    std::lock_guard<std::mutex> lock_;
+    std::unique_lock<std::mutex> lock_;
     Message_SequenceOfPrinters removed_;
 };
 
@@ -254,9 +265,9 @@ void flatten(const Handle(XCAFDoc_ShapeTool)& tool, const TDF_Label& label, cons
 }
 
 // The shapes of a STEP file with their product names: XCAF's free shapes, assemblies flattened.
-std::vector<NamedShape> read_step_shapes(const std::string& path, const Progress& progress) {
-    require_readable(path);
-    QuietMessenger quiet;
+// Runs in the reader's child process (isolated_shapes).
+std::vector<NamedShape> read_step_shapes_here(const std::string& path, const Progress& progress) {
+    QuietMessenger quiet(QuietMessenger::Lock::skip_in_child);
     try {
         // The parse is the first quarter of the progress, the translation the second (the conversion the second half).
         CapturedProgress captured(progress);
@@ -282,14 +293,17 @@ std::vector<NamedShape> read_step_shapes(const std::string& path, const Progress
         application->Close(document);
         require(!shapes.empty(), "path", "'" + path + "' holds no shape OpenCASCADE can translate");
         return shapes;
+    } catch (const Standard_OutOfMemory&) {
+        throw std::bad_alloc();
     } catch (const Standard_Failure& failure) {
         throw Error("path", "reading STEP from '" + path + "' failed: " + failure.GetMessageString());
     }
 }
 
 // The shape of a .brep file (one, possibly a compound of several solids).
-std::vector<NamedShape> read_brep_shapes(const std::string& path, const Progress& progress) {
-    require_readable(path);
+// Runs in the reader's child process (isolated_shapes).
+std::vector<NamedShape> read_brep_shapes_here(const std::string& path, const Progress& progress) {
+    QuietMessenger quiet(QuietMessenger::Lock::skip_in_child);
     {
         // BRepTools::Read prints to stdout when a file is not .brep: look at its first non-blank line first. A
         // .brep file starts with OCCT's "CASCADE Topology V<n>" or with BRepTools::Write's Draw tag line before it.
@@ -308,10 +322,102 @@ std::vector<NamedShape> read_brep_shapes(const std::string& path, const Progress
         const bool read = BRepTools::Read(shape, path.c_str(), BRep_Builder(), indicator->Start());
         captured.rethrow_if_stopped();
         require(read && !shape.IsNull(), "path", "'" + path + "' is not a readable .brep file");
+    } catch (const Standard_OutOfMemory&) {
+        throw std::bad_alloc();
     } catch (const Standard_Failure& failure) {
         throw Error("path", "reading .brep from '" + path + "' failed: " + failure.GetMessageString());
     }
     return {NamedShape{shape, ""}};
+}
+
+// The child's answer: the names, then the shapes as one compound in OpenCASCADE's binary format (exact
+// doubles, unlike the .brep text's 15 digits).
+TopoDS_Compound compound_of(const std::vector<NamedShape>& shapes) {
+    TopoDS_Compound all;
+    BRep_Builder builder;
+    builder.MakeCompound(all);
+    for (const NamedShape& s : shapes) builder.Add(all, s.shape);
+    return all;
+}
+
+std::string pack(const std::vector<NamedShape>& shapes) {
+    std::ostringstream out(std::ios::binary);
+    out << shapes.size() << '\n';
+    for (const NamedShape& s : shapes) out << s.name.size() << '\n' << s.name;
+    const TopoDS_Compound all = compound_of(shapes);
+    BinTools::Write(all, out, /*theWithTriangles=*/false, /*theWithNormals=*/false, BinTools_FormatVersion_CURRENT);
+    return out.str();
+}
+
+// pack's inverse, in the parent: the bytes come from our own child, not from the file.
+std::vector<NamedShape> unpack(const std::string& bytes, const std::string& path) {
+    std::istringstream in(bytes, std::ios::binary);
+    std::size_t count = 0;
+    in >> count;
+    in.get();
+    std::vector<NamedShape> shapes(count);
+    for (NamedShape& s : shapes) {
+        std::size_t size = 0;
+        in >> size;
+        in.get();
+        s.name.resize(size);
+        in.read(s.name.data(), static_cast<std::streamsize>(size));
+    }
+    TopoDS_Shape all;
+    try {
+        BinTools::Read(all, in);
+    } catch (const Standard_Failure& failure) {
+        throw Error("path", "'" + path + "': the reader's answer is damaged: " + failure.GetMessageString());
+    }
+    require(!all.IsNull(), "path", "'" + path + "': the reader's answer is damaged");
+    std::size_t k = 0;
+    for (TopoDS_Iterator it(all); it.More() && k < count; it.Next()) shapes[k++].shape = it.Value();
+    require(k == count, "path", "'" + path + "': the reader's answer is damaged");
+    return shapes;
+}
+
+// The shapes `read_here` reads from the file, read in a child process under the reader's limits
+// (child_process.hpp): OpenCASCADE crashing, looping or allocating without bound on a hostile file ends the
+// child, not the caller, and the caller's Progress (Ctrl-C) kills it within a poll interval. The reading
+// is the first half of the progress.
+// `prescan` looks at the file's text first (file_prescan.hpp), in the parent: its refusals name the count.
+std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress& progress,
+                                        std::vector<NamedShape> (*read_here)(const std::string&, const Progress&),
+                                        void (*prescan)(const std::string&, const std::string&)) {
+    require_readable(path);
+    std::error_code error;
+    const auto size = static_cast<std::size_t>(std::filesystem::file_size(path, error));
+    {
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        prescan(path, text.str());
+    }
+    const Progress first_half = progress_part(progress, 0, 0.5);
+    const std::string packed = detail::run_in_child(
+        "'" + path + "'", detail::reader_limits(error ? 0 : size), first_half, [&](const detail::ChildProgress& report) {
+            // The child reports the whole read as [0, 1] of its part; the readers report [0, 0.5] of theirs.
+            const Progress child_progress = [&report](double fraction) { report(2 * fraction); };
+            try {
+                const std::vector<NamedShape> shapes = read_here(path, child_progress);
+                // Held against itself where OpenCASCADE's checks on a hostile shape cannot hurt the caller.
+                blamed_on(path, [&] { detail::check_self_consistency(compound_of(shapes)); });
+                return pack(shapes);
+            } catch (const Standard_OutOfMemory&) {
+                throw std::bad_alloc();
+            } catch (const Standard_Failure& failure) {
+                throw Error("path", "reading '" + path + "' failed: " + failure.GetMessageString());
+            }
+        });
+    return unpack(packed, path);
+}
+
+std::vector<NamedShape> read_step_shapes(const std::string& path, const Progress& progress) {
+    return isolated_shapes(path, progress, read_step_shapes_here, detail::prescan_step);
+}
+
+std::vector<NamedShape> read_brep_shapes(const std::string& path, const Progress& progress) {
+    return isolated_shapes(path, progress, read_brep_shapes_here, detail::prescan_brep);
 }
 
 }  // namespace

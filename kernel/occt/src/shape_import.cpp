@@ -318,7 +318,9 @@ private:
         if (basis.IsNull()) fail("shape", "an edge's " + type_name(curve) + " has no exact NURBS form");
         const Handle(Geom_BSplineCurve) nurbs =
             GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(basis, first, last));
-        const auto [start, end] = ends(e);
+        // Plain variables, not a structured binding: clang 14 (the fuzz build's) cannot capture one in the lambda below.
+        const auto vertices = ends(e);
+        const TopoDS_Vertex start = vertices.first, end = vertices.second;
         NurbsCurve converted = from_occt(nurbs);
         const double gap_start = distance(converted.start_point(), from_occt(BRep_Tool::Pnt(start)));
         const double gap_end = distance(converted.end_point(), from_occt(BRep_Tool::Pnt(end)));

@@ -18,6 +18,7 @@
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
+#include <Standard_Failure.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Ax3.hxx>
@@ -136,7 +137,8 @@ public:
             } catch (const Error& e) {
                 throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
             } catch (const Standard_Failure& failure) {
-                // OpenCASCADE refusing a construction (a curve it cannot hold): named, never an unknown exception.
+                // OpenCASCADE refusing a construction (a curve it cannot hold; found by fuzz_read_brep too: a FreeCAD fillet
+                // read back, then bezier_faces): an Error naming the face, never an unknown exception.
                 const char* message = failure.GetMessageString();
                 throw Error("solid", "face " + std::to_string(i) + ": OpenCASCADE raised " + failure.DynamicType()->Name() +
                                          (message && *message ? std::string(": ") + message : std::string()));
@@ -287,9 +289,25 @@ private:
         if (it != out_.edges.end()) return it->second;
         const Interval domain = e->curve.domain();
         std::vector<double>& cuts = cut_parameters_[e.get()];
+        // Cuts closer than 1e-9 of the edge are one cut (a knot wins, it needs no insertion): a patch grid line of a
+        // read-back face lands within rounding of the edge's own knot, and OpenCASCADE refuses knots that close
+        // ("Knots interval values too close", found by fuzz_read_brep on FreeCAD's cone_fillet.brep).
+        // grid_vertex takes the nearest cut, so a merged line still finds its vertex.
+        const double merge = 1e-9 * (domain.max - domain.min);
+        const std::vector<double> knots = interior_knots(e->curve);
+        const auto is_knot = [&knots](double t) { return std::binary_search(knots.begin(), knots.end(), t); };
         cuts = {domain.min};
-        if (auto planned = cuts_.find(e.get()); planned != cuts_.end()) cuts.insert(cuts.end(), planned->second.begin(), planned->second.end());
-        cuts.push_back(domain.max);
+        if (auto planned = cuts_.find(e.get()); planned != cuts_.end())
+            for (double t : planned->second) {
+                if (t - cuts.back() > merge)
+                    cuts.push_back(t);
+                else if (cuts.size() > 1 && is_knot(t))
+                    cuts.back() = t;
+            }
+        if (cuts.size() > 1 && domain.max - cuts.back() <= merge)
+            cuts.back() = domain.max;
+        else
+            cuts.push_back(domain.max);
         std::vector<TopoDS_Vertex>& at = cut_vertices_[e.get()];
         at.push_back(vertex(e->start));
         for (std::size_t k = 1; k + 1 < cuts.size(); ++k) at.push_back(new_vertex(e->curve.point(cuts[k])));

@@ -47,6 +47,10 @@
 namespace ratbez {
 namespace {
 
+// Samples of one edge of a trimmed face beyond which its refinement is refused (refine_for_trimmed): a
+// boundary that needs more at a tolerance the triangle limits allow does not follow its face.
+constexpr std::size_t kMaxTrimmedEdgeSamples = 1'000'000;
+
 using detail::CellTriangle;
 using detail::CellVertex;
 using detail::kSides;
@@ -557,6 +561,14 @@ private:
             }
             if (added.empty()) break;
             changed = true;
+            // Each round may double the samples: a face whose curve in (u, v) does not follow its edge (a damaged
+            // file, found by fuzz_read_step) never converges, and 30 doublings would take minutes and gigabytes.
+            const std::size_t cap = std::min<std::size_t>(settings_.max_triangles, kMaxTrimmedEdgeSamples);
+            require(params.size() + added.size() <= cap, "solid", [&] {
+                return "an edge of a trimmed face needs more than " + std::to_string(cap) +
+                       " samples to follow the face within the tolerance: its curve on the face strays from the edge";
+            });
+            settings_.poll();
             added.insert(added.end(), params.begin(), params.end());
             params = detail::merge_params(std::move(added), d.min, d.max);
         }

@@ -1,0 +1,237 @@
+#include "self_consistency.hpp"
+
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepCheck_ListOfStatus.hxx>
+#include <BRepCheck_Result.hxx>
+#include <BRepCheck_Status.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_Curve.hxx>
+#include <Geom_Surface.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Pnt2d.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ratbez/error.hpp"
+
+namespace ratbez::occt::detail {
+namespace {
+
+// Points compared along each edge (its ends and between).
+constexpr int kSamples = 9;
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+std::string point_text(const gp_Pnt& p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", p.X(), p.Y(), p.Z());
+    return text;
+}
+
+// How far apart OpenCASCADE lets two things be that the file puts together: the sum of their tolerances,
+// and a few ulps of the coordinates for files written with tolerance 0.
+double allowed(double tolerance_a, double tolerance_b, const gp_Pnt& at) {
+    const double scale = std::max({1.0, std::abs(at.X()), std::abs(at.Y()), std::abs(at.Z())});
+    return tolerance_a + tolerance_b + 1e-12 * scale;
+}
+
+// An edge of a face: its 3D curve passes through its vertices and its p-curve on the face's surface follows
+// its 3D curve, within the edge's and the vertices' tolerances.
+void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face) {
+    const double edge_tolerance = BRep_Tool::Tolerance(edge);
+    TopoDS_Vertex first_vertex, last_vertex;
+    TopExp::Vertices(edge, first_vertex, last_vertex);
+    require(!first_vertex.IsNull() && !last_vertex.IsNull(), "shape", "the edge has no vertices (its loop is open)");
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+    require(!surface.IsNull(), "shape", "the face has no surface");
+    double p_first = 0, p_last = 0;
+    const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, p_first, p_last);
+    require(!pcurve.IsNull(), "shape", "the edge has no curve on the face's surface");
+    require(std::isfinite(p_first) && std::isfinite(p_last), "shape", "the edge's p-curve has an infinite range");
+    if (BRep_Tool::Degenerated(edge)) {
+        // A collapsed edge (a pole): its p-curve stays at its vertex.
+        const gp_Pnt vertex = BRep_Tool::Pnt(first_vertex);
+        for (int k = 0; k < kSamples; ++k) {
+            const double t = p_first + (p_last - p_first) * k / (kSamples - 1);
+            const gp_Pnt2d uv = pcurve->Value(t);
+            const double gap = surface->Value(uv.X(), uv.Y()).Distance(vertex);
+            const double limit = allowed(edge_tolerance, BRep_Tool::Tolerance(first_vertex), vertex);
+            require(gap <= limit, "shape", [&] {
+                return "the collapsed edge's p-curve leaves its vertex " + point_text(vertex) + " by " + number(gap) +
+                       ", more than the file's tolerance " + number(limit);
+            });
+        }
+        return;
+    }
+    double first = 0, last = 0;
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+    require(!curve.IsNull(), "shape", "the edge has no 3D curve");
+    require(std::isfinite(first) && std::isfinite(last), "shape", "the edge's curve has an infinite range");
+    for (const auto& [vertex, t] : {std::pair{first_vertex, first}, std::pair{last_vertex, last}}) {
+        const gp_Pnt at = BRep_Tool::Pnt(vertex);
+        const double gap = curve->Value(t).Distance(at);
+        const double limit = allowed(edge_tolerance, BRep_Tool::Tolerance(vertex), at);
+        require(gap <= limit, "shape", [&] {
+            return "the vertex " + point_text(at) + " is " + number(gap) + " from the end of its edge's curve, more than the file's tolerance " +
+                   number(limit);
+        });
+    }
+    // The p-curve runs its range as the 3D curve runs its own (proportionally where the file does not claim
+    // the same parameter).
+    for (int k = 0; k < kSamples; ++k) {
+        const double s = static_cast<double>(k) / (kSamples - 1);
+        const gp_Pnt on_curve = curve->Value(first + (last - first) * s);
+        const gp_Pnt2d uv = pcurve->Value(p_first + (p_last - p_first) * s);
+        const gp_Pnt on_surface = surface->Value(uv.X(), uv.Y());
+        double gap = on_surface.Distance(on_curve);
+        const double limit = allowed(2 * edge_tolerance, 0, on_curve);
+        // Same parameters bring the two curves' points together; where a file's p-curve runs at another pace
+        // (FreeCAD's Idf parts: 5e-4 apart at equal parameters, on the 3D curve all along) the points must still
+        // lie on the 3D curve: what the solid's shape depends on.
+        if (gap > limit) {
+            GeomAPI_ProjectPointOnCurve projection(on_surface, curve, first, last);
+            if (projection.NbPoints() > 0) gap = std::min(gap, projection.LowerDistance());
+        }
+        require(gap <= limit, "shape", [&] {
+            return "its p-curve on the face is " + number(gap) + " from its 3D curve at " + point_text(on_surface) +
+                   ", more than the file's tolerance " + number(limit);
+        });
+    }
+}
+
+// A face: each edge on it, and each loop closed (every vertex of a wire ends as many of its edges as it starts).
+void check_face(const TopoDS_Face& face) {
+    int e = 0;
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next(), ++e) {
+        try {
+            check_edge_on_face(TopoDS::Edge(it.Current()), face);
+        } catch (const Error& error) {
+            throw Error("shape", "edge " + std::to_string(e) + ": " + std::string(error.reason()));
+        }
+    }
+    for (TopExp_Explorer wires(face, TopAbs_WIRE); wires.More(); wires.Next()) {
+        std::map<const void*, int> ends;  // a vertex's TShape: +1 where an edge starts, -1 where one ends
+        for (TopExp_Explorer it(wires.Current(), TopAbs_EDGE); it.More(); it.Next()) {
+            TopoDS_Vertex start, end;
+            TopExp::Vertices(TopoDS::Edge(it.Current()), start, end, /*CumOri=*/true);
+            if (start.IsNull() || end.IsNull()) continue;  // reported by check_edge_on_face
+            ++ends[start.TShape().get()];
+            --ends[end.TShape().get()];
+        }
+        for (const auto& entry : ends)
+            require(entry.second == 0, "shape", "a loop of the face is not closed (an edge ends where no edge of the loop starts)");
+    }
+}
+
+// A shell of a solid: closed (every edge but a collapsed one used twice) and oriented (in opposite directions).
+void check_shell(const TopoDS_Shape& shell, const TopTools_IndexedMapOfShape& faces) {
+    TopTools_IndexedMapOfShape edges;
+    std::vector<int> forward, reversed, first_face;
+    for (TopExp_Explorer f(shell, TopAbs_FACE); f.More(); f.Next())
+        for (TopExp_Explorer it(f.Current(), TopAbs_EDGE); it.More(); it.Next()) {
+            if (BRep_Tool::Degenerated(TopoDS::Edge(it.Current()))) continue;
+            const int index = edges.Add(it.Current());
+            if (static_cast<std::size_t>(index) > forward.size()) {
+                forward.push_back(0);
+                reversed.push_back(0);
+                first_face.push_back(faces.FindIndex(f.Current()) - 1);
+            }
+            (it.Current().Orientation() == TopAbs_REVERSED ? reversed : forward)[index - 1]++;
+        }
+    for (std::size_t k = 0; k < forward.size(); ++k) {
+        const std::string where = "face " + std::to_string(first_face[k]) + ": an edge at " +
+                                  point_text(BRep_Tool::Pnt(TopExp::FirstVertex(TopoDS::Edge(edges(static_cast<int>(k) + 1)))));
+        const int uses = forward[k] + reversed[k];
+        require(uses == 2, "shape", [&] {
+            return where + " is used by " + std::to_string(uses) + (uses == 1 ? " face (the shell is open)" : " faces (the shell is not a manifold)");
+        });
+        require(forward[k] == 1, "shape", [&] { return where + ": both faces run it the same way (the shell is not oriented)"; });
+    }
+}
+
+std::string status_name(BRepCheck_Status status) {
+    // The names of BRepCheck_Status without the prefix; the enum's own numbering otherwise.
+    static const char* const kNames[] = {"NoError", "InvalidPointOnCurve", "InvalidPointOnCurveOnSurface", "InvalidPointOnSurface",
+                                         "No3DCurve", "Multiple3DCurve", "Invalid3DCurve", "NoCurveOnSurface",
+                                         "InvalidCurveOnSurface", "InvalidCurveOnClosedSurface", "InvalidSameRangeFlag",
+                                         "InvalidSameParameterFlag", "InvalidDegeneratedFlag", "FreeEdge", "InvalidMultiConnexity",
+                                         "InvalidRange", "EmptyWire", "RedundantEdge", "SelfIntersectingWire", "NoSurface",
+                                         "InvalidWire", "RedundantWire", "IntersectingWires", "InvalidImbricationOfWires",
+                                         "EmptyShell", "RedundantFace", "InvalidImbricationOfShells", "UnorientableShape",
+                                         "NotClosed", "NotConnected", "SubshapeNotInShape", "BadOrientation",
+                                         "BadOrientationOfSubshape", "InvalidPolygonOnTriangulation", "InvalidToleranceValue",
+                                         "EnclosedRegion", "CheckFail"};
+    const auto index = static_cast<std::size_t>(status);
+    return index < std::size(kNames) ? kNames[index] : "status " + std::to_string(index);
+}
+
+// BRepCheck's verdict on a solid: the first face with a fault and the fault's name.
+void check_with_brepcheck(const TopoDS_Shape& solid, const TopTools_IndexedMapOfShape& faces) {
+    BRepCheck_Analyzer analyzer(solid);
+    if (analyzer.IsValid()) return;
+    for (int f = 1; f <= faces.Extent(); ++f) {
+        const Handle(BRepCheck_Result)& result = analyzer.Result(faces(f));
+        if (result.IsNull()) continue;
+        for (BRepCheck_ListIteratorOfListOfStatus it(result->Status()); it.More(); it.Next())
+            if (it.Value() != BRepCheck_NoError)
+                fail("shape", "face " + std::to_string(f - 1) + ": OpenCASCADE's BRepCheck finds it invalid (" + status_name(it.Value()) + ")");
+    }
+    fail("shape", "OpenCASCADE's BRepCheck finds the solid invalid");
+}
+
+}  // namespace
+
+void check_self_consistency(const TopoDS_Shape& shape) {
+    int s = 0;
+    bool any_solid = false;
+    for (TopExp_Explorer solids(shape, TopAbs_SOLID); solids.More(); solids.Next(), ++s) {
+        any_solid = true;
+        const std::string solid = "solid " + std::to_string(s) + ": ";
+        TopTools_IndexedMapOfShape faces;
+        int f = 0;
+        for (TopExp_Explorer it(solids.Current(), TopAbs_FACE); it.More(); it.Next(), ++f) {
+            faces.Add(it.Current());
+            try {
+                check_face(TopoDS::Face(it.Current()));
+            } catch (const Error& error) {
+                throw Error("shape", solid + "face " + std::to_string(f) + ": " + std::string(error.reason()));
+            }
+        }
+        try {
+            for (TopExp_Explorer shells(solids.Current(), TopAbs_SHELL); shells.More(); shells.Next()) check_shell(shells.Current(), faces);
+            check_with_brepcheck(solids.Current(), faces);
+        } catch (const Error& error) {
+            throw Error("shape", solid + std::string(error.reason()));
+        }
+    }
+    if (any_solid) return;
+    int f = 0;
+    for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next(), ++f) {
+        try {
+            check_face(TopoDS::Face(it.Current()));
+        } catch (const Error& error) {
+            throw Error("shape", "face " + std::to_string(f) + ": " + std::string(error.reason()));
+        }
+    }
+}
+
+}  // namespace ratbez::occt::detail
