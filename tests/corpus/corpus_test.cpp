@@ -136,12 +136,27 @@ TEST_P(CorpusModel, ReadsWithOpenCascadesVolumeAndPassesItsCheck) {
     const double bound = std::max(1e-6 * reference, area_times_tolerance);
     EXPECT_NEAR(volume, reference, bound) << solids.size() << " solids; relative difference "
                                           << std::abs(volume - reference) / reference;
-    // `ratbez check` of each solid passes: converted back, valid for BRepCheck, its evaluations, volume and area
-    // OpenCASCADE's, within the file's tolerance (check.hpp).
+    // `ratbez check` of each solid: converted back, valid for BRepCheck, its evaluations, volume and area
+    // OpenCASCADE's within the file's tolerance (check.hpp), and OpenCASCADE's BOP argument analysis (on the STEP
+    // files, which hold the .brep files' solids: it is the check's slowest part) finds no self-intersection and
+    // no small edge. Its one accepted finding is C0 geometry: a face read from a file keeps its exact rational
+    // form's double knots, which BOPAlgo reports as GeomAbs_C0 (issue 25 left them).
+    // Two models still draw "BOPAlgo SelfIntersect" on a spherical face, as a plain RatBez sphere does at some
+    // placements (issue 25, open: OpenCASCADE's own NURBS sphere draws it too; only its analytic sphere skips
+    // the test): named here, so that any other model's finding fails.
+    const bool known_sphere_finding = GetParam().stem() == "part_sphere" || GetParam().stem() == "partdesign_pocket_hole";
+    occt::CheckOptions options;
+    options.bop_analysis = !is_brep(GetParam());
     for (const Solid& solid : solids) {
-        const occt::CheckReport report = occt::check(solid);
-        for (const std::string& failure : report.failures) ADD_FAILURE() << solid.name() << ": " << failure;
-        EXPECT_TRUE(report.passed) << solid.name();
+        const occt::CheckReport report = occt::check(solid, options);
+        for (const std::string& failure : report.failures) {
+            if (failure.starts_with("BOP check: BOPAlgo GeomAbs_C0")) continue;
+            if (known_sphere_finding && failure.starts_with("BOP check: BOPAlgo SelfIntersect: face")) continue;
+            ADD_FAILURE() << solid.name() << ": " << failure;
+        }
+        EXPECT_TRUE(report.valid && report.closed) << solid.name();
+        if (!known_sphere_finding) EXPECT_EQ(report.self_intersections, 0) << solid.name();
+        EXPECT_EQ(report.small_edges, 0) << solid.name();
     }
 }
 
