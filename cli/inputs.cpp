@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <map>
 
 #include "ratbez/occt/files.hpp"
 
@@ -17,20 +16,6 @@ std::string lowercase_extension(const std::string& path) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return extension;
-}
-
-// Product names where the file gives them, else the stem, then repeats numbered: instances of one part in an
-// assembly share their product's name, and the reports and module names must tell them apart.
-void name_solids(std::vector<spec::ShapeSpec>& shapes, const std::string& stem) {
-    std::map<std::string, int> seen;
-    for (std::size_t i = 0; i < shapes.size(); ++i) {
-        spec::ShapeSpec& shape = shapes[i];
-        shape.named = !shape.solid.name().empty();
-        std::string name = shape.named ? shape.solid.name() : stem;
-        if (!shape.named && shapes.size() > 1) name.append("_").append(std::to_string(i + 1));
-        if (const int count = ++seen[name]; count > 1) name.append("_").append(std::to_string(count));
-        shape.name = name;
-    }
 }
 
 }  // namespace
@@ -47,9 +32,11 @@ Input load_input(const std::string& path, const Progress& progress) {
     Input input{{}, true};
     input.shapes.reserve(solids.size());
     for (Solid& solid : solids) {
-        input.shapes.push_back(spec::ShapeSpec{.type = brep ? "BREP solid" : "STEP solid", .solid = std::move(solid)});
+        // Named by the reader: the file's names, else its stem, no two alike (files.hpp).
+        std::string name = solid.name();
+        input.shapes.push_back(spec::ShapeSpec{
+            .name = std::move(name), .type = brep ? "BREP solid" : "STEP solid", .solid = std::move(solid), .named = true});
     }
-    name_solids(input.shapes, std::filesystem::path(path).stem().string());
     return input;
 }
 

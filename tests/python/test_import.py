@@ -101,13 +101,19 @@ def test_a_list_of_solids_writes_one_file_read_back_in_order_with_names(tmp_path
     bolt.name = "Bolt"
     nut = ratbez.torus(3, 1, center=(10, 0, 0))
     nut.name = "Écrou"                        # a name outside ASCII comes back as written
-    plain = ratbez.sphere(2, center=(0, 10, 0))  # no name: none comes back
+    plain = ratbez.sphere(2, center=(0, 10, 0))  # no name: named after the file and its place in it
     path = tmp_path / ("parts" + suffix)
     getattr(ratbez, writer)([bolt, nut, plain], path)
     back = getattr(ratbez, reader)(path)
     assert [s.volume() for s in back] == pytest.approx([bolt.volume(), nut.volume(), plain.volume()], rel=1e-9)
-    if suffix == ".step":
-        assert [s.name for s in back] == ["Bolt", "Écrou", ""]
+    # STEP keeps the names (one product each); a .brep holds none, so the file's stem names them all.
+    assert [s.name for s in back] == (["Bolt", "Écrou", "parts_3"] if suffix == ".step" else
+                                      ["parts_1", "parts_2", "parts_3"])
+    # Every solid has a name of its own, so {s.name: s} keeps them all (README: Reading real models).
+    twins = tmp_path / ("twins" + suffix)
+    getattr(ratbez, writer)([bolt, bolt.translated((5, 0, 0)), plain], twins)
+    names = [s.name for s in getattr(ratbez, reader)(twins)]
+    assert len(set(names)) == 3 and all(names), names
     getattr(ratbez, writer)((bolt,), path)  # a tuple of one is one solid
     assert len(getattr(ratbez, reader)(path)) == 1
     for bad, argument in (([], "solid"), ([bolt, 3], "solid[1]"), (5, "solid")):

@@ -175,10 +175,18 @@ TEST_F(HostileFiles, DanglingReferencesHugeNumbersAndDeepNestingAreRefusedNaming
 TEST_F(HostileFiles, AFaceWithoutASurfaceIsAnErrorNamingTheFace) {
     occt::write_brep(cylinder(1, 2), path("cylinder.brep"));
     std::string text = test::read_file(path("cylinder.brep"));
-    const std::string weight = "0.70710678118654746";
-    const std::size_t at = text.find(weight, text.find("\nSurfaces "));
+    // The first surface's second row of poles ("x y z w" each): its first pole's weight, the row's fourth
+    // number, becomes 0 (whatever the conversion's weights are).
+    std::size_t at = text.find("\nSurfaces ");
     ASSERT_NE(at, std::string::npos);
-    text = text.substr(0, at) + "0" + text.substr(at + weight.size());
+    for (int line = 0; line < 2; ++line) at = text.find('\n', at + 1);
+    ASSERT_NE(at, std::string::npos);
+    std::size_t begin = at + 1;
+    for (int number = 0; number < 3; ++number) begin = text.find_first_not_of(' ', text.find(' ', begin));
+    const std::size_t end = text.find_first_of(" \n", begin);
+    ASSERT_NE(end, std::string::npos);
+    ASSERT_GT(std::stod(text.substr(begin, end - begin)), 0.0);  // a weight, not a coordinate sign
+    text = text.substr(0, begin) + "0" + text.substr(end);
     const std::string file = written("zero_weight.brep", text);
     std::string message;
     EXPECT_TRUE(completes_in_child([&] { message = error_of([&] { read_brep(file); });

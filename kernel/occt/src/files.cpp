@@ -498,12 +498,31 @@ Solid read_brep(const std::string& path, const Progress& progress) {
     return one_solid(read_brep_shapes(path, progress), path, progress, "read_brep_all");
 }
 
+namespace {
+
+// Every solid of a model file named, and no two alike, so that a name picks one solid (a dict's key, a module, a
+// report): the file's name for it where it gives one, else the file's stem (stem_k among several); a repeated
+// name (instances of one part in an assembly share their product's) numbered _2, _3, ...
+std::vector<Solid> named_after_file(std::vector<Solid> solids, const std::string& path) {
+    const std::string stem = std::filesystem::path(path).stem().string();
+    std::map<std::string, int> seen;
+    for (std::size_t i = 0; i < solids.size(); ++i) {
+        std::string name = solids[i].name();
+        if (name.empty()) name = solids.size() > 1 ? stem + "_" + std::to_string(i + 1) : stem;
+        if (const int count = ++seen[name]; count > 1) name += "_" + std::to_string(count);
+        solids[i].set_name(name);
+    }
+    return solids;
+}
+
+}  // namespace
+
 std::vector<Solid> read_step_all(const std::string& path, const Progress& progress) {
-    return solids_from_file(read_step_shapes(path, progress), path, progress);
+    return named_after_file(solids_from_file(read_step_shapes(path, progress), path, progress), path);
 }
 
 std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress) {
-    return solids_from_file(read_brep_shapes(path, progress), path, progress);
+    return named_after_file(solids_from_file(read_brep_shapes(path, progress), path, progress), path);
 }
 
 }  // namespace ratbez::occt

@@ -32,9 +32,10 @@ std::string brep_string(const Solid& solid, const ConvertOptions& options = {});
 Solid read_step(const std::string& path, const Progress& progress = {});
 Solid read_brep(const std::string& path, const Progress& progress = {});
 // Every solid of the file, in file order: a STEP assembly is flattened with each instance's placement (the
-// product structure through OpenCASCADE's XCAF reader) and each solid named after its product
-// (Solid::name; "" where the file names none); a .brep file's solids in the order its shape holds them
-// (unnamed). Errors as above, a solid's prefixed "solid k: ".
+// product structure through OpenCASCADE's XCAF reader) and each solid named after its product; a .brep file's
+// solids in the order its shape holds them. Every solid has a name and no two alike (Solid::name): the file's,
+// else the file's stem (stem_k among several), repeats numbered _2, _3 (instances of one part). Errors as
+// above, a solid's prefixed "solid k: ".
 std::vector<Solid> read_step_all(const std::string& path, const Progress& progress = {});
 std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress = {});
 
