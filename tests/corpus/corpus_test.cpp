@@ -28,6 +28,8 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cctype>
@@ -177,7 +179,9 @@ TEST_P(CorpusModel, MeshesWithinToleranceBothWaysCgalClean) {
 
 TEST_P(CorpusModel, RoundTripsThroughStep) {
     const std::vector<Solid> solids = read_all(GetParam());
-    const fs::path written = fs::temp_directory_path() / ("ratbez_corpus_" + GetParam().stem().string() + ".step");
+    // Named after the whole file name and the process: x.brep and x.step run side by side under ctest -j.
+    const fs::path written = fs::temp_directory_path() /
+                             ("ratbez_corpus_" + GetParam().filename().string() + "_" + std::to_string(getpid()) + ".step");
     occt::write_step(solids, written.string());
     const std::vector<Solid> back = occt::read_step_all(written.string());
     ASSERT_EQ(back.size(), solids.size());
