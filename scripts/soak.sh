@@ -5,7 +5,9 @@
 # build/tests/reliability/reliability_soak_readers (tests/reliability/soak_readers.cpp says what is counted).
 # Prints the counts per format; exits non-zero on any crash, hang past the Ctrl-C latency, inconsistent solid or
 # stray exception, leaving each such file in build/soak-findings/. Not part of scripts/test.sh (minutes long).
-# Usage: bash scripts/soak.sh [COUNT] [FIRST_SEED]
+# Then the big randomized round-trip run: ROUND_TRIPS cases per shard of reliability_round_trip_tests (default
+# 1000: cases 0 to 9,999 of the same seeds, where the test command runs 0 to 2,999).
+# Usage: bash scripts/soak.sh [COUNT] [FIRST_SEED]   (ROUND_TRIPS=0 skips the round trips)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 exec </dev/null
@@ -30,4 +32,16 @@ set +e
 rc=$?
 set -e
 echo "== soak: $(( $(date +%s) - start )) s; findings (if any) in $build/soak-findings/"
+
+round_trips="${ROUND_TRIPS:-1000}"
+if [ "$round_trips" -gt 0 ]; then
+  cmake --build "$build" -j "${RATBEZ_JOBS:-2}" --target reliability_round_trip_tests >/dev/null
+  echo "== round trips: 10 shards of $round_trips cases"
+  start=$(date +%s)
+  if ! RATBEZ_ROUND_TRIP_CASES="$round_trips" ctest --test-dir "$build" -j "${RATBEZ_JOBS:-2}" \
+       -R '^Reliability/RoundTrip\.Shard/' --output-on-failure; then
+    rc=1
+  fi
+  echo "== round trips: $(( $(date +%s) - start )) s"
+fi
 exit "$rc"
