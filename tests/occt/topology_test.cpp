@@ -121,6 +121,18 @@ gp_Ax2 frame_of(const Vec3& center, const Vec3& axis) {
     return gp_Ax2(to_occt_point(center), gp_Dir(a.x, a.y, a.z));
 }
 
+// No face's surface and no edge's curve is C0 (OpenCASCADE's BOP check reports GeomAbs_C0 on them).
+void expect_no_c0_geometry(const TopoDS_Shape& shape) {
+    for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next())
+        EXPECT_NE(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_C0);
+    for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+        if (BRep_Tool::Degenerated(edge)) continue;
+        double first = 0, last = 0;
+        EXPECT_NE(BRep_Tool::Curve(edge, first, last)->Continuity(), GeomAbs_C0);
+    }
+}
+
 TEST(Topology, CylinderIsValidAndMatchesBRepPrimAPI) {
     const Vec3 center{1, -2, 0.5}, axis{1, 2, 3};
     const Solid ours = cylinder(2, 5, center, axis);
@@ -280,14 +292,7 @@ void expect_measurable(const Solid& solid, const std::string& name, std::optiona
         EXPECT_LT(distance(ours_in_occt.centre, *centre), 1e-8 * size);
     }
 
-    for (TopExp_Explorer it(converted.solid, TopAbs_FACE); it.More(); it.Next())
-        EXPECT_NE(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_C0);
-    for (TopExp_Explorer it(converted.solid, TopAbs_EDGE); it.More(); it.Next()) {
-        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-        if (BRep_Tool::Degenerated(edge)) continue;
-        double first = 0, last = 0;
-        EXPECT_NE(BRep_Tool::Curve(edge, first, last)->Continuity(), GeomAbs_C0);
-    }
+    expect_no_c0_geometry(converted.solid);
     if (bop_check) {
         BOPAlgo_ArgumentAnalyzer analyzer;
         analyzer.SetShape1(converted.solid);
@@ -341,14 +346,7 @@ void expect_natural(const Solid& solid, const std::string& name, std::size_t fac
     if (centre) {
         EXPECT_LT(distance(read.centre, *centre), 1e-5 * size);
     }
-    for (TopExp_Explorer it(converted.solid, TopAbs_FACE); it.More(); it.Next())
-        EXPECT_NE(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_C0);
-    for (TopExp_Explorer it(converted.solid, TopAbs_EDGE); it.More(); it.Next()) {
-        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-        if (BRep_Tool::Degenerated(edge)) continue;
-        double first = 0, last = 0;
-        EXPECT_NE(BRep_Tool::Curve(edge, first, last)->Continuity(), GeomAbs_C0);
-    }
+    expect_no_c0_geometry(converted.solid);
     // The same geometry: check() compares our points with OCCT's through the arcs' parameter maps.
     CheckOptions options;
     options.grid = 9;
