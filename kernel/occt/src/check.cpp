@@ -348,6 +348,10 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
         if (options.progress) options.progress(fraction);
     };
     const ConvertedSolid converted = convert(solid, options.convert);
+    // Our own measures (the slack depends on the area), taken once, before OpenCASCADE may raise.
+    report.volume = solid.volume();
+    report.area = solid.area();
+    const Slack slack = tolerance_slack(solid, report.area);
     report_progress(0.1);
 
     try {
@@ -377,9 +381,6 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
         }
 
         report_progress(0.8);
-        report.volume = solid.volume();
-        report.area = solid.area();
-        const Slack slack = tolerance_slack(solid, report.area);
         report.occt_volume = occt_measure(
             converted.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::VolumeProperties(s, p, eps); },
             report.volume, options.volume_limit, slack.volume);
@@ -394,11 +395,6 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
                                   (message && *message ? std::string(": ") + message : std::string()));
     }
     report_progress(0.95);
-    if (report.area == 0) {  // OpenCASCADE raised before they were measured
-        report.volume = solid.volume();
-        report.area = solid.area();
-    }
-    const Slack slack = tolerance_slack(solid, report.area);
     report.closed_form_volume = solid.construction().exact_volume();
 
     const double deviation_limit = options.deviation_limit * report.size;
