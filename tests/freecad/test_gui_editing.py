@@ -83,6 +83,22 @@ def combo_shot(name):
     return path
 
 
+def tree_item(obj, timeout=3.0):
+    """obj's item in the visible tree; the tree adds a new object's item on its own timer, so wait for it."""
+    deadline = time.time() + timeout
+    while True:
+        for tree in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
+            items = tree.findItems(obj.Label, QtCore.Qt.MatchExactly | QtCore.Qt.MatchRecursive, 0)
+            if tree.isVisible() and items:
+                return tree, items[0]
+        if time.time() > deadline:
+            seen = ["{}: {}".format(tree.objectName() or "tree", [item.text(0) for item in tree.findItems(
+                "*", QtCore.Qt.MatchWildcard | QtCore.Qt.MatchRecursive, 0)])
+                for tree in Gui.getMainWindow().findChildren(QtGui.QTreeWidget) if tree.isVisible()]
+            raise AssertionError("no tree item for {} after {} s; visible trees: {}".format(obj.Label, timeout, seen))
+        process_events(0.1)
+
+
 def tree_double_click(obj):
     """A real double-click on obj's item in the tree (press, release, double-click, release on its viewport).
     The Combo View shows its Tasks tab while a panel is open: the user goes to the Model tab first."""
@@ -90,24 +106,17 @@ def tree_double_click(obj):
     if tabs is not None and tabs.currentIndex() != 0:
         tabs.setCurrentIndex(0)
         process_events()
-    for tree in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
-        if not tree.isVisible():
-            continue
-        items = tree.findItems(obj.Label, QtCore.Qt.MatchExactly | QtCore.Qt.MatchRecursive, 0)
-        if not items:
-            continue
-        tree.scrollToItem(items[0])
-        position = tree.visualItemRect(items[0]).center()
-        viewport = tree.viewport()
-        for kind in (QtCore.QEvent.MouseButtonPress, QtCore.QEvent.MouseButtonRelease,
-                     QtCore.QEvent.MouseButtonDblClick, QtCore.QEvent.MouseButtonRelease):
-            buttons = QtCore.Qt.NoButton if kind == QtCore.QEvent.MouseButtonRelease else QtCore.Qt.LeftButton
-            event = QtGui.QMouseEvent(kind, position, viewport.mapToGlobal(position), QtCore.Qt.LeftButton, buttons,
-                                      QtCore.Qt.NoModifier)
-            QtGui.QApplication.sendEvent(viewport, event)
-        process_events()
-        return
-    raise AssertionError("no tree item for " + obj.Label)
+    tree, item = tree_item(obj)
+    tree.scrollToItem(item)
+    position = tree.visualItemRect(item).center()
+    viewport = tree.viewport()
+    for kind in (QtCore.QEvent.MouseButtonPress, QtCore.QEvent.MouseButtonRelease,
+                 QtCore.QEvent.MouseButtonDblClick, QtCore.QEvent.MouseButtonRelease):
+        buttons = QtCore.Qt.NoButton if kind == QtCore.QEvent.MouseButtonRelease else QtCore.Qt.LeftButton
+        event = QtGui.QMouseEvent(kind, position, viewport.mapToGlobal(position), QtCore.Qt.LeftButton, buttons,
+                                  QtCore.Qt.NoModifier)
+        QtGui.QApplication.sendEvent(viewport, event)
+    process_events()
 
 
 def answer_question_later(button):
