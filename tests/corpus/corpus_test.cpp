@@ -6,7 +6,9 @@
 //    each passes occt::check (`ratbez check`);
 //  - its mesh at the default tolerance is CGAL-clean (closed, 2-manifold, outward, no self-intersection) and within
 //    the tolerance both ways, measured (mesh to surface and surface to mesh);
-//  - the STEP ratbez writes of it reads back as the same solids, valid for BRepCheck.
+//  - the STEP ratbez writes of it reads back as the same solids, valid for BRepCheck;
+//  - at a deflection of 1e-3 of its size it meshes in no more triangles than OpenCASCADE's BRepMesh at the same
+//    deflection (issue 24's target; bench/tessellation_bench.cpp times both and measures their deviations).
 
 #include <gtest/gtest.h>
 
@@ -15,10 +17,12 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <Bnd_Box.hxx>
 #include <BRepGProp.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <IMeshTools_Parameters.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Solid.hxx>
@@ -27,6 +31,8 @@
 #include <TopAbs_ShapeEnum.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS_Shape.hxx>
+#include <Poly_Triangulation.hxx>
+#include <TopLoc_Location.hxx>
 
 #include <unistd.h>
 
@@ -175,6 +181,45 @@ TEST_P(CorpusModel, MeshesWithinToleranceBothWaysCgalClean) {
         EXPECT_LE(max_deviation(solid, mesh), tolerance);
         EXPECT_LE(max_surface_to_mesh_distance(solid, mesh), tolerance);
     }
+}
+
+// BRepMesh's triangles of every solid of the file at the deflection (the bench's parameters: angle 0.5 rad).
+std::size_t brepmesh_triangles(const TopoDS_Shape& shape, double deflection) {
+    IMeshTools_Parameters parameters;
+    parameters.Deflection = deflection;
+    parameters.Angle = 0.5;
+    parameters.Relative = Standard_False;
+    parameters.InParallel = Standard_False;
+    std::size_t triangles = 0;
+    for (TopExp_Explorer solids(shape, TopAbs_SOLID); solids.More(); solids.Next()) {
+        BRepTools::Clean(solids.Current());
+        BRepMesh_IncrementalMesh mesher(solids.Current(), parameters);
+        for (TopExp_Explorer faces(solids.Current(), TopAbs_FACE); faces.More(); faces.Next()) {
+            TopLoc_Location location;
+            const Handle(Poly_Triangulation) triangulation = BRep_Tool::Triangulation(TopoDS::Face(faces.Current()), location);
+            if (!triangulation.IsNull()) triangles += static_cast<std::size_t>(triangulation->NbTriangles());
+        }
+    }
+    return triangles;
+}
+
+TEST_P(CorpusModel, MeshesInNoMoreTrianglesThanBRepMeshAtItsDeflection) {
+    const std::vector<Solid> solids = read_all(GetParam());
+    const TopoDS_Shape shape = occt_shape(GetParam());
+    std::size_t shapes = 0;
+    for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) ++shapes;
+    if (shapes != solids.size())
+        GTEST_SKIP() << "OpenCASCADE holds " << shapes << " solids, ratbez " << solids.size() << ": a surface model ratbez sews";
+    double size = 0;
+    for (const Solid& solid : solids) size = std::max(size, solid.bounding_box().diagonal());
+    const double deflection = 1e-3 * size;
+    std::size_t ours = 0;
+    for (const Solid& solid : solids) {
+        const Mesh mesh = tessellate(solid, deflection);
+        EXPECT_LE(max_deviation(solid, mesh), deflection) << solid.name();
+        ours += mesh.triangles.size();
+    }
+    EXPECT_LE(ours, brepmesh_triangles(shape, deflection)) << "at deflection " << deflection;
 }
 
 TEST_P(CorpusModel, RoundTripsThroughStep) {

@@ -1,19 +1,22 @@
 // Constrained Delaunay triangulations of plane regions (domain_triangulation.hpp).
 //
 // 1. The loops' points go into a constrained Delaunay triangulation (exact predicates); a trimmed face's in
-//    scaled coordinates x = u |S_u|, y = v |S_v| (the surface's average speeds), so that Delaunay's empty
-//    circles are roughly round on the surface and a long thin (u, v) rectangle does not give slivers in 3D.
+//    scaled coordinates (u, v per chord the tolerance allows along them, averaged over the region), so that
+//    Delaunay's empty circles are roughly round in units of the error and a cylinder's triangles run along
+//    its rulings (choose_scale).
 // 2. The region is the set of triangles nested an odd number of constrained boundaries deep, found by a flood
 //    fill from the infinite face across boundary segments (CGAL's own example does the same): holes and the
 //    outside are even.
-// 3. A trimmed face's region is refined in rounds: every triangle not yet known good is checked at the 25
-//    non-corner points of the barycentric lattice of step 1/6 (the surface at the lattice point's (u, v)
-//    against the triangle at the same coordinates); a failing triangle gets one new vertex at its worst point
-//    (or, for a triangle on a pole, the middle of the pole segment it spans, which fans the pole out). Points of a boundary segment are
-//    not checked and never added: the segment is the edge's chord, within the tolerance of the edge by the
-//    edge sampling (tessellate.cpp samples the edges of trimmed faces so that the chord in (u, v) also maps
-//    within half the tolerance of it). A triangle created in the current round waits for the next, so one
-//    round adds at most one point per failing region.
+// 3. A doubly curved region is first seeded with rows of points about as far apart as the tolerance allows
+//    (seed_interior), so that the refinement starts from triangles near their largest.
+// 4. The region is refined in rounds: every triangle not yet known good is checked at the 25 non-corner
+//    points of the barycentric lattice of step 1/6 (the triangle's point against the surface near the lattice
+//    point's (u, v), one Gauss-Newton step toward its foot); a failing triangle gets one new vertex at its
+//    worst point (or, for a triangle on a pole, the middle of the pole segment it spans, which fans the pole
+//    out). Points of a boundary segment are not checked and never added: the segment is the edge's chord,
+//    within the tolerance of the edge by the edge sampling (tessellate.cpp samples the edges of trimmed faces
+//    so that the chord in (u, v) also maps within 0.9 of the tolerance of it). A triangle created in the
+//    current round waits for the next, so one round adds at most one point per failing region.
 
 #include "mesh/domain_triangulation.hpp"
 
@@ -163,6 +166,7 @@ public:
         }
         require_simple_loops();
         mark_domains();
+        if (seed_interior()) mark_domains();
         for (int round = 0; round < kMaxRounds; ++round) {
             settings_.poll();
             if (!refine_once()) break;
@@ -189,12 +193,7 @@ private:
                 low = {std::min(low.x, s.point.x), std::min(low.y, s.point.y), std::min(low.z, s.point.z)};
                 high = {std::max(high.x, s.point.x), std::max(high.y, s.point.y), std::max(high.z, s.point.z)};
             }
-        const double longest = norm(high - low), tolerance = settings_.check_tolerance();
-        const auto density = [&](const Vec3& d, const Vec3& dd, const Vec3& normal) {
-            const double speed = norm(d);
-            const double curvature = std::abs(dot(dd, normal)) / (speed * speed);
-            return speed * std::max(std::sqrt(curvature / (8 * tolerance)), 1 / longest);
-        };
+        longest_ = norm(high - low);
         double su = 0, sv = 0;
         int n = 0;
         for (int i = 0; i <= 8; ++i)
@@ -202,16 +201,129 @@ private:
                 const Interval du = surface_.domain_u(), dv = surface_.domain_v();
                 const SurfaceJet jet = surface_.jet(std::clamp(u0 + (u1 - u0) * i / 8.0, du.min, du.max),
                                                     std::clamp(v0 + (v1 - v0) * j / 8.0, dv.min, dv.max));
-                const Vec3 normal = cross(jet.su, jet.sv);
-                const double area = norm(normal);
-                if (!(area > 1e-10 * (dot(jet.su, jet.su) + dot(jet.sv, jet.sv))) || !std::isfinite(area)) continue;
-                const double a = density(jet.su, jet.suu, normal / area), b = density(jet.sv, jet.svv, normal / area);
-                if (!std::isfinite(a) || !std::isfinite(b)) continue;
-                su += a, sv += b, ++n;
+                const std::optional<Density> d = density(jet);
+                if (!d) continue;
+                su += d->u, sv += d->v, ++n;
             }
         scale_u_ = n > 0 && su > 0 && std::isfinite(su) ? su / n : 1.0;
         scale_v_ = n > 0 && sv > 0 && std::isfinite(sv) ? sv / n : 1.0;
         origin_u_ = u0, origin_v_ = v0;
+        box_ = {u0, u1, v0, v1};
+    }
+
+    // The chords per unit of u and of v the tolerance t allows at a point (none where there is no tangent
+    // plane): along a direction of normal curvature k a chord of length h sags k h^2 / 8, so h = sqrt(8 t / k)
+    // in space and h / |S_u| in u; a straight direction is capped at the loops' diagonal.
+    struct Density {
+        double u, v;
+    };
+    std::optional<Density> density(const SurfaceJet& jet) const {
+        const Vec3 normal = cross(jet.su, jet.sv);
+        const double area = norm(normal);
+        if (!(area > 1e-10 * (dot(jet.su, jet.su) + dot(jet.sv, jet.sv))) || !std::isfinite(area)) return std::nullopt;
+        const double tolerance = settings_.check_tolerance();
+        const auto along = [&](const Vec3& d, const Vec3& dd) {
+            const double speed = norm(d);
+            const double curvature = std::abs(dot(dd, normal / area)) / (speed * speed);
+            return speed * std::max(std::sqrt(curvature / (8 * tolerance)), 1 / longest_);
+        };
+        const Density d{along(jet.su, jet.suu), along(jet.sv, jet.svv)};
+        if (!std::isfinite(d.u) || !std::isfinite(d.v)) return std::nullopt;
+        return d;
+    }
+
+    // Seeds the region's inside with points spaced as the tolerance allows before the refinement runs:
+    // rows along u, each point a step of kSeedSpacing chords (Density) from the last, every other row shifted
+    // by half a step, so that the triangles come out near equilateral on the surface and near their largest
+    // (an equilateral triangle of side h sags k h^2 / 6 at its centre: 0.87 chords reach the tolerance).
+    // Refining a coarse triangulation alone splits a triangle that fails by 1% into three, and the mesh
+    // settled at half the tolerance with twice the triangles; the seeds leave the refinement the few
+    // triangles the local steps misjudge. A seed within half a step of a vertex already there (the
+    // boundary, the pole) is left out. Returns whether any was added.
+    bool seed_interior() {
+        constexpr double kSeedSpacing = 0.75;
+        const Interval du = surface_.domain_u(), dv = surface_.domain_v();
+        const double u0 = box_[0], u1 = box_[1], v0 = box_[2], v1 = box_[3];
+        if (!(u1 > u0) || !(v1 > v0)) return false;
+        // Where one direction is straight across the region (a cylinder's, a cone's rulings: under two chords)
+        // the refinement's long triangles along it are already the fewest; seeds would cut them in rows.
+        if (scale_u_ * (u1 - u0) < 2 || scale_v_ * (v1 - v0) < 2) return false;
+        // The parameter steps of kSeedSpacing chords at (u, v) and the smaller of them in space; a tenth of
+        // the box where the surface has no tangent plane.
+        struct Steps {
+            double u, v, space;
+        };
+        const auto steps_at = [&](double u, double v) {
+            const SurfaceJet jet = surface_.jet(std::clamp(u, du.min, du.max), std::clamp(v, dv.min, dv.max));
+            const std::optional<Density> d = density(jet);
+            if (!d || !(d->u > 0) || !(d->v > 0)) return Steps{0.1 * (u1 - u0), 0.1 * (v1 - v0), 0};
+            const Steps steps{std::clamp(kSeedSpacing / d->u, 1e-3 * (u1 - u0), u1 - u0),
+                              std::clamp(kSeedSpacing / d->v, 1e-3 * (v1 - v0), v1 - v0), 0};
+            return Steps{steps.u, steps.v, std::min(steps.u * norm(jet.su), steps.v * norm(jet.sv))};
+        };
+        // Rows of equilateral triangles are sqrt(3) / 2 of their sides apart; each step is taken from the
+        // density at its middle (a rational span's speed changes along it).
+        const double middle_u = 0.5 * (u0 + u1), row = std::sqrt(3.0) / 2;
+        const auto row_step = [&](double v) { return row * steps_at(middle_u, v + 0.5 * row * steps_at(middle_u, v).v).v; };
+        std::size_t seeds = 0;
+        FaceHandle hint;
+        bool shifted = false;
+        for (double v = v0 + row_step(v0); v < v1; v += row_step(v)) {
+            shifted = !shifted;
+            for (double u = u0 + (shifted ? 0.5 * steps_at(u0, v).u : 0); u < u1;) {
+                const Steps steps = steps_at(u, v);
+                if (steps.space > 0 && seed(u, v, 0.5 * steps.space, hint) && ++seeds > settings_.max_triangles / 2)
+                    throw TooFine(static_cast<double>(seeds) * 2, settings_.max_triangles);
+                u += steps_at(u + 0.5 * steps.u, v).u;
+            }
+            settings_.poll();
+        }
+        return seeds > 0;
+    }
+
+    // Inserts a seed at (u, v) if it is inside the region and no vertex of the triangle it falls in is
+    // nearer than `keep` in space. Returns whether it did.
+    bool seed(double u, double v, double keep, FaceHandle& hint) {
+        const Point p = to_point(u, v);
+        Cdt::Locate_type type;
+        int index = 0;
+        const FaceHandle f = cdt_.locate(p, type, index, hint);
+        if (type != Cdt::FACE || cdt_.is_infinite(f) || !f->info().inside()) return false;
+        const Vec3 point = surface_point(u, v);
+        for (int m = 0; m < 3; ++m)
+            if (distance(f->vertex(m)->info().point, point) < keep) return false;
+        const int nesting = f->info().nesting;  // the insertion's flips stay within its constrained region
+        const VertexHandle h = cdt_.insert(p, type, f, index);
+        h->info() = VertexInfo{u, v, add_point_(point), point, true};
+        for (Cdt::Face_circulator c = cdt_.incident_faces(h), end = c;;) {
+            c->info().nesting = nesting;
+            if (++c == end) break;
+        }
+        hint = h->face();
+        fan_pole_towards(h);
+        return true;
+    }
+
+    // A seed next to a pole gets a point of the pole at its own u, as refine_once's pole fan would add:
+    // a triangle from the seeds to a pole corner at another u interpolates (u, v) across the whole pole and
+    // fails the lattice check however small it is in space.
+    void fan_pole_towards(VertexHandle seed) {
+        const VertexInfo info = seed->info();
+        for (Cdt::Face_circulator c = cdt_.incident_faces(seed), end = c;;) {
+            for (int i = 0; i < 3; ++i) {
+                if (cdt_.is_infinite(c) || !is_pole(c, i)) continue;
+                const VertexInfo a = c->vertex(Cdt::ccw(i))->info(), b = c->vertex(Cdt::cw(i))->info();
+                const bool along_u = std::abs(a.v - b.v) <= std::abs(a.u - b.u);
+                const double t = along_u ? (info.u - a.u) / (b.u - a.u) : (info.v - a.v) / (b.v - a.v);
+                if (!(t > 0.01 && t < 0.99)) continue;
+                const double u = along_u ? info.u : a.u, v = along_u ? a.v : info.v;
+                const VertexHandle h = cdt_.insert(to_point(u, v), Cdt::EDGE, c, i);
+                h->info() = VertexInfo{u, v, a.id, a.point, true};
+                mark_domains();  // the pole's split reaches the outside too
+                return;
+            }
+            if (++c == end) break;
+        }
     }
 
     Point to_point(double u, double v) const { return Point((u - origin_u_) * scale_u_, (v - origin_v_) * scale_v_); }
@@ -223,6 +335,25 @@ private:
     Vec3 surface_point(double u, double v) const {
         const Interval du = surface_.domain_u(), dv = surface_.domain_v();
         return surface_.point(std::clamp(u, du.min, du.max), std::clamp(v, dv.min, dv.max));
+    }
+
+    // The distance from a point of a triangle to the surface, from the surface point at the same (u, v)
+    // moved by one Gauss-Newton step on |S(u, v) - p|^2 toward the foot point (the step solves the normal
+    // equations of the tangent plane): an upper bound, as any surface point's distance is, and a tight one.
+    // The point at (u, v) alone also counts the parameterisation's drift along the surface, which is no error
+    // of the mesh: a pole-degenerate sphere patch measured so took 2.5x the triangles its curvature asks for.
+    // `enough`: a distance the caller accepts; the point at (u, v) alone answers when it is that close.
+    double distance_to_surface(const Vec3& p, double u, double v, double enough) const {
+        const double direct = distance(surface_point(u, v), p);
+        if (direct <= enough) return direct;
+        const SurfaceFirstDerivatives d = evaluate(u, v);
+        const Vec3 r = p - d.s;
+        const double a = dot(d.su, d.su), b = dot(d.su, d.sv), c = dot(d.sv, d.sv);
+        const double det = a * c - b * b;
+        if (!(det > 1e-12 * a * c)) return direct;  // no tangent plane (a pole): the point itself
+        const double ru = dot(r, d.su), rv = dot(r, d.sv);
+        const double du = (c * ru - b * rv) / det, dv = (a * rv - b * ru) / det;
+        return std::min(direct, distance(surface_point(u + du, v + dv), p));
     }
 
     // A constrained segment of the boundary proper (not a pole, whose ends are one mesh vertex).
@@ -245,6 +376,7 @@ private:
     // excluded), and that point; with an angle limit, a corner normal turning too far fails it at its centre.
     Candidate assess(FaceHandle f) const {
         Candidate worst{{f->vertex(0), f->vertex(1), f->vertex(2)}, 0, {2, 2, 2}};
+        const double accept = kLatticeShare * settings_.check_tolerance();
         const VertexInfo* corner[3] = {&f->vertex(0)->info(), &f->vertex(1)->info(), &f->vertex(2)->info()};
         for (int i = 0; i <= kLattice; ++i)
             for (int j = 0; i + j <= kLattice; ++j) {
@@ -262,7 +394,7 @@ private:
                     u += w * corner[m]->u, v += w * corner[m]->v;
                     linear = linear + corner[m]->point * w;
                 }
-                const double error = distance(surface_point(u, v), linear);
+                const double error = distance_to_surface(linear, u, v, std::max(worst.error, accept));
                 if (error > worst.error) worst.error = error, worst.lattice = b;
             }
         if (worst.error <= kLatticeShare * settings_.check_tolerance() && settings_.angle_rad > 0) {
@@ -398,7 +530,8 @@ private:
     const SurfaceEvaluator& surface_;
     const TessellationSettings& settings_;
     const std::function<MeshVertexId(const Vec3&)>& add_point_;
-    double scale_u_ = 1, scale_v_ = 1, origin_u_ = 0, origin_v_ = 0;
+    double scale_u_ = 1, scale_v_ = 1, origin_u_ = 0, origin_v_ = 0, longest_ = 1;
+    std::array<double, 4> box_{};  // the loops' (u, v) box: u0, u1, v0, v1
 };
 
 }  // namespace

@@ -503,7 +503,8 @@ private:
                     place();
                 }
             }
-            if (used_by_trimmed(edge.get()) && refine_for_trimmed(edge.get(), samples.params)) place();
+            const double crease_bound = surface_use && is_crease(edge.get()) ? bound : 0;
+            if (used_by_trimmed(edge.get()) && refine_for_trimmed(edge.get(), samples.params, crease_bound, !surface_use)) place();
             const std::size_t n = samples.params.size();
             samples.ids.reserve(n);
             for (std::size_t k = 0; k < n; ++k) {
@@ -516,51 +517,87 @@ private:
     }
 
     // A trimmed face triangulates its (u, v) region on the edge's samples, whose segments in (u, v) then map
-    // onto the surface along curves the mesh does not follow: the chord between two samples. Adds the middle
-    // parameter of every interval where that curve strays from the chord by more than half the tolerance, or
-    // the edge itself by more than the tolerance, or (with an angle limit) where the face's normals turn by
-    // more than the limit, so that the triangles along the boundary can always be refined to the tolerance
-    // (domain_triangulation.cpp). Samples of a trimmed face's edges are on the curve (no
-    // offsets). Returns whether it added any.
-    bool refine_for_trimmed(const Edge* edge, std::vector<double>& params) {
+    // onto the surface along curves the mesh does not follow: the chord between two samples. An interval
+    // [a, b] of the edge is fine when that curve strays from the chord by at most 0.9 of the tolerance
+    // (domain_triangulation.cpp's lattice check, at 0.95, then still converges along the boundary: a lattice
+    // point sees at most 0.69 of a boundary segment's error), the edge itself by at most the tolerance (and
+    // `crease_bound`, the crease refinement's bound, where it is positive), and, with an angle limit, the
+    // face's normals turn by at most the limit. Returns by how much the interval must shrink to be fine
+    // (<= 1: it is): the square root of an error's ratio to its bound (a chord's error is quadratic in its
+    // length), the angle's ratio itself.
+    double shrink_needed(const Edge* edge, double a, double b, double crease_bound) {
         const Interval d = edge->curve.domain();
-        const double half = 0.5 * settings_.check_tolerance();
+        const double tolerance = settings_.check_tolerance(), inner = 0.9 * tolerance;
         const auto point_at = [&](double t) {
             if (t <= d.min) return edge->start->point;
             if (t >= d.max) return edge->end->point;
             return edge->curve.point(t);
         };
-        bool changed = false;
+        const Vec3 pa = point_at(a), pb = point_at(b);
+        double need = 0;
+        const auto error_ratio = [&](double error, double bound) { need = std::max(need, std::sqrt(error / bound)); };
+        for (double f : {0.25, 0.5, 0.75}) {
+            const Vec3 chord = pa + (pb - pa) * f;
+            const double off_curve = distance(edge->curve.point(a + f * (b - a)), chord);
+            error_ratio(off_curve, tolerance);
+            if (crease_bound > 0) error_ratio(off_curve, crease_bound);
+            for (const EdgeUse& use : edge_uses_[edge]) {
+                if (use.face->kind() != Face::Kind::trimmed) continue;
+                const auto [ua, va] = pcurve_point(use, a);
+                const auto [ub, vb] = pcurve_point(use, b);
+                const NurbsSurface& s = use.face->surface();
+                const Interval su = s.domain_u(), sv = s.domain_v();
+                error_ratio(distance(s.point(std::clamp(ua + f * (ub - ua), su.min, su.max),
+                                             std::clamp(va + f * (vb - va), sv.min, sv.max)), chord), inner);
+                // With an angle limit the face's normals at the two ends may turn by at most the limit
+                // (its inner edges are the triangulation's business).
+                if (settings_.angle_rad > 0 && f == 0.5) {
+                    const std::optional<Vec3> na = surface_normal(s, ua, va), nb = surface_normal(s, ub, vb);
+                    if (na && nb) need = std::max(need, std::acos(std::clamp(dot(*na, *nb), -1.0, 1.0)) / settings_.angle_rad);
+                }
+            }
+        }
+        return std::isfinite(need) ? need : std::numeric_limits<double>::infinity();
+    }
+
+    // Samples an edge of a trimmed face so that every interval is fine (shrink_needed). The faces' proposals
+    // stay when they are fine (the surface faces' grids meet them without a zipper); else the fewest equal
+    // parameter steps that are (an arc needs one spacing everywhere: bisecting proposals that are 20% too far
+    // apart would double them, and a fillet's corner then took 8 chords per quarter circle where 5 do), and
+    // failing that, every interval that is not fine is halved until all are. Returns whether it changed any.
+    bool refine_for_trimmed(const Edge* edge, std::vector<double>& params, double crease_bound, bool may_respace) {
+        const Interval d = edge->curve.domain();
+        const auto worst_uniform_need = [&](const std::vector<double>& ts) {
+            double uniform = 0;  // equal steps that make every interval fine, from each interval's own need
+            for (std::size_t k = 0; k + 1 < ts.size(); ++k)
+                uniform = std::max(uniform, shrink_needed(edge, ts[k], ts[k + 1], crease_bound) * (d.max - d.min) / (ts[k + 1] - ts[k]));
+            return uniform;
+        };
+        const auto all_fine = [&](const std::vector<double>& ts) {
+            for (std::size_t k = 0; k + 1 < ts.size(); ++k)
+                if (shrink_needed(edge, ts[k], ts[k + 1], crease_bound) > 1) return false;
+            return true;
+        };
+        if (all_fine(params)) return false;
+        const double estimate = std::ceil(worst_uniform_need(params));
+        const double intervals = static_cast<double>(params.size() - 1);
+        if (may_respace && estimate < 2 * intervals) {
+            const auto first = static_cast<std::size_t>(std::max(1.0, estimate));
+            for (std::size_t n = first; n < first + 3 && static_cast<double>(n) < 2 * intervals; ++n) {
+                std::vector<double> uniform(n + 1);
+                for (std::size_t k = 0; k <= n; ++k) uniform[k] = d.min + (d.max - d.min) * static_cast<double>(k) / static_cast<double>(n);
+                uniform.back() = d.max;
+                if (all_fine(uniform)) {
+                    params = std::move(uniform);
+                    return true;
+                }
+            }
+        }
         for (int round = 0; round < 30; ++round) {
             std::vector<double> added;
-            for (std::size_t k = 0; k + 1 < params.size(); ++k) {
-                const double a = params[k], b = params[k + 1];
-                const Vec3 pa = point_at(a), pb = point_at(b);
-                bool fine = true;
-                for (double f : {0.25, 0.5, 0.75}) {
-                    const Vec3 chord = pa + (pb - pa) * f;
-                    if (distance(edge->curve.point(a + f * (b - a)), chord) > settings_.check_tolerance()) fine = false;
-                    for (const EdgeUse& use : edge_uses_[edge]) {
-                        if (!fine || use.face->kind() != Face::Kind::trimmed) continue;
-                        const auto [ua, va] = pcurve_point(use, a);
-                        const auto [ub, vb] = pcurve_point(use, b);
-                        const NurbsSurface& s = use.face->surface();
-                        const Interval su = s.domain_u(), sv = s.domain_v();
-                        const Vec3 on_surface = s.point(std::clamp(ua + f * (ub - ua), su.min, su.max),
-                                                        std::clamp(va + f * (vb - va), sv.min, sv.max));
-                        if (distance(on_surface, chord) > half) fine = false;
-                        // With an angle limit the face's normals at the two ends may turn by at most the limit
-                        // (its inner edges are the triangulation's business).
-                        if (fine && settings_.angle_rad > 0 && f == 0.5) {
-                            const std::optional<Vec3> na = surface_normal(s, ua, va), nb = surface_normal(s, ub, vb);
-                            if (na && nb && std::acos(std::clamp(dot(*na, *nb), -1.0, 1.0)) > settings_.angle_rad) fine = false;
-                        }
-                    }
-                }
-                if (!fine) added.push_back(0.5 * (a + b));
-            }
+            for (std::size_t k = 0; k + 1 < params.size(); ++k)
+                if (shrink_needed(edge, params[k], params[k + 1], crease_bound) > 1) added.push_back(0.5 * (params[k] + params[k + 1]));
             if (added.empty()) break;
-            changed = true;
             // Each round may double the samples: a face whose curve in (u, v) does not follow its edge (a damaged
             // file, found by fuzz_read_step) never converges, and 30 doublings would take minutes and gigabytes.
             const std::size_t cap = std::min<std::size_t>(settings_.max_triangles, kMaxTrimmedEdgeSamples);
@@ -572,7 +609,7 @@ private:
             added.insert(added.end(), params.begin(), params.end());
             params = detail::merge_params(std::move(added), d.min, d.max);
         }
-        return changed;
+        return true;
     }
 
     // A sample a surface face proposes for an edge: one of its lines along it, with the distances to the
