@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iostream>
 
 #include "ratbez/occt/files.hpp"
 
@@ -28,7 +29,10 @@ bool is_model_file(const std::string& path) {
 Input load_input(const std::string& path, const Progress& progress) {
     if (!is_model_file(path)) return Input{{spec::load_spec(path)}, false};
     const bool brep = lowercase_extension(path) == ".brep";
-    std::vector<Solid> solids = brep ? occt::read_brep_all(path, progress) : occt::read_step_all(path, progress);
+    std::string left_out;
+    std::vector<Solid> solids = brep ? occt::read_brep_all(path, progress, &left_out) : occt::read_step_all(path, progress, &left_out);
+    // Faces no solid holds bound no volume: the export goes on without them, and says so.
+    if (!left_out.empty()) std::cerr << "note: '" << path << "': " << left_out << '\n';
     Input input{{}, true};
     input.shapes.reserve(solids.size());
     for (Solid& solid : solids) {

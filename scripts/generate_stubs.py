@@ -174,6 +174,8 @@ KEPT_DUNDERS = ("__init__", "__eq__", "__hash__", "__getstate__", "__setstate__"
 
 
 def class_stub(name, cls):
+    if issubclass(cls, Warning):  # ratbez.ReadWarning: a warnings category, nothing of its own
+        return [f"class {name}({cls.__base__.__name__}):", docstring_of(cls.__doc__, "    ")]
     base = "ValueError" if issubclass(cls, BaseException) else "object"
     lines = [f"class {name}({base}):", docstring_of(cls.__doc__, "    ")]
     if issubclass(cls, BaseException):

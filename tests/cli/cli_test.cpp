@@ -688,6 +688,17 @@ TEST_F(Cli, ExportsEverySolidOfAModelFileIntoOneLibrary) {
     }
 }
 
+TEST_F(Cli, FacesOutsideEverySolidAreLeftOutWithANote) {
+    // FreeCAD's SOT404.stp: four solids and an open shell of 17 faces; the export goes on and says what it left out.
+    const std::string part = "/usr/share/freecad/Mod/Idf/Idflibs/SOT404.stp";
+    if (!fs::exists(part)) GTEST_SKIP() << "FreeCAD's Idf parts are not installed";
+    const CommandResult run = ratbez({"export", part, "-o", path("sot.scad")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.err.find("note: '" + part + "': left out 17 face(s) outside every solid"), std::string::npos) << run.err;
+    const CommandResult clean = ratbez({"info", corpus("two_solids.step")});
+    EXPECT_EQ(clean.err.find("left out"), std::string::npos) << clean.err;
+}
+
 TEST_F(Cli, OneSolidOfAModelFileIsNamedAfterTheOutput) {
     // A solid with a void and a trimmed sphere: exported as any single solid, module after the file written.
     for (const char* input : {"box_with_void.brep", "sphere_minus_box.step"}) {

@@ -271,6 +271,27 @@ TEST(ImportShapes, SeveralSolidsAreRefused) {
     EXPECT_NE(reason.find("holds 2 solids"), std::string::npos) << reason;
 }
 
+TEST(ImportShapes, FacesOutsideEverySolidAreLeftOutAndSaid) {
+    // A solid beside a loose face (an open shell of one face, as SOT404.stp's leads): the solid reads, the face
+    // bounds no volume and is left out, and the caller hears it; nothing to say for the solid alone.
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 1, 2, 3).Shape();
+    const TopoDS_Shape loose = TopExp_Explorer(BRepPrimAPI_MakeBox(gp_Pnt(5, 0, 0), 1, 1, 1).Shape(), TopAbs_FACE).Current();
+    TopoDS_Compound both;
+    BRep_Builder builder;
+    builder.MakeCompound(both);
+    builder.Add(both, box);
+    builder.Add(both, loose);
+    std::string left_out = "not set";
+    const std::vector<Solid> solids = occt::from_occt_all(both, {}, &left_out);
+    ASSERT_EQ(solids.size(), 1u);
+    EXPECT_NEAR(solids.front().volume(), 6.0, 1e-12);
+    EXPECT_NE(left_out.find("left out 1 face(s) outside every solid"), std::string::npos) << left_out;
+    EXPECT_NO_THROW(occt::from_occt(both, {}, &left_out));
+    EXPECT_NE(left_out.find("left out 1 face(s)"), std::string::npos) << left_out;
+    occt::from_occt_all(box, {}, &left_out);
+    EXPECT_EQ(left_out, "");
+}
+
 // The volume OpenCASCADE computes for its own shape, at an epsilon that makes it accurate on analytic faces.
 double occt_volume(const TopoDS_Shape& shape) {
     GProp_GProps properties;

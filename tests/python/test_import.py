@@ -2,6 +2,7 @@
 and a read stops on Ctrl-C."""
 import os
 import signal
+import warnings
 
 import pytest
 
@@ -161,3 +162,21 @@ def test_hostile_files_raise_ratbez_error_naming_file_and_count_and_ctrl_c_lands
 
     ratbez.write_step(ratbez.sphere(2), tmp_path / "outer.step")
     assert ratbez.read_step(tmp_path / "outer.step", progress=read_and_write_again).volume() > 0 and again
+
+
+IDF_SOT404 = "/usr/share/freecad/Mod/Idf/Idflibs/SOT404.stp"
+
+
+@needs_occt
+@pytest.mark.skipif(not os.path.exists(IDF_SOT404), reason="FreeCAD's Idf parts are not installed")
+def test_faces_outside_every_solid_are_left_out_with_a_read_warning():
+    """A real STEP part (FreeCAD's SOT404: four solids and an open shell of 17 faces): the solids read, the shell
+    bounds no volume and is left out, and the reader says so with a ratbez.ReadWarning naming the file."""
+    with pytest.warns(ratbez.ReadWarning, match=r"SOT404\.stp': left out 17 face\(s\) outside every solid"):
+        solids = ratbez.read_step_all(IDF_SOT404)
+    assert len(solids) == 4
+    assert issubclass(ratbez.ReadWarning, UserWarning)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ratbez.ReadWarning)
+        with pytest.raises(ratbez.ReadWarning):
+            ratbez.read_step_all(IDF_SOT404)

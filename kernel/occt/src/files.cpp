@@ -187,12 +187,13 @@ Progress second_half(const Progress& progress) {
 }
 
 // The solids of the named shapes, in order, each named; conversion errors blamed on the file.
-std::vector<Solid> solids_from_file(const std::vector<NamedShape>& shapes, const std::string& path, const Progress& progress) {
+std::vector<Solid> solids_from_file(const std::vector<NamedShape>& shapes, const std::string& path, const Progress& progress,
+                                    std::string* left_out) {
     TopoDS_Compound all;
     BRep_Builder builder;
     builder.MakeCompound(all);
     for (const NamedShape& s : shapes) builder.Add(all, s.shape);
-    std::vector<Solid> solids = blamed_on(path, [&] { return from_occt_all(all, second_half(progress)); });
+    std::vector<Solid> solids = blamed_on(path, [&] { return from_occt_all(all, second_half(progress), left_out); });
     // from_occt_all meets the solids in the compound's order: the shapes', each one's own in turn.
     std::size_t k = 0;
     for (const NamedShape& s : shapes)
@@ -201,7 +202,8 @@ std::vector<Solid> solids_from_file(const std::vector<NamedShape>& shapes, const
 }
 
 // The file's one solid (exactly one, else the error says to read them all).
-Solid one_solid(std::vector<NamedShape> shapes, const std::string& path, const Progress& progress, const char* all) {
+Solid one_solid(std::vector<NamedShape> shapes, const std::string& path, const Progress& progress, const char* all,
+                std::string* left_out) {
     std::size_t count = 0;
     for (const NamedShape& s : shapes)
         for (TopExp_Explorer it(s.shape, TopAbs_SOLID); it.More(); it.Next()) ++count;
@@ -210,7 +212,7 @@ Solid one_solid(std::vector<NamedShape> shapes, const std::string& path, const P
     BRep_Builder builder;
     builder.MakeCompound(compound);
     for (const NamedShape& s : shapes) builder.Add(compound, s.shape);
-    Solid solid = blamed_on(path, [&] { return from_occt(compound, second_half(progress)); });
+    Solid solid = blamed_on(path, [&] { return from_occt(compound, second_half(progress), left_out); });
     for (const NamedShape& s : shapes)
         if (TopExp_Explorer(s.shape, TopAbs_SOLID).More()) solid.set_name(s.name);
     return solid;
@@ -490,12 +492,12 @@ std::string brep_string(const Solid& solid, const ConvertOptions& options) {
     return out.str();
 }
 
-Solid read_step(const std::string& path, const Progress& progress) {
-    return one_solid(read_step_shapes(path, progress), path, progress, "read_step_all");
+Solid read_step(const std::string& path, const Progress& progress, std::string* left_out) {
+    return one_solid(read_step_shapes(path, progress), path, progress, "read_step_all", left_out);
 }
 
-Solid read_brep(const std::string& path, const Progress& progress) {
-    return one_solid(read_brep_shapes(path, progress), path, progress, "read_brep_all");
+Solid read_brep(const std::string& path, const Progress& progress, std::string* left_out) {
+    return one_solid(read_brep_shapes(path, progress), path, progress, "read_brep_all", left_out);
 }
 
 namespace {
@@ -517,12 +519,12 @@ std::vector<Solid> named_after_file(std::vector<Solid> solids, const std::string
 
 }  // namespace
 
-std::vector<Solid> read_step_all(const std::string& path, const Progress& progress) {
-    return named_after_file(solids_from_file(read_step_shapes(path, progress), path, progress), path);
+std::vector<Solid> read_step_all(const std::string& path, const Progress& progress, std::string* left_out) {
+    return named_after_file(solids_from_file(read_step_shapes(path, progress), path, progress, left_out), path);
 }
 
-std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress) {
-    return named_after_file(solids_from_file(read_brep_shapes(path, progress), path, progress), path);
+std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress, std::string* left_out) {
+    return named_after_file(solids_from_file(read_brep_shapes(path, progress), path, progress, left_out), path);
 }
 
 }  // namespace ratbez::occt

@@ -756,7 +756,8 @@ private:
 // size (BRepBuilderAPI_Sewing, what FreeCAD's "Shape from mesh"/"Convert to solid" and CAD translators do),
 // each closed shell made a solid and oriented outward (ShapeFix_Solid). Exporters write pin headers and SMD
 // packages as shells of faces with no solid entity (SHELL_BASED_SURFACE_MODEL in STEP); the faces are exact.
-std::vector<TopoDS_Shape> sewn_solids(const TopoDS_Shape& shape) {
+// The faces of shells that stay open bound no volume: counted in `open_faces`.
+std::vector<TopoDS_Shape> sewn_solids(const TopoDS_Shape& shape, int& open_faces) {
     std::vector<TopoDS_Shape> solids;
     if (!TopExp_Explorer(shape, TopAbs_FACE).More()) return solids;
     Bnd_Box box;
@@ -768,7 +769,10 @@ std::vector<TopoDS_Shape> sewn_solids(const TopoDS_Shape& shape) {
         sewing.Perform();
         for (TopExp_Explorer it(sewing.SewedShape(), TopAbs_SHELL); it.More(); it.Next()) {
             const TopoDS_Shell shell = TopoDS::Shell(it.Current());
-            if (!BRep_Tool::IsClosed(shell)) continue;
+            if (!BRep_Tool::IsClosed(shell)) {
+                for (TopExp_Explorer faces(shell, TopAbs_FACE); faces.More(); faces.Next()) ++open_faces;
+                continue;
+            }
             ShapeFix_Solid fix;
             const TopoDS_Solid solid = fix.SolidFromShell(shell);
             if (!solid.IsNull()) solids.push_back(solid);
@@ -779,11 +783,30 @@ std::vector<TopoDS_Shape> sewn_solids(const TopoDS_Shape& shape) {
     return solids;
 }
 
+// The faces of the shape that no solid of it holds.
+int faces_outside_solids(const TopoDS_Shape& shape, const std::vector<TopoDS_Shape>& solids) {
+    TopTools_IndexedMapOfShape all, in_solids;
+    TopExp::MapShapes(shape, TopAbs_FACE, all);
+    for (const TopoDS_Shape& solid : solids) TopExp::MapShapes(solid, TopAbs_FACE, in_solids);
+    int outside = 0;
+    for (int k = 1; k <= all.Extent(); ++k)
+        if (!in_solids.Contains(all(k))) ++outside;
+    return outside;
+}
+
 // The solids of a shape in the order TopExp_Explorer meets them; a shape of faces without solids is sewn.
-std::vector<TopoDS_Shape> solids_of(const TopoDS_Shape& shape) {
+// `left_out`, if given, says what of the shape no solid holds (empty when nothing).
+std::vector<TopoDS_Shape> solids_of(const TopoDS_Shape& shape, std::string* left_out) {
     std::vector<TopoDS_Shape> solids;
     for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) solids.push_back(it.Current());
-    if (solids.empty()) solids = sewn_solids(shape);
+    int open_faces = 0;
+    if (solids.empty()) solids = sewn_solids(shape, open_faces);
+    else open_faces = faces_outside_solids(shape, solids);
+    if (left_out != nullptr)
+        *left_out = open_faces == 0 || solids.empty()
+                        ? std::string()
+                        : "left out " + std::to_string(open_faces) +
+                              " face(s) outside every solid: they bound no volume (open shells or loose faces)";
     return solids;
 }
 
@@ -801,18 +824,18 @@ std::string what_instead(const TopoDS_Shape& shape) {
 
 }  // namespace
 
-Solid from_occt(const TopoDS_Shape& shape, const Progress& progress) {
+Solid from_occt(const TopoDS_Shape& shape, const Progress& progress, std::string* left_out) {
     require(!shape.IsNull(), "shape", "is empty");
-    const std::vector<TopoDS_Shape> solids = solids_of(shape);
+    const std::vector<TopoDS_Shape> solids = solids_of(shape, left_out);
     require(!solids.empty(), "shape", "holds no solid" + what_instead(shape));
     require(solids.size() == 1, "shape",
             "holds " + std::to_string(solids.size()) + " solids; a ratbez Solid is made from exactly one (read them all with read_step_all / read_brep_all)");
     return Importer(solids.front()).run(progress);
 }
 
-std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress) {
+std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress, std::string* left_out) {
     require(!shape.IsNull(), "shape", "is empty");
-    const std::vector<TopoDS_Shape> solids = solids_of(shape);
+    const std::vector<TopoDS_Shape> solids = solids_of(shape, left_out);
     require(!solids.empty(), "shape", "holds no solid" + what_instead(shape));
     std::vector<Solid> out;
     out.reserve(solids.size());

@@ -473,6 +473,9 @@ class NurbsSurface(object):
     def __hash__(self) -> int:
         ...
 
+class ReadWarning(UserWarning):
+    """A reader left part of a file out: faces no solid holds (open shells, loose faces) bound no volume."""
+
 class Solid(object):
     """A solid bounded by closed shells of exact NURBS faces (an outer shell and any voids)."""
     @property
@@ -709,7 +712,8 @@ def read_brep(path: Path, progress: Optional[Callable[[float], object]] = ...) -
     over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own
     tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of
     another format, a file with no solid, and a face that does not convert ("face 7: a
-    Geom_OffsetSurface face has no exact NURBS form ...").
+    Geom_OffsetSurface face has no exact NURBS form ..."). Faces no solid holds (open shells, loose faces)
+    bound no volume: they are left out with a ratbez.ReadWarning that says how many.
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""
@@ -722,7 +726,8 @@ def read_brep_all(path: Path, progress: Optional[Callable[[float], object]] = ..
     over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own
     tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of
     another format, a file with no solid, and a face that does not convert ("face 7: a
-    Geom_OffsetSurface face has no exact NURBS form ...").
+    Geom_OffsetSurface face has no exact NURBS form ..."). Faces no solid holds (open shells, loose faces)
+    bound no volume: they are left out with a ratbez.ReadWarning that says how many.
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""
@@ -735,7 +740,8 @@ def read_step(path: Path, progress: Optional[Callable[[float], object]] = ...) -
     over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own
     tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of
     another format, a file with no solid, and a face that does not convert ("face 7: a
-    Geom_OffsetSurface face has no exact NURBS form ...").
+    Geom_OffsetSurface face has no exact NURBS form ..."). Faces no solid holds (open shells, loose faces)
+    bound no volume: they are left out with a ratbez.ReadWarning that says how many.
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""
@@ -749,7 +755,8 @@ def read_step_all(path: Path, progress: Optional[Callable[[float], object]] = ..
     over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own
     tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of
     another format, a file with no solid, and a face that does not convert ("face 7: a
-    Geom_OffsetSurface face has no exact NURBS form ...").
+    Geom_OffsetSurface face has no exact NURBS form ..."). Faces no solid holds (open shells, loose faces)
+    bound no volume: they are left out with a ratbez.ReadWarning that says how many.
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""

@@ -99,15 +99,27 @@ const char* const read_doc =
     "over 2 pi, knots that dip) is snapped, loops off their surface are accepted within the file's own\n"
     "tolerance (Face.tolerance). Raises ratbez.Error naming path for a missing or unreadable file, a file of\n"
     "another format, a file with no solid, and a face that does not convert (\"face 7: a\n"
-    "Geom_OffsetSurface face has no exact NURBS form ...\").\n";
+    "Geom_OffsetSurface face has no exact NURBS form ...\"). Faces no solid holds (open shells, loose faces)\n"
+    "bound no volume: they are left out with a ratbez.ReadWarning that says how many.\n";
 
-// A file reader called with the GIL released: the path and the progress callback checked first.
+// ratbez.ReadWarning: a reader left part of the file out (faces no solid holds), set by bind_io.
+PyObject* read_warning = nullptr;
+
+// A file reader called with the GIL released: the path and the progress callback checked first. What the file
+// holds outside its solids (open shells, loose faces) is left out, and said: a ratbez.ReadWarning, which
+// `warnings.simplefilter("error", ratbez.ReadWarning)` turns into an exception.
 template <class Read>
 auto read_released(const py::object& path, const py::object& progress, Read read) {
     const std::string file = to_path(path, "path");
     const Progress polled = python_progress(progress);
-    py::gil_scoped_release release;
-    return read(file, polled);
+    std::string left_out;
+    auto result = [&] {
+        py::gil_scoped_release release;
+        return read(file, polled, &left_out);
+    }();
+    if (!left_out.empty() && PyErr_WarnEx(read_warning, ("'" + file + "': " + left_out).c_str(), 1) != 0)
+        throw py::error_already_set();
+    return result;
 }
 #endif
 
@@ -194,6 +206,14 @@ void export_library(const py::dict& solids, const std::string& file, const py::o
 }  // namespace
 
 void bind_io(py::module_& m) {
+#if RATBEZ_PYTHON_WITH_OCCT
+    read_warning = PyErr_NewExceptionWithDoc(
+        "ratbez.ReadWarning",
+        "A reader left part of a file out: faces no solid holds (open shells, loose faces) bound no volume.",
+        PyExc_UserWarning, nullptr);
+    if (read_warning == nullptr) throw py::error_already_set();
+    m.attr("ReadWarning") = py::reinterpret_borrow<py::object>(read_warning);
+#endif
     m.def(
         "write_text_file",
         [](const py::object& path, const std::string& text) {

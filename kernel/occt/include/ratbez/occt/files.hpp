@@ -29,14 +29,16 @@ std::string brep_string(const Solid& solid, const ConvertOptions& options = {});
 // not STEP / .brep, a file with no solid or several (pointing at read_step_all), and a face that does not
 // convert ("'a.step': face 7: ..."). `progress` gets the fraction done (reading the file is the first half,
 // the faces the second) and may throw to cancel; OpenCASCADE's reader is stopped at its next check.
-Solid read_step(const std::string& path, const Progress& progress = {});
-Solid read_brep(const std::string& path, const Progress& progress = {});
+// `left_out`, if given, gets what of the file no solid holds ("left out 12 face(s) outside every solid: ...",
+// from_occt), or "".
+Solid read_step(const std::string& path, const Progress& progress = {}, std::string* left_out = nullptr);
+Solid read_brep(const std::string& path, const Progress& progress = {}, std::string* left_out = nullptr);
 // Every solid of the file, in file order: a STEP assembly is flattened with each instance's placement (the
 // product structure through OpenCASCADE's XCAF reader) and each solid named after its product; a .brep file's
 // solids in the order its shape holds them. Every solid has a name and no two alike (Solid::name): the file's,
 // else the file's stem (stem_k among several), repeats numbered _2, _3 (instances of one part). Errors as
 // above, a solid's prefixed "solid k: ".
-std::vector<Solid> read_step_all(const std::string& path, const Progress& progress = {});
-std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress = {});
+std::vector<Solid> read_step_all(const std::string& path, const Progress& progress = {}, std::string* left_out = nullptr);
+std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress = {}, std::string* left_out = nullptr);
 
 }  // namespace ratbez::occt

@@ -29,6 +29,7 @@
 // valid shells (Face and Solid validation, brep.hpp). `progress` is called with the fraction of faces done, and
 // may throw to cancel (progress.hpp).
 
+#include <string>
 #include <vector>
 
 #include <TopoDS_Shape.hxx>
@@ -39,9 +40,11 @@
 namespace ratbez::occt {
 
 // The shape's one solid; Error when it holds none (naming what it holds instead) or several (pointing at
-// from_occt_all / read_step_all).
-Solid from_occt(const TopoDS_Shape& shape, const Progress& progress = {});
+// from_occt_all / read_step_all). `left_out`, if given, gets what of the shape no solid holds, in words
+// ("left out 12 face(s) outside every solid: ..."), or "" when nothing: faces of open shells and loose faces
+// bound no volume, and a user should hear that they are not in the solid.
+Solid from_occt(const TopoDS_Shape& shape, const Progress& progress = {}, std::string* left_out = nullptr);
 // Every solid of the shape in the order the shape holds them (TopExp_Explorer), errors prefixed "solid k: ".
-std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress = {});
+std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress = {}, std::string* left_out = nullptr);
 
 }  // namespace ratbez::occt
