@@ -6,6 +6,9 @@ solid at that tolerance. Writes one JSON of rows that bench/report.py turns into
 
   native/<case>/openscad   triangles, deviation and the $fn found
   native/<case>/ours       triangles and deviation of solid.tessellate(tolerance)
+  native/minkowski/<ours|openscad>   seconds of openscad rendering minkowski() { cube([20, 20, 5],
+                           center = true); scale(0.2) ball(); } with ratbez's exported sphere r = 10 at 0.01
+                           as ball(), and with sphere(r = 2, $fn) at the $fn found for it (equal deviation)
 
 Usage: python3 bench/openscad_native.py BUILD_DIR OUT_JSON   (skips, writing no rows, without openscad)
 """
@@ -17,6 +20,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
 CASES = (("sphere_r10_tol0.01", 0.01), ("torus_R10_r3_tol0.01", 0.01))
 
@@ -105,6 +109,29 @@ def torus_case(ratbez, folder, tolerance):
     return solid, best
 
 
+def rendering_seconds(folder, source, files=()):
+    """Wall time of openscad rendering `source` to STL (its convex fast paths or not), best of two."""
+    scad, stl = os.path.join(folder, "timed.scad"), os.path.join(folder, "timed.stl")
+    with open(scad, "w") as f:
+        f.write(source)
+    best = math.inf
+    for _ in range(2):
+        start = time.perf_counter()
+        subprocess.run(["openscad", "-o", stl, scad], check=True, capture_output=True, timeout=1800)
+        best = min(best, time.perf_counter() - start)
+    return best
+
+
+def minkowski_case(ratbez, folder, fn):
+    """Issue 28: minkowski() of a box and a ball, the ball ratbez's (convex since the hull) or OpenSCAD's."""
+    ratbez.export_openscad(ratbez.sphere(10.0), os.path.join(folder, "ball.scad"), 0.01)
+    box = "cube([20, 20, 5], center = true);"
+    ours = rendering_seconds(folder, f"use <ball.scad>\nminkowski() {{ {box} scale(0.2) ball(); }}\n")
+    theirs = rendering_seconds(folder, f"minkowski() {{ {box} sphere(r = 2, $fn = {fn}); }}\n")
+    return ({"name": "native/minkowski/ours", "seconds": ours},
+            {"name": "native/minkowski/openscad", "seconds": theirs, "fn": fn})
+
+
 def main(build, out):
     sys.path.insert(0, os.path.join(build, "kernel", "python"))
     import ratbez
@@ -121,6 +148,9 @@ def main(build, out):
                 rows.append({"name": f"native/{name}/ours", "tolerance": tolerance, "triangles": len(ours.triangles),
                              "deviation": ratbez.max_deviation(solid, ours)})
                 print(rows[-2], rows[-1], file=sys.stderr)
+            sphere_fn = next(r["fn"] for r in rows if r["name"] == "native/sphere_r10_tol0.01/openscad")
+            rows.extend(minkowski_case(ratbez, folder, sphere_fn))
+            print(rows[-2], rows[-1], file=sys.stderr)
     with open(out, "w") as f:
         json.dump({"context": {"openscad": shutil.which("openscad") or ""}, "benchmarks": rows}, f, indent=1)
 

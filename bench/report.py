@@ -245,11 +245,23 @@ def native_rows(table, rows):
                   f"{o['deviation'] / o['tolerance']:.3f}", "", "both <= 1", "")
 
 
+def minkowski_rows(table, rows):
+    """Issue 28: OpenSCAD's minkowski() of a box and our exported ball against the same with its own
+    sphere($fn) at equal deviation: our convex mesh keeps OpenSCAD's convex fast path (within 5x)."""
+    ours, theirs = rows.get("native/minkowski/ours"), rows.get("native/minkowski/openscad")
+    if not ours or not theirs:
+        return
+    ratio = ours["seconds"] / theirs["seconds"]
+    status = "PASS" if ratio <= 5 else "FAIL"
+    table.row(f"native/minkowski box + ball vs sphere($fn = {theirs['fn']})", f"{ours['seconds']:.3g} s",
+              f"{theirs['seconds']:.3g} s", f"{ratio:.2f}", "<= 5", status, verdict=status)
+
+
 SECTIONS = (("evaluation", evaluation_rows), ("tessellation", tessellation_rows), ("tessellation", corpus_rows),
             ("tessellation", bound_rows),
             ("profile_check", profile_rows),
             ("properties", properties_rows), ("modelling", modelling_rows), ("export", export_rows),
-            ("python", python_rows), ("native", native_rows))
+            ("python", python_rows), ("native", native_rows), ("native", minkowski_rows))
 
 
 def main(results, cores):

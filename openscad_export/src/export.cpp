@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "ratbez/convex_hull.hpp"
+#include "ratbez/convexity.hpp"
 #include "ratbez/deviation.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/export/three_mf.hpp"
@@ -327,9 +329,13 @@ WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance
         result.max_deviation = measured(mesh, 0, kFirstDeviation);
         const std::vector<int> candidates = decimal_candidates(mesh, tolerance, result.max_deviation);
         const double share = (kCandidatesEnd - kFirstDeviation) / static_cast<double>(std::max<std::size_t>(candidates.size(), 1));
+        // A convex solid's mesh is convex (tessellate.hpp); rounding can lift a vertex above its neighbours'
+        // plane, and OpenSCAD's minkowski() then leaves its fast path (minutes for a ball): hulled again.
+        const bool convex = is_convex_mesh(mesh) && is_convex(solid);
         for (std::size_t k = 0; k < candidates.size(); ++k) {
             const double from = kFirstDeviation + share * static_cast<double>(k);
             Mesh candidate = rounded_mesh(mesh, candidates[k]);
+            if (convex && !is_convex_mesh(candidate)) candidate = convex_hull(candidate);
             const double deviation = measured(candidate, from, from + share / 3);
             const bool passed = deviation <= tolerance && checked(candidate, from + share / 3, from + share).ok();
             if (!passed) continue;

@@ -24,6 +24,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <tuple>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -40,6 +41,8 @@
 #include "mesh/domain_triangulation.hpp"
 #include "mesh/weight_limit.hpp"
 #include "ratbez/bspline_basis.hpp"
+#include "ratbez/convex_hull.hpp"
+#include "ratbez/convexity.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/solid_transform.hpp"
 #include "ratbez/surface_grid.hpp"
@@ -242,14 +245,18 @@ private:
     }
 
     // The face's unit normal at (u, v) (the surface's limit normal where its partials are parallel), or none
-    // where it has no tangent plane at all (a profile that meets the axis in a cusp): no offset there.
-    static std::optional<Vec3> face_normal(const SurfacePlan& p, double u, double v) {
+    // where it has no tangent plane at all (a profile that meets the axis in a cusp): no offset there. The
+    // limit normals, costly and asked for at the same poles and corners at every refinement of a grid
+    // (grid_points), are kept.
+    std::optional<Vec3> face_normal(const SurfacePlan& p, double u, double v) {
         const detail::SurfaceFirstDerivatives d = p.evaluator->first_derivatives(u, v);
         const Vec3 n = cross(d.su, d.sv);
         const double length = norm(n);
         if (length > 1e-10 * (dot(d.su, d.su) + dot(d.sv, d.sv))) return n / length;
+        const auto [it, inserted] = limit_normals_.try_emplace({p.face, u, v});
+        if (!inserted) return it->second;
         try {
-            return p.face->surface().normal(u, v);
+            return it->second = p.face->surface().normal(u, v);
         } catch (const Error&) {
             return std::nullopt;
         }
@@ -342,6 +349,21 @@ private:
         return it->second;
     }
 
+    // The one limit normal of plan p's surface along its degenerate side `pole`, or none where the normals
+    // around it differ (an apex).
+    std::optional<Vec3> pole_normal(const SurfacePlan& p, Side pole) {
+        const SideMap& m = p.sides[side_slot(pole)];
+        const double fixed = detail::side_parameter(p.face->surface(), pole);
+        auto normal_at = [&](double q) { return runs_along_u(pole) ? face_normal(p, q, fixed) : face_normal(p, fixed, q); };
+        const std::optional<Vec3> n = normal_at(0.5 * (m.p0 + m.p1));
+        if (!n) return std::nullopt;
+        for (double f : {0.0, 0.25, 0.75, 1.0}) {
+            const std::optional<Vec3> other = normal_at(m.p0 + f * (m.p1 - m.p0));
+            if (!other || distance(*other, *n) > 1e-6) return std::nullopt;
+        }
+        return n;
+    }
+
     // The move of a B-rep vertex: as its faces wish (a planar face, an inscribed one: none), nothing at a
     // corner of three or more faces or where a face has no normal, and at a pole only when the surface's
     // limit normal is one direction around it (not at an apex).
@@ -357,17 +379,8 @@ private:
             const SurfacePlan& p = plans_[use.plan];
             cap = std::min(cap, p.max_offset());
             if (use.pole) {
-                const SideMap& m = p.sides[side_slot(*use.pole)];
-                const double fixed = detail::side_parameter(p.face->surface(), *use.pole);
-                auto normal_at = [&](double q) {
-                    return runs_along_u(*use.pole) ? face_normal(p, q, fixed) : face_normal(p, fixed, q);
-                };
-                const std::optional<Vec3> n = normal_at(0.5 * (m.p0 + m.p1));
+                const std::optional<Vec3> n = pole_normal(p, *use.pole);
                 if (!n) return {};
-                for (double f : {0.0, 0.25, 0.75, 1.0}) {
-                    const std::optional<Vec3> other = normal_at(m.p0 + f * (m.p1 - m.p0));
-                    if (!other || distance(*other, *n) > 1e-6) return {};
-                }
                 wishes_.push_back(surface_wish(p, *n, use.u, use.v));
                 continue;
             }
@@ -840,6 +853,7 @@ private:
     std::map<const Vertex*, std::vector<VertexUse>> vertex_uses_;
     std::vector<detail::OffsetWish> wishes_;
     std::map<const Edge*, bool> crease_;
+    std::map<std::tuple<const Face*, double, double>, std::optional<Vec3>> limit_normals_;  // face_normal's
     std::vector<Vec3> side_points_;
 };
 
@@ -985,6 +999,10 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
         // fuzz_geometry — from handing out an open mesh.
         require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
                                            "back on each other, e.g. a profile that runs back over itself)");
+        // A convex solid gets a convex mesh: the straddling offsets follow each face's own spacing, and a
+        // sphere's came out with half its triangles a little out of plane with their neighbours, which
+        // sends OpenSCAD's minkowski() from its convex fast path to decomposition (0.96 s -> 570 s).
+        if (is_convex(s)) return convex_hull(mesh);  // a few flips where the mesh is nearly convex already
         return mesh;
     });
 }

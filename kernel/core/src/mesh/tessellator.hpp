@@ -13,6 +13,7 @@
 //   strips between two rails       strip_zipper.hpp           zip_rails
 //   planar and trimmed faces       domain_triangulation.hpp   triangulate_polygon, triangulate_trimmed_domain
 //                                                             (CGAL's constrained Delaunay triangulation)
+//   a convex solid's mesh          convex_hull.cpp            convex_hull (ratbez/convex_hull.hpp)
 //   the mesh measured afterwards   deviation.cpp              max_deviation (deviation.hpp)
 //
 // Not installed, not part of the public API.
