@@ -4,7 +4,8 @@ dense measurement (ratbez.max_deviation) reads how far each strays from the exac
 keeps the fewest triangles whose deviation is within the tolerance; beside it, ratbez's mesh of the same
 solid at that tolerance. Writes one JSON of rows that bench/report.py turns into the "native" rows.
 
-  native/<case>/openscad   triangles, deviation and the $fn found
+  native/<case>/openscad   triangles, deviation and the $fn found (the sphere also as OpenSCAD users
+                           straddle it: scale(2R / (2R - d)) sphere($fn))
   native/<case>/ours       triangles and deviation of solid.tessellate(tolerance)
   native/minkowski/<ours|openscad>   seconds of openscad rendering minkowski() { cube([20, 20, 5],
                            center = true); scale(0.2) ball(); } with ratbez's exported sphere r = 10 at 0.01
@@ -22,7 +23,7 @@ import sys
 import tempfile
 import time
 
-CASES = (("sphere_r10_tol0.01", 0.01), ("torus_R10_r3_tol0.01", 0.01))
+CASES = (("sphere_r10_tol0.01", 0.01), ("sphere_r10_tol0.01_straddled", 0.01), ("torus_R10_r3_tol0.01", 0.01))
 
 
 def read_ascii_stl(ratbez, text):
@@ -79,6 +80,24 @@ def sphere_case(ratbez, folder, tolerance):
     chord = math.pi / math.acos(1 - tolerance / r)  # segments for the sag alone
     fn, (_, mesh, deviation) = fewest(measure, 3, int(chord * 1.5) + 4)
     return solid, {"triangles": len(mesh.triangles), "deviation": deviation, "fn": fn}
+
+
+def straddled_sphere_case(ratbez, folder, tolerance):
+    """OpenSCAD's own straddling trick: sphere($fn = N) scaled by 2R / (2R - d), d its measured inward
+    deviation, so that its vertices sit d/2 outside and its faces d/2 inside; the fewest N within the
+    tolerance (issue 28: the fair comparison, beside the naive $fn)."""
+    solid, r = ratbez.sphere(10.0), 10.0
+
+    def measure(fn):
+        inward = ratbez.max_deviation(solid, native(ratbez, folder, f"sphere(r = {r}, $fn = {fn});\n"))
+        scale = 2 * r / (2 * r - inward)
+        mesh = native(ratbez, folder, f"scale({scale!r}) sphere(r = {r}, $fn = {fn});\n")
+        deviation = ratbez.max_deviation(solid, mesh)
+        return deviation <= tolerance, mesh, deviation
+
+    chord = math.pi / math.acos(1 - tolerance / r)
+    fn, (_, mesh, deviation) = fewest(measure, 3, int(chord * 1.5) + 4)
+    return solid, {"triangles": len(mesh.triangles), "deviation": deviation, "fn": f"{fn}, scaled"}
 
 
 def torus_case(ratbez, folder, tolerance):
@@ -141,7 +160,7 @@ def main(build, out):
         print("openscad_native.py: no openscad on PATH, no rows", file=sys.stderr)
     else:
         with tempfile.TemporaryDirectory() as folder:
-            for (name, tolerance), case in zip(CASES, (sphere_case, torus_case)):
+            for (name, tolerance), case in zip(CASES, (sphere_case, straddled_sphere_case, torus_case)):
                 solid, theirs = case(ratbez, folder, tolerance)
                 ours = solid.tessellate(tolerance)
                 rows.append({"name": f"native/{name}/openscad", "tolerance": tolerance, **theirs})

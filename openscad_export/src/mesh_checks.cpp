@@ -294,7 +294,13 @@ MeshReport check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
     } else {
         if (report.closed && consistently_oriented) {
             if (options.progress) options.progress(0.15);
-            const std::string problem = orientation_problem(mesh);
+            std::string problem = orientation_problem(mesh);
+            // Each component's volume is taken about its own first vertex; the mesh's, in a frame scaled to
+            // its extent, where coordinates 1e-300 of that extent underflow (fuzz_mesh: a tetrahedron with one
+            // vertex at 4e274 and three near 0 measured 0). A volume the mesh cannot be measured to is refused.
+            if (problem.empty() && !(report.volume > 0))
+                problem = "its volume measures " + format_number(report.volume) +
+                          " in double precision: its coordinates span too many orders of magnitude";
             report.outward = problem.empty();
             if (!report.outward) report.problems.push_back(problem);
         }
