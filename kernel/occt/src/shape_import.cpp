@@ -629,7 +629,7 @@ private:
         // Our parameters are OCCT's exactly for a B-spline face (Segment keeps them) not run backwards.
         const bool same_surface_parameters = spline && !reversed;
 
-        double tolerance = file_tolerance(face);
+        double tolerance = plausible_tolerance(face);
         detail::PcurveFitter fitter(nurbs, size_);
         std::vector<std::vector<Coedge>> loops;
         const TopoDS_Wire outer = BRepTools::OuterWire(face);
@@ -742,7 +742,20 @@ private:
                 loop.push_back(Coedge{entry.edge, (e.Orientation() == TopAbs_REVERSED) != entry.flipped});
             }
         }
-        return Face::planar(plane, std::move(loops), file_tolerance(face));
+        return Face::planar(plane, std::move(loops), plausible_tolerance(face));
+    }
+
+    // The file's tolerance of the face (file_tolerance), refused past 1% of the model's size: a boundary that
+    // far from its surface is a file whose geometry disagrees with itself, not rounding (the soak: a plane
+    // moved 16 off its loops, which OpenCASCADE's reader covered with tolerances of 16 on a 30 x 20 x 8 part;
+    // the volume followed the plane and the mesh the loops, 1,587 against 4,552).
+    double plausible_tolerance(const TopoDS_Face& face) const {
+        const double tolerance = file_tolerance(face);
+        require(tolerance <= 1e-2 * size_, "tolerance", [&] {
+            return "the file lets the face's boundary keep " + std::to_string(tolerance) + " from its surface, more than 1% of "
+                   "the model's size " + std::to_string(size_) + ": its geometry does not agree with itself";
+        });
+        return tolerance;
     }
 
     TopoDS_Shape solid_;
