@@ -580,19 +580,21 @@ private:
     // failing that, every interval that is not fine is halved until all are. Returns whether it changed any.
     bool refine_for_trimmed(const Edge* edge, std::vector<double>& params, double crease_bound, bool may_respace) {
         const Interval d = edge->curve.domain();
-        const auto worst_uniform_need = [&](const std::vector<double>& ts) {
-            double uniform = 0;  // equal steps that make every interval fine, from each interval's own need
-            for (std::size_t k = 0; k + 1 < ts.size(); ++k)
-                uniform = std::max(uniform, shrink_needed(edge, ts[k], ts[k + 1], crease_bound) * (d.max - d.min) / (ts[k + 1] - ts[k]));
-            return uniform;
-        };
         const auto all_fine = [&](const std::vector<double>& ts) {
             for (std::size_t k = 0; k + 1 < ts.size(); ++k)
                 if (shrink_needed(edge, ts[k], ts[k + 1], crease_bound) > 1) return false;
             return true;
         };
-        if (all_fine(params)) return false;
-        const double estimate = std::ceil(worst_uniform_need(params));
+        // One pass over the proposals: whether all are fine, and the equal steps that would make every interval
+        // fine, from each interval's own need.
+        double worst_need = 0, uniform = 0;
+        for (std::size_t k = 0; k + 1 < params.size(); ++k) {
+            const double need = shrink_needed(edge, params[k], params[k + 1], crease_bound);
+            worst_need = std::max(worst_need, need);
+            uniform = std::max(uniform, need * (d.max - d.min) / (params[k + 1] - params[k]));
+        }
+        if (worst_need <= 1) return false;
+        const double estimate = std::ceil(uniform);
         const double intervals = static_cast<double>(params.size() - 1);
         if (may_respace && estimate < 2 * intervals) {
             const auto first = static_cast<std::size_t>(std::max(1.0, estimate));
