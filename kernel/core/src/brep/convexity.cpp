@@ -10,6 +10,8 @@
 #include <optional>
 #include <vector>
 
+#include "ratbez/surface_grid.hpp"
+
 namespace ratbez {
 namespace {
 
@@ -43,16 +45,17 @@ std::optional<Vec3> unit_normal(const Vec3& su, const Vec3& sv) {
 // Whether the surface bends away from its outward normal at every sample: II negative semidefinite, each
 // normal curvature II / I at most `flat` (1 / length) and the Gaussian curvature at least -flat^2.
 bool bends_away(const NurbsSurface& s, double flat) {
-    for (double u : span_samples(s.knots_u(), s.degree_u()))
-        for (double v : span_samples(s.knots_v(), s.degree_v())) {
-            const std::vector<std::vector<Vec3>> d = s.derivatives(u, v, 2);
-            const Vec3 &su = d[1][0], &sv = d[0][1];
-            const std::optional<Vec3> n = unit_normal(su, sv);
-            if (!n) continue;
-            const double E = dot(su, su), F = dot(su, sv), G = dot(sv, sv);
-            const double L = dot(d[2][0], *n), M = dot(d[1][1], *n), N = dot(d[0][2], *n);
-            if (L > flat * E || N > flat * G || L * N - M * M < -flat * flat * (E * G - F * F)) return false;
-        }
+    // All samples in one batched evaluation of the partials up to order two (surface_grid.hpp).
+    const SurfaceGrid g = evaluate_grid(s, span_samples(s.knots_u(), s.degree_u()), span_samples(s.knots_v(), s.degree_v()),
+                                        GridOutput::second_partials);
+    for (std::size_t k = 0; k < g.points.size(); ++k) {
+        const Vec3 su = g.du[k], sv = g.dv[k];
+        const std::optional<Vec3> n = unit_normal(su, sv);
+        if (!n) continue;
+        const double E = dot(su, su), F = dot(su, sv), G = dot(sv, sv);
+        const double L = dot(g.duu[k], *n), M = dot(g.duv[k], *n), N = dot(g.dvv[k], *n);
+        if (L > flat * E || N > flat * G || L * N - M * M < -flat * flat * (E * G - F * F)) return false;
+    }
     return true;
 }
 
@@ -84,16 +87,31 @@ bool corners_bend_away(const NurbsSurface& s) {
         if (!nl || !nr) return true;  // a pole: its neighbours judge
         return dot(right_across, *nl) <= 1e-9 * norm(right_across) && dot(-left_across, *nr) <= 1e-9 * norm(left_across);
     };
-    for (double u : corner_knots(s.knots_u(), s.degree_u()))
-        for (double v : span_samples(s.knots_v(), s.degree_v()))
-            if (!crease_is_convex(s.derivative(u - eu, v, 1, 0), s.derivative(u + eu, v, 1, 0), s.derivative(u, v, 0, 1)))
-                return false;
-    for (double v : corner_knots(s.knots_v(), s.degree_v()))
-        for (double u : span_samples(s.knots_u(), s.degree_u()))
-            // Across a v line by -S_v (from the side above the knot to the side below), so that across x along
-            // = -S_v x S_u is the outward normal S_u x S_v.
-            if (!crease_is_convex(-s.derivative(u, v + ev, 0, 1), -s.derivative(u, v - ev, 0, 1), s.derivative(u, v, 1, 0)))
-                return false;
+    // Each corner knot c as the parameters c - e, c, c + e of one batched evaluation of the partials
+    // (surface_grid.hpp): the one-sided derivatives across the line either side, the one along it at c.
+    auto either_side = [](const std::vector<double>& corners, double e) {
+        std::vector<double> out;
+        for (double c : corners) out.insert(out.end(), {c - e, c, c + e});
+        return out;
+    };
+    const std::vector<double> corners_u = either_side(corner_knots(s.knots_u(), s.degree_u()), eu);
+    if (!corners_u.empty()) {
+        const std::vector<double> vs = span_samples(s.knots_v(), s.degree_v());
+        const SurfaceGrid g = evaluate_grid(s, corners_u, vs, GridOutput::partials);
+        for (std::size_t a = 0; a < corners_u.size(); a += 3)
+            for (std::size_t j = 0; j < vs.size(); ++j)
+                if (!crease_is_convex(g.partial_u(a, j), g.partial_u(a + 2, j), g.partial_v(a + 1, j))) return false;
+    }
+    const std::vector<double> corners_v = either_side(corner_knots(s.knots_v(), s.degree_v()), ev);
+    if (!corners_v.empty()) {
+        const std::vector<double> us = span_samples(s.knots_u(), s.degree_u());
+        const SurfaceGrid g = evaluate_grid(s, us, corners_v, GridOutput::partials);
+        for (std::size_t i = 0; i < us.size(); ++i)
+            for (std::size_t b = 0; b < corners_v.size(); b += 3)
+                // Across a v line by -S_v (from the side above the knot to the side below), so that across x
+                // along = -S_v x S_u is the outward normal S_u x S_v.
+                if (!crease_is_convex(-g.partial_v(i, b + 2), -g.partial_v(i, b), g.partial_u(i, b + 1))) return false;
+    }
     return true;
 }
 
@@ -136,7 +154,8 @@ std::optional<EdgeSide> edge_side(const Face& face, const Coedge& c, std::size_t
     }
     const Interval du = s.domain_u(), dv = s.domain_v();
     u = std::clamp(u, du.min, du.max), v = std::clamp(v, dv.min, dv.max);
-    const Vec3 su = s.derivative(u, v, 1, 0), sv = s.derivative(u, v, 0, 1);
+    const std::vector<std::vector<Vec3>> d = s.derivatives(u, v, 1);
+    const Vec3 &su = d[1][0], &sv = d[0][1];
     const std::optional<Vec3> n = unit_normal(su, sv);
     if (!n) return std::nullopt;
     return EdgeSide{*n, su * uv_left.x + sv * uv_left.y};

@@ -303,6 +303,10 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
                     }
                     const double used = std::abs(k_first[k]) * h_first[a] * h_first[a];
                     const double rest = std::max(full - used, least), twist = std::abs(c.M[k]) * h_first[a];
+                    if (twist == 0) {  // most samples of most faces: the root below squared, without the roots
+                        ratio[b] = std::max(ratio[b], std::abs(k_second[k]) / rest);
+                        continue;
+                    }
                     const double inverse_h2 = (twist + std::sqrt(twist * twist + std::abs(k_second[k]) * rest)) / rest;
                     ratio[b] = std::max(ratio[b], inverse_h2 * inverse_h2);
                 }
@@ -388,19 +392,37 @@ void interior_grid_points(const SurfacePlan& plan, const ParameterGrid& grid, st
     thread_local SurfaceGrid batch;
     const std::size_t nu = grid.u.size(), nv = grid.v.size();
     out.resize(nu * nv);
-    bool offsets = plan.straddle;
-    if (offsets) {
-        try {
-            evaluate_grid(plan.face->surface(), grid.u, grid.v, GridOutput::normals, batch);
-        } catch (const Error&) {
-            offsets = false;  // a grid point without a tangent plane (nor a limit normal): none is moved
+    const NurbsSurface& surface = plan.face->surface();
+    evaluate_grid(surface, grid.u, grid.v, plan.straddle ? GridOutput::partials : GridOutput::points, batch);
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = batch.points[k];
+    if (!plan.straddle) return;
+    // The unit normals from the batch's partials. Where they are nearly parallel the surface's own limit
+    // normal (NurbsSurface::normal, as evaluate_grid's normals would take it), except on a collapsed side:
+    // a pole's points are the pole vertex's (GridPoints), and its limit normals, dear and asked again at
+    // every refinement, would be thrown away.
+    auto on_collapsed_side = [&](std::size_t i, std::size_t j) {
+        return (j == 0 && plan.sides[side_slot(Side::v_min)].degenerate) ||
+               (i + 1 == nu && plan.sides[side_slot(Side::u_max)].degenerate) ||
+               (j + 1 == nv && plan.sides[side_slot(Side::v_max)].degenerate) ||
+               (i == 0 && plan.sides[side_slot(Side::u_min)].degenerate);
+    };
+    thread_local std::vector<Vec3> normals;
+    normals.resize(out.size());
+    for (std::size_t i = 0; i < nu; ++i)
+        for (std::size_t j = 0; j < nv; ++j) {
+            const std::size_t k = i * nv + j;
+            const Vec3 su = batch.du[k], sv = batch.dv[k], n = cross(su, sv);
+            const double scale2 = dot(su, su) + dot(sv, sv);
+            if (dot(n, n) > 1e-12 * scale2 * scale2) normals[k] = n / norm(n);
+            else if (on_collapsed_side(i, j)) normals[k] = Vec3{};
+            else {
+                try {
+                    normals[k] = surface.normal(grid.u[i], grid.v[j]);
+                } catch (const Error&) {
+                    return;  // a grid point without a tangent plane (nor a limit normal): none is moved
+                }
+            }
         }
-    }
-    if (!offsets) {
-        evaluate_grid(plan.face->surface(), grid.u, grid.v, GridOutput::points, batch);
-        for (std::size_t k = 0; k < out.size(); ++k) out[k] = batch.points[k];
-        return;
-    }
     for (std::size_t i = 0; i < nu; ++i)
         for (std::size_t j = 0; j < nv; ++j) {
             const std::size_t k = i * nv + j;
@@ -417,7 +439,7 @@ void interior_grid_points(const SurfacePlan& plan, const ParameterGrid& grid, st
             if (j > 0) near(i, j - 1);
             if (j + 1 < nv) near(i, j + 1);
             const double reach = offset_room(gap, plan.max_offset());
-            out[k] = p + batch.normals[k] * std::clamp(plan.offsets.at(grid.u[i], grid.v[j]), -reach, reach);
+            out[k] = p + normals[k] * std::clamp(plan.offsets.at(grid.u[i], grid.v[j]), -reach, reach);
         }
 }
 
@@ -508,6 +530,24 @@ bool may_straddle(std::span<const Face> faces) {
     return true;
 }
 
+namespace {
+
+// True when no sample of the face is a saddle or twisted (L N >= 0 and M = 0, up to rounding: spheres,
+// cylinders, cones, tori's outer halves, revolutions in their natural parameters): there the straddling
+// model's span is 2 kOffsetShare check_tolerance() against the inscribed one's tolerance, its first
+// direction's share of it as large, and what remains for the second direction larger too, so it never
+// needs more cells than the inscribed grid, which need not be chosen to be compared.
+bool straddling_is_cheaper(const CurvatureSamples& c) {
+    for (std::size_t k = 0; k < c.L.size(); ++k) {
+        const double L = c.L[k], N = c.N[k], scale = std::abs(L) + std::abs(N);
+        if (L * N < 0 && std::min(std::abs(L), std::abs(N)) > 1e-9 * scale) return false;
+        if (std::abs(c.M[k]) > 1e-9 * scale) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, CurvatureSamples& curvature,
                       bool straddle) {
     // The curvature samples cost memory and time like triangles do (about 200 bytes each): a face
@@ -544,8 +584,10 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
     auto choose = [&] {
         const ParameterGrid straddling = choose_grid(curvature, settings.check_tolerance(), settings.angle_rad,
                                                      plan.min_segments, plan.creases, max_cells(settings), true);
-        ParameterGrid inscribed = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments,
-                                              plan.creases, max_cells(settings), false);
+        ParameterGrid inscribed;
+        if (!straddle || straddling.u.empty() || !straddling_is_cheaper(curvature))
+            inscribed = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments, plan.creases,
+                                    max_cells(settings), false);
         plan.straddle = straddle && !straddling.u.empty() && (inscribed.u.empty() || straddling.cells() < inscribed.cells());
         plan.target = plan.straddle ? settings.check_tolerance() : settings.tolerance;
         plan.grid = plan.straddle ? straddling : std::move(inscribed);
@@ -756,9 +798,17 @@ void plan_surfaces(std::span<const Face> faces, const TessellationSettings& sett
     };
     if (const double total = planned_total(); total > static_cast<double>(settings.max_triangles))
         throw TooFine(total, settings.max_triangles);
+    // stale[k]: the points along face k's sides may have moved since its cells were last checked (a face
+    // refined after it changed its grid and offsets).
+    std::vector<char> stale(plans.size(), 0);
+    auto others_moved = [&](std::size_t k) {
+        for (std::size_t j = 0; j < plans.size(); ++j)
+            if (j != k) stale[j] = 1;
+    };
     for (std::size_t k = 0; k < plans.size(); ++k) {
         settings.report(kPlannedFraction * static_cast<double>(k) / static_cast<double>(plans.size()));
-        refine_grid(plans[k], curvatures[k], settings, points);
+        stale[k] = 0;
+        if (refine_grid(plans[k], curvatures[k], settings, points)) others_moved(k);
         if (const double total = planned_total(); total > static_cast<double>(settings.max_triangles))
             throw TooFine(total, settings.max_triangles);
     }
@@ -768,16 +818,18 @@ void plan_surfaces(std::span<const Face> faces, const TessellationSettings& sett
     // The points along a face's sides move as the faces on both sides wish (and a face that took lines
     // across a crease has new offsets): the faces refined before a neighbour were checked with points that
     // have moved since. Checked again with the final points, all cells of a face whose grid changed, the
-    // cells along the sides of the others, until no face changes (bounded: a change is rare after the first
-    // round).
+    // cells along the sides of the others whose points may have moved, until no face changes (bounded: a
+    // change is rare after the first round). A solid with one surface face (a sphere, a cylinder) was
+    // checked with its final points already.
     std::vector<char> changed(plans.size());
     for (std::size_t k = 0; k < plans.size(); ++k) {
         changed[k] = static_cast<std::size_t>(plans[k].grid.cells()) != cells_before[k];
-        if (changed[k]) set_offsets(plans[k], curvatures[k]);
+        if (changed[k]) set_offsets(plans[k], curvatures[k]), others_moved(k);
     }
     for (int round = 0; round < 4; ++round) {
         bool any = false;
         for (std::size_t k = 0; k < plans.size(); ++k) {
+            if (!changed[k] && !stale[k]) continue;
             RefineStart start;
             start.rescale = false;
             if (!changed[k]) {
@@ -789,7 +841,9 @@ void plan_surfaces(std::span<const Face> faces, const TessellationSettings& sett
                 start.check_u = ring(plans[k].grid.u.size() - 1);
                 start.check_v = ring(plans[k].grid.v.size() - 1);
             }
+            stale[k] = 0;
             changed[k] = refine_grid(plans[k], curvatures[k], settings, points, start) ? 1 : 0;
+            if (changed[k]) others_moved(k);
             any = any || changed[k];
         }
         if (!any) break;
