@@ -153,6 +153,12 @@ class Finder(ast.NodeVisitor):
         return []
 
     def visit_Assign(self, node):
+        # A property shared by several features: _ALIGN = ("App::PropertyBool", "Align", _tip(...), True): its
+        # display name (the tooltip is a _tip call, found by visit_Call).
+        value = node.value
+        if (isinstance(value, ast.Tuple) and len(value.elts) > 1 and (_string(value.elts[0]) or "").startswith(PROPERTY)
+                and _string(value.elts[1])):
+            self.add(PROPERTY, display_name(value.elts[1].value))
         # Mode tables: _AXIS_MODES = [("Vertical", "Vertical axis of the profile"), ...]: the second elements.
         for target in node.targets:
             if isinstance(target, ast.Name) and target.id.endswith("_MODES") and isinstance(node.value, ast.List):

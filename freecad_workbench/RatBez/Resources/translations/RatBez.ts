@@ -20,6 +20,11 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
+        <source>Align</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/features.py"/>
         <source>Angle</source>
         <translation type="unfinished"></translation>
     </message>
@@ -427,6 +432,11 @@
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Start Tangent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/features.py"/>
+        <source>Start Vertices</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -6,17 +6,22 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>A point on the axis of revolution: typed for AxisMode Custom, else the axis used</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Punkt auf der Drehachse: bei Achsmodus Custom eingegeben, sonst von der verwendeten Achse übernommen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>A straight edge or a datum line to revolve about (AxisMode Reference). AxisPoint and AxisDirection follow it</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine gerade Kante oder eine Bezugslinie als Drehachse (Achsmodus Reference). Achspunkt und Achsrichtung folgen ihr</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>A straight edge or datum line giving the direction when DirectionMode is Edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine gerade Kante oder Bezugslinie, die die Richtung angibt, wenn Richtungsmodus Edge ist</translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/features.py"/>
+        <source>Align</source>
+        <translation>Ausrichten</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -26,7 +31,7 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Angle of revolution in degrees, in (0, 360]; other values are refused. The profile turns counterclockwise about AxisDirection (clockwise with Reversed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Drehwinkel in Grad, in (0, 360]; andere Werte werden abgelehnt. Das Profil dreht sich gegen den Uhrzeigersinn um die Achsrichtung (mit Umgekehrt im Uhrzeigersinn)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -76,37 +81,37 @@
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Close the curve smoothly back to the first point (a periodic B-spline, smooth at the first point too)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kurve glatt zum ersten Punkt zurückführen und schließen (ein periodischer B-Spline, auch am ersten Punkt glatt)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Closed</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschlossen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Closed planar profile to extrude: a sketch, a 2D object, a wire, edges or one face. Closed loops inside the outer one (a face&apos;s holes, inner loops of a sketch) become holes through the solid</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschlossenes ebenes Profil zum Extrudieren: eine Skizze, ein 2D-Objekt, ein Kantenzug, Kanten oder eine Fläche. Geschlossene Konturen innerhalb der äußeren (die Löcher einer Fläche, innere Konturen einer Skizze) werden zu Löchern durch den Körper</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Closed planar profile to sweep: a sketch, a 2D object, a wire, edges or one face (without holes), crossing the path (not in a plane containing the path&apos;s starting tangent)</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschlossenes ebenes Profil, das entlang des Pfads geführt wird: eine Skizze, ein 2D-Objekt, ein Kantenzug, Kanten oder eine Fläche (ohne Löcher); es muss den Pfad kreuzen (darf nicht in einer Ebene liegen, die die Anfangstangente des Pfads enthält)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Closed planar profiles to loft through, in order (at least two): sketches, 2D objects, wires, edges or faces without holes, each entirely in front of the previous one&apos;s plane. The solid is capped by the first and last</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschlossene ebene Profile, durch die der Loft führt, in Reihenfolge (mindestens zwei): Skizzen, 2D-Objekte, Kantenzüge, Kanten oder Flächen ohne Löcher, jedes vollständig vor der Ebene des vorherigen. Der Körper wird vom ersten und letzten abgeschlossen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Control net, row by row: (DegreeU + 1) rows along u of (DegreeV + 1) poles along v. Changing a degree regenerates a flat net over the same extent</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontrollnetz, Zeile für Zeile: (Grad U + 1) Zeilen entlang u mit je (Grad V + 1) Polen entlang v. Das Ändern eines Grades erzeugt ein ebenes Netz über dieselbe Ausdehnung neu</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Control points; the degree is their number minus one</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontrollpunkte; der Grad ist ihre Anzahl minus eins</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
@@ -127,22 +132,22 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Degree in u: the net has DegreeU + 1 rows of poles</source>
-        <translation type="unfinished"></translation>
+        <translation>Grad in u: das Netz hat Grad U + 1 Zeilen von Polen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Degree in v: every row has DegreeV + 1 poles</source>
-        <translation type="unfinished"></translation>
+        <translation>Grad in v: jede Zeile hat Grad V + 1 Pole</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Degree of the curve (needs at least Degree + 1 points, fewer with end tangents)</source>
-        <translation type="unfinished"></translation>
+        <translation>Grad der Kurve (braucht mindestens Grad + 1 Punkte, mit Endtangenten weniger)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Degree of the surface across the sections (at most the number of sections minus one is used); the surface passes through every section exactly</source>
-        <translation type="unfinished"></translation>
+        <translation>Grad der Fläche quer zu den Querschnitten (verwendet wird höchstens die Anzahl der Querschnitte minus eins); die Fläche verläuft exakt durch jeden Querschnitt</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -162,27 +167,27 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Direction of the axis of revolution: typed for AxisMode Custom, else the axis used</source>
-        <translation type="unfinished"></translation>
+        <translation>Richtung der Drehachse: bei Achsmodus Custom eingegeben, sonst von der verwendeten Achse übernommen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Direction of the cone&apos;s axis (any non-zero length)</source>
-        <translation type="unfinished"></translation>
+        <translation>Richtung der Kegelachse (beliebige Länge ungleich null)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Direction of the cylinder&apos;s axis (any non-zero length)</source>
-        <translation type="unfinished"></translation>
+        <translation>Richtung der Zylinderachse (beliebige Länge ungleich null)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Direction of the extrusion when DirectionMode is Custom (any non-zero length)</source>
-        <translation type="unfinished"></translation>
+        <translation>Richtung der Extrusion, wenn Richtungsmodus Custom ist (beliebige Länge ungleich null)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Direction of the torus&apos; axis (any non-zero length)</source>
-        <translation type="unfinished"></translation>
+        <translation>Richtung der Torusachse (beliebige Länge ungleich null)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -192,17 +197,17 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Distance from the axis to the center of the tube (must exceed MinorRadius)</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand von der Achse zur Mitte des Rohrs (muss größer als Kleiner Radius sein)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>End Tangent</source>
-        <translation type="unfinished"></translation>
+        <translation>Endtangente</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>End Tangents</source>
-        <translation type="unfinished"></translation>
+        <translation>Endtangenten</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -217,7 +222,7 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Extrude Distance / 2 to each side of the profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand / 2 zu jeder Seite des Profils extrudieren</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -227,12 +232,12 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>First closed planar profile: a sketch, a 2D object, a wire, edges or one face (without holes)</source>
-        <translation type="unfinished"></translation>
+        <translation>Erstes geschlossenes ebenes Profil: eine Skizze, ein 2D-Objekt, ein Kantenzug, Kanten oder eine Fläche (ohne Löcher)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Give the curve&apos;s direction at its ends (StartTangent, EndTangent); open curves only</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Richtung der Kurve an ihren Enden vorgeben (Starttangente, Endtangente); nur für offene Kurven</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -242,17 +247,17 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Height of the cone along its axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe des Kegels entlang seiner Achse</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Height of the cylinder along its axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe des Zylinders entlang seiner Achse</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Join consecutive sections by straight rulings (degree 1 across)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufeinanderfolgende Querschnitte durch Geraden verbinden (Grad 1 quer)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -262,12 +267,12 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Largest distance in mm from the true sweep where it is not rational (straight and circular paths give the exact solid); &gt; 0</source>
-        <translation type="unfinished"></translation>
+        <translation>Größter Abstand in mm vom wahren Sweep, wo dieser nicht rational ist (gerade und kreisförmige Pfade ergeben den exakten Körper); &gt; 0</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Length of the extrusion along the direction; a negative Distance extrudes the other way</source>
-        <translation type="unfinished"></translation>
+        <translation>Länge der Extrusion entlang der Richtung; ein negativer Abstand extrudiert in die andere Richtung</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -277,7 +282,7 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Match the profiles by arc length: each runs the same way, each starts where the rulings to the one before it are shortest (least twist), and every corner or joint of one meets the point of the other at the same fraction of its length; the first profile&apos;s start vertex sets the seam. Off: the profiles&apos; start vertices and parameters are matched as they are</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Profile nach Bogenlänge zuordnen: alle laufen in dieselbe Richtung, jedes beginnt dort, wo die Verbindungsgeraden zum vorherigen am kürzesten sind (geringste Verdrehung), und jede Ecke oder Verbindungsstelle des einen trifft den Punkt des anderen beim selben Bruchteil seiner Länge; der Startpunkt des ersten Profils legt die Naht fest. Aus: Startpunkte und Parameter der Profile werden so zugeordnet, wie sie sind</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -287,22 +292,22 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Normal: along the profile&apos;s normal (a sketch&apos;s or face&apos;s normal); Edge: along DirectionReference; Custom: along Direction</source>
-        <translation type="unfinished"></translation>
+        <translation>Normal: entlang der Normalen des Profils (der Normalen einer Skizze oder Fläche); Edge: entlang Richtungsreferenz; Custom: entlang Richtung</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>One weight &gt; 0 per pole for a rational curve; empty for a polynomial curve</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Gewicht &gt; 0 je Pol für eine rationale Kurve; leer für eine polynomiale Kurve</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>One weight &gt; 0 per pole, in the order of Poles, for a rational surface; empty for a polynomial surface</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Gewicht &gt; 0 je Pol, in der Reihenfolge der Pole, für eine rationale Fläche; leer für eine polynomiale Fläche</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Parameterization</source>
-        <translation type="unfinished"></translation>
+        <translation>Parametrisierung</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -312,12 +317,12 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Path to sweep along: a sketch, a wire or edges making one tangent-continuous chain. The profile is carried with a rotation-minimising frame; a closed path closes the solid on itself</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfad, entlang dem das Profil geführt wird: eine Skizze, ein Kantenzug oder Kanten, die eine tangentenstetige Kette bilden. Das Profil wird mit einem rotationsminimierenden Dreibein mitgeführt; ein geschlossener Pfad schließt den Körper in sich</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Points</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkte</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -332,7 +337,7 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Profile to revolve: a sketch, a 2D object, a wire, edges or one face (without holes). It must be closed, or open with both ends on the axis, and must not cross the axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Zu rotierendes Profil: eine Skizze, ein 2D-Objekt, ein Kantenzug, Kanten oder eine Fläche (ohne Löcher). Es muss geschlossen sein oder offen mit beiden Enden auf der Achse, und es darf die Achse nicht kreuzen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -352,7 +357,7 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Radius of the base circle (at Center)</source>
-        <translation type="unfinished"></translation>
+        <translation>Radius des Grundkreises (am Mittelpunkt)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -367,7 +372,7 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Radius of the top circle (0 for a pointed cone)</source>
-        <translation type="unfinished"></translation>
+        <translation>Radius des Deckkreises (0 für einen spitzen Kegel)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -397,12 +402,12 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Revolve Angle / 2 to each side of the profile instead of Angle to one side</source>
-        <translation type="unfinished"></translation>
+        <translation>Um Winkel / 2 zu jeder Seite des Profils rotieren statt um Winkel zu einer Seite</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Revolve the other way (clockwise about AxisDirection)</source>
-        <translation type="unfinished"></translation>
+        <translation>In die andere Richtung rotieren (im Uhrzeigersinn um die Achsrichtung)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -412,7 +417,7 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Second closed planar profile, entirely in front of the first one&apos;s plane; straight rulings join the two (matched as Align says)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zweites geschlossenes ebenes Profil, vollständig vor der Ebene des ersten; Geraden verbinden die beiden (zugeordnet, wie Ausrichten es festlegt)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -422,17 +427,22 @@
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Source</source>
-        <translation type="unfinished"></translation>
+        <translation>Quelle</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Start Tangent</source>
-        <translation type="unfinished"></translation>
+        <translation>Starttangente</translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/features.py"/>
+        <source>Start Vertices</source>
+        <translation>Startpunkte</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD&apos;s Shape.Area agrees with it to about 1e-9 (see ExactVolume)</source>
-        <translation type="unfinished"></translation>
+        <translation>Oberfläche des exakten Körpers, berechnet vom ratbez-Kern, in mm^2. FreeCADs Shape.Area stimmt damit auf etwa 1e-9 überein (siehe Exaktes Volumen)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -442,22 +452,22 @@
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>The direction the curve arrives at its last point in</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Richtung, in der die Kurve an ihrem letzten Punkt ankommt</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>The direction the curve leaves its first point in</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Richtung, in der die Kurve ihren ersten Punkt verlässt</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>The points to pass through, in order (used when Source is empty)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Punkte, durch die die Kurve verläuft, in Reihenfolge (verwendet, wenn Quelle leer ist)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>The vertex each profile starts at, in profile order, counted from 1 along its edges (0 or missing: where the profile starts). With Align only the first profile&apos;s matters (the seam); without, every profile&apos;s start is matched to the others&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Knotenpunkt, an dem jedes Profil beginnt, in der Reihenfolge der Profile, gezählt ab 1 entlang seiner Kanten (0 oder fehlend: wo das Profil beginnt). Mit Ausrichten zählt nur der des ersten Profils (die Naht); ohne wird der Anfang jedes Profils dem der anderen zugeordnet</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -467,12 +477,12 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Vertical / Horizontal: the profile plane&apos;s vertical or horizontal axis (a sketch&apos;s V or H axis), found again at every recompute, so the axis moves with the sketch; X, Y, Z: a global axis; Reference: AxisReference; Custom: AxisPoint and AxisDirection</source>
-        <translation type="unfinished"></translation>
+        <translation>Vertical / Horizontal: die vertikale oder horizontale Achse der Profilebene (V- oder H-Achse einer Skizze), bei jeder Neuberechnung neu bestimmt, sodass die Achse mit der Skizze mitwandert; X, Y, Z: eine globale Achse; Reference: Achsreferenz; Custom: Achspunkt und Achsrichtung</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per face, as Part makes them, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9</source>
-        <translation type="unfinished"></translation>
+        <translation>Volumen des exakten Körpers, berechnet vom ratbez-Kern (zertifizierte Gauß-Quadratur auf den exakten Flächen), in mm^3, ohne Platzierung. FreeCADs eigenes Shape.Volume, Part &gt; Geometrie überprüfen und Messen lesen die B-Spline-Flächen, die RatBez an FreeCAD übergibt (eine je Fläche, wie Part sie erzeugt, jeder Bogen in einer exakten Form, die die feste Gauß-Regel von OpenCASCADE liest), und stimmen damit auf etwa 1e-9 überein</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -482,12 +492,12 @@
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Where along the curve each point falls: chord (steps as long as the distances, Eq. 9.5), centripetal (their square roots, Eq. 9.6: no overshoot at sharp turns) or uniform (Eq. 9.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo entlang der Kurve jeder Punkt liegt: chord (Schritte so lang wie die Abstände, Gl. 9.5), centripetal (deren Quadratwurzeln, Gl. 9.6: kein Überschwingen an scharfen Knicken) oder uniform (Gl. 9.3)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>Where the points come from, in order: selected vertices, or a Draft wire or B-spline (its points), or any object (its vertices). Empty: the Points list</source>
-        <translation type="unfinished"></translation>
+        <translation>Woher die Punkte kommen, in Reihenfolge: ausgewählte Knotenpunkte, ein Draft-Linienzug oder Draft-B-Spline (seine Punkte) oder ein beliebiges Objekt (seine Knotenpunkte). Leer: die Liste Punkte</translation>
     </message>
 </context>
 <context>
@@ -495,27 +505,27 @@
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>&apos;{}&apos; has no edges</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;{}&apos; hat keine Kanten</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>&apos;{}&apos; has no element {} ({})</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;{}&apos; hat kein Element {} ({})</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>&apos;{}&apos; has no shape</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;{}&apos; hat keine Form</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>&apos;{}&apos; is a solid or has several faces; select one face or its edges</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;{}&apos; ist ein Volumenkörper oder hat mehrere Flächen; eine Fläche oder ihre Kanten auswählen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>(keine)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -525,7 +535,7 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Add point</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt hinzufügen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -540,7 +550,7 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Align sections (least twist)</source>
-        <translation type="unfinished"></translation>
+        <translation>Querschnitte ausrichten (geringste Verdrehung)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -550,7 +560,7 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Append a pole beyond the last one (the degree goes up by one)</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen Pol nach dem letzten anhängen (der Grad steigt um eins)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -605,7 +615,7 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Closed</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschlossen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
@@ -615,37 +625,37 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Create a rational Bézier curve; its poles and weights are edited in a table</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine rationale Bézierkurve erzeugen; ihre Pole und Gewichte werden in einer Tabelle bearbeitet</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Create a rational Bézier surface patch; its degrees, poles and weights are edited in a table</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein rationales Bézierflächenstück erzeugen; Grade, Pole und Gewichte werden in einer Tabelle bearbeitet</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Create an exact rational (truncated) cone solid</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen exakten rationalen (Stumpf-)Kegel erzeugen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Create an exact rational cylinder solid</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen exakten rationalen Zylinder erzeugen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Create an exact rational sphere solid</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine exakte rationale Kugel erzeugen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Create an exact rational torus solid</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen exakten rationalen Torus erzeugen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_command.py"/>
         <source>Create the B-spline curve through the selected vertices (in the order picked), through a selected Draft wire&apos;s or B-spline&apos;s points, or through points edited in the task panel (The NURBS Book A9.1: chord-length, centripetal or uniform parameters; closed curves; end tangents)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die B-Spline-Kurve durch die ausgewählten Knotenpunkte (in der Reihenfolge der Auswahl), durch die Punkte eines ausgewählten Draft-Linienzugs oder Draft-B-Splines oder durch im Aufgabenbereich bearbeitete Punkte erzeugen (The NURBS Book A9.1: Sehnenlängen-, zentripetale oder gleichmäßige Parameter; geschlossene Kurven; Endtangenten)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
@@ -675,7 +685,7 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Degree</source>
-        <translation type="unfinished"></translation>
+        <translation>Grad</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -726,17 +736,17 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>End tangent</source>
-        <translation type="unfinished"></translation>
+        <translation>Endtangente</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>End tangents</source>
-        <translation type="unfinished"></translation>
+        <translation>Endtangenten</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>Export (OpenSCAD, 3MF)</source>
-        <translation type="unfinished"></translation>
+        <translation>Export (OpenSCAD, 3MF)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/dialogs.py"/>
@@ -766,7 +776,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Extrude the selected closed planar sketch, wire, edges or face into an exact prism; inner loops become holes. Direction (the profile&apos;s normal to start with), distance, reversed and symmetric are set in the task panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählte geschlossene ebene Skizze, den Kantenzug, die Kanten oder die Fläche zu einem exakten Prisma extrudieren; innere Konturen werden zu Löchern. Richtung (anfangs die Normale des Profils), Abstand, Umkehrung und Symmetrie werden im Aufgabenbereich eingestellt</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -776,12 +786,12 @@
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>Folder the export dialog starts in; it remembers the last one used</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordner, in dem der Exportdialog beginnt; er merkt sich den zuletzt verwendeten</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>For developers: besides the one-line message, a failed recompute prints the Python traceback (every time), as FreeCAD does for an exception</source>
-        <translation type="unfinished"></translation>
+        <translation>Für Entwickler: Zusätzlich zur einzeiligen Meldung gibt eine fehlgeschlagene Neuberechnung (jedes Mal) den Python-Traceback aus, wie FreeCAD es bei einer Ausnahme tut</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -791,22 +801,22 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_command.py"/>
         <source>Interpolate points</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkte interpolieren</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Interpolate the selected vertices (in the order picked), or the points of the selected Draft wire or B-spline, or the selected object&apos;s vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählten Knotenpunkte (in der Reihenfolge der Auswahl), die Punkte des ausgewählten Draft-Linienzugs oder Draft-B-Splines oder die Knotenpunkte des ausgewählten Objekts interpolieren</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Join the two selected closed planar profiles (sketches, wires, edges or faces without holes) by straight rulings into an exact solid capped by them; the profiles can be changed in the task panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Die beiden ausgewählten geschlossenen ebenen Profile (Skizzen, Kantenzüge, Kanten oder Flächen ohne Löcher) durch Geraden zu einem exakten Körper verbinden, der von ihnen abgeschlossen wird; die Profile können im Aufgabenbereich geändert werden</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/dialogs.py"/>
         <source>Largest distance between the mesh and the exact surfaces (Automatic: the kernel&apos;s default, 1e-3 of the solid&apos;s size)</source>
-        <translation type="unfinished"></translation>
+        <translation>Größter Abstand zwischen dem Netz und den exakten Flächen (Automatisch: der Standardwert des Kerns, 1e-3 der Größe des Körpers)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -821,7 +831,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Loft an exact solid through the selected closed planar profiles, in the order selected, passing through each exactly and capped by the first and last; the sections, their order, the degree across them and ruled lofting are set in the task panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen exakten Körper als Loft durch die ausgewählten geschlossenen ebenen Profile erzeugen, in der Reihenfolge der Auswahl, exakt durch jedes hindurch und vom ersten und letzten abgeschlossen; die Querschnitte, ihre Reihenfolge, der Grad quer zu ihnen und ein Loft aus Regelflächen werden im Aufgabenbereich eingestellt</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -861,27 +871,27 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>OpenCASCADE Bézier curves have at most {} poles, got {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Bézierkurven in OpenCASCADE haben höchstens {} Pole, hier sind es {}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>OpenCASCADE could not read the kernel&apos;s B-rep ({})</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCASCADE konnte die B-Rep des Kerns nicht lesen ({})</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>OpenCASCADE&apos;s geometry departs from the kernel&apos;s by {:.3g}</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenCASCADEs Geometrie weicht um {:.3g} von der des Kerns ab</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Own points</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigene Punkte</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Parameterization</source>
-        <translation type="unfinished"></translation>
+        <translation>Parametrisierung</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -891,17 +901,17 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Picked edge or datum line</source>
-        <translation type="unfinished"></translation>
+        <translation>Gewählte Kante oder Bezugslinie</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Points from</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkte aus</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Press, select the path&apos;s edges or its sketch in the 3D view or the tree, and press Done</source>
-        <translation type="unfinished"></translation>
+        <translation>Drücken, die Kanten des Pfads oder seine Skizze in der 3D-Ansicht oder der Baumansicht auswählen und Fertig drücken</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
@@ -916,22 +926,22 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Profile&apos;s horizontal axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Horizontale Achse des Profils</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Profile&apos;s normal</source>
-        <translation type="unfinished"></translation>
+        <translation>Normale des Profils</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Profile&apos;s vertical axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Vertikale Achse des Profils</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>P{}</source>
-        <translation type="unfinished"></translation>
+        <translation>P{}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -981,7 +991,7 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>RatBez interpolate</source>
-        <translation type="unfinished"></translation>
+        <translation>RatBez-Interpolation</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -1017,7 +1027,8 @@
         <location filename="../../ratbez_wb/commands.py"/>
         <source>RatBez: cannot check &apos;{}&apos;: {}
 </source>
-        <translation type="unfinished"></translation>
+        <translation>RatBez: &apos;{}&apos; kann nicht geprüft werden: {}
+</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -1060,7 +1071,7 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Remove point</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt entfernen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -1070,7 +1081,7 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Remove the selected pole, or the last one</source>
-        <translation type="unfinished"></translation>
+        <translation>Den ausgewählten Pol entfernen, sonst den letzten</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -1090,7 +1101,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Revolve the selected sketch, wire, edges or face into an exact solid; the axis (the profile&apos;s vertical axis to start with, as a sketch&apos;s V axis), the angle and a symmetric revolution are set in the task panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählte Skizze, den Kantenzug, die Kanten oder die Fläche zu einem exakten Körper rotieren; die Achse (anfangs die vertikale Achse des Profils, wie die V-Achse einer Skizze), der Winkel und eine symmetrische Rotation werden im Aufgabenbereich eingestellt</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
@@ -1130,7 +1141,7 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Select two or more vertices, a Draft wire or B-spline, or an object first</source>
-        <translation type="unfinished"></translation>
+        <translation>Zuerst zwei oder mehr Knotenpunkte, einen Draft-Linienzug oder Draft-B-Spline oder ein Objekt auswählen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -1145,27 +1156,27 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Start tangent</source>
-        <translation type="unfinished"></translation>
+        <translation>Starttangente</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Start vertex of the selected section</source>
-        <translation type="unfinished"></translation>
+        <translation>Startpunkt des ausgewählten Querschnitts</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Start vertex, first</source>
-        <translation type="unfinished"></translation>
+        <translation>Startpunkt, erstes Profil</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Start vertex, second</source>
-        <translation type="unfinished"></translation>
+        <translation>Startpunkt, zweites Profil</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>Stop following the selection: interpolate the table of points below</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Auswahl nicht mehr folgen: die Punkttabelle unten interpolieren</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
@@ -1175,7 +1186,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Sweep the selected closed planar profile along a path (selected second, or picked in the task panel) into a solid: exact along straight lines and circular arcs, within a tolerance elsewhere; the profile keeps its attitude to the path (rotation-minimising frame)</source>
-        <translation type="unfinished"></translation>
+        <translation>Das ausgewählte geschlossene ebene Profil entlang eines Pfads (als zweites ausgewählt oder im Aufgabenbereich gewählt) zu einem Körper führen: exakt entlang Geraden und Kreisbögen, sonst innerhalb einer Toleranz; das Profil behält seine Ausrichtung zum Pfad (rotationsminimierendes Dreibein)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -1185,7 +1196,7 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>The axis: the profile plane&apos;s vertical or horizontal axis (a sketch&apos;s V or H axis), a global axis through the origin, a straight edge or datum line picked in the 3D view or the tree, or any point and direction</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Achse: die vertikale oder horizontale Achse der Profilebene (V- oder H-Achse einer Skizze), eine globale Achse durch den Ursprung, eine in der 3D-Ansicht oder der Baumansicht gewählte gerade Kante oder Bezugslinie oder ein beliebiger Punkt mit Richtung</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -1231,22 +1242,22 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>a loft needs at least 2 sections, got {}</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Loft braucht mindestens 2 Querschnitte, vorhanden sind {}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>an edge cannot be converted to a NURBS curve</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Kante kann nicht in eine NURBS-Kurve umgewandelt werden</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>an edge gives an inconsistent B-spline ({} knots for {} poles of degree {})</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Kante ergibt einen inkonsistenten B-Spline ({} Knoten für {} Pole vom Grad {})</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>an edge of type {} cannot be converted to a NURBS curve</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Kante vom Typ {} kann nicht in eine NURBS-Kurve umgewandelt werden</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
@@ -1256,32 +1267,32 @@
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>edge {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Kante {}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>element {} of &apos;{}&apos; is a {}, not an edge or a face</source>
-        <translation type="unfinished"></translation>
+        <translation>Element {} von &apos;{}&apos; ist vom Typ {}, weder Kante noch Fläche</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>internal error: {}</source>
-        <translation type="unfinished"></translation>
+        <translation>interner Fehler: {}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>is a face; a path is a sketch, a wire or edges</source>
-        <translation type="unfinished"></translation>
+        <translation>ist eine Fläche; ein Pfad ist eine Skizze, ein Kantenzug oder Kanten</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>is not a number: &apos;{}&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>ist keine Zahl: &apos;{}&apos;</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>is not closed; an extrusion needs a closed profile</source>
-        <translation type="unfinished"></translation>
+        <translation>ist nicht geschlossen; eine Extrusion braucht ein geschlossenes Profil</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
@@ -1291,47 +1302,47 @@
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>its loops make {} separate regions; make one feature per region</source>
-        <translation type="unfinished"></translation>
+        <translation>seine Konturen bilden {} getrennte Bereiche; für jeden Bereich ein eigenes Objekt erstellen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>its own start</source>
-        <translation type="unfinished"></translation>
+        <translation>eigener Anfang</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>its {} closed loops do not make a face ({})</source>
-        <translation type="unfinished"></translation>
+        <translation>seine {} geschlossenen Konturen ergeben keine Fläche ({})</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>its {} edges form {} separate chains; a path is one chain</source>
-        <translation type="unfinished"></translation>
+        <translation>seine {} Kanten bilden {} getrennte Ketten; ein Pfad ist eine einzige Kette</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>its {} edges form {} separate chains; a profile is one chain, or closed loops that nest</source>
-        <translation type="unfinished"></translation>
+        <translation>seine {} Kanten bilden {} getrennte Ketten; ein Profil ist eine einzige Kette oder ineinanderliegende geschlossene Konturen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>must be a length &gt; 0 (mm), got {:g}</source>
-        <translation type="unfinished"></translation>
+        <translation>muss eine Länge &gt; 0 (mm) sein, ist aber {:g}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>must be a non-zero length (negative: the other way)</source>
-        <translation type="unfinished"></translation>
+        <translation>muss eine Länge ungleich null sein (negativ: in die andere Richtung)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>must be in (0, 360] degrees, got {:g}</source>
-        <translation type="unfinished"></translation>
+        <translation>muss in (0, 360] Grad liegen, ist aber {:g}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>must have finite coordinates, got {}</source>
-        <translation type="unfinished"></translation>
+        <translation>muss endliche Koordinaten haben, ist aber {}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -1346,152 +1357,152 @@
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>one weight per pole is needed ({}), got {}</source>
-        <translation type="unfinished"></translation>
+        <translation>je Pol wird ein Gewicht benötigt ({}), vorhanden sind {}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>point {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt {}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>pole {}</source>
-        <translation type="unfinished"></translation>
+        <translation>Pol {}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>press Select..., select its edges or its sketch in the 3D view or the tree, then press Done</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswählen... drücken, seine Kanten oder seine Skizze in der 3D-Ansicht oder der Baumansicht auswählen, dann Fertig drücken</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>section {} ({})</source>
-        <translation type="unfinished"></translation>
+        <translation>Querschnitt {} ({})</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>select a closed planar profile first (and then the path, or pick it in the task panel)</source>
-        <translation type="unfinished"></translation>
+        <translation>zuerst ein geschlossenes ebenes Profil auswählen (und dann den Pfad, oder ihn im Aufgabenbereich wählen)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>select a sketch, a wire, edges or one face first</source>
-        <translation type="unfinished"></translation>
+        <translation>zuerst eine Skizze, einen Kantenzug, Kanten oder eine Fläche auswählen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>select a straight edge or a datum line</source>
-        <translation type="unfinished"></translation>
+        <translation>eine gerade Kante oder eine Bezugslinie auswählen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>select at least two closed planar profiles, in order, first</source>
-        <translation type="unfinished"></translation>
+        <translation>zuerst mindestens zwei geschlossene ebene Profile in Reihenfolge auswählen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>select its edges or its sketch in the 3D view or the tree, then press Done</source>
-        <translation type="unfinished"></translation>
+        <translation>seine Kanten oder seine Skizze in der 3D-Ansicht oder der Baumansicht auswählen, dann Fertig drücken</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>select one face, or edges, not both</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Fläche oder Kanten auswählen, nicht beides</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>select one straight edge or a datum line</source>
-        <translation type="unfinished"></translation>
+        <translation>eine einzige gerade Kante oder eine Bezugslinie auswählen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>select two closed planar profiles first</source>
-        <translation type="unfinished"></translation>
+        <translation>zuerst zwei geschlossene ebene Profile auswählen</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>start vertex {} does not exist: the profile has {} vertices (0 for its own start)</source>
-        <translation type="unfinished"></translation>
+        <translation>Startpunkt {} existiert nicht: das Profil hat {} Knotenpunkte (0 für seinen eigenen Anfang)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>the Bézier surface does not give a valid face</source>
-        <translation type="unfinished"></translation>
+        <translation>die Bézierfläche ergibt keine gültige Fläche</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>the edge has no length</source>
-        <translation type="unfinished"></translation>
+        <translation>die Kante hat keine Länge</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>the face has {} hole(s); a face with holes cannot be revolved (select its outer edges)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Fläche hat Löcher ({}); eine Fläche mit Löchern kann nicht rotiert werden (ihre äußeren Kanten auswählen)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>the face has {} hole(s); lofts, ruled solids and sweeps take profiles without holes (select the outer edges)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Fläche hat Löcher ({}); Lofts, Regelflächenkörper und Sweeps nehmen nur Profile ohne Löcher (die äußeren Kanten auswählen)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>the kernel&apos;s B-rep could not be read by OpenCASCADE</source>
-        <translation type="unfinished"></translation>
+        <translation>die B-Rep des Kerns konnte von OpenCASCADE nicht gelesen werden</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>the kernel&apos;s B-rep holds {} solids instead of one</source>
-        <translation type="unfinished"></translation>
+        <translation>die B-Rep des Kerns enthält {} Volumenkörper statt einem</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>the kernel&apos;s B-rep is not a valid OpenCASCADE solid</source>
-        <translation type="unfinished"></translation>
+        <translation>die B-Rep des Kerns ist kein gültiger OpenCASCADE-Volumenkörper</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
         <source>the net needs (DegreeU + 1) x (DegreeV + 1) = {} poles, got {}</source>
-        <translation type="unfinished"></translation>
+        <translation>das Netz braucht (Grad U + 1) x (Grad V + 1) = {} Pole, vorhanden sind {}</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>the profile has no edges</source>
-        <translation type="unfinished"></translation>
+        <translation>das Profil hat keine Kanten</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>the solid reaches {:.3g} from the origin, more than OpenCASCADE can hold (1e99)</source>
-        <translation type="unfinished"></translation>
+        <translation>der Körper reicht bis {:.3g} vom Ursprung, mehr als OpenCASCADE fassen kann (1e99)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_panel.py"/>
         <source>the table below</source>
-        <translation type="unfinished"></translation>
+        <translation>der Tabelle unten</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>weight</source>
-        <translation type="unfinished"></translation>
+        <translation>Gewicht</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>{} has no points to interpolate</source>
-        <translation type="unfinished"></translation>
+        <translation>{} hat keine Punkte zum Interpolieren</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/conversion.py"/>
         <source>{} of &apos;{}&apos; is not straight</source>
-        <translation type="unfinished"></translation>
+        <translation>{} von &apos;{}&apos; ist nicht gerade</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>{} of {} is not a number: &apos;{}&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>{} von {} ist keine Zahl: &apos;{}&apos;</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
         <source>{}: {} is not a vertex</source>
-        <translation type="unfinished"></translation>
+        <translation>{}: {} ist kein Knotenpunkt</translation>
     </message>
 </context>
 <context>
@@ -1530,7 +1541,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Check the selected solids (RatBez, Part, PartDesign, imported) against OpenCASCADE: B-rep validity, deviation of the evaluations, volumes and areas; the report goes to the report view</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählten Körper (RatBez, Part, PartDesign, importiert) mit OpenCASCADE prüfen: Gültigkeit der B-Rep, Abweichung der Auswertungen, Volumen und Flächeninhalte; der Bericht erscheint im Ausgabefenster</translation>
     </message>
 </context>
 <context>
@@ -1569,7 +1580,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Write the selected solids as one OpenSCAD library (.scad: a module per solid in its colour, and one placing them all) or one 3MF file (an object per solid, named and coloured): watertight meshes within a chosen tolerance of the exact surfaces</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählten Körper als eine OpenSCAD-Bibliothek (.scad: ein Modul je Körper in seiner Farbe und eines, das sie alle platziert) oder als eine 3MF-Datei (ein Objekt je Körper, benannt und eingefärbt) schreiben: wasserdichte Netze innerhalb einer gewählten Toleranz zu den exakten Flächen</translation>
     </message>
 </context>
 <context>
@@ -1582,7 +1593,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Extrude the selected closed planar sketch, wire, edges or face into an exact prism; inner loops become holes. Direction (the profile&apos;s normal to start with), distance, reversed and symmetric are set in the task panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählte geschlossene ebene Skizze, den Kantenzug, die Kanten oder die Fläche zu einem exakten Prisma extrudieren; innere Konturen werden zu Löchern. Richtung (anfangs die Normale des Profils), Abstand, Umkehrung und Symmetrie werden im Aufgabenbereich eingestellt</translation>
     </message>
 </context>
 <context>
@@ -1590,12 +1601,12 @@
     <message>
         <location filename="../../ratbez_wb/interpolate_command.py"/>
         <source>Create the B-spline curve through the selected vertices (in the order picked), through a selected Draft wire&apos;s or B-spline&apos;s points, or through points edited in the task panel (The NURBS Book A9.1: chord-length, centripetal or uniform parameters; closed curves; end tangents)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die B-Spline-Kurve durch die ausgewählten Knotenpunkte (in der Reihenfolge der Auswahl), durch die Punkte eines ausgewählten Draft-Linienzugs oder Draft-B-Splines oder durch im Aufgabenbereich bearbeitete Punkte erzeugen (The NURBS Book A9.1: Sehnenlängen-, zentripetale oder gleichmäßige Parameter; geschlossene Kurven; Endtangenten)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/interpolate_command.py"/>
         <source>Interpolate points</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkte interpolieren</translation>
     </message>
 </context>
 <context>
@@ -1608,7 +1619,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Loft an exact solid through the selected closed planar profiles, in the order selected, passing through each exactly and capped by the first and last; the sections, their order, the degree across them and ruled lofting are set in the task panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen exakten Körper als Loft durch die ausgewählten geschlossenen ebenen Profile erzeugen, in der Reihenfolge der Auswahl, exakt durch jedes hindurch und vom ersten und letzten abgeschlossen; die Querschnitte, ihre Reihenfolge, der Grad quer zu ihnen und ein Loft aus Regelflächen werden im Aufgabenbereich eingestellt</translation>
     </message>
 </context>
 <context>
@@ -1621,7 +1632,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Revolve the selected sketch, wire, edges or face into an exact solid; the axis (the profile&apos;s vertical axis to start with, as a sketch&apos;s V axis), the angle and a symmetric revolution are set in the task panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählte Skizze, den Kantenzug, die Kanten oder die Fläche zu einem exakten Körper rotieren; die Achse (anfangs die vertikale Achse des Profils, wie die V-Achse einer Skizze), der Winkel und eine symmetrische Rotation werden im Aufgabenbereich eingestellt</translation>
     </message>
 </context>
 <context>
@@ -1629,7 +1640,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Join the two selected closed planar profiles (sketches, wires, edges or faces without holes) by straight rulings into an exact solid capped by them; the profiles can be changed in the task panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Die beiden ausgewählten geschlossenen ebenen Profile (Skizzen, Kantenzüge, Kanten oder Flächen ohne Löcher) durch Geraden zu einem exakten Körper verbinden, der von ihnen abgeschlossen wird; die Profile können im Aufgabenbereich geändert werden</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
@@ -1660,7 +1671,7 @@
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
         <source>Sweep the selected closed planar profile along a path (selected second, or picked in the task panel) into a solid: exact along straight lines and circular arcs, within a tolerance elsewhere; the profile keeps its attitude to the path (rotation-minimising frame)</source>
-        <translation type="unfinished"></translation>
+        <translation>Das ausgewählte geschlossene ebene Profil entlang eines Pfads (als zweites ausgewählt oder im Aufgabenbereich gewählt) zu einem Körper führen: exakt entlang Geraden und Kreisbögen, sonst innerhalb einer Toleranz; das Profil behält seine Ausrichtung zum Pfad (rotationsminimierendes Dreibein)</translation>
     </message>
 </context>
 <context>
