@@ -2,6 +2,7 @@
 folder, each language file follows it, and each compiled .qm gives the translations its .ts holds (read by
 Qt's own QTranslator, as FreeCAD loads them). English makes the property group read "RatBez"."""
 import pathlib
+import re
 import subprocess
 import sys
 import xml.etree.ElementTree as ElementTree
@@ -45,4 +46,10 @@ def test_english_turns_the_split_group_name_back_and_german_translates_the_comma
     german = {(c, s): t for c, s, t in finished(TRANSLATIONS / "RatBez_de.ts")}
     assert german[("App::Property", "Rat Bez")] == "RatBez"
     assert german[("RatBez_Cone", "Cone")] == "Kegel"
-    assert len(german) > 150
+    # Every string in German, each keeping its source's placeholders ({}, {:g}, %1) in order.
+    sources = [m.findtext("source") for m in ElementTree.parse(TRANSLATIONS / "RatBez_de.ts").iter("message")]
+    untranslated = sorted(set(sources) - {s for _, s in german})
+    assert not untranslated, "{} German strings unfinished: {}".format(len(untranslated), untranslated[:3])
+    placeholders = re.compile(r"\{[^{}]*\}|%\d+")
+    mismatched = [s for (_, s), t in german.items() if placeholders.findall(s) != placeholders.findall(t)]
+    assert not mismatched, "German placeholders differ from the source: {}".format(mismatched[:3])

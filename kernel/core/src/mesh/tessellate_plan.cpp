@@ -824,7 +824,10 @@ void plan_surfaces(std::span<const Face> faces, const TessellationSettings& sett
     std::vector<char> changed(plans.size());
     for (std::size_t k = 0; k < plans.size(); ++k) {
         changed[k] = static_cast<std::size_t>(plans[k].grid.cells()) != cells_before[k];
-        if (changed[k]) set_offsets(plans[k], curvatures[k]), others_moved(k);
+        if (changed[k]) {
+            set_offsets(plans[k], curvatures[k]);
+            others_moved(k);
+        }
     }
     for (int round = 0; round < 4; ++round) {
         bool any = false;
