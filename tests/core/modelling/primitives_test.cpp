@@ -114,6 +114,25 @@ TEST(Primitives, TopologyMatchesTheDocumentedFaceStructure) {
     EXPECT_EQ(ring.euler_characteristic(), 0);
 }
 
+// Found by the FreeCAD BOP grid (issue 25): a pole's control point is one ulp of its coordinates off the
+// axis (1.4e-14 at 100), which the revolution took for a circle while the face, which allows the rounding of
+// coordinates that far out, saw a collapsed side: "side v_min collapses to a point and needs a degenerate
+// edge" for a sphere r = 0.01 at (100, 0, 0).
+TEST(Primitives, SmallPrimitivesFarFromTheOriginHavePoles) {
+    for (const double radius : {1e-3, 1e-2, 0.5, 1e3})
+        for (const Vec3& center : {Vec3{100, 0, 0}, Vec3{0, 0, 100}, Vec3{37, 0, 0}, Vec3{1e3, 0, 0},
+                                   Vec3{12345.678, 0, -999.5}, Vec3{1e4, -1e4, 1e4}}) {
+            SCOPED_TRACE(testing::Message() << "radius " << radius << " at (" << center.x << ", " << center.y << ", "
+                                            << center.z << ")");
+            const Solid ball = sphere(radius, center);
+            EXPECT_TRUE(ball.faces()[0].sides()[0].edge->degenerate);
+            EXPECT_TRUE(ball.faces()[0].sides()[2].edge->degenerate);
+            EXPECT_EQ(ball.euler_characteristic(), 2);
+            EXPECT_TRUE(cone(0, radius, radius, center, {1, 2, 3}).faces()[0].sides()[0].edge->degenerate);
+            EXPECT_TRUE(cone(radius, 0, radius, center).faces()[0].sides()[2].edge->degenerate);
+        }
+}
+
 TEST(Primitives, NormalsPointOutOfTheSolid) {
     for (int trial = 0; trial < 3; ++trial) {
         const Placement at = random_placement();

@@ -20,6 +20,7 @@
 
 #include "analysis/cubature.hpp"
 #include "brep/brep_build.hpp"
+#include "brep/consistency.hpp"
 #include "geometry/arcs.hpp"
 #include "geometry/clamping.hpp"
 #include "geometry/subdivision.hpp"
@@ -168,6 +169,9 @@ NurbsSurface revolve_surface(const NurbsCurve& profile, const Vec3& axis_point, 
     const detail::ArcLayout arc = detail::arc_layout(0.0, angle_deg);
     const std::vector<Vec4>& profile_points = profile.homogeneous_points();
     const double size = profile.control_box().diagonal();
+    Box extent = profile.control_box();
+    extent.add(axis_point);
+    const double far_rounding = detail::coordinate_rounding(detail::reach_of(extent));
     const std::size_t rows = arc.weights.size(), columns = profile_points.size();
     std::vector<Vec4> net(rows * columns);
     for (std::size_t j = 0; j < columns; ++j) {
@@ -177,8 +181,10 @@ NurbsSurface revolve_surface(const NurbsCurve& profile, const Vec3& axis_point, 
         Vec3 foot = axis_point + d * dot(relative, d);  // O_j, the foot of Q_j on the axis
         Vec3 x = q - foot;                              // radial part; y = d x x is x turned by 90°
         // A control point within rounding of the axis is put on it, so that a profile ending on the axis
-        // gives an exactly collapsed row (a pole) rather than a circle of radius 1e-17.
-        if (norm(x) <= 1e-13 * std::max(norm(relative), size)) x = {};
+        // gives an exactly collapsed row (a pole) rather than a circle of radius 1e-17. Rounding of the
+        // profile's size, or of coordinates as far out as the point (a sphere r = 0.01 at (100, 0, 0): its
+        // pole's control point is 1.4e-14 off the axis, one ulp of 100, which is 1.4e-12 of the radius).
+        if (norm(x) <= 1e-13 * std::max(norm(relative), size) + far_rounding) x = {};
         const Vec3 y = cross(d, x);
         for (std::size_t i = 0; i < rows; ++i) {
             const Vec3 p = foot + x * arc.cos_coefficient[i] + y * arc.sin_coefficient[i];
@@ -223,8 +229,10 @@ detail::RevolutionShell detail::build_revolution(const std::vector<NurbsCurve>& 
         const Vec3 first = project(s.homogeneous_point(0, column));
         const Vec3 last = project(s.homogeneous_point(s.rows() - 1, column));
         // revolve_surface puts a control point on the axis exactly (its whole row is the foot point), but
-        // H{w P} = (w P) / w may round differently for each arc weight: compare to rounding, not exactly.
-        const double rounding = 1e-13 * s.control_box().diagonal();
+        // H{w P} = (w P) / w may round differently for each arc weight: compare to rounding (of the size and
+        // of coordinates as far out, as Face::from_surface judges a collapsed side), not exactly.
+        const Box box = s.control_box();
+        const double rounding = 1e-13 * box.diagonal() + detail::coordinate_rounding(detail::reach_of(box));
         bool collapsed = true;
         for (int i = 0; i < s.rows(); ++i)
             collapsed = collapsed && distance(project(s.homogeneous_point(i, column)), first) <= rounding;
