@@ -10,6 +10,8 @@
 //    edge (into the face) does not rise above the other face's tangent plane.
 // Sampled, so a dent narrower than the samples can go unseen; within 1e-9 of the solid's size per unit of
 // curvature and of slope, flat is convex (a cylinder's rulings, a tangent edge).
+// A solid whose construction record (construction.hpp) is a cylinder, a cone or a sphere is convex by that
+// record, without sampling: the record is its builder's promise, as for its closed-form volume.
 // tessellate() uses it to hand out convex meshes of convex solids (a mesh within the tolerance of a convex
 // solid has a convex hull within the same tolerance), which OpenSCAD's hull() and minkowski() take fast.
 

@@ -164,6 +164,9 @@ std::optional<EdgeSide> edge_side(const Face& face, const Coedge& c, std::size_t
 }  // namespace
 
 bool is_convex(const Solid& solid) {
+    const Construction& record = solid.construction();
+    if (record.get<Construction::Cylinder>() || record.get<Construction::Cone>() || record.get<Construction::Sphere>())
+        return true;
     if (solid.shells().size() != 1) return false;
     const double size = solid.bounding_box().diagonal();
     if (!(size > 0)) return false;

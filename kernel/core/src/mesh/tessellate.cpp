@@ -387,6 +387,11 @@ private:
     // corner of three or more faces or where a face has no normal, and at a pole along pole_normal (not at a
     // sharp apex).
     Vec3 vertex_offset(const Vertex* vertex) {
+        const auto [known, inserted] = vertex_offsets_.try_emplace(vertex);
+        if (inserted) known->second = wished_vertex_offset(vertex);
+        return known->second;
+    }
+    Vec3 wished_vertex_offset(const Vertex* vertex) {
         if (used_by_trimmed(vertex)) return {};
         wishes_.clear();
         double cap = std::numeric_limits<double>::infinity();
@@ -424,6 +429,7 @@ private:
     // on its sides what the shared edge samples, poles and corners get.
     void grid_points(const SurfacePlan& p, std::vector<Vec3>& out) {
         index_uses();
+        vertex_offsets_.clear();  // a plan may have changed since the last call
         detail::interior_grid_points(p, p.grid, out);
         const std::size_t nu = p.grid.u.size(), nv = p.grid.v.size();
         for (Side side : kSides) {
@@ -469,6 +475,7 @@ private:
     // cell, as before the offsets.
     void sample_edges() {
         index_uses();  // a solid of trimmed and planar faces only has no plan that asked for it yet
+        vertex_offsets_.clear();  // the plans are final from here on
         for (const EdgePtr& edge : distinct_edges(faces_)) {
             EdgeSamples samples;
             if (edge->degenerate) {
@@ -880,6 +887,9 @@ private:
     std::vector<detail::OffsetWish> wishes_;
     std::map<const Edge*, bool> crease_;
     std::map<std::tuple<const Face*, double, double>, std::optional<Vec3>> limit_normals_;  // face_normal's
+    // vertex_offset's answers while the plans stay as they are (a vertex is asked for at every corner and
+    // edge end that meets it): cleared by grid_points and once more by sample_edges.
+    std::map<const Vertex*, Vec3> vertex_offsets_;
     std::vector<Vec3> side_points_;
 };
 
