@@ -460,6 +460,48 @@ def test_the_preferences_page_has_its_icon():
 
 
 @suite.test
+def test_the_preferences_switch_primitives_between_analytic_and_bspline():
+    # Issue 25: primitives on Part's analytic surfaces by default (BOP check, booleans as Part's); the RatBez
+    # preferences page's check box turns them into the kernel's B-spline faces, and OK rebuilds the open ones.
+    from ratbez_wb import features, preferences
+    new_document("PrimitiveGeometry")
+    sphere, panel = run_command("RatBez_Sphere")
+    panel.accept()
+    process_events()
+    check(type(sphere.Shape.Faces[0].Surface).__name__ == "Sphere", "analytic by default")
+    seen = []
+
+    def untick():
+        for window in QtGui.QApplication.topLevelWidgets():
+            if window.isVisible() and window.metaObject().className() == "Gui::Dialog::DlgPreferencesImp":
+                for pages in window.findChildren(QtGui.QListWidget):
+                    for row in range(pages.count()):
+                        if pages.item(row).text() == "RatBez":
+                            pages.setCurrentRow(row)
+                process_events(0.3)
+                boxes = [box for box in window.findChildren(QtGui.QCheckBox) if "analytic surfaces" in box.text()]
+                seen.extend(box.isChecked() for box in boxes)
+                for box in boxes:
+                    box.setChecked(False)
+                window.grab().save(os.path.join(SHOTS, "preferences_primitive_geometry.png"))
+                window.accept()
+                return
+        QtCore.QTimer.singleShot(200, untick)
+    try:
+        QtCore.QTimer.singleShot(300, untick)
+        Gui.runCommand("Std_DlgPreferences")
+        process_events()
+        check(seen == [True], "the page's check box, ticked by default: {}".format(seen))
+        check(not preferences.analytic_primitives(), "OK saved the preference")
+        check(type(sphere.Shape.Faces[0].Surface).__name__ == "BSplineSurface", "the open sphere rebuilt as B-spline")
+        close(sphere.Shape.Volume, sphere.ExactVolume, 1e-6, "B-spline sphere Shape.Volume")
+    finally:
+        preferences.set_analytic_primitives(True)
+        features.rebuild_primitives()
+    check(type(sphere.Shape.Faces[0].Surface).__name__ == "Sphere", "analytic again")
+
+
+@suite.test
 def test_the_property_group_reads_RatBez():
     # Issue 25: the property editor split the group name into "Rat Bez".
     new_document("Group")

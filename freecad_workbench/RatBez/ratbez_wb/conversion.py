@@ -10,13 +10,16 @@ an outer loop and holes by FreeCAD's own face maker (Part::FaceMakerBullseye), a
 ratbez -> FreeCAD: a solid is handed over as OpenCASCADE's .brep text of its exact B-spline B-rep
 (ratbez.brep_string: one face per face of the kernel, as Part makes them, with every arc in its exact one-span
 form so that FreeCAD's Shape.Volume, Area and CenterOfMass read the exact values and "Run BOP check" passes;
-only a face with a crease goes over as Bézier patches), never as a mesh.
+only a face with a crease goes over as Bézier patches), never as a mesh. A cylinder, cone, sphere or torus goes
+over, by default, as Part's own primitive on the analytic surface its construction record names (the same exact
+shape): OpenCASCADE's booleans, fillets and BOP check treat those specially, and no B-spline form of a sphere
+passes the BOP check everywhere (see shape_from_solid).
 """
 
 import FreeCAD as App
 import Part
 
-from . import kernel
+from . import kernel, preferences
 from .errors import Failure
 from .i18n import translate
 
@@ -384,8 +387,16 @@ def straight_line(link, prop):
 # ---------------------------------------------------------------------------------------------------
 # ratbez -> FreeCAD
 
-def shape_from_solid(solid):
-    """The exact B-spline B-rep of a ratbez solid as a valid Part.Solid (one face per face of the kernel)."""
+def shape_from_solid(solid, analytic=None):
+    """The solid as a valid Part.Solid: Part's analytic primitive for a cylinder, cone, sphere or torus when
+    `analytic` (None: the workbench preference, preferences.analytic_primitives), else the exact B-spline B-rep,
+    one face per face of the kernel.
+
+    Why analytic by default: OpenCASCADE exempts its analytic surfaces from the BOP check's face
+    self-intersection search, which flags a B-spline sphere (OpenCASCADE's own toNurbs() sphere too) at some
+    placements because of its poles, and cuts them several times faster (a sphere minus a box through its
+    seams and a pole: 1.8 s as a B-spline, 9 ms analytic). Both are the same exact shape; the kernel's own
+    solid stays behind the object for ExactVolume and the exports."""
     # OpenCASCADE takes coordinates from 1e100 on as infinite (Precision::Infinite is 2e100): the kernel
     # builds such a solid (up to its own limit of 1e100), FreeCAD's shape cannot hold it.
     (low, high) = solid.bounding_box()
@@ -393,6 +404,33 @@ def shape_from_solid(solid):
     if reach > 1e99:
         raise Failure("", translate("the solid reaches {:.3g} from the origin, more than OpenCASCADE can hold "
                                     "(1e99)").format(reach))
+    if analytic is None:
+        analytic = preferences.analytic_primitives()
+    shape = analytic_primitive(solid) if analytic else None
+    if shape is None:
+        shape = _bspline_shape(solid)
+    if not shape.isValid():
+        raise Failure("", translate("the kernel's B-rep is not a valid OpenCASCADE solid"))
+    return shape
+
+
+def analytic_primitive(solid):
+    """Part's own cylinder, cone, sphere or torus with the parameters of the solid's construction record
+    (solid.kind, solid.parameters: the kernel keeps them through moves, turns and uniform scalings), or None
+    for any other kind."""
+    p = solid.parameters
+    if solid.kind == "sphere":
+        return Part.makeSphere(p["radius"], V(*p["center"]))
+    if solid.kind == "cylinder":
+        return Part.makeCylinder(p["radius"], p["height"], V(*p["center"]), V(*p["axis"]))
+    if solid.kind == "cone":
+        return Part.makeCone(p["radius1"], p["radius2"], p["height"], V(*p["center"]), V(*p["axis"]))
+    if solid.kind == "torus":
+        return Part.makeTorus(p["major_radius"], p["minor_radius"], V(*p["center"]), V(*p["axis"]))
+    return None
+
+
+def _bspline_shape(solid):
     text = kernel.ratbez().brep_string(solid)
     shape = Part.Shape()
     try:
@@ -403,7 +441,4 @@ def shape_from_solid(solid):
         raise Failure("", translate("the kernel's B-rep could not be read by OpenCASCADE"))
     if len(shape.Solids) != 1:
         raise Failure("", translate("the kernel's B-rep holds {} solids instead of one").format(len(shape.Solids)))
-    shape = shape.Solids[0]  # a Part.Solid (the imported Part.Shape lacks Volume's siblings: CenterOfMass)
-    if not shape.isValid():
-        raise Failure("", translate("the kernel's B-rep is not a valid OpenCASCADE solid"))
-    return shape
+    return shape.Solids[0]  # a Part.Solid (the imported Part.Shape lacks Volume's siblings: CenterOfMass)

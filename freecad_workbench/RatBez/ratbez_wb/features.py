@@ -1,7 +1,8 @@
 """The Part::FeaturePython proxies of the RatBez workbench.
 
 Every feature rebuilds its shape from the ratbez kernel on each recompute. Solids are handed to FreeCAD
-as the exact B-spline B-rep, one face per face of the kernel (see conversion.shape_from_solid); Bézier curves
+as the exact B-spline B-rep, one face per face of the kernel, and cylinders, cones, spheres and tori as Part's
+analytic primitives unless the preferences say otherwise (see conversion.shape_from_solid); Bézier curves
 and surfaces, which OpenCASCADE represents exactly, become Part.BezierCurve / Part.BezierSurface built
 from the same poles and weights the kernel validated, cross-checked point by point against the kernel.
 
@@ -142,9 +143,9 @@ class SolidFeature(RatBezFeature):
         ("App::PropertyFloat", "ExactVolume",
          _tip("Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the "
               "exact surfaces), in mm^3, Placement not applied. FreeCAD's own Shape.Volume, Part > Check "
-              "geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per face, as Part "
-              "makes them, each arc in an exact form OpenCASCADE's fixed Gauss rule reads) and agree with "
-              "this to about 1e-9")),
+              "geometry and Measure read the faces RatBez hands to FreeCAD (a primitive's analytic ones, as "
+              "Part's; otherwise B-spline faces, one per face, each arc in an exact form OpenCASCADE's fixed "
+              "Gauss rule reads) and agree with this to about 1e-9")),
         ("App::PropertyFloat", "ExactArea",
          _tip("Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD's Shape.Area "
               "agrees with it to about 1e-9 (see ExactVolume)")),
@@ -232,6 +233,21 @@ class Torus(SolidFeature):
     def build_solid(self, obj):
         return kernel.ratbez().torus(obj.MajorRadius.Value, obj.MinorRadius.Value,
                                      _finite_vector("Center", obj.Center), _finite_vector("Axis", obj.Axis))
+
+
+# The features whose solids have an analytic counterpart in Part (conversion.analytic_primitive).
+PRIMITIVES = (Cylinder, Cone, Sphere, Torus)
+
+
+def rebuild_primitives():
+    """Recomputes the RatBez cylinders, cones, spheres and tori of every open document, so that they take the
+    geometry the preferences now ask for (and whatever depends on them follows)."""
+    for doc in App.listDocuments().values():
+        primitives = [obj for obj in doc.Objects if isinstance(getattr(obj, "Proxy", None), PRIMITIVES)]
+        for obj in primitives:
+            obj.touch()
+        if primitives:
+            doc.recompute()
 
 
 class ProfileFeature(SolidFeature):

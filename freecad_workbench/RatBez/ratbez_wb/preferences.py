@@ -37,3 +37,13 @@ def debug_tracebacks():
 
 def set_debug_tracebacks(value):
     _params().SetBool("DebugTracebacks", bool(value))
+
+
+def analytic_primitives():
+    """Whether cylinders, cones, spheres and tori go to FreeCAD as Part's analytic primitives (the default)
+    rather than as the kernel's rational B-spline faces (conversion.shape_from_solid says why)."""
+    return _params().GetBool("AnalyticPrimitives", True)
+
+
+def set_analytic_primitives(value):
+    _params().SetBool("AnalyticPrimitives", bool(value))

@@ -1,9 +1,10 @@
-"""Edit > Preferences > RatBez: default export tolerance, export folder, debug tracebacks (GUI only).
+"""Edit > Preferences > RatBez: default export tolerance, export folder, the geometry of primitives in FreeCAD,
+debug tracebacks (GUI only).
 FreeCAD instantiates the class and calls loadSettings / saveSettings."""
 
 from PySide import QtGui
 
-from . import dialogs, preferences
+from . import dialogs, features, preferences
 from .i18n import translate
 
 
@@ -29,6 +30,16 @@ class PreferencesPage:
         form.addRow(translate("Export folder"), folder_row)
         layout.addWidget(export)
 
+        geometry = QtGui.QGroupBox(translate("Geometry in FreeCAD"))
+        form = QtGui.QFormLayout(geometry)
+        self.analytic = QtGui.QCheckBox(translate("Cylinders, cones, spheres and tori on Part's analytic surfaces"))
+        self.analytic.setToolTip(translate(
+            "The same exact shape as Part's primitive, which OpenCASCADE's booleans, fillets and BOP check "
+            "handle best. Off: the kernel's rational B-spline faces (booleans are slower and the BOP check can "
+            "flag a B-spline sphere's poles). Exports always use the kernel's exact solid"))
+        form.addRow(self.analytic)
+        layout.addWidget(geometry)
+
         messages = QtGui.QGroupBox(translate("Messages"))
         form = QtGui.QFormLayout(messages)
         self.tracebacks = QtGui.QCheckBox(translate("Print Python tracebacks of failed recomputes"))
@@ -48,8 +59,13 @@ class PreferencesPage:
         self.tolerance.setValue(preferences.default_tolerance() or 0.0)
         self.folder.setText(preferences.export_directory())
         self.tracebacks.setChecked(preferences.debug_tracebacks())
+        self.analytic.setChecked(preferences.analytic_primitives())
 
     def saveSettings(self):
         preferences.set_default_tolerance(self.tolerance.value())
         preferences.set_export_directory(self.folder.text().strip())
         preferences.set_debug_tracebacks(self.tracebacks.isChecked())
+        if self.analytic.isChecked() != preferences.analytic_primitives():
+            preferences.set_analytic_primitives(self.analytic.isChecked())
+            features.rebuild_primitives()
+

@@ -457,10 +457,14 @@ private:
     // The same surface with a richer representation for OCCT's fixed Gauss rule, which it sizes by degree and
     // spans (gprop_patches.hpp): a straight direction (a cylinder's or an extrusion's, degree 1, one span)
     // gets 8 points, and reads a cylinder's centre of mass to only 8e-5 of its size. Degree elevation and knot
-    // insertion are exact and keep the parameter, so the edges along the direction keep theirs.
+    // insertion are exact and keep the parameter, so the edges along the direction keep theirs. Elevated to
+    // cubic, not quadratic, before the simple knots go in: the face is C2, so OCCT's offset of it (Part Offset,
+    // Thickness: an offset surface is one order less continuous) is C1, which FreeCAD's BOP check accepts; at
+    // quadratic the offsets of every cylinder, cone, revolution and extrusion were flagged GeomAbs_C0.
     static Handle(Geom_BSplineSurface) refined_for_gauss(Handle(Geom_BSplineSurface) surface) {
         if (surface->UDegree() == 1 || surface->VDegree() == 1)
-            surface->IncreaseDegree(std::max(surface->UDegree(), 2), std::max(surface->VDegree(), 2));
+            surface->IncreaseDegree(surface->UDegree() == 1 ? 3 : surface->UDegree(),
+                                    surface->VDegree() == 1 ? 3 : surface->VDegree());
         constexpr int kSpans = 4;
         if (surface->NbUKnots() == 2) {
             const double a = surface->UKnot(1), b = surface->UKnot(2);

@@ -481,8 +481,8 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per face, as Part makes them, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9</source>
-        <translation>Volumen des exakten Körpers, berechnet vom ratbez-Kern (zertifizierte Gauß-Quadratur auf den exakten Flächen), in mm^3, ohne Platzierung. FreeCADs eigenes Shape.Volume, Part &gt; Geometrie überprüfen und Messen lesen die B-Spline-Flächen, die RatBez an FreeCAD übergibt (eine je Fläche, wie Part sie erzeugt, jeder Bogen in einer exakten Form, die die feste Gauß-Regel von OpenCASCADE liest), und stimmen damit auf etwa 1e-9 überein</translation>
+        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the faces RatBez hands to FreeCAD (a primitive&apos;s analytic ones, as Part&apos;s; otherwise B-spline faces, one per face, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9</source>
+        <translation>Volumen des exakten Körpers, berechnet vom ratbez-Kern (zertifizierte Gauß-Quadratur auf den exakten Flächen), in mm^3, ohne Platzierung. FreeCADs eigenes Shape.Volume, Part &gt; Geometrie überprüfen und Messen lesen die Flächen, die RatBez an FreeCAD übergibt (die analytischen eines Grundelements, wie bei Part; sonst B-Spline-Flächen, eine je Fläche, jeder Bogen in einer exakten Form, die die feste Gauß-Regel von OpenCASCADE liest), und stimmen damit auf etwa 1e-9 überein</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -679,6 +679,11 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
+        <source>Cylinders, cones, spheres and tori on Part&apos;s analytic surfaces</source>
+        <translation>Zylinder, Kegel, Kugeln und Tori auf den analytischen Flächen von Part</translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>Default chordal tolerance</source>
         <translation>Standard-Sehnentoleranz</translation>
     </message>
@@ -792,6 +797,11 @@
         <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>For developers: besides the one-line message, a failed recompute prints the Python traceback (every time), as FreeCAD does for an exception</source>
         <translation>Für Entwickler: Zusätzlich zur einzeiligen Meldung gibt eine fehlgeschlagene Neuberechnung (jedes Mal) den Python-Traceback aus, wie FreeCAD es bei einer Ausnahme tut</translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/preferences_page.py"/>
+        <source>Geometry in FreeCAD</source>
+        <translation>Geometrie in FreeCAD</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
@@ -1197,6 +1207,11 @@
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>The axis: the profile plane&apos;s vertical or horizontal axis (a sketch&apos;s V or H axis), a global axis through the origin, a straight edge or datum line picked in the 3D view or the tree, or any point and direction</source>
         <translation>Die Achse: die vertikale oder horizontale Achse der Profilebene (V- oder H-Achse einer Skizze), eine globale Achse durch den Ursprung, eine in der 3D-Ansicht oder der Baumansicht gewählte gerade Kante oder Bezugslinie oder ein beliebiger Punkt mit Richtung</translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/preferences_page.py"/>
+        <source>The same exact shape as Part&apos;s primitive, which OpenCASCADE&apos;s booleans, fillets and BOP check handle best. Off: the kernel&apos;s rational B-spline faces (booleans are slower and the BOP check can flag a B-spline sphere&apos;s poles). Exports always use the kernel&apos;s exact solid</source>
+        <translation>Dieselbe exakte Form wie das Grundelement von Part, mit der die booleschen Operationen, Verrundungen und die BOP-Prüfung von OpenCASCADE am besten umgehen. Aus: die rationalen B-Spline-Flächen des Kerns (boolesche Operationen sind langsamer, und die BOP-Prüfung kann die Pole einer B-Spline-Kugel beanstanden). Exporte verwenden immer den exakten Körper des Kerns</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>

@@ -481,7 +481,7 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the B-spline faces RatBez hands to FreeCAD (one per face, as Part makes them, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9</source>
+        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the faces RatBez hands to FreeCAD (a primitive&apos;s analytic ones, as Part&apos;s; otherwise B-spline faces, one per face, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -679,6 +679,11 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
+        <source>Cylinders, cones, spheres and tori on Part&apos;s analytic surfaces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>Default chordal tolerance</source>
         <translation type="unfinished"></translation>
     </message>
@@ -791,6 +796,11 @@
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>For developers: besides the one-line message, a failed recompute prints the Python traceback (every time), as FreeCAD does for an exception</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/preferences_page.py"/>
+        <source>Geometry in FreeCAD</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1191,6 +1201,11 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>The axis: the profile plane&apos;s vertical or horizontal axis (a sketch&apos;s V or H axis), a global axis through the origin, a straight edge or datum line picked in the 3D view or the tree, or any point and direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/preferences_page.py"/>
+        <source>The same exact shape as Part&apos;s primitive, which OpenCASCADE&apos;s booleans, fillets and BOP check handle best. Off: the kernel&apos;s rational B-spline faces (booleans are slower and the BOP check can flag a B-spline sphere&apos;s poles). Exports always use the kernel&apos;s exact solid</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
