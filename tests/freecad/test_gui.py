@@ -26,6 +26,7 @@ import Sketcher  # noqa: E402,F401
 from PySide import QtCore, QtGui  # noqa: E402
 
 from harness import Suite, check, close, say  # noqa: E402
+from sketches import square_sketch  # noqa: E402
 
 OUT = os.environ.get("RATBEZ_TEST_OUT", "/tmp")
 SHOTS = os.path.join(OUT, "gui")
@@ -575,16 +576,6 @@ def test_export_and_check_commands():
 # Issue 26: RatBez_Interpolate from picked vertices through its panel, and the Align / start vertex controls of
 # the Ruled and Loft panels (an unaligned twist refused in the status line, OK refused until aligned again).
 
-def corner_square(name, half, z):
-    sketch = doc.addObject("Sketcher::SketchObject", name)
-    corners = [(-half, -half), (half, -half), (half, half), (-half, half)]  # from the SW corner
-    for a, b in zip(corners, corners[1:] + corners[:1]):
-        sketch.addGeometry(Part.LineSegment(V(*a, 0), V(*b, 0)))
-    sketch.Placement.Base = V(0, 0, z)
-    doc.recompute()
-    return sketch
-
-
 def circle_at(name, radius, z):
     obj = doc.addObject("Part::Feature", name)
     obj.Shape = Part.Wire(Part.makeCircle(radius, V(0, 0, z)))
@@ -596,7 +587,7 @@ def circle_at(name, radius, z):
 def test_interpolate_command_and_panel():
     check(Gui.Command.get("RatBez_Interpolate") is not None, "RatBez_Interpolate not registered")
     new_document("Interpolate")
-    sketch = corner_square("Square", 2.0, 0.0)
+    sketch = square_sketch(doc, "Square", 2.0, 0.0)
     select(sketch, "Vertex1", "Vertex2", "Vertex3", "Vertex4")
     obj, panel = run_command("RatBez_Interpolate")
     check([s for _, subs in obj.Source for s in subs] == ["Vertex1", "Vertex2", "Vertex3", "Vertex4"],
@@ -632,7 +623,7 @@ def test_interpolate_command_and_panel():
 def test_ruled_panel_align_and_start_vertices():
     new_document("Ruled")
     circle = circle_at("Circle", 2.0, 0.0)
-    square = corner_square("Square", 1.5, 4.0)
+    square = square_sketch(doc, "Square", 1.5, 4.0)
     select_all(circle, square)
     obj, panel = run_command("RatBez_Ruled")
     check(panel.align.isChecked() and obj.isValid(), "aligned by default: " + obj.getStatusString())
@@ -656,8 +647,8 @@ def test_ruled_panel_align_and_start_vertices():
 @suite.test
 def test_loft_panel_align_and_section_start_vertex():
     new_document("Loft")
-    bottom = corner_square("Bottom", 1.0, 0.0)
-    top = corner_square("Top", 1.0, 2.0)
+    bottom = square_sketch(doc, "Bottom", 1.0, 0.0)
+    top = square_sketch(doc, "Top", 1.0, 2.0)
     select_all(bottom, top)
     obj, panel = run_command("RatBez_Loft")
     panel.ruled.setChecked(True)

@@ -40,6 +40,7 @@ import Part  # noqa: E402
 import Sketcher  # noqa: E402,F401
 
 from harness import Suite, check, close, say  # noqa: E402
+from sketches import XZ, profile_sketch, square_sketch  # noqa: E402
 
 import RatBez  # noqa: E402  (the staged workbench; fails the whole script when missing)
 from ratbez_wb import preferences  # noqa: E402
@@ -93,29 +94,6 @@ def new_document(name):
 # ---------------------------------------------------------------------------------------------------
 # Inputs, the same for RatBez and Part
 
-def profile_sketch(doc, placement):
-    """The closed profile of test_workbench: a 2 x 3 rectangle x in [2, 4], y in [0, 3] whose right side is a
-    half disc of radius 1.5 bulging outwards (tangent to the top and bottom lines)."""
-    sketch = doc.addObject("Sketcher::SketchObject", "Profile")
-    sketch.Placement = placement
-    sketch.addGeometry(Part.LineSegment(V(2, 0, 0), V(4, 0, 0)))
-    sketch.addGeometry(Part.ArcOfCircle(Part.Circle(V(4, 1.5, 0), V(0, 0, 1), 1.5), -PI / 2, PI / 2))
-    sketch.addGeometry(Part.LineSegment(V(4, 3, 0), V(2, 3, 0)))
-    sketch.addGeometry(Part.LineSegment(V(2, 3, 0), V(2, 0, 0)))
-    doc.recompute()
-    return sketch
-
-
-def square_sketch(doc, name, half, z):
-    sketch = doc.addObject("Sketcher::SketchObject", name)
-    corners = [(-half, -half), (half, -half), (half, half), (-half, half)]
-    for a, b in zip(corners, corners[1:] + corners[:1]):
-        sketch.addGeometry(Part.LineSegment(V(*a, 0), V(*b, 0)))
-    sketch.Placement.Base = V(0, 0, z)
-    doc.recompute()
-    return sketch
-
-
 def wire_object(doc, name, edge):
     obj = doc.addObject("Part::Feature", name)
     obj.Shape = Part.Wire(edge)
@@ -140,7 +118,6 @@ def build(kind, doc):
             return built
         finally:
             preferences.set_analytic_primitives(True)
-    xz = App.Placement(V(0, 0, 0), App.Rotation(V(1, 0, 0), 90))  # sketch y -> global z
     if kind == "sphere":
         return RatBez.make_sphere(doc, Radius=3), part_feature(doc, "Part::Sphere", Radius=3)
     if kind == "cylinder":
@@ -154,7 +131,7 @@ def build(kind, doc):
                 part_feature(doc, "Part::Torus", Radius1=5, Radius2=1.5))
     if kind in ("revolve", "revolve270"):
         angle = 360 if kind == "revolve" else 270
-        sketch = profile_sketch(doc, xz)
+        sketch = profile_sketch(doc, XZ)
         return (RatBez.make_revolve(doc, Profile=sketch, Angle=angle),
                 part_feature(doc, "Part::Revolution", Source=sketch, Base=V(0, 0, 0), Axis=V(0, 0, 1), Angle=angle,
                              Solid=True))

@@ -20,6 +20,7 @@ import Part  # noqa: E402
 import Sketcher  # noqa: E402,F401
 
 from harness import Suite, captured_output, check, close  # noqa: E402
+from sketches import XZ, profile_sketch  # noqa: E402
 
 import RatBez  # noqa: E402  (the staged workbench; fails the whole script when missing)
 import exact  # noqa: E402
@@ -85,13 +86,7 @@ def xz_profile_sketch(doc, name="Profile"):
     """A closed profile in the XZ plane off the Z axis: a 2 x 3 rectangle x in [2, 4], z in [0, 3]
     whose right side is a half disc of radius 1.5 bulging outwards. Returns (sketch, volume of its
     full revolution about Z by Pappus)."""
-    sketch = doc.addObject("Sketcher::SketchObject", name)
-    sketch.Placement = App.Placement(V(0, 0, 0), App.Rotation(V(1, 0, 0), 90))  # sketch y -> global z
-    sketch.addGeometry(Part.LineSegment(V(2, 0, 0), V(4, 0, 0)))
-    sketch.addGeometry(Part.ArcOfCircle(Part.Circle(V(4, 1.5, 0), V(0, 0, 1), 1.5), -PI / 2, PI / 2))
-    sketch.addGeometry(Part.LineSegment(V(4, 3, 0), V(2, 3, 0)))
-    sketch.addGeometry(Part.LineSegment(V(2, 3, 0), V(2, 0, 0)))
-    doc.recompute()
+    sketch = profile_sketch(doc, XZ, name)
     area_rectangle, x_rectangle = 6.0, 3.0
     area_half_disc, x_half_disc = PI * 1.5 ** 2 / 2, 4 + 4 * 1.5 / (3 * PI)
     volume = 2 * PI * (area_rectangle * x_rectangle + area_half_disc * x_half_disc)
