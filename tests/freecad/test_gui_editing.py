@@ -431,29 +431,36 @@ def test_every_panel_fits_the_default_combo_view():
     check(not failures, "\n".join(failures))
 
 
+def on_ratbez_preferences(act):
+    """Opens Edit > Preferences (Std_DlgPreferences, modal) on its RatBez page and, once it shows, calls
+    act(window, item) with the dialog and the page's item in its list; act closes the dialog."""
+    def find():
+        for window in QtGui.QApplication.topLevelWidgets():
+            if window.isVisible() and window.metaObject().className() == "Gui::Dialog::DlgPreferencesImp":
+                found = [(pages, pages.item(row)) for pages in window.findChildren(QtGui.QListWidget)
+                         for row in range(pages.count()) if pages.item(row).text() == "RatBez"]
+                for pages, item in found:
+                    pages.setCurrentItem(item)
+                process_events(0.3)
+                act(window, found[0][1] if found else None)
+                return
+        QtCore.QTimer.singleShot(200, find)
+    QtCore.QTimer.singleShot(300, find)
+    Gui.runCommand("Std_DlgPreferences")
+    process_events()
+
+
 @suite.test
 def test_the_preferences_page_has_its_icon():
     # Issue 25: "Cannot find icon: preferences-ratbez".
     before = report_text()
     seen = []
 
-    def inspect():
-        for window in QtGui.QApplication.topLevelWidgets():
-            if window.isVisible() and window.metaObject().className() == "Gui::Dialog::DlgPreferencesImp":
-                for pages in window.findChildren(QtGui.QListWidget):
-                    for row in range(pages.count()):
-                        item = pages.item(row)
-                        if item.text() == "RatBez":
-                            seen.append(not item.icon().isNull())
-                            pages.setCurrentRow(row)
-                process_events(0.3)
-                window.grab().save(os.path.join(SHOTS, "preferences.png"))
-                window.reject()
-                return
-        QtCore.QTimer.singleShot(200, inspect)
-    QtCore.QTimer.singleShot(300, inspect)
-    Gui.runCommand("Std_DlgPreferences")
-    process_events()
+    def inspect(window, item):
+        seen.append(item is not None and not item.icon().isNull())
+        window.grab().save(os.path.join(SHOTS, "preferences.png"))
+        window.reject()
+    on_ratbez_preferences(inspect)
     check(seen == [True], "the RatBez page's icon: {}".format(seen))
     added = report_text()[len(before):]
     check("Cannot find icon" not in added, added)
@@ -471,26 +478,15 @@ def test_the_preferences_switch_primitives_between_analytic_and_bspline():
     check(type(sphere.Shape.Faces[0].Surface).__name__ == "Sphere", "analytic by default")
     seen = []
 
-    def untick():
-        for window in QtGui.QApplication.topLevelWidgets():
-            if window.isVisible() and window.metaObject().className() == "Gui::Dialog::DlgPreferencesImp":
-                for pages in window.findChildren(QtGui.QListWidget):
-                    for row in range(pages.count()):
-                        if pages.item(row).text() == "RatBez":
-                            pages.setCurrentRow(row)
-                process_events(0.3)
-                boxes = [box for box in window.findChildren(QtGui.QCheckBox) if "analytic surfaces" in box.text()]
-                seen.extend(box.isChecked() for box in boxes)
-                for box in boxes:
-                    box.setChecked(False)
-                window.grab().save(os.path.join(SHOTS, "preferences_primitive_geometry.png"))
-                window.accept()
-                return
-        QtCore.QTimer.singleShot(200, untick)
+    def untick(window, _item):
+        boxes = [box for box in window.findChildren(QtGui.QCheckBox) if "analytic surfaces" in box.text()]
+        seen.extend(box.isChecked() for box in boxes)
+        for box in boxes:
+            box.setChecked(False)
+        window.grab().save(os.path.join(SHOTS, "preferences_primitive_geometry.png"))
+        window.accept()
     try:
-        QtCore.QTimer.singleShot(300, untick)
-        Gui.runCommand("Std_DlgPreferences")
-        process_events()
+        on_ratbez_preferences(untick)
         check(seen == [True], "the page's check box, ticked by default: {}".format(seen))
         check(not preferences.analytic_primitives(), "OK saved the preference")
         check(type(sphere.Shape.Faces[0].Surface).__name__ == "BSplineSurface", "the open sphere rebuilt as B-spline")
