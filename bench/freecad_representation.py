@@ -1,8 +1,8 @@
-"""What the Bézier-patch representation (ratbez.brep_string(..., bezier_faces=True), what the FreeCAD
-workbench hands to FreeCAD) costs and buys, against one face per kernel face: FreeCAD's Shape.Volume,
-Shape.Area and CenterOfMass errors, faces, poles, .brep and .FCStd sizes, and Part Cut times. Every
-primitive and example (examples/*.json) is measured; each is cut by a box through its middle and by a
-sphere (FreeCAD's Part Cut), 5 times, the median time reported.
+"""What the Bézier-patch representation (ratbez.brep_string(..., bezier_faces=True), an option) costs and buys,
+against one face per kernel face (the default, which the workbench hands FreeCAD for every solid but the
+analytic primitives): FreeCAD's Shape.Volume, Shape.Area and CenterOfMass errors, faces, poles, .brep and
+.FCStd sizes, and Part Cut times. Every primitive and example (examples/*.json) is measured; each is cut by a
+box through its middle and by a sphere (FreeCAD's Part Cut), 5 times, the median time reported.
 
     freecadcmd bench/freecad_representation.py            (with build/kernel/python on the path)
 
