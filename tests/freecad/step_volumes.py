@@ -1,0 +1,64 @@
+"""FreeCAD reading the STEP files ratbez writes (issue 25, item 1): every example (examples/*.json) and every
+solid of the corpus (tests/corpus/freecad/*.step, made by FreeCAD), written by ratbez.write_step and read back
+by FreeCAD (Part.read), measured by FreeCAD's Shape.Volume, Area and CenterOfMass (OpenCASCADE's fixed Gauss
+rule) against the kernel's certified volume and area and against the centre of mass of the source: the
+examples' closed forms (exact.centroid; none for ruled solids, lofts and sweeps), and FreeCAD's own reading of
+the corpus file. Used by tests/freecad/test_step_in_freecad.py and bench/freecad_step_volumes.py."""
+
+import glob
+import os
+import tempfile
+
+import FreeCAD as App
+import Part
+import ratbez
+
+import exact
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+EXAMPLES = os.path.join(HERE, "..", "..", "examples")
+CORPUS = os.path.join(HERE, "..", "corpus", "freecad")
+
+
+def _relative(measured, exact_value):
+    return abs(measured - exact_value) / abs(exact_value)
+
+
+def _read_back(solid, folder):
+    path = os.path.join(folder, "solid.step")
+    ratbez.write_step(solid, path)
+    shape = Part.read(path)
+    return shape.Solids
+
+
+def measurements():
+    """One dict per solid: name, faces (FreeCAD's), volume_error, area_error (relative), centre_error
+    (relative to the bounding box's diagonal; None without a reference), solids (that FreeCAD read back)."""
+    sources = []
+    for path in sorted(glob.glob(os.path.join(EXAMPLES, "*.json"))):
+        name, spec = exact.load(path)
+        centre = exact.centroid(spec)
+        sources.append(("examples/" + name, exact.solid(spec),
+                        None if centre is None else App.Vector(*(float(c) for c in centre))))
+    for path in sorted(glob.glob(os.path.join(CORPUS, "*.step"))):
+        stem = os.path.splitext(os.path.basename(path))[0]
+        theirs = Part.read(path).Solids
+        ours = ratbez.read_step_all(path)
+        for k, solid in enumerate(ours):
+            centre = theirs[k].CenterOfMass if len(theirs) == len(ours) else None
+            sources.append(("corpus/{}{}".format(stem, "" if len(ours) == 1 else "[{}]".format(k)), solid, centre))
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        for name, solid, centre in sources:
+            solids = _read_back(solid, folder)
+            row = {"name": name, "solids": len(solids), "faces": None, "volume_error": None, "area_error": None,
+                   "centre_error": None}
+            if len(solids) == 1:
+                shape = solids[0]
+                row["faces"] = len(shape.Faces)
+                row["volume_error"] = _relative(shape.Volume, solid.volume())
+                row["area_error"] = _relative(shape.Area, solid.area())
+                if centre is not None:
+                    row["centre_error"] = (shape.CenterOfMass - centre).Length / shape.BoundBox.DiagonalLength
+            rows.append(row)
+    return rows
