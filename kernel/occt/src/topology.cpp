@@ -35,6 +35,7 @@
 #include <string>
 #include <utility>
 
+#include "c0_split.hpp"
 #include "face_sides.hpp"
 #include "gprop_patches.hpp"
 #include "smooth_arcs.hpp"
@@ -755,6 +756,10 @@ ConvertedSolid convert(const Solid& solid, const ConvertOptions& options) {
     } catch (const Error&) {
         return Converter(solid, options, false).run();
     }
+}
+
+TopoDS_Solid to_occt(const Solid& solid, const ConvertOptions& options) {
+    return detail::split_at_c0_knots(convert(solid, options).solid);
 }
 
 }  // namespace ratbez::occt

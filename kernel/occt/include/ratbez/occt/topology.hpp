@@ -89,8 +89,9 @@ struct ConvertedSolid {
 };
 
 ConvertedSolid convert(const Solid& solid, const ConvertOptions& options = {});
-inline TopoDS_Solid to_occt(const Solid& solid, const ConvertOptions& options = {}) {
-    return convert(solid, options).solid;
-}
+// The solid as handed out (files, brep_string): convert's, with any face still C0 inside (a face trimmed on a
+// cylinder, cone or sphere read from a file) split at those knots for OpenCASCADE's fixed Gauss rule
+// (src/c0_split.hpp); convert's maps then no longer name its faces one to one.
+TopoDS_Solid to_occt(const Solid& solid, const ConvertOptions& options = {});
 
 }  // namespace ratbez::occt

@@ -1,0 +1,22 @@
+#pragma once
+// Faces split where their surface is only C0 inside, for OpenCASCADE's fixed Gauss rule (FreeCAD's
+// Shape.Volume, Area, CenterOfMass). Internal to kernel/occt.
+//
+// The natural conversion (topology.hpp) leaves no C0 knot inside an untrimmed face: arcs go over in their
+// one-span form, rough faces as Bézier patches. A trimmed face keeps its surface, and a face trimmed on a
+// cylinder, cone or sphere read from a file holds it in the NURBS Book's circle form (degree 2, double knots:
+// C0 in the parameter), which one Gauss rule over the face reads up to 2.5e-3 off; its p-curves cannot follow
+// the one-span arc form's parameter exactly. Split at those knots (ShapeUpgrade_ShapeDivideContinuity, C1
+// criterion: the face's trim loops cut along the knot lines, exactly, and edges with C0 curves at their
+// knots), each piece reads to 1e-7 or better (FreeCAD's sphere minus a box: volume 2.2e-4 off whole, 6e-10
+// split; tests/freecad/test_step_in_freecad.py measures every corpus solid).
+
+#include <TopoDS_Solid.hxx>
+
+namespace ratbez::occt::detail {
+
+// `solid` with every face whose surface is C0 inside, and every edge whose curve is, split at those knots;
+// `solid` itself when none is, or when OpenCASCADE fails or leaves an invalid or other than one solid.
+TopoDS_Solid split_at_c0_knots(const TopoDS_Solid& solid);
+
+}  // namespace ratbez::occt::detail
