@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "test_support.hpp"
 #include "ratbez/error.hpp"
@@ -15,6 +16,14 @@ namespace ratbez::exporter {
 namespace {
 
 using test::tetrahedron;
+
+// Options naming the module, the rest as by default.
+OpenScadOptions named(std::string module_name, int convexity = 10) {
+    OpenScadOptions options;
+    options.module_name = std::move(module_name);
+    options.convexity = convexity;
+    return options;
+}
 
 TEST(WriteOpenScad, TetrahedronExactTextWithClockwiseFaces) {
     std::ostringstream out;
@@ -40,7 +49,7 @@ TEST(WriteOpenScad, TetrahedronExactTextWithClockwiseFaces) {
 
 TEST(WriteOpenScad, NamedModuleAndConvexity) {
     std::ostringstream out;
-    write_openscad(tetrahedron(), out, OpenScadOptions{"tetra_1", 4, {}});
+    write_openscad(tetrahedron(), out, named("tetra_1", 4));
     const std::string text = out.str();
     EXPECT_NE(text.find("module tetra_1() {\npolyhedron(points=[\n"), std::string::npos);
     EXPECT_NE(text.find("convexity=4);\n}\ntetra_1();\n"), std::string::npos);
@@ -49,7 +58,8 @@ TEST(WriteOpenScad, NamedModuleAndConvexity) {
 
 TEST(WriteOpenScad, HeaderLinesAreEscapedSoNoNameRunsAsCode) {
     std::ostringstream out;
-    OpenScadOptions options{"part", 10, {"source: evil\ncube(5); // \\ \r\t\x01 end", "second"}};
+    OpenScadOptions options = named("part");
+    options.header = {"source: evil\ncube(5); // \\ \r\t\x01 end", "second"};
     write_openscad(tetrahedron(), out, options);
     const std::string text = out.str();
     EXPECT_EQ(text.rfind("// source: evil\\ncube(5); // \\\\ \\r\\t\\x01 end\n// second\n// use <this file>", 0), 0u)
@@ -93,10 +103,10 @@ TEST(WriteOpenScad, NumbersRoundTripShortest) {
 
 TEST(WriteOpenScad, RejectsBadModuleNameConvexityAndMesh) {
     std::ostringstream out;
-    EXPECT_THROW(write_openscad(tetrahedron(), out, OpenScadOptions{"2bad", 10, {}}), Error);
-    EXPECT_THROW(write_openscad(tetrahedron(), out, OpenScadOptions{"has space", 10, {}}), Error);
-    EXPECT_THROW(write_openscad(tetrahedron(), out, OpenScadOptions{"if", 10, {}}), Error);
-    EXPECT_THROW(write_openscad(tetrahedron(), out, OpenScadOptions{"", 0, {}}), Error);
+    EXPECT_THROW(write_openscad(tetrahedron(), out, named("2bad")), Error);
+    EXPECT_THROW(write_openscad(tetrahedron(), out, named("has space")), Error);
+    EXPECT_THROW(write_openscad(tetrahedron(), out, named("if")), Error);
+    EXPECT_THROW(write_openscad(tetrahedron(), out, named("", 0)), Error);
     Mesh bad_index = tetrahedron();
     bad_index.triangles[2][1] = 4;
     try {
