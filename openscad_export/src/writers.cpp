@@ -19,6 +19,13 @@
 namespace ratbez::exporter {
 namespace {
 
+// 'text', built by appending: gcc 12 takes "'" + std::string(...) for an overlapping copy (-Wrestrict).
+std::string quoted(std::string_view text) {
+    std::string result(1, '\'');
+    result.append(text).push_back('\'');
+    return result;
+}
+
 // Refuse to write a file that would be garbage: an index past the vertex table or a NaN/inf coordinate
 // would produce text no reader accepts (or, worse, accepts wrongly). O(n), negligible beside the writing.
 void validate_mesh(const Mesh& mesh) {
@@ -160,12 +167,10 @@ std::string openscad_identifier(std::string_view text) {
 
 std::string module_name_problem(std::string_view name) {
     if (is_openscad_builtin(name))
-        return "'" + std::string(name) + "' is an OpenSCAD built-in or keyword: a module of that name would shadow " +
-               "OpenSCAD's own in every file that uses the library (try '" + std::string(name) +
-               std::string(builtin_suffix) + "')";
+        return quoted(name) + " is an OpenSCAD built-in or keyword: a module of that name would shadow OpenSCAD's own "
+               "in every file that uses the library (try '" + std::string(name) + std::string(builtin_suffix) + "')";
     if (!is_openscad_identifier(name))
-        return "'" + comment_text(name) +
-               "' is not an OpenSCAD identifier (letters, digits, _; not starting with a digit)";
+        return quoted(comment_text(name)) + " is not an OpenSCAD identifier (letters, digits, _; not starting with a digit)";
     return {};
 }
 
@@ -203,7 +208,7 @@ std::string library_preamble(const OpenScadOptions& options, std::string_view no
 
 Color parse_color(std::string_view text, std::string_view argument) {
     const auto bad = [&] {
-        return Error(argument, "'" + comment_text(text) + "' is not a colour (expected \"#rrggbb\" or \"#rrggbbaa\", hexadecimal)");
+        return Error(argument, quoted(comment_text(text)) + " is not a colour (expected \"#rrggbb\" or \"#rrggbbaa\", hexadecimal)");
     };
     if ((text.size() != 7 && text.size() != 9) || text.front() != '#') throw bad();
     double channels[4] = {1, 1, 1, 1};

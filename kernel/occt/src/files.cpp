@@ -509,9 +509,13 @@ std::vector<Solid> named_after_file(std::vector<Solid> solids, const std::string
     const std::string stem = std::filesystem::path(path).stem().string();
     std::map<std::string, int> seen;
     for (std::size_t i = 0; i < solids.size(); ++i) {
+        // Appended piece by piece: gcc 12 takes "_" + std::to_string(k) for an overlapping copy (-Wrestrict).
         std::string name = solids[i].name();
-        if (name.empty()) name = solids.size() > 1 ? stem + "_" + std::to_string(i + 1) : stem;
-        if (const int count = ++seen[name]; count > 1) name += "_" + std::to_string(count);
+        if (name.empty()) {
+            name = stem;
+            if (solids.size() > 1) name.append("_").append(std::to_string(i + 1));
+        }
+        if (const int count = ++seen[name]; count > 1) name.append("_").append(std::to_string(count));
         solids[i].set_name(name);
     }
     return solids;
