@@ -2,6 +2,8 @@
 // format, `info` and `check` on the examples.
 
 #include <gtest/gtest.h>
+
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -51,7 +53,7 @@ protected:
         std::string name = std::string(info->test_suite_name()) + "_" + info->name();
         for (char& c : name)
             if (c == '/') c = '_';
-        dir_ = fs::temp_directory_path() / ("ratbez_cli_test_" + name);
+        dir_ = fs::temp_directory_path() / ("ratbez_cli_test_" + name + "_" + std::to_string(getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }

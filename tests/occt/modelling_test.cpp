@@ -6,6 +6,8 @@
 #include <BOPAlgo_ArgumentAnalyzer.hxx>
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -45,7 +47,8 @@ void expect_valid_and_writable(const Solid& solid, const std::string& name) {
         EXPECT_TRUE(report.closed) << name;
         EXPECT_TRUE(report.passed) << name << (bezier_faces ? " (bezier_faces)\n" : "\n") << format_report(report);
     }
-    const fs::path file = fs::temp_directory_path() / ("ratbez_modelling_" + name + ".step");
+    const fs::path file =
+        fs::temp_directory_path() / ("ratbez_modelling_" + name + "_" + std::to_string(getpid()) + ".step");
     write_step(solid, file.string());
     EXPECT_GT(fs::file_size(file), 1000u) << name;
     fs::remove(file);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -194,8 +196,9 @@ TEST(CheckMesh, VolumeBound) {
 class ExportMesh : public ::testing::Test {
 protected:
     void SetUp() override {
+        const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
         directory_ = std::filesystem::temp_directory_path() /
-                     ("ratbez_export_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+                     ("ratbez_export_test_" + test + "_" + std::to_string(getpid()));
         std::filesystem::remove_all(directory_);
         std::filesystem::create_directories(directory_);
     }

@@ -9,6 +9,8 @@
 // Registered only with RATBEZ_TEST_OPENSCAD=ON (slow: CGAL Nef inside OpenSCAD).
 
 #include <gtest/gtest.h>
+
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -96,8 +98,9 @@ TEST_P(OpenScadRender, RendersWithoutWarningsAndKeepsTheVolume) {
     if (c.relative_tolerance < 1e-3 && mesh.triangles.size() > 30000)
         GTEST_SKIP() << mesh.triangles.size() << " triangles: too slow for OpenSCAD's CGAL Nef";
 
-    const fs::path dir = fs::temp_directory_path() /
-                         ("ratbez_openscad_" + c.example + "_" + std::to_string(std::lround(-std::log10(c.relative_tolerance))));
+    const std::string digits = std::to_string(std::lround(-std::log10(c.relative_tolerance)));
+    const fs::path dir =
+        fs::temp_directory_path() / ("ratbez_openscad_" + c.example + "_" + digits + "_" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     ratbez::exporter::ExportOptions options;
@@ -145,7 +148,7 @@ TEST(OpenScadImportStl, AUsedLibraryFindsItsStlBesideItAndRendersCleanly) {
     const auto box = spec.solid.bounding_box();
     const double size = box.diagonal(), tolerance = 1e-2 * size;
     const ratbez::Mesh mesh = ratbez::tessellate(spec.solid, tolerance);
-    const fs::path dir = fs::temp_directory_path() / "ratbez_openscad_import_stl";
+    const fs::path dir = fs::temp_directory_path() / ("ratbez_openscad_import_stl_" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir / "lib");
     fs::create_directories(dir / "work");
@@ -191,7 +194,8 @@ TEST_P(CorpusRender, RendersThroughUseInABooleanWithoutWarnings) {
                          ratbez::exporter::tessellation_checks(solids[i], meshes.back(), tolerance), std::nullopt});
         box.add(solids[i].bounding_box());
     }
-    const fs::path dir = fs::temp_directory_path() / ("ratbez_openscad_corpus_" + GetParam().stem().string());
+    const fs::path dir = fs::temp_directory_path() / ("ratbez_openscad_corpus_" + GetParam().stem().string() + "_" +
+                                                    std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     ratbez::exporter::ExportOptions options;

@@ -323,7 +323,8 @@ TEST(Export, BinaryStlBlamesFloat32OnlyForWhatItDid) {
     const Solid ball = sphere(1);
     Mesh open = tessellate(ball, 0.01);
     open.triangles.pop_back();
-    const std::string path = (std::filesystem::temp_directory_path() / "ratbez_scale_and_placement_open.stl").string();
+    const std::string path = (std::filesystem::temp_directory_path() /
+                              ("ratbez_scale_and_placement_open_" + std::to_string(getpid()) + ".stl")).string();
     const std::string message =
         error_of([&] { (void)exporter::export_tessellation(ball, open, 0.01, path, exporter::ExportOptions{}); }, "mesh");
     EXPECT_EQ(message.find("float32"), std::string::npos) << message;
