@@ -15,8 +15,9 @@
 
 namespace ratbez::occt::detail {
 
-// `solid` with every face whose surface is C0 inside, and every edge whose curve is, split at those knots;
-// `solid` itself when none is, or when OpenCASCADE fails or leaves an invalid or other than one solid.
+// When a face's surface is C0 inside: `solid` with those faces, and the edges whose curves are C0, split at
+// their C0 knots. Otherwise `solid` itself (an edge alone does not matter to the rule), and also when
+// OpenCASCADE fails or leaves an invalid shape or other than one solid.
 TopoDS_Solid split_at_c0_knots(const TopoDS_Solid& solid);
 
 }  // namespace ratbez::occt::detail
