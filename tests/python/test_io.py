@@ -125,7 +125,8 @@ def test_export_max_triangles(tmp_path):
 # limit) and only then refused them: "above the limit 4000000 of the export's mesh checks". The export's
 # tessellation is now held against the checks' limit from its plan: refused before any cell is checked or
 # any triangle built (the progress never leaves 0, where main went on to mesh it), with the estimate and a
-# tolerance that fits.
+# tolerance that fits. (At 1e-5 the staggered rows of issue 28 now mesh it in 2.7M triangles, within the limit:
+# 5e-6 is over it.)
 @needs_cgal
 def test_export_refuses_a_mesh_over_the_checks_limit_from_the_plan(tmp_path):
     def progress(fraction):
@@ -133,13 +134,13 @@ def test_export_refuses_a_mesh_over_the_checks_limit_from_the_plan(tmp_path):
             raise RuntimeError(f"the export went on to build the mesh (progress {fraction})")
 
     with pytest.raises(ratbez.Error) as info:
-        ratbez.export_openscad(ratbez.sphere(10), tmp_path / "s.scad", 1e-5, progress=progress)
+        ratbez.export_openscad(ratbez.sphere(10), tmp_path / "s.scad", 5e-6, progress=progress)
     message = str(info.value)
     assert message.startswith("tolerance: too fine: the mesh would need about "), message
     assert "more than the export's mesh checks' limit of 4000000 triangles (about 1.8 GB at 450 bytes each) allows" \
         in message
     estimate = int(message.split("about ")[1].split(" ")[0])
-    assert 4_000_000 < estimate < 6_000_000
+    assert 4_000_000 < estimate < 10_000_000
     fitting = float(message.split("a tolerance of ")[1].split(" ")[0])
     assert 1e-5 < fitting < 2e-5
     assert not (tmp_path / "s.scad").exists()

@@ -65,8 +65,11 @@ def test_max_triangles_never_refuses_a_mesh_within_it(solid, tolerance):
     assert len(solid.tessellate(fitting, max_triangles=count - 1).triangles) <= count - 1
 
 
-def test_the_reported_sphere_of_432_triangles_fits_432():
-    assert len(ratbez.sphere(1.0).tessellate(0.01, max_triangles=432).triangles) == 432
+def test_the_reported_sphere_fits_exactly_its_own_count():
+    # Reported at 432 triangles on the tensor grid; the staggered rows of issue 28 mesh it in fewer.
+    count = len(ratbez.sphere(1.0).tessellate(0.01).triangles)
+    assert count < 432
+    assert len(ratbez.sphere(1.0).tessellate(0.01, max_triangles=count).triangles) == count
 
 
 @pytest.mark.parametrize("bad", [0, -5, "many", 2.5])

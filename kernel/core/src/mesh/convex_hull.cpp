@@ -6,6 +6,8 @@
 
 #include "ratbez/convex_hull.hpp"
 
+#include "math/vector_angle.hpp"
+
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
@@ -17,6 +19,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <unordered_map>
@@ -77,6 +80,17 @@ std::optional<Mesh> flipped_convex(Mesh mesh) {
             for (int i = 0; i < 3; ++i) owner[edge_key(triangles[t][i], triangles[t][(i + 1) % 3])] = t;
         for (const std::uint64_t again : {edge_key(a, d), edge_key(d, b), edge_key(b, c), edge_key(c, a)}) queue.push_back(again);
     }
+    // No edge is reflex; but where the mesh is flat up to rounding (a pole in the plane of the ring around it)
+    // coplanar triangles count as convex, and a fan can fold over its neighbours there. A convex surface's
+    // angles around a vertex sum to at most a full turn: a vertex over it is such a fold.
+    std::vector<double> turn(mesh.vertices.size(), 0.0);
+    for (const auto& t : triangles)
+        for (int i = 0; i < 3; ++i) {
+            const Vec3 &p = mesh.vertices[t[i]], &q = mesh.vertices[t[(i + 1) % 3]], &r = mesh.vertices[t[(i + 2) % 3]];
+            turn[t[i]] += detail::angle_between(q - p, r - p);
+        }
+    for (const double sum : turn)
+        if (sum > 2 * std::numbers::pi * (1 + 1e-9)) return std::nullopt;
     return mesh;  // every edge was checked, and again whenever a flip changed its triangles: none is reflex
 }
 

@@ -1,16 +1,19 @@
 // Adaptive watertight tessellation (tessellate.hpp), the pipeline:
 //  1. planning (tessellate_plan.hpp): every surface face gets a tensor grid of parameter lines, chosen
 //     from its curvature, and offsets that move its vertices off the surface so that the mesh straddles
-//     it; then checked cell by cell on the real surface, with the vertices where the mesh will have them,
-//     and refined where a cell fails (tessellate_cells.hpp);
+//     it; a face closed on itself along u (a sphere, a torus, a revolution) gets staggered rows instead
+//     where they need fewer triangles (tessellate_rows.hpp); then checked cell by cell (strip by strip) on
+//     the real surface, with the vertices where the mesh will have them, and refined where a cell fails
+//     (tessellate_cells.hpp);
 //  2. edge sampling (here): edges are sampled once: an edge used by surface faces takes the union of
 //     their lines along it (tessellate_sides.hpp), an edge of planar faces only is sampled by its own
 //     chordal deviation; a sample, and a B-rep vertex, moves as all the faces using it wish
 //     (tessellate_offsets.hpp), a function of the plans alone (proposals_of), so that the checks of both
 //     faces and the mesh see the same point; a crease's polyline is split where it strays from its curve;
-//  3. assembly (here): the cells of each grid become triangles on the shared edge samples; cells along
-//     a boundary whose edge carries extra samples (from the neighbouring face) are closed with a zipper
-//     strip; degenerate sides collapse to their single vertex, so cells at a pole become fan triangles.
+//  3. assembly (here): the cells of each grid (the strips between rows) become triangles on the shared
+//     edge samples; cells along a boundary whose edge carries extra samples (from the neighbouring face)
+//     are closed with a zipper strip; degenerate sides collapse to their single vertex, so cells at a pole
+//     become fan triangles.
 //     Planar faces are triangulated from their boundary loops; trimmed faces by a constrained Delaunay
 //     triangulation of their (u, v) region on the edge samples, refined by the chord error
 //     (trimmed_domain.hpp). Edges and vertices of trimmed faces stay on their curves (no offset): the
@@ -35,6 +38,7 @@
 #include "mesh/tessellate_cells.hpp"
 #include "mesh/tessellate_offsets.hpp"
 #include "mesh/tessellate_plan.hpp"
+#include "mesh/tessellate_rows.hpp"
 #include "mesh/tessellate_sides.hpp"
 #include "mesh/tessellator.hpp"
 #include "mesh/triangle_grid.hpp"
@@ -276,8 +280,8 @@ private:
         return {face.plane().normal, 0.0, 0.0, 0.0, true, 0.0, &face};
     }
     static detail::OffsetWish surface_wish(const SurfacePlan& p, const Vec3& normal, double u, double v) {
-        if (!p.straddle) return {normal, 0.0, 0.0, 0.0, true, p.grid.cells(), p.face};
-        return {normal, p.offsets.at(u, v), p.offsets.lowest_at(u, v), p.offsets.highest_at(u, v), false, p.grid.cells(),
+        if (!p.straddle) return {normal, 0.0, 0.0, 0.0, true, p.cells(), p.face};
+        return {normal, p.offsets.at(u, v), p.offsets.lowest_at(u, v), p.offsets.highest_at(u, v), false, p.cells(),
                 p.face};
     }
 
@@ -425,47 +429,75 @@ private:
         return assembler_.vertex_id(vertex.get(), [&] { return vertex->point + vertex_offset(vertex.get()); });
     }
 
-    // Where the mesh puts the vertices of plan p's grid (detail::GridPoints): inside, the plan's own offsets;
-    // on its sides what the shared edge samples, poles and corners get.
+    // Where the mesh puts the vertices of plan p's grid or rows (detail::GridPoints): inside, the plan's own
+    // offsets; on its sides what the shared edge samples, poles and corners get.
     void grid_points(const SurfacePlan& p, std::vector<Vec3>& out) {
         index_uses();
         vertex_offsets_.clear();  // a plan may have changed since the last call
+        if (!p.rows.empty()) {
+            row_points(p, out);
+            return;
+        }
         detail::interior_grid_points(p, p.grid, out);
         const std::size_t nu = p.grid.u.size(), nv = p.grid.v.size();
         for (Side side : kSides) {
-            const SideMap& m = p.sides[side_slot(side)];
-            const Coedge& coedge = p.face->sides()[side_slot(side)];
             const bool along_u = runs_along_u(side);
-            const std::vector<double>& lines = along_u ? p.grid.u : p.grid.v;
             const std::size_t fixed = side == Side::v_min || side == Side::u_min ? 0 : (along_u ? nv : nu) - 1;
-            auto at = [&](std::size_t k) -> Vec3& { return along_u ? out[k * nv + fixed] : out[fixed * nv + k]; };
-            if (m.degenerate) {
-                const Vec3 pole = coedge.edge->start->point + vertex_offset(coedge.edge->start.get());
-                for (std::size_t k = 0; k < lines.size(); ++k) at(k) = pole;
-                continue;
-            }
-            const std::vector<Proposal> proposals = proposals_of(m.edge);
-            const Interval d = m.edge->curve.domain();
-            for (std::size_t k = 0; k < lines.size(); ++k) {
-                if (k == 0 || k + 1 == lines.size()) {
-                    const Vertex* v = (k == 0) != m.flipped ? coedge.edge->start.get() : coedge.edge->end.get();
-                    at(k) = v->point + vertex_offset(v);
-                } else {
-                    const double t = m.to_edge(lines[k]);
-                    const auto [gap, chord] = proposed_at(proposals, t, 1e-12 * (d.max - d.min));
-                    at(k) = m.edge->curve.point(t) + edge_offset(m.edge, t, gap, chord);
-                }
-            }
+            side_points(p, side, along_u ? p.grid.u : p.grid.v,
+                        [&](std::size_t k) -> Vec3& { return along_u ? out[k * nv + fixed] : out[fixed * nv + k]; });
         }
         // A corner between a degenerate side and another: the pole wins (it is the same vertex).
         for (Side side : kSides) {
-            const SideMap& m = p.sides[side_slot(side)];
-            if (!m.degenerate) continue;
-            const Vec3 pole = p.face->sides()[side_slot(side)].edge->start->point +
-                              vertex_offset(p.face->sides()[side_slot(side)].edge->start.get());
+            if (!p.sides[side_slot(side)].degenerate) continue;
+            const Vec3 pole = pole_point(p, side);
             const bool along_u = runs_along_u(side);
             const std::size_t fixed = side == Side::v_min || side == Side::u_min ? 0 : (along_u ? nv : nu) - 1;
             for (std::size_t k = 0; k < (along_u ? nu : nv); ++k) (along_u ? out[k * nv + fixed] : out[fixed * nv + k]) = pole;
+        }
+    }
+
+    // grid_points for a plan in rows (tessellate_rows.hpp), row after row: the seam's points at the ends of
+    // every row, the first and last rows from their sides (a pole's whole row last: it wins at the corners).
+    void row_points(const SurfacePlan& p, std::vector<Vec3>& out) {
+        const detail::RowGrid& rows = p.rows;
+        const std::vector<std::size_t> starts = detail::row_starts(rows);
+        detail::interior_row_points(p, out);
+        std::vector<std::size_t> seam_rows;  // the rows with the seam's vertex at their ends (rows.seam_v)
+        for (std::size_t j = 0; j < rows.v.size(); ++j)
+            if (rows.on_seam[j]) seam_rows.push_back(j);
+        side_points(p, Side::u_min, rows.seam_v, [&](std::size_t k) -> Vec3& { return out[starts[seam_rows[k]]]; });
+        side_points(p, Side::u_max, rows.seam_v, [&](std::size_t k) -> Vec3& { return out[starts[seam_rows[k] + 1] - 1]; });
+        side_points(p, Side::v_min, rows.u.front(), [&](std::size_t k) -> Vec3& { return out[k]; });
+        side_points(p, Side::v_max, rows.u.back(), [&](std::size_t k) -> Vec3& { return out[starts[rows.v.size() - 1] + k]; });
+    }
+
+    Vec3 pole_point(const SurfacePlan& p, Side side) {
+        const Vertex* pole = p.face->sides()[side_slot(side)].edge->start.get();
+        return pole->point + vertex_offset(pole);
+    }
+
+    // The points of a side of plan p at its `lines` (face parameters; the ends are the side's corners) into
+    // at(k): the shared edge samples as they will be placed, or the pole.
+    template <class At>
+    void side_points(const SurfacePlan& p, Side side, const std::vector<double>& lines, At&& at) {
+        const SideMap& m = p.sides[side_slot(side)];
+        const Coedge& coedge = p.face->sides()[side_slot(side)];
+        if (m.degenerate) {
+            const Vec3 pole = pole_point(p, side);
+            for (std::size_t k = 0; k < lines.size(); ++k) at(k) = pole;
+            return;
+        }
+        const std::vector<Proposal> proposals = proposals_of(m.edge);
+        const Interval d = m.edge->curve.domain();
+        for (std::size_t k = 0; k < lines.size(); ++k) {
+            if (k == 0 || k + 1 == lines.size()) {
+                const Vertex* v = (k == 0) != m.flipped ? coedge.edge->start.get() : coedge.edge->end.get();
+                at(k) = v->point + vertex_offset(v);
+            } else {
+                const double t = m.to_edge(lines[k]);
+                const auto [gap, chord] = proposed_at(proposals, t, 1e-12 * (d.max - d.min));
+                at(k) = m.edge->curve.point(t) + edge_offset(m.edge, t, gap, chord);
+            }
         }
     }
 
@@ -673,7 +705,7 @@ private:
             const SurfacePlan& plan = plans_[use.plan];
             const SideMap& m = plan.sides[side_slot(use.side)];
             if (m.degenerate) continue;
-            const std::vector<double>& lines = runs_along_u(use.side) ? plan.grid.u : plan.grid.v;
+            const std::vector<double>& lines = detail::side_lines(plan, use.side);
             side_points_.resize(lines.size());
             for (std::size_t k = 0; k < lines.size(); ++k) side_points_[k] = edge->curve.point(m.to_edge(lines[k]));
             for (std::size_t k = 0; k < lines.size(); ++k)
@@ -747,6 +779,11 @@ private:
             return {false, side_samples[side_slot(side)][side_index(side, p)].second};
         };
 
+        if (!plan.rows.empty()) {
+            mesh_rows(plan, side_samples, side_id);
+            return;
+        }
+
         // The interior grid points in one batch (surface_grid.hpp), moved by the plan's offsets; boundary
         // points are edge samples.
         detail::interior_grid_points(plan, g, grid_points_);
@@ -809,6 +846,55 @@ private:
                 }
                 for (const auto& t : triangles) assembler_.add_triangle(t[0]->id, t[1]->id, t[2]->id);
             }
+        }
+    }
+
+    // The strips of a plan in rows (tessellate_rows.hpp), each zipped between its two rows: an inner row's
+    // ends are the seam's samples, a first or last row all the samples of its side's edge (a pole's one).
+    template <class SideId>
+    void mesh_rows(const SurfacePlan& plan, const std::array<std::vector<std::pair<double, Id>>, 4>& side_samples,
+                   SideId&& side_id) {
+        const detail::RowGrid& rows = plan.rows;
+        const std::vector<std::size_t> starts = detail::row_starts(rows);
+        detail::interior_row_points(plan, grid_points_);
+        const std::size_t count = rows.v.size();
+        const Interval du = plan.face->surface().domain_u();
+        const double period = du.max - du.min;
+        std::vector<Id> ids(starts.back());
+        std::vector<detail::RailPoint> rail_points;
+        auto rail = [&](std::size_t j, std::vector<CellVertex>& out) {
+            out.clear();
+            const double v = rows.v[j];
+            if (j == 0 || j + 1 == count) {
+                const Side side = j == 0 ? Side::v_min : Side::v_max;
+                if (plan.sides[side_slot(side)].degenerate) {
+                    const Id pole = side_id(side, 0.0).second;
+                    for (double u : {rows.u[j].front(), rows.u[j].back()}) out.push_back(CellVertex{u, v, assembler_.point(pole), pole});
+                    return;
+                }
+                for (const auto& [u, id] : side_samples[side_slot(side)]) out.push_back(CellVertex{u, v, assembler_.point(id), id});
+                return;
+            }
+            // The seam's samples at a row's ends, new vertices inside (row_rail: a row off the seam closes
+            // across it, its last vertex first again).
+            const std::size_t first = starts[j], last = starts[j + 1] - 1;
+            for (std::size_t k = first; k <= last; ++k) {
+                const bool end = rows.on_seam[j] && (k == first || k == last);
+                ids[k] = end ? side_id(k == first ? Side::u_min : Side::u_max, v).second : assembler_.add_point(grid_points_[k]);
+            }
+            detail::row_rail(rows, starts, j, period, rail_points);
+            for (const detail::RailPoint& x : rail_points) out.push_back(CellVertex{x.u, v, assembler_.point(ids[x.vertex]), ids[x.vertex]});
+        };
+        std::vector<CellVertex> bottom, top, lower, upper;
+        std::vector<CellTriangle> triangles;
+        rail(0, bottom);
+        for (std::size_t j = 0; j + 1 < count; ++j) {
+            if (j % 64 == 63) settings_.poll();
+            rail(j + 1, top);
+            triangles.clear();
+            detail::triangulate_strip(bottom, top, lower, upper, triangles);
+            for (const auto& t : triangles) assembler_.add_triangle(t[0]->id, t[1]->id, t[2]->id);
+            std::swap(bottom, top);
         }
     }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <tuple>
+#include <span>
 #include <utility>
 
 #include "analysis/point_inversion.hpp"
@@ -21,14 +22,11 @@ double diagonal_deviation(const SurfaceEvaluator& s, const CellVertex& a, const 
     return distance(s.point(0.5 * (a.u + b.u), 0.5 * (a.v + b.v)), 0.5 * (a.point + b.point));
 }
 
-// The strip between two rails of a cell (bottom and top, or right and left; a collapsed rail is one
-// vertex), by the zipper with the chordal deviation of each diagonal as its cost.
-void zip(const SurfaceEvaluator& s, const std::vector<CellVertex>& lower, const std::vector<CellVertex>& upper,
+// The strip between two rails (bottom and top, or right and left; a collapsed rail is one vertex) by the
+// zipper with `cost` for each diagonal.
+template <class Cost>
+void zip(const std::vector<CellVertex>& lower, const std::vector<CellVertex>& upper, Cost&& cost,
          std::vector<CellTriangle>& out) {
-    auto cost = [&](std::size_t i, std::size_t j) {
-        // Prefer the smaller chordal deviation; between equal ones (flat directions), the shorter diagonal.
-        return diagonal_deviation(s, lower[i], upper[j]) + 1e-9 * distance(lower[i].point, upper[j].point);
-    };
     for (const auto& t : zip_rails(lower.size(), upper.size(), cost)) {
         CellTriangle tri;
         for (int k = 0; k < 3; ++k)
@@ -37,6 +35,16 @@ void zip(const SurfaceEvaluator& s, const std::vector<CellVertex>& lower, const 
                                                    : &upper[t[static_cast<std::size_t>(k)] - lower.size()];
         out.push_back(tri);
     }
+}
+
+// The strip between two rails of a cell by the chordal deviation of each diagonal: of a cell's two diagonals
+// the one that sags less makes the better pair of triangles.
+void zip(const SurfaceEvaluator& s, const std::vector<CellVertex>& lower, const std::vector<CellVertex>& upper,
+         std::vector<CellTriangle>& out) {
+    zip(lower, upper, [&](std::size_t i, std::size_t j) {
+        // Prefer the smaller chordal deviation; between equal ones (flat directions), the shorter diagonal.
+        return diagonal_deviation(s, lower[i], upper[j]) + 1e-9 * distance(lower[i].point, upper[j].point);
+    }, out);
 }
 
 // A rail collapsed to its single vertex when the side is degenerate; its u (or v) is the side's middle,
@@ -87,9 +95,10 @@ constexpr std::array<std::array<double, 3>, 25> sixths_barycentric() {
 }
 constexpr auto kBarycentric = sixths_barycentric();
 
-// Upper bound of the chordal error of a triangle at the kBarycentric points: the distance from each
-// sample to the surface point at its triangle_parameters, improved by gauss_newton_bound (which stops
-// refining towards the true distance once a sample is within `good_enough`).
+}  // namespace
+
+// The distance from each kBarycentric sample to the surface point at its triangle_parameters, improved by
+// gauss_newton_bound (which stops refining towards the true distance once a sample is within `good_enough`).
 double triangle_error(const SurfaceEvaluator& s, const ParameterBox& domain, const CellTriangle& t, double good_enough) {
     double worst = 0;
     for (const auto& b : kBarycentric) {
@@ -101,6 +110,8 @@ double triangle_error(const SurfaceEvaluator& s, const ParameterBox& domain, con
     }
     return worst;
 }
+
+namespace {
 
 using detail::angle_between;
 
@@ -267,6 +278,67 @@ bool triangulate_cell(const SurfaceEvaluator& s, const std::vector<CellVertex>& 
     while (lower.size() > 1 && lower.back().id == lower.front().id) lower.pop_back();
     for (std::size_t k = 0; k < lower.size(); ++k) out.push_back({&center, &lower[k], &lower[(k + 1) % lower.size()]});
     return true;
+}
+
+void strip_errors(const SurfaceEvaluator& s, const NurbsSurface& surface, std::span<const CellTriangle> triangles,
+                  double v0, double v1, double good_enough, std::vector<double>& errors) {
+    const ParameterBox domain{s.domain_u(), s.domain_v()};
+    // Every sample of a triangle between the two rows lies on one of the 7 lines v0 + (q / 6) (v1 - v0): its
+    // upper vertices' weight in sixths is q.
+    struct Sample {
+        std::size_t triangle;
+        double u;
+        Vec3 chord;
+    };
+    thread_local std::array<std::vector<Sample>, 7> levels;
+    for (auto& level : levels) level.clear();
+    for (std::size_t n = 0; n < triangles.size(); ++n) {
+        const CellTriangle& t = triangles[n];
+        for (const auto& b : kBarycentric) {
+            auto [u, v] = triangle_parameters(t, b);
+            // A rail that closes across a seam starts below u's domain (tessellate_rows.hpp): the same points.
+            if (u < domain.u.min) u += domain.u.max - domain.u.min;
+            double upper = 0;
+            for (std::size_t k = 0; k < 3; ++k)
+                if (t[k]->v == v1 && v1 != v0) upper += b[k];
+            const auto q = static_cast<std::size_t>(std::lround(6 * upper));
+            (void)v;
+            levels[q].push_back({n, u, b[0] * t[0]->point + b[1] * t[1]->point + b[2] * t[2]->point});
+        }
+    }
+    errors.assign(triangles.size(), 0.0);
+    thread_local std::vector<double> us;
+    thread_local SurfaceGrid batch;
+    for (std::size_t q = 0; q < levels.size(); ++q) {
+        std::vector<Sample>& level = levels[q];
+        if (level.empty()) continue;
+        std::sort(level.begin(), level.end(), [](const Sample& a, const Sample& b) { return a.u < b.u; });
+        us.clear();
+        for (const Sample& x : level) us.push_back(x.u);
+        const double v = q == 6 ? v1 : v0 + (v1 - v0) * (static_cast<double>(q) / 6.0);
+        evaluate_grid(surface, us, std::span<const double>(&v, 1), GridOutput::points, batch);
+        for (std::size_t k = 0; k < level.size(); ++k) {
+            const Sample& x = level[k];
+            double& error = errors[x.triangle];
+            const Vec3 on_surface = batch.points[k];
+            const double first = distance(on_surface, x.chord);
+            // A sample within good_enough is its own bound; only those above it (and above the triangle's largest
+            // so far, which a step only lowers towards) take Gauss-Newton steps, as triangle_error's.
+            if (first <= good_enough || first <= error) {
+                error = std::max(error, first);
+                continue;
+            }
+            error = std::max(error, gauss_newton_bound(s, x.chord, domain, x.u, v, on_surface,
+                                                       [&] { return s.first_derivatives(x.u, v); }, good_enough));
+        }
+    }
+}
+
+void triangulate_strip(const std::vector<CellVertex>& bottom, const std::vector<CellVertex>& top,
+                       std::vector<CellVertex>& lower, std::vector<CellVertex>& upper, std::vector<CellTriangle>& out) {
+    lower = collapse(bottom, CellVertex::Free::u);
+    upper = collapse(top, CellVertex::Free::u);
+    zip(lower, upper, [&](std::size_t i, std::size_t j) { return distance(lower[i].point, upper[j].point); }, out);
 }
 
 // The surface points of the checked cells come from batched lattice evaluations (evaluate_grid), a few

@@ -7,8 +7,10 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
+#include "analysis/point_inversion.hpp"
 #include "geometry/surface_evaluator.hpp"
 #include "ratbez/nurbs_surface.hpp"
 #include "ratbez/vec.hpp"
@@ -22,6 +24,20 @@ using MeshVertexId = std::uint32_t;
 struct ParameterGrid {
     std::vector<double> u, v;
     double cells() const { return static_cast<double>(u.size() - 1) * static_cast<double>(v.size() - 1); }
+};
+
+// Rows of a face whose u direction is closed on itself (a seam), meshed as strips between consecutive
+// rows (tessellate_rows.hpp): every row has samples of its own along u, so that rows can be staggered and
+// their counts follow the surface. Empty for a face meshed on its tensor grid.
+struct RowGrid {
+    std::vector<double> v;               // the rows, ascending, both ends of the domain included
+    std::vector<std::vector<double>> u;  // each row's samples along u, ascending, both ends included
+    std::vector<char> staggered;         // per strip: its rows are staggered (or one is a pole), the model's
+                                         // triangle; else they may drift against each other
+    std::vector<char> on_seam;           // per row: it has the seam's vertex at both ends; else its samples lie
+                                         // strictly inside u and it closes across the seam
+    std::vector<double> seam_v;          // the rows on the seam: the lines the seam's edge is sampled at
+    bool empty() const { return v.empty(); }
 };
 
 // A vertex of a cell: its parameters, its point and its mesh vertex.
@@ -46,6 +62,24 @@ bool triangulate_cell(const SurfaceEvaluator& s, const std::vector<CellVertex>& 
                       const std::vector<CellVertex>& right, const std::vector<CellVertex>& top,
                       const std::vector<CellVertex>& left, std::vector<CellVertex>& lower,
                       std::vector<CellVertex>& upper, CellVertex& center, std::vector<CellTriangle>& out);
+
+// Triangulates the strip between two rows of samples (each left to right; a row whose vertices share one id,
+// a pole, makes a fan) by the zipper, the shorter diagonal first: many samples on both rails leave the zipper
+// more than a cell's two diagonals to choose from, and on a saddle the one that sags least runs along an
+// asymptotic direction, into slivers. The triangles point into `lower` and `upper`.
+void triangulate_strip(const std::vector<CellVertex>& bottom, const std::vector<CellVertex>& top,
+                       std::vector<CellVertex>& lower, std::vector<CellVertex>& upper, std::vector<CellTriangle>& out);
+
+// triangle_error for every triangle of a strip between the rows v = v0 and v = v1 (each vertex on one of them),
+// into errors[k] for triangles[k]: the samples lie on seven lines of constant v, each evaluated in one batch
+// (surface_grid.hpp) instead of point by point.
+void strip_errors(const SurfaceEvaluator& s, const NurbsSurface& surface, std::span<const CellTriangle> triangles,
+                  double v0, double v1, double good_enough, std::vector<double>& errors);
+
+// An upper bound of the distance from triangle t to the surface at 25 barycentric points (every point in
+// sixths but the vertices), each tightened by Gauss-Newton steps until within `good_enough`. A collapsed
+// vertex (a pole) takes its free parameter from the other two, so its edges follow their meridians.
+double triangle_error(const SurfaceEvaluator& s, const ParameterBox& domain, const CellTriangle& t, double good_enough);
 
 // The outcome of check_grid.
 struct GridCheck {

@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 
+#include "mesh/tessellate_rows.hpp"
 #include "mesh/triangle_grid.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
@@ -109,15 +110,6 @@ std::vector<double> lines_from_density(const std::vector<double>& samples, Densi
     return place_lines(samples, rho, breaks);
 }
 
-// The spacing of the line interval containing parameter t (the larger of the two at a line).
-double spacing_at(const std::vector<double>& lines, double t) {
-    const auto it = std::upper_bound(lines.begin() + 1, lines.end() - 1, t);
-    const auto k = static_cast<std::size_t>(it - lines.begin()) - 1;  // lines[k] <= t <= lines[k + 1]
-    double h = lines[k + 1] - lines[k];
-    if (k > 0 && lines[k] == t) h = std::max(h, lines[k] - lines[k - 1]);
-    return h;
-}
-
 std::vector<double> bisect_marked(const std::vector<double>& lines, const std::vector<char>& marked) {
     std::vector<double> out{lines.front()};
     for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
@@ -184,6 +176,14 @@ bool is_crease(const Edge& edge, const EdgeUse& a, const EdgeUse& b) {
 }
 
 }  // namespace
+
+double spacing_at(const std::vector<double>& lines, double t) {
+    const auto it = std::upper_bound(lines.begin() + 1, lines.end() - 1, t);
+    const auto k = static_cast<std::size_t>(it - lines.begin()) - 1;  // lines[k] <= t <= lines[k + 1]
+    double h = lines[k + 1] - lines[k];
+    if (k > 0 && lines[k] == t) h = std::max(h, lines[k] - lines[k - 1]);
+    return h;
+}
 
 double curvature_sample_count(const NurbsSurface& s, std::size_t per_span) {
     return static_cast<double>(sample_params(breakpoints(s.degree_u(), s.knots_u()), per_span).size()) *
@@ -348,6 +348,20 @@ double OffsetField::interpolate(const std::vector<double>& field, double u, doub
 
 OffsetField offset_field(const CurvatureSamples& c, const ParameterGrid& g, const std::array<bool, 4>& collapsed_sides,
                          double max_offset, double target, bool straddle) {
+    const auto span_at = [&](std::size_t i, std::size_t j) {
+        const std::size_t k = c.at(i, j);
+        const double hu = spacing_at(g.u, c.us[i]), hv = spacing_at(g.v, c.vs[j]);
+        // Each chord term on the side its curvature puts it, the twist's on the other (see tessellate_plan.hpp).
+        ErrorSpan span;
+        for (double term : {c.L[k] * hu * hu / 8, c.N[k] * hv * hv / 8, -c.M[k] * hu * hv / 4})
+            (term < 0 ? span.below : span.above) += term;
+        return span;
+    };
+    return offset_field(c, span_at, collapsed_sides, max_offset, target, straddle);
+}
+
+OffsetField offset_field(const CurvatureSamples& c, const std::function<ErrorSpan(std::size_t, std::size_t)>& span_at,
+                         const std::array<bool, 4>& collapsed_sides, double max_offset, double target, bool straddle) {
     OffsetField field;
     field.us = c.us;
     field.vs = c.vs;
@@ -356,16 +370,10 @@ OffsetField offset_field(const CurvatureSamples& c, const ParameterGrid& g, cons
     field.lowest.assign(nu * nv, 0.0);
     field.highest.assign(nu * nv, 0.0);
     for (std::size_t i = 0; i < nu; ++i) {
-        const double hu = spacing_at(g.u, c.us[i]);
         for (std::size_t j = 0; j < nv; ++j) {
             const std::size_t k = c.at(i, j);
-            const double hv = spacing_at(g.v, c.vs[j]);
             const double reach = c.k_max[k] > 0 ? std::min(max_offset, 0.25 / c.k_max[k]) : max_offset;
-            // The errors of the mesh minus the surface with the vertices on it: each chord term on the
-            // side its curvature puts it, the twist's on the other (see tessellate_plan.hpp).
-            double below = 0, above = 0;
-            for (double term : {c.L[k] * hu * hu / 8, c.N[k] * hv * hv / 8, -c.M[k] * hu * hv / 4})
-                (term < 0 ? below : above) += term;
+            const auto [below, above] = span_at(i, j);
             const double centre = std::clamp(-(below + above) / 2, -reach, reach);
             field.values[k] = straddle ? centre : 0.0;
             field.lowest[k] = std::max(-target - below, -reach);
@@ -517,7 +525,12 @@ double triangles_at_least(const SurfacePlan& plan, std::size_t lines_u, std::siz
     return std::max(count, 0.0);
 }
 
-double triangles_at_least(const SurfacePlan& plan) { return triangles_at_least(plan, plan.grid.u.size(), plan.grid.v.size()); }
+double triangles_at_least(const SurfacePlan& plan) {
+    if (!plan.rows.empty()) return kRowsAtLeast * row_triangles(plan, plan.rows);
+    return triangles_at_least(plan, plan.grid.u.size(), plan.grid.v.size());
+}
+
+double SurfacePlan::cells() const { return rows.empty() ? grid.cells() : row_triangles(*this, rows) / 2; }
 
 bool may_straddle(std::span<const Face> faces) {
     for (const Face& face : faces) {
@@ -581,13 +594,18 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
     // shaped face errs both ways already when inscribed (see tessellate_plan.hpp), and gains little or
     // nothing from offsets. The inscribed grid is checked against the tolerance itself, as before there
     // were offsets; the straddling one a little below it (check_tolerance).
+    // A face that rows may mesh gets its grid within a wider cap: rows need up to a third fewer triangles, and
+    // a mesh within max_triangles must not be refused for its grid's count (the count decides once planned).
+    const SideMap &u_low = plan.sides[side_slot(Side::u_min)], &u_high = plan.sides[side_slot(Side::u_max)];
+    const bool rows_possible = straddle && settings.angle_rad == 0 && !u_low.degenerate && u_low.edge == u_high.edge;
+    const double grid_cap = (rows_possible ? 1.5 : 1.0) * max_cells(settings);
     auto choose = [&] {
         const ParameterGrid straddling = choose_grid(curvature, settings.check_tolerance(), settings.angle_rad,
-                                                     plan.min_segments, plan.creases, max_cells(settings), true);
+                                                     plan.min_segments, plan.creases, grid_cap, true);
         ParameterGrid inscribed;
         if (!straddle || straddling.u.empty() || !straddling_is_cheaper(curvature))
             inscribed = choose_grid(curvature, settings.tolerance, settings.angle_rad, plan.min_segments, plan.creases,
-                                    max_cells(settings), false);
+                                    grid_cap, false);
         plan.straddle = straddle && !straddling.u.empty() && (inscribed.u.empty() || straddling.cells() < inscribed.cells());
         plan.target = plan.straddle ? settings.check_tolerance() : settings.tolerance;
         plan.grid = plan.straddle ? straddling : std::move(inscribed);
@@ -599,6 +617,14 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
         choose();
     }
     if (plan.grid.u.empty()) throw TooFine(over_budget_triangles(plan, curvature, settings), settings.max_triangles);
+    // Staggered rows where the face allows them and the model finds them cheaper (tessellate_rows.hpp); the
+    // grid stays as the fallback should their check not converge.
+    if (rows_apply(plan, settings) && triangles_at_least(plan) >= kRowsFrom) {
+        RowGrid rows = plan_rows(plan, curvature, plan.target, max_cells(settings) / kRowsAtLeast);
+        if (!rows.empty() && row_triangles(plan, rows) < kRowsGain * triangles_at_least(plan)) plan.rows = std::move(rows);
+    }
+    if (triangles_at_least(plan) > max_cells(settings))
+        throw TooFine(over_budget_triangles(plan, curvature, settings), settings.max_triangles);
     set_offsets(plan, curvature);
     return plan;
 }
@@ -641,17 +667,27 @@ void check_sides(const SurfacePlan& plan, const std::vector<Vec3>& corners, Grid
     }
 }
 
-// The worst check of a fresh straddling grid beyond which the face is meshed inscribed instead.
-constexpr double kStraddleGiveUp = 1.5;
-
 }  // namespace
 
 void set_offsets(SurfacePlan& plan, const CurvatureSamples& curvature) {
+    if (!plan.rows.empty()) {
+        plan.offsets = row_offset_field(plan, curvature);
+        return;
+    }
     plan.offsets = offset_field(curvature, plan.grid, collapsed_sides(plan), plan.max_offset(), plan.target, plan.straddle);
 }
 
 bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const TessellationSettings& settings,
                  const GridPoints& points, const RefineStart& start) {
+    if (!plan.rows.empty()) {
+        const RowRefinement outcome = refine_rows(plan, curvature, settings, points, start.rescale);
+        if (outcome != RowRefinement::given_up) return outcome == RowRefinement::changed;
+        // The tensor grid the rows were chosen over, fresh: planned, checked and refined as any.
+        plan.rows = {};
+        set_offsets(plan, curvature);
+        refine_grid(plan, curvature, settings, points);
+        return true;
+    }
     double target = plan.target;
     std::vector<Vec3> corners;
     const std::array<bool, 4> collapsed = collapsed_sides(plan);
@@ -736,6 +772,7 @@ void match_lines_at_creases(std::vector<SurfacePlan>& plans, const TessellationS
         bool changed = false;
         for (auto& [edge, list] : uses) {
             if (list.size() != 2 || list[0].plan == list[1].plan || !is_crease(*edge, list[0], list[1])) continue;
+            if (!list[0].plan->rows.empty() || !list[1].plan->rows.empty()) continue;  // rows take no lines
             for (int k = 0; k < 2; ++k) {
                 const EdgeUse& to = list[static_cast<std::size_t>(k)];
                 const EdgeUse& from = list[static_cast<std::size_t>(1 - k)];
@@ -765,6 +802,31 @@ void match_lines_at_creases(std::vector<SurfacePlan>& plans, const TessellationS
             }
         }
         if (!changed) break;
+    }
+}
+
+const std::vector<double>& side_lines(const SurfacePlan& plan, Side side) {
+    if (plan.rows.empty()) return runs_along_u(side) ? plan.grid.u : plan.grid.v;
+    if (!runs_along_u(side)) return plan.rows.seam_v;
+    return side == Side::v_min ? plan.rows.u.front() : plan.rows.u.back();
+}
+
+void take_lines_into_rows(std::vector<SurfacePlan>& plans) {
+    for (SurfacePlan& plan : plans) {
+        if (plan.rows.empty()) continue;
+        for (Side side : {Side::v_min, Side::v_max}) {
+            const SideMap& m = plan.sides[side_slot(side)];
+            if (m.degenerate) continue;
+            std::vector<double>& row = side == Side::v_min ? plan.rows.u.front() : plan.rows.u.back();
+            std::vector<double> merged = row;
+            for (const SurfacePlan& other : plans)
+                for (Side beyond : kSides) {
+                    const SideMap& o = other.sides[side_slot(beyond)];
+                    if (o.degenerate || o.edge != m.edge || (&other == &plan && beyond == side)) continue;
+                    for (double p : side_lines(other, beyond)) merged.push_back(m.to_face(o.to_edge(p)));
+                }
+            row = merge_params(std::move(merged), row.front(), row.back());
+        }
     }
 }
 
@@ -813,8 +875,9 @@ void plan_surfaces(std::span<const Face> faces, const TessellationSettings& sett
             throw TooFine(total, settings.max_triangles);
     }
     std::vector<std::size_t> cells_before;
-    for (const SurfacePlan& plan : plans) cells_before.push_back(static_cast<std::size_t>(plan.grid.cells()));
+    for (const SurfacePlan& plan : plans) cells_before.push_back(static_cast<std::size_t>(plan.cells()));
     match_lines_at_creases(plans, settings);
+    take_lines_into_rows(plans);
     // The points along a face's sides move as the faces on both sides wish (and a face that took lines
     // across a crease has new offsets): the faces refined before a neighbour were checked with points that
     // have moved since. Checked again with the final points, all cells of a face whose grid changed, the
@@ -823,7 +886,7 @@ void plan_surfaces(std::span<const Face> faces, const TessellationSettings& sett
     // checked with its final points already.
     std::vector<char> changed(plans.size());
     for (std::size_t k = 0; k < plans.size(); ++k) {
-        changed[k] = static_cast<std::size_t>(plans[k].grid.cells()) != cells_before[k];
+        changed[k] = static_cast<std::size_t>(plans[k].cells()) != cells_before[k];
         if (changed[k]) {
             set_offsets(plans[k], curvatures[k]);
             others_moved(k);

@@ -74,6 +74,9 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
 // in parameter: the rational circle's double knots are G1 and need no line), with the domain's ends.
 std::vector<double> crease_lines(const NurbsSurface& s, const SurfaceEvaluator& e, bool along_u);
 
+// The spacing of the line interval containing parameter t (the larger of the two at a line).
+double spacing_at(const std::vector<double>& lines, double t);
+
 // The offsets of a face's vertices along its outward normal, and the range of offsets its cells accept
 // there: values on the curvature samples, bilinear in between.
 struct OffsetField {
@@ -99,12 +102,22 @@ private:
 OffsetField offset_field(const CurvatureSamples& c, const ParameterGrid& g, const std::array<bool, 4>& collapsed_sides,
                          double max_offset, double target, bool straddle = true);
 
+// The errors (mesh minus surface, along the normal) of the cells at a curvature sample with the vertices
+// on the surface: the lowest (<= 0) and the highest (>= 0).
+struct ErrorSpan {
+    double below = 0, above = 0;
+};
+// offset_field for any layout of cells: `span_at(i, j)` gives the errors at curvature sample (i, j).
+OffsetField offset_field(const CurvatureSamples& c, const std::function<ErrorSpan(std::size_t, std::size_t)>& span_at,
+                         const std::array<bool, 4>& collapsed_sides, double max_offset, double target, bool straddle);
+
 // The plan of a surface face: its sides, grid, offsets and what the grid must respect.
 struct SurfacePlan {
     const Face* face = nullptr;
     std::shared_ptr<const SurfaceEvaluator> evaluator;
     std::array<SideMap, 4> sides;  // indexed by side_slot
     ParameterGrid grid;
+    RowGrid rows;  // not empty: the face is meshed in rows (tessellate_rows.hpp), `grid` is its fallback
     std::array<int, 2> min_segments{1, 1};
     std::array<std::vector<double>, 2> creases;
     bool straddle = true;  // vertices moved off the surface by `offsets`; else on it (no offsets)
@@ -114,6 +127,9 @@ struct SurfacePlan {
     // The largest offset of a vertex of this face: the vertex itself errs by that much, below the target so
     // that refining a failing cell always ends.
     double max_offset() const { return kOffsetShare * target; }
+    // The cells of its grid, or half the triangles of its rows: how much the face weighs against another
+    // (tessellate_offsets.hpp) and whether its plan changed.
+    double cells() const;
 };
 
 // Where the mesh puts the vertices of a plan's grid (index i * grid.v.size() + j): inside the face its
@@ -162,6 +178,10 @@ bool may_straddle(std::span<const Face> faces);
 // The plan's offsets for its current grid (offset_field).
 void set_offsets(SurfacePlan& plan, const CurvatureSamples& curvature);
 
+// The worst check of a fresh straddling plan beyond which its model is taken to be far off: the grid is
+// meshed inscribed instead, rows fall back to the grid.
+inline constexpr double kStraddleGiveUp = 1.5;
+
 // Where refine_grid starts: the cells to check first (rows check_u[i], columns check_v[j]; empty: all) and
 // whether it may rescale the whole grid (a fresh plan) or only bisect (a plan other faces' points rely on).
 struct RefineStart {
@@ -180,6 +200,14 @@ bool refine_grid(SurfacePlan& plan, const CurvatureSamples& curvature, const Tes
 // Where a face's row along a crease edge shared with another face is thin, it takes the other face's
 // lines across the edge (see tessellate_plan.cpp).
 void match_lines_at_creases(std::vector<SurfacePlan>& plans, const TessellationSettings& settings);
+
+// The lines of a plan that meet `side` (its samples along it): the grid's lines along it, or for a plan in
+// rows the first or last row's samples along u, the rows along v.
+const std::vector<double>& side_lines(const SurfacePlan& plan, Side side);
+
+// A face in rows takes into its first and last rows the lines the other faces along those edges propose there
+// (an edge is sampled at the union of its faces' lines): its check then sees the rails its mesh will zip.
+void take_lines_into_rows(std::vector<SurfacePlan>& plans);
 
 // The whole planning stage for the faces of a solid (or a single face): plan_face for every surface face
 // (into `plans`, which `points` may read: the offsets of a shared edge depend on the faces on both sides),

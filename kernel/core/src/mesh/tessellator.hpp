@@ -6,7 +6,9 @@
 //   mesh assembly                                             mesh_planar; TooFine's estimate
 //   grid planning and refinement   tessellate_plan.hpp/.cpp   plan_surfaces, plan_face, choose_grid,
 //                                                             refine_grid, match_lines_at_creases
-//   the cells: triangles, checks   tessellate_cells.hpp/.cpp  triangulate_cell, check_grid
+//   staggered rows (closed faces)  tessellate_rows.hpp/.cpp   plan_rows, refine_rows, row_offset_field, row_rail
+//   the cells: triangles, checks   tessellate_cells.hpp/.cpp  triangulate_cell, check_grid, triangulate_strip,
+//                                                             strip_errors
 //   a face's sides on its edges    tessellate_sides.hpp/.cpp  map_side, merge_params
 //   vertex and sample offsets      tessellate_offsets.hpp/.cpp shared_offset (OffsetWish, EdgeBend)
 //   triangle distances             triangle_grid.hpp/.cpp     point_segment_distance, point_triangle_distance
