@@ -59,6 +59,16 @@ double largest_within(Width&& width_of, double width, double upper) {
     return low;
 }
 
+// The largest side x of a grid cell x by y whose bound (P x^2 + Q y^2) / 8 + T x y / 4 stays within `width`:
+// P and Q the bends along x and y, T the twist (magnitudes); 0 when y alone exceeds it, infinite where
+// nothing bends along x. A strip whose rows drift is bounded so along u and along v alike.
+double cell_side(double P, double Q, double T, double y, double width) {
+    const double rest = 8 * width - (Q > 0 ? Q * y * y : 0.0);  // an infinite y where Q vanishes adds nothing
+    if (rest <= 0 || (T > 0 && !std::isfinite(y))) return 0;
+    if (P > 0) return (-T * y + std::sqrt(T * T * y * y + P * rest)) / P;
+    return T > 0 ? rest / (2 * T * y) : kInfinity;
+}
+
 // The largest strip height k whose triangles of base h err within `width` (0: none; infinite: any).
 double strip_height(const Bend& b, double h, double width, bool staggered) {
     double k = kInfinity;
@@ -70,10 +80,7 @@ double strip_height(const Bend& b, double h, double width, bool staggered) {
         if (b.L * h * h > 8 * width) return 0;
         return b.N > 0 ? std::sqrt((8 * width - 0.75 * b.L * h * h) / b.N) : kInfinity;
     } else {
-        const double rest = 8 * width - b.L * h * h;
-        if (rest <= 0) return 0;
-        if (b.N > 0) return (-b.M * h + std::sqrt(b.M * b.M * h * h + b.N * rest)) / b.N;
-        return b.M > 0 ? rest / (2 * b.M * h) : kInfinity;
+        return cell_side(b.N, b.L, b.M, h, width);
     }
     if (b.M == 0 || h == 0) return k;
     const double twist_bound = 4 * width / (b.M * h);
@@ -96,10 +103,7 @@ double row_spacing(const Bend& b, double k, double width, bool staggered) {
         if (nk2 > 8 * width) return 0;
         if (b.L > 0) return std::sqrt(nk2 >= 2 * width ? (8 * width - nk2) / (0.75 * b.L) : 8 * width / b.L);
     } else {
-        const double rest = 8 * width - nk2;
-        if (rest <= 0) return 0;
-        if (b.L > 0) return (-b.M * k + std::sqrt(b.M * b.M * k * k + b.L * rest)) / b.L;
-        return b.M > 0 ? rest / (2 * b.M * k) : kInfinity;
+        return cell_side(b.L, b.N, b.M, k, width);
     }
     if (b.M == 0 || k == 0) return h;
     const double twist_bound = 4 * width / (b.M * k);
