@@ -55,6 +55,9 @@ release_only='^TessellateEconomy\.|^CliEconomy\.|_1e_minus_4|CorpusModel\..*_(st
 # runs under the sanitizers in the Topology tests and the corpus's round trips.
 release_only="$release_only|^Modelling\.SweepsAreValidAndMatchMakePipeShell$|^Import\.ReadBackSolidsConvertAgainWithOneFacePerPatch$"
 release_only="$release_only|^Topology\.BezierFacesAreReadByOcctsFixedRuleAndPassTheBopCheck$|CorpusModel\.WrittenSolids"
+# The budget's estimates (coarser tessellations of the same solid until one fits, up to 20,000 triangles) repeat
+# what every tessellation test runs here, and prove the counts and messages of a refusal.
+release_only="$release_only|^HostileTessellation\.TooFineToleranceIsRejectedByTheBudget$|^Tessellate\.TriangleBudgetIsCheckedBeforeMeshing$"
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
