@@ -95,10 +95,9 @@ constexpr std::array<std::array<double, 3>, 25> sixths_barycentric() {
 }
 constexpr auto kBarycentric = sixths_barycentric();
 
-}  // namespace
-
-// The distance from each kBarycentric sample to the surface point at its triangle_parameters, improved by
-// gauss_newton_bound (which stops refining towards the true distance once a sample is within `good_enough`).
+// An upper bound of the chordal error of a triangle at the kBarycentric points: the distance from each
+// sample to the surface point at its triangle_parameters, improved by gauss_newton_bound (which stops
+// refining towards the true distance once a sample is within `good_enough`).
 double triangle_error(const SurfaceEvaluator& s, const ParameterBox& domain, const CellTriangle& t, double good_enough) {
     double worst = 0;
     for (const auto& b : kBarycentric) {
@@ -110,8 +109,6 @@ double triangle_error(const SurfaceEvaluator& s, const ParameterBox& domain, con
     }
     return worst;
 }
-
-namespace {
 
 using detail::angle_between;
 

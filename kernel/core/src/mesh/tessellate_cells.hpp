@@ -76,11 +76,6 @@ void triangulate_strip(const std::vector<CellVertex>& bottom, const std::vector<
 void strip_errors(const SurfaceEvaluator& s, const NurbsSurface& surface, std::span<const CellTriangle> triangles,
                   double v0, double v1, double good_enough, std::vector<double>& errors);
 
-// An upper bound of the distance from triangle t to the surface at 25 barycentric points (every point in
-// sixths but the vertices), each tightened by Gauss-Newton steps until within `good_enough`. A collapsed
-// vertex (a pole) takes its free parameter from the other two, so its edges follow their meridians.
-double triangle_error(const SurfaceEvaluator& s, const ParameterBox& domain, const CellTriangle& t, double good_enough);
-
 // The outcome of check_grid.
 struct GridCheck {
     double worst_ratio = 0;                // the largest cell error over the tolerance (just above 1 for an angle failure)

@@ -530,6 +530,12 @@ double triangles_at_least(const SurfacePlan& plan) {
     return triangles_at_least(plan, plan.grid.u.size(), plan.grid.v.size());
 }
 
+std::array<bool, 4> collapsed_sides(const SurfacePlan& plan) {
+    std::array<bool, 4> collapsed{};
+    for (Side side : kSides) collapsed[side_slot(side)] = plan.sides[side_slot(side)].degenerate;
+    return collapsed;
+}
+
 double SurfacePlan::cells() const { return rows.empty() ? grid.cells() : row_triangles(*this, rows) / 2; }
 
 bool may_straddle(std::span<const Face> faces) {
@@ -631,11 +637,6 @@ SurfacePlan plan_face(const Face& face, const TessellationSettings& settings, Cu
 
 namespace {
 
-std::array<bool, 4> collapsed_sides(const SurfacePlan& plan) {
-    std::array<bool, 4> collapsed{};
-    for (Side side : kSides) collapsed[side_slot(side)] = plan.sides[side_slot(side)].degenerate;
-    return collapsed;
-}
 
 // The polylines along the face's sides against its boundary curves: a side's points are off the surface
 // (by its offsets, or as the faces beyond it wish), and at a crease the curve is the mesh's edge, which no

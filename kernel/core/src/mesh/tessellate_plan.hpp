@@ -175,6 +175,9 @@ double triangles_at_least(const SurfacePlan& plan, std::size_t lines_u, std::siz
 inline constexpr double kStraddleWeightRatio = 16;
 bool may_straddle(std::span<const Face> faces);
 
+// Which of the plan's sides (indexed like Face::sides()) collapse to a point (a pole).
+std::array<bool, 4> collapsed_sides(const SurfacePlan& plan);
+
 // The plan's offsets for its current grid (offset_field).
 void set_offsets(SurfacePlan& plan, const CurvatureSamples& curvature);
 

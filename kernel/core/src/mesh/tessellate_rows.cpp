@@ -535,11 +535,6 @@ ErrorSpan sample_errors(const SurfacePlan& plan, const CurvatureSamples& c, std:
     return span;
 }
 
-std::array<bool, 4> collapsed_sides(const SurfacePlan& plan) {
-    std::array<bool, 4> collapsed{};
-    for (Side side : kSides) collapsed[side_slot(side)] = plan.sides[side_slot(side)].degenerate;
-    return collapsed;
-}
 
 // The outcome of check_rows: the worst error over the target, and what to bisect.
 struct RowCheck {
