@@ -117,12 +117,12 @@ TEST_F(ThreeMf, ExportTessellationChecksTheCoordinatesAsReadBackAndStatesTheVers
 }
 
 TEST_F(ThreeMf, RefusesAMeshLib3mfsCoordinatesMoveBeyondTheToleranceNamingThe3mfFormat) {
-    // Two cases: 6 decimals cut too coarse for a 0.02 mm ball at 1e-6, and float32 too coarse far away.
+    // Two cases: 6 decimals cut too coarse for a 0.006 mm ball at 1e-6, and float32 too coarse far away.
     struct Case {
         Solid solid;
         double tolerance;
     };
-    for (const Case& c : {Case{sphere(0.01), 1e-6}, Case{sphere(1, {1e6, 0, 0}), 1e-3}}) {
+    for (const Case& c : {Case{sphere(0.003), 1e-6}, Case{sphere(1, {1e6, 0, 0}), 1e-3}}) {
         const Mesh mesh = tessellate(c.solid, c.tolerance);
         ExportOptions options;
         options.openscad.module_name = "small";

@@ -9,7 +9,8 @@
 // a deterministic subset: the OCCT check, CGAL's self-intersection test and max_deviation on every 10th
 // case (index % 10 == 0). The other CGAL checks (closed, manifold, outward) run on all.
 // The Release suite runs 10 shards of 200 cases (2,000, within the test command's 15 minutes); the sanitizer
-// build (Debug + ASan + UBSan, about 15x slower) runs 10 shards of 25 (250), with the same stage schedule.
+// build (Debug + ASan + UBSan, about 15x slower) runs 10 shards of 15 (150), with the same stage schedule,
+// and FoundSeeds replays every seed that ever failed.
 // RATBEZ_ROUND_TRIP_CASES sets the cases per shard (scripts/soak.sh runs 1,000 per shard and more).
 //
 // Case i of the run uses the seed base + i (base 20261122 unless RATBEZ_ROUND_TRIP_SEED says otherwise);
@@ -45,10 +46,10 @@ namespace ratbez::reliability {
 namespace {
 
 #if defined(__SANITIZE_ADDRESS__)
-constexpr int default_cases_per_shard = 25;
+constexpr int default_cases_per_shard = 15;
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-constexpr int default_cases_per_shard = 25;
+constexpr int default_cases_per_shard = 15;
 #else
 constexpr int default_cases_per_shard = 200;
 #endif

@@ -270,10 +270,21 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
         const auto& creases_second = creases[u_first ? 1 : 0];
         const double floor_first = min_first / (first_samples.back() - first_samples.front());
         const double floor_second = min_second / (second_samples.back() - second_samples.front());
+        // The second direction needs at least the lines it would with the whole span to itself (what the first
+        // leaves is never more): the first may have at most max_cells / that many, which refuses a hopeless
+        // tolerance before millions of lines are placed.
+        const std::vector<double>& max_k_second = u_first ? max_N : max_L;
+        const double span = straddle ? 2 * kOffsetShare * target : target;
+        double second_least = 0;
+        for (std::size_t b = 0; b + 1 < second_samples.size(); ++b) {
+            const double h = second_samples[b + 1] - second_samples[b];
+            second_least += h * interval_density(floor_second, std::max(max_k_second[b], max_k_second[b + 1]) / (8 * span),
+                                                 turn_second[b], h, angle_rad);
+        }
+        const double max_first = max_cells / std::max(1.0, second_least);
         for (double share : {0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8}) {
             // |k| h^2 is 8 times a direction's part of the span, which may be twice the largest offset in
             // all for a straddling mesh, the target for an inscribed one.
-            const double span = straddle ? 2 * kOffsetShare * target : target;
             const double budget8 = 8 * share * span;
             const auto first = lines_from_density(
                 first_samples,
@@ -281,7 +292,7 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
                     return interval_density(floor_first, std::max(max_k_first[a], max_k_first[a + 1]) / budget8,
                                             turn_first[a], first_samples[a + 1] - first_samples[a], angle_rad);
                 },
-                creases_first, max_cells, rho);
+                creases_first, max_first, rho);
             if (first.empty()) continue;
             // What the first direction's actual chords leave of the span at each place (whatever the signs:
             // the mesh straddles the surface, see tessellate_plan.hpp), for the second direction's chords and
@@ -501,13 +512,18 @@ namespace {
 // The triangles a face's grid would need when choose_grid found none within the budget, for the error
 // message: the grid for a tolerance f times coarser (and an angle sqrt(f) times wider) that fits, scaled
 // back by f, since the line spacing in each direction goes as sqrt(tolerance / curvature) (the chord
-// sagitta) and as the angle, so the cells go as 1 / f. At least the budget + 1.
+// sagitta) and as the angle, so the cells go as 1 / f. At least the budget + 1. The coarse grids are held to
+// kEstimateCells, not to the budget: a hopeless request (tolerance 1e-15 under the default 20 million) is
+// refused in milliseconds instead of after placing millions of lines for each f (26 s, measured).
+constexpr double kEstimateCells = 1e5;
+
 double over_budget_triangles(const SurfacePlan& plan, const CurvatureSamples& curvature,
                              const TessellationSettings& settings) {
     const double at_least = static_cast<double>(settings.max_triangles) + 1;
-    for (double f = 4; f <= 1e6; f *= 4) {
+    const double cells = std::min(max_cells(settings), kEstimateCells);
+    for (double f = 4; settings.tolerance * f < std::numeric_limits<double>::max() / 4; f *= 4) {
         const ParameterGrid coarse = choose_grid(curvature, settings.tolerance * f, settings.angle_rad * std::sqrt(f),
-                                        plan.min_segments, plan.creases, max_cells(settings));
+                                                 plan.min_segments, plan.creases, cells);
         if (!coarse.u.empty()) return std::max(at_least, 2 * coarse.cells() * f);
     }
     return at_least;
