@@ -6,6 +6,7 @@
 #include <cmath>
 #include <utility>
 
+#include "geometry/surface_evaluator.hpp"
 #include "math/numeric_internal.hpp"
 #include "ratbez/box.hpp"
 #include "ratbez/error.hpp"
@@ -378,10 +379,11 @@ private:
     std::array<Vec3, 3> evaluate(double x, double y) const {
         const int i = std::clamp(static_cast<int>(std::floor(x)), 0, nu_ - 1), j = std::clamp(static_cast<int>(std::floor(y)), 0, nv_ - 1);
         const Cell& c = cell(i, j);
-        const double u = std::clamp(c.u0 + (x - i) * (c.u1 - c.u0), c.u0, c.u1);
-        const double v = std::clamp(c.v0 + (y - j) * (c.v1 - c.v0), c.v0, c.v1);
-        const auto d = strip_.pieces[c.piece].derivatives(u, v, 1);
-        return {d[0][0], d[1][0] * (c.u1 - c.u0), d[0][1] * (c.v1 - c.v0)};
+        // The cell's own Bézier patch in its local parameters (x - i, y - j): the partials the search steps in,
+        // with no allocation (NurbsSurface::derivatives returns nested vectors; this is the search's inner loop).
+        const SurfaceFirstDerivatives d =
+            bezier_patch_first_derivatives(c.net.data(), c.p, c.q, std::clamp(x - i, 0.0, 1.0), std::clamp(y - j, 0.0, 1.0));
+        return {d.s, d.su, d.sv};
     }
 
     // Gauss–Newton on S(p) - S(q) = 0 with p in a, q in b (the least-norm step of the 3 x 4 system).
