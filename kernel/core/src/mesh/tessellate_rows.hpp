@@ -16,7 +16,7 @@
 // fewest. A staggered row lies off the seam and closes across it (row_rail): a vertex of every row on the
 // seam would make a column of right triangles there, whose chord along v errs more than any staggered edge.
 // Measured at 0.01 (TessellateEconomy): the sphere r = 10 in 3,156 triangles (grid: 4,284; equilateral
-// triangles at the model's limit: 2,600), the torus 10 / 3 in 4,382 (5,226), the vase in 2,920 (3,508).
+// triangles at the model's limit: 2,600), the torus 10 / 3 in 4,388 (5,226), the vase in 2,796 (3,508).
 //
 // The error model. With z = d^T H d / 2 the surface over its tangent plane in parameters (H = [L M; M N], L =
 // S_uu . n, M = S_uv . n, N = S_vv . n), linear interpolation at a triangle's vertices p_i errs at its
@@ -27,8 +27,9 @@
 // twist adds at most |M| h k / 8 either way. On a saddle (L and N of opposite signs, no twist) the extremes
 // lie on the edges: L h^2 / 8 at the base's midpoint, (L h^2 / 4 + N k^2) / 8 at the slanted ones'. Where
 // the rails drift, or a saddle is twisted, the tensor cell's bound: (|L| h^2 + |N| k^2) / 8 + |M| h k / 4.
-// The offsets centre the errors as on the grid; a check that finds the model a little optimistic somewhere
-// (curvature that changes between its samples) plans the rows again with the span lowered there.
+// The offsets centre the errors of each row's two strips, computed on the rows themselves (row_offset_field); a
+// check that finds the model a little optimistic somewhere (curvature that changes between its samples) plans
+// the rows again with the span lowered there.
 //
 // Not installed, not part of the public API.
 
@@ -91,7 +92,8 @@ void row_rail(const RowGrid& rows, const std::vector<std::size_t>& starts, std::
 // Rebuilds rows.seam_v from rows.on_seam.
 void index_seam(RowGrid& rows);
 
-// The plan's offsets for its rows (offset_field with the strips' errors).
+// The plan's offsets for its rows: offset_field on the rows' own v (the curvature interpolated there), each row at
+// the centre of the errors of its two strips.
 OffsetField row_offset_field(const SurfacePlan& plan, const CurvatureSamples& c);
 
 // The surface points of every row vertex (row_starts' order), moved along the normal by the plan's offsets
