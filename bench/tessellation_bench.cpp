@@ -47,6 +47,7 @@
 #include <vector>
 
 #include "bench_shapes.hpp"
+#include "build_paths.hpp"
 #include "ratbez/deviation.hpp"
 #include "ratbez/occt/files.hpp"
 #include "ratbez/occt/geometry.hpp"
@@ -185,7 +186,7 @@ void corpus_brepmesh(benchmark::State& state, const CorpusModel& model) {
 
 void register_corpus() {
     std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(RATBEZ_CORPUS_DIR))
+    for (const auto& entry : std::filesystem::directory_iterator(build_paths::corpus_dir))
         if (entry.path().extension() == ".brep") files.push_back(entry.path());
     std::sort(files.begin(), files.end());
     static std::vector<CorpusModel> models;

@@ -55,6 +55,10 @@
 
 extern char** environ;
 
+namespace ratbez::build_paths {
+extern const char* const examples_dir;  // examples/ of this checkout, `ratbez demo`'s default (cli/CMakeLists.txt)
+}
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -755,11 +759,7 @@ int command_demo(const std::vector<std::string>& raw) {
     const Arguments args = parse_arguments("demo", raw, {"--examples"}, {"--no-render"});
     if (args.positional.size() > 1) throw UsageError(args.positional[1], "unexpected argument for 'demo'");
     const fs::path out_dir = args.positional.empty() ? fs::path("ratbez-demo") : fs::path(args.positional.front());
-#ifdef RATBEZ_EXAMPLES_DIR
-    fs::path examples = RATBEZ_EXAMPLES_DIR;
-#else
-    fs::path examples = "examples";
-#endif
+    fs::path examples = ratbez::build_paths::examples_dir;
     if (auto e = args.value("--examples")) examples = *e;
     std::error_code error;
     if (!fs::is_directory(examples, error)) throw UsageError("--examples", "'" + examples.string() + "' is not a directory");

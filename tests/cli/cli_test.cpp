@@ -22,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "build_paths.hpp"
 #include "ratbez/export/three_mf.hpp"
 
 namespace {
@@ -60,7 +61,7 @@ protected:
     void TearDown() override { fs::remove_all(dir_); }
 
     CommandResult ratbez(const std::vector<std::string>& args) const {
-        std::string command = quoted(RATBEZ_CLI);
+        std::string command = quoted(ratbez::build_paths::cli);
         for (const auto& a : args) command.append(" ").append(quoted(a));
         const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
         command.append(" >").append(quoted(out.string())).append(" 2>").append(quoted(err.string())).append(" </dev/null");
@@ -77,7 +78,7 @@ protected:
         return p.string();
     }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    static std::string example(const std::string& name) { return std::string(RATBEZ_EXAMPLES_DIR) + "/" + name; }
+    static std::string example(const std::string& name) { return std::string(ratbez::build_paths::examples_dir) + "/" + name; }
 
     fs::path dir_;
 };
@@ -358,7 +359,7 @@ TEST_F(Cli, ExportsEveryFormat) {
 }
 
 TEST_F(Cli, ExportsEveryExampleAsScad) {
-    for (const auto& entry : fs::directory_iterator(RATBEZ_EXAMPLES_DIR)) {
+    for (const auto& entry : fs::directory_iterator(ratbez::build_paths::examples_dir)) {
         if (entry.path().extension() != ".json") continue;
         const std::string out = path(entry.path().stem().string() + ".scad");
         const CommandResult run = ratbez({"export", entry.path().string(), "-o", out});
@@ -492,7 +493,7 @@ bool only_known_bop_findings(const nlohmann::json& report) {
 }
 
 TEST_F(Cli, CheckPassesOnEveryExample) {
-    for (const auto& entry : fs::directory_iterator(RATBEZ_EXAMPLES_DIR)) {
+    for (const auto& entry : fs::directory_iterator(ratbez::build_paths::examples_dir)) {
         if (entry.path().extension() != ".json") continue;
         const CommandResult run = ratbez({"check", entry.path().string(), "--json"});
         const auto report = nlohmann::json::parse(run.out, nullptr, false);
@@ -646,7 +647,7 @@ TEST_F(Cli, SpecColourWrapsTheModuleBody) {
 
 // ---- model files (issue 24): a .step/.stp/.brep works wherever a spec does, every solid in it ----------
 
-std::string corpus(const std::string& name) { return std::string(RATBEZ_CORPUS_DIR) + "/" + name; }
+std::string corpus(const std::string& name) { return std::string(ratbez::build_paths::corpus_dir) + "/" + name; }
 
 TEST_F(Cli, InfoListsEverySolidOfAModelFile) {
     const CommandResult run = ratbez({"info", "--json", corpus("two_solids.step")});

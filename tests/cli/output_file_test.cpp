@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "build_paths.hpp"
 #include "temp_directory_test_support.hpp"
 
 namespace {
@@ -36,7 +37,7 @@ protected:
                        rlim_t file_size_limit = RLIM_INFINITY) {
         const pid_t pid = fork();
         if (pid == 0) {
-            std::vector<char*> argv{const_cast<char*>(RATBEZ_CLI)};
+            std::vector<char*> argv{const_cast<char*>(ratbez::build_paths::cli)};
             for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
             argv.push_back(nullptr);
             // No progress line on the stderr the tests read, however slow the build (a sanitizer's).
@@ -54,7 +55,7 @@ protected:
             }
             std::freopen("/dev/null", "w", stdout);
             std::freopen(error_file.c_str(), "w", stderr);
-            execv(RATBEZ_CLI, argv.data());
+            execv(ratbez::build_paths::cli, argv.data());
             _exit(127);
         }
         return pid;
@@ -87,7 +88,7 @@ protected:
     int interrupt_step_export(const fs::path& target, int signal_number, const std::string& error_file = "/dev/null") const {
         for (int attempt = 0; attempt < 5; ++attempt) {
             const pid_t pid =
-                start({"export", std::string(RATBEZ_EXAMPLES_DIR) + "/vase.json", "-o", target.string()}, error_file);
+                start({"export", std::string(ratbez::build_paths::examples_dir) + "/vase.json", "-o", target.string()}, error_file);
             if (wait_for_temporary(pid)) {
                 kill(pid, signal_number);
                 return wait_status(pid);
@@ -155,7 +156,7 @@ TEST_F(OutputFile, TheFileSizeLimitIsAOneLineErrorAndLeavesNoTemporary) {
     for (const std::string extension : {".stl", ".step"}) {
         const fs::path target = directory_ / ("out" + extension);
         std::ofstream(target) << "old";
-        const pid_t pid = start({"export", std::string(RATBEZ_EXAMPLES_DIR) + "/vase.json", "-o", target.string()},
+        const pid_t pid = start({"export", std::string(ratbez::build_paths::examples_dir) + "/vase.json", "-o", target.string()},
                                 errors.string(), 2048);
         const int status = wait_status(pid);
         ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << extension << " status " << status;
@@ -180,7 +181,7 @@ TEST_F(OutputFile, SymbolicLinkAtTheTargetIsRefusedForEveryFormat) {
     for (const std::string extension : {".scad", ".stl", ".off", ".step", ".brep"}) {
         const fs::path link = directory_ / ("out" + extension);
         fs::create_symlink(victim, link);
-        const pid_t pid = start({"export", std::string(RATBEZ_EXAMPLES_DIR) + "/cylinder.json", "-o", link.string()});
+        const pid_t pid = start({"export", std::string(ratbez::build_paths::examples_dir) + "/cylinder.json", "-o", link.string()});
         const int status = wait_status(pid);
         EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << extension;
         EXPECT_EQ(read_file(victim), "precious") << extension;
@@ -192,7 +193,7 @@ TEST_F(OutputFile, SymbolicLinkAtTheTargetIsRefusedForEveryFormat) {
 TEST_F(OutputFile, LongFileNamesWork) {
     for (const std::string extension : {".scad", ".step"}) {
         const fs::path target = directory_ / (std::string(255 - extension.size(), 'n') + extension);
-        const pid_t pid = start({"export", std::string(RATBEZ_EXAMPLES_DIR) + "/cylinder.json", "-o", target.string()});
+        const pid_t pid = start({"export", std::string(ratbez::build_paths::examples_dir) + "/cylinder.json", "-o", target.string()});
         const int status = wait_status(pid);
         EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << extension;
         EXPECT_GT(fs::file_size(target), 100u) << extension;

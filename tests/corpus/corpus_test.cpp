@@ -44,6 +44,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.hpp"
 #include "ratbez/deviation.hpp"
 #include "ratbez/export/export.hpp"
 #include "ratbez/export/mesh_checks.hpp"
@@ -62,7 +63,7 @@ bool is_brep(const fs::path& file) { return file.extension() == ".brep"; }
 // The corpus files, then FreeCAD's Idf parts where FreeCAD is installed; sorted, so the test names are stable.
 std::vector<fs::path> model_files() {
     std::vector<fs::path> files;
-    for (const fs::path& dir : {fs::path(RATBEZ_CORPUS_DIR), fs::path("/usr/share/freecad/Mod/Idf/Idflibs")}) {
+    for (const fs::path& dir : {fs::path(ratbez::build_paths::corpus_dir), fs::path("/usr/share/freecad/Mod/Idf/Idflibs")}) {
         std::error_code ignored;
         std::vector<fs::path> here;
         for (const auto& entry : fs::directory_iterator(dir, ignored)) {

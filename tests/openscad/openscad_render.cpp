@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.hpp"
 #include "ratbez/export/export.hpp"
 #include "ratbez/occt/files.hpp"
 #include "ratbez/tessellate.hpp"
@@ -35,7 +36,7 @@ namespace fs = std::filesystem;
 
 std::vector<std::string> example_names() {
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(RATBEZ_EXAMPLES_DIR))
+    for (const auto& entry : fs::directory_iterator(ratbez::build_paths::examples_dir))
         if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
     std::sort(names.begin(), names.end());
     return names;
@@ -69,7 +70,7 @@ std::string read_file(const fs::path& path) {
 
 // Runs OpenSCAD in `dir` on `input`, writing `output`; returns what it printed (stdout and stderr).
 std::string openscad(const fs::path& dir, const std::string& input, const std::string& output) {
-    const std::string command = "cd '" + dir.string() + "' && '" RATBEZ_OPENSCAD_EXECUTABLE "' -o " + output + " " + input +
+    const std::string command = "cd '" + dir.string() + "' && '" + ratbez::build_paths::openscad + "' -o " + output + " " + input +
                                 " > openscad.log 2>&1";
     const int status = std::system(command.c_str());
     EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_file(dir / "openscad.log");
@@ -88,7 +89,7 @@ class OpenScadRender : public ::testing::TestWithParam<Case> {};
 
 TEST_P(OpenScadRender, RendersWithoutWarningsAndKeepsTheVolume) {
     const Case c = GetParam();
-    const auto spec = ratbez::spec::load_spec(std::string(RATBEZ_EXAMPLES_DIR) + "/" + c.example + ".json");
+    const auto spec = ratbez::spec::load_spec(std::string(ratbez::build_paths::examples_dir) + "/" + c.example + ".json");
     const auto box = spec.solid.bounding_box();
     const double size = box.diagonal();
     const double tolerance = c.relative_tolerance * size;
@@ -144,7 +145,7 @@ TEST_P(OpenScadRender, RendersWithoutWarningsAndKeepsTheVolume) {
 // import_stl: the library's module import()s a binary STL beside it; used from another folder, OpenSCAD
 // finds the STL next to the library (it resolves the name against the file that holds the import).
 TEST(OpenScadImportStl, AUsedLibraryFindsItsStlBesideItAndRendersCleanly) {
-    const auto spec = ratbez::spec::load_spec(std::string(RATBEZ_EXAMPLES_DIR) + "/vase.json");
+    const auto spec = ratbez::spec::load_spec(std::string(ratbez::build_paths::examples_dir) + "/vase.json");
     const auto box = spec.solid.bounding_box();
     const double size = box.diagonal(), tolerance = 1e-2 * size;
     const ratbez::Mesh mesh = ratbez::tessellate(spec.solid, tolerance);
@@ -161,7 +162,7 @@ TEST(OpenScadImportStl, AUsedLibraryFindsItsStlBesideItAndRendersCleanly) {
     ASSERT_TRUE(fs::exists(dir / "lib" / "vase.stl"));
     std::ofstream(dir / "work" / "cut.scad") << "use <../lib/vase.scad>\ndifference() {\n  vase();\n  translate(["
                                              << box.max.x + size << ", 0, 0]) cube(" << size * 1e-3 << ");\n}\n";
-    const std::string command = "cd '" + (dir / "work").string() + "' && '" RATBEZ_OPENSCAD_EXECUTABLE
+    const std::string command = "cd '" + (dir / "work").string() + "' && '" + ratbez::build_paths::openscad +
                                 "' -o out.stl cut.scad > openscad.log 2>&1";
     const int status = std::system(command.c_str());
     const std::string log = read_file(dir / "work" / "openscad.log");
@@ -221,7 +222,7 @@ TEST_P(CorpusRender, RendersThroughUseInABooleanWithoutWarnings) {
 
 std::vector<fs::path> corpus_step_files() {
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(RATBEZ_CORPUS_DIR))
+    for (const auto& entry : fs::directory_iterator(ratbez::build_paths::corpus_dir))
         if (entry.path().extension() == ".step") files.push_back(entry.path());
     std::sort(files.begin(), files.end());
     return files;

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "build_paths.hpp"
 #include "harness.hpp"
 #include "model_file_mutation.hpp"
 #include "ratbez/bezier_curve.hpp"
@@ -50,7 +51,7 @@ std::vector<std::uint8_t> read_file(const std::filesystem::path& path) {
 }
 
 std::size_t replay_corpus(const std::string& target, Harness harness) {
-    const std::filesystem::path dir = std::filesystem::path(RATBEZ_FUZZ_CORPUS_DIR) / target;
+    const std::filesystem::path dir = std::filesystem::path(build_paths::fuzz_corpus_dir) / target;
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(dir))
         if (entry.is_regular_file()) files.push_back(entry.path());
@@ -71,7 +72,7 @@ TEST(FuzzCorpus, ReadBrepSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_rea
 TEST(FuzzCorpus, ReadStepSeedsReplayCleanly) { EXPECT_GT(replay_corpus("fuzz_read_step", fuzz::run_read_step), 0u); }
 
 std::size_t replay_mutated(const std::string& target, Harness harness, std::uint64_t mutations_per_seed) {
-    const std::filesystem::path dir = std::filesystem::path(RATBEZ_FUZZ_CORPUS_DIR) / target;
+    const std::filesystem::path dir = std::filesystem::path(build_paths::fuzz_corpus_dir) / target;
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(dir))
         if (entry.is_regular_file() && entry.path().filename().string().rfind("regression_", 0) != 0) files.push_back(entry.path());

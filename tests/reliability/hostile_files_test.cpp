@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.hpp"
 #include "child_process.hpp"
 #include "child_test_support.hpp"
 #include "ratbez/error.hpp"
@@ -42,7 +43,7 @@ class HostileFiles : public test::TempDirectoryTest {
 protected:
     HostileFiles() : TempDirectoryTest("hostile_files") {}
 
-    std::string corpus(const std::string& name) const { return test::read_file(std::string(RATBEZ_CORPUS_DIR) + "/" + name); }
+    std::string corpus(const std::string& name) const { return test::read_file(std::string(build_paths::corpus_dir) + "/" + name); }
     std::string written(const std::string& name, const std::string& text) const {
         std::ofstream(path(name), std::ios::binary) << text;
         return path(name);
@@ -214,7 +215,7 @@ TEST_F(HostileFiles, AProgressMayWriteAndReadAgain) {
 // ---------------------------------------------------------------- solids held against themselves (item 2)
 
 // FreeCAD's Part.makeBox(2, 3, 4) written by its exportBrep (tests/reliability/files/freecad_box.brep).
-std::string freecad_box() { return test::read_file(std::string(RATBEZ_RELIABILITY_FILES_DIR) + "/freecad_box.brep"); }
+std::string freecad_box() { return test::read_file(std::string(build_paths::reliability_files_dir) + "/freecad_box.brep"); }
 
 std::string replaced_once(std::string text, const std::string& from, const std::string& to) {
     const std::size_t at = text.find(from);
@@ -273,7 +274,7 @@ TEST_F(HostileFiles, OpenAndMisorientedShellsAreRefused) {
 // part, and the solid read with its volume from the plane (1,587) and its mesh from the loops (4,552). A face
 // tolerance past 1% of the model's size is refused.
 TEST_F(HostileFiles, AFaceFarFromItsOwnBoundaryIsRefused) {
-    const std::string file = std::string(RATBEZ_FUZZ_CORPUS_DIR) + "/fuzz_read_step/regression_plane_moved_off_its_loops.step";
+    const std::string file = std::string(build_paths::fuzz_corpus_dir) + "/fuzz_read_step/regression_plane_moved_off_its_loops.step";
     const std::string message = error_of([&] { (void)read_step_all(file); });
     EXPECT_NE(message.find("face 0: tolerance: the file lets the face's boundary keep 16"), std::string::npos) << message;
     EXPECT_NE(message.find("its geometry does not agree with itself"), std::string::npos) << message;
@@ -285,7 +286,7 @@ TEST_F(HostileFiles, AFaceFarFromItsOwnBoundaryIsRefused) {
 // (at most 1,000,000 samples). Since the reader refuses faces whose file tolerance passes 1% of the model's size
 // (OpenCASCADE covered this one's gap with 5.6 on a 44 mm model), the file is refused before the tessellation.
 TEST_F(HostileFiles, ATrimmedFaceThatStraysFromItsEdgeIsRefusedByTheTessellation) {
-    const std::string file = std::string(RATBEZ_FUZZ_CORPUS_DIR) + "/fuzz_read_step/regression_trimmed_edge_strays.step";
+    const std::string file = std::string(build_paths::fuzz_corpus_dir) + "/fuzz_read_step/regression_trimmed_edge_strays.step";
     const std::string refused = error_of([&] { (void)read_step_all(file); });
     EXPECT_NE(refused.find("its geometry does not agree with itself"), std::string::npos) << refused;
     EXPECT_TRUE(completes_in_child(
