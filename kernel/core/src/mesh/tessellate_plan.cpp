@@ -177,9 +177,14 @@ bool is_crease(const Edge& edge, const EdgeUse& a, const EdgeUse& b) {
 
 }  // namespace
 
+IntervalPosition locate_in(const std::vector<double>& t, double x) {
+    const auto k = static_cast<std::size_t>(std::upper_bound(t.begin() + 1, t.end() - 1, x) - t.begin()) - 1;
+    const double h = t[k + 1] - t[k];
+    return {k, h > 0 ? std::clamp((x - t[k]) / h, 0.0, 1.0) : 0.0};
+}
+
 double spacing_at(const std::vector<double>& lines, double t) {
-    const auto it = std::upper_bound(lines.begin() + 1, lines.end() - 1, t);
-    const auto k = static_cast<std::size_t>(it - lines.begin()) - 1;  // lines[k] <= t <= lines[k + 1]
+    const std::size_t k = locate_in(lines, t).k;  // lines[k] <= t <= lines[k + 1]
     double h = lines[k + 1] - lines[k];
     if (k > 0 && lines[k] == t) h = std::max(h, lines[k] - lines[k - 1]);
     return h;
@@ -342,16 +347,8 @@ ParameterGrid choose_grid(const CurvatureSamples& c, double target, double angle
 
 double OffsetField::interpolate(const std::vector<double>& field, double u, double v) const {
     if (field.empty()) return 0;
-    auto locate = [](const std::vector<double>& t, double x, std::size_t& k, double& f) {
-        const auto it = std::upper_bound(t.begin() + 1, t.end() - 1, x);
-        k = static_cast<std::size_t>(it - t.begin()) - 1;
-        const double h = t[k + 1] - t[k];
-        f = h > 0 ? std::clamp((x - t[k]) / h, 0.0, 1.0) : 0.0;
-    };
-    std::size_t i = 0, j = 0;
-    double fu = 0, fv = 0;
-    locate(us, u, i, fu);
-    locate(vs, v, j, fv);
+    const auto [i, fu] = locate_in(us, u);
+    const auto [j, fv] = locate_in(vs, v);
     const std::size_t n = vs.size();
     return (1 - fu) * ((1 - fv) * field[i * n + j] + fv * field[i * n + j + 1]) +
            fu * ((1 - fv) * field[(i + 1) * n + j] + fv * field[(i + 1) * n + j + 1]);

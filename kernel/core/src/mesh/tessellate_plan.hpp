@@ -77,6 +77,14 @@ std::vector<double> crease_lines(const NurbsSurface& s, const SurfaceEvaluator& 
 // The spacing of the line interval containing parameter t (the larger of the two at a line).
 double spacing_at(const std::vector<double>& lines, double t);
 
+// Where x lies among the sorted values t (at least two): the interval [t[k], t[k + 1]] holding it (clamped to the
+// first and the last) and x's fraction of the way through it (clamped to [0, 1]; 0 in an interval of no width).
+struct IntervalPosition {
+    std::size_t k;
+    double f;
+};
+IntervalPosition locate_in(const std::vector<double>& t, double x);
+
 // The offsets of a face's vertices along its outward normal, and the range of offsets its cells accept
 // there: values on the curvature samples, bilinear in between.
 struct OffsetField {

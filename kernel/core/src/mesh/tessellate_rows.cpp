@@ -280,13 +280,9 @@ private:
     const std::vector<Bend>& band(double v0, double v1) {
         const std::vector<double>& vs = c_.vs;
         if (v0 > v1) std::swap(v0, v1);
-        const auto below = [&](double v) {  // the sample row at or below v, not the last
-            const auto at = std::upper_bound(vs.begin(), vs.end(), v) - vs.begin() - 1;
-            return static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(at, 0, static_cast<std::ptrdiff_t>(vs.size()) - 2));
-        };
-        const std::size_t lo = below(v0), hi = below(v1) + 1;
-        const double f0 = std::clamp((v0 - vs[lo]) / (vs[lo + 1] - vs[lo]), 0.0, 1.0);
-        const double f1 = std::clamp((v1 - vs[hi - 1]) / (vs[hi] - vs[hi - 1]), 0.0, 1.0);
+        const auto [lo, f0] = locate_in(vs, v0);  // the sample rows around each end
+        const auto [below_hi, f1] = locate_in(vs, v1);
+        const std::size_t hi = below_hi + 1;
         bends_.assign(c_.us.size(), Bend{});
         for (std::size_t i = 0; i < c_.us.size(); ++i) {
             Bend& b = bends_[i];
@@ -792,11 +788,9 @@ OffsetField row_offset_field(const SurfacePlan& plan, const CurvatureSamples& c)
     };
     for (auto* field : {&at_rows.L, &at_rows.N, &at_rows.M, &at_rows.k_max}) field->resize(c.us.size() * n);
     for (std::size_t j = 0; j < n; ++j) {
-        const auto above = std::upper_bound(c.vs.begin() + 1, c.vs.end() - 1, rows.v[j]);
-        const auto b = static_cast<std::size_t>(above - c.vs.begin());
-        const double f = std::clamp((rows.v[j] - c.vs[b - 1]) / (c.vs[b] - c.vs[b - 1]), 0.0, 1.0);
+        const auto [b, f] = locate_in(c.vs, rows.v[j]);
         for (std::size_t i = 0; i < c.us.size(); ++i) {
-            const std::size_t lo = c.at(i, sample_row(b - 1)), hi = c.at(i, sample_row(b)), k = at_rows.at(i, j);
+            const std::size_t lo = c.at(i, sample_row(b)), hi = c.at(i, sample_row(b + 1)), k = at_rows.at(i, j);
             at_rows.L[k] = (1 - f) * c.L[lo] + f * c.L[hi];
             at_rows.N[k] = (1 - f) * c.N[lo] + f * c.N[hi];
             at_rows.M[k] = (1 - f) * c.M[lo] + f * c.M[hi];
