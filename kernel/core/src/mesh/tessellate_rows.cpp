@@ -280,9 +280,11 @@ private:
     const std::vector<Bend>& band(double v0, double v1) {
         const std::vector<double>& vs = c_.vs;
         if (v0 > v1) std::swap(v0, v1);
-        const auto [lo, f0] = locate_in(vs, v0);  // the sample rows around each end
-        const auto [below_hi, f1] = locate_in(vs, v1);
-        const std::size_t hi = below_hi + 1;
+        // The sample rows around each end (plain variables, not structured bindings: clang does not let the lambda
+        // below capture those).
+        const IntervalPosition low = locate_in(vs, v0), high = locate_in(vs, v1);
+        const std::size_t lo = low.k, hi = high.k + 1;
+        const double f0 = low.f, f1 = high.f;
         bends_.assign(c_.us.size(), Bend{});
         for (std::size_t i = 0; i < c_.us.size(); ++i) {
             Bend& b = bends_[i];
