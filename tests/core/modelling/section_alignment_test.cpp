@@ -79,6 +79,41 @@ TEST(SectionAlignment, BreakpointsMeetAtTheSameNormalisedArcLength) {
     }
 }
 
+// A section's own joints where every other section runs on within one piece leave no break: a circle of three
+// 120 degree arcs (as OpenCASCADE makes one) against a square has breaks at the square's corners only (and
+// the seam), where Part's Loft puts its edges; each break still matched exactly by arc length. Without the
+// merge the circle's joints at 1/3 and 2/3 were knots of the loft too, and OpenCASCADE face edges.
+TEST(SectionAlignment, JointsOnlyOneSectionHasLeaveNoBreak) {
+    const NurbsCurve thirds = join({arc(2.0, 0, 120), arc(2.0, 120, 240), arc(2.0, 240, 360)});
+    const AlignedSections aligned = align_sections({thirds, square(1.5, 4, 0)}, "curves");
+    ASSERT_EQ(aligned.breaks.size(), 6u);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(aligned.breaks[static_cast<std::size_t>(k + 1)], (2 * k + 1) / 8.0, 1e-12) << k;
+    for (const NurbsCurve& c : aligned.curves) {
+        EXPECT_EQ(breakpoints(c.degree(), c.knots()), aligned.breaks);
+        const ArcLength length(c);
+        for (const double b : aligned.breaks) EXPECT_NEAR(length.at(b) / length.total(), b, 1e-12);
+    }
+    // The quarter between two corners is one arc of 90 degrees, the corners' directions matched.
+    const NurbsCurve& round = aligned.curves[0];
+    EXPECT_NEAR(round.bezier_segments()[1].weights()[1], std::cos(pi / 4), 1e-12);
+    for (int k = 0; k < 4; ++k) {
+        const Vec3 on_circle = round.point(aligned.breaks[static_cast<std::size_t>(k + 1)]);
+        EXPECT_NEAR(std::atan2(on_circle.y, on_circle.x), (45 + 90 * k - (k >= 2 ? 360 : 0)) * pi / 180, 1e-9) << k;
+    }
+    // A break where the pieces are arcs of two different circles stays: a circle against a rounded square
+    // keeps the rounded square's joints between its lines and corner arcs (8), plus the seam.
+    std::vector<NurbsCurve> rounded;  // corners of radius 1 about (+-1, +-1), sides 2 long, from (2, 1)
+    for (int k = 0; k < 4; ++k) {
+        const double a = k * 90.0, b = (a + 90) * pi / 180;
+        const Vec3 centre{(k == 0 || k == 3) ? 1.0 : -1.0, k < 2 ? 1.0 : -1.0, 2};
+        const Vec3 corner_end = centre + Vec3{std::cos(b), std::sin(b), 0};
+        rounded.push_back(arc(1.0, a, a + 90, centre));
+        rounded.push_back(line_segment(corner_end, corner_end + Vec3{-std::sin(b), std::cos(b), 0} * 2.0));
+    }
+    const AlignedSections kept = align_sections({circle(3.0), join(rounded)}, "curves");
+    EXPECT_EQ(kept.breaks.size(), 10u);
+}
+
 TEST(SectionAlignment, OrientationStartAndOpenSections) {
     // A clockwise copy is turned round: the result runs as the first section does.
     const AlignedSections closed = align_sections({circle(1.0), turned_circle(1.0, 2, 40, {0, 0, -1})}, "curves");

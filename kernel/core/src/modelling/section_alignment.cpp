@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 
+#include "geometry/bezier_merge.hpp"
 #include "geometry/clamping.hpp"
 #include "math/numeric_internal.hpp"
 #include "math/vector_angle.hpp"
@@ -21,6 +22,7 @@ constexpr int kSamples = 128;         // points per section for the orientation 
 constexpr int kRefineSamples = 64;    // midpoint rule of E'(s0) in the refinement
 constexpr double kMergeBreaks = 1e-9; // breakpoints closer than this (normalised length) are one
 constexpr double kCornerAngle = 1e-7; // radians: a turn of the tangent this large is a corner
+constexpr double kMergeTolerance = 1e-10;  // of the control size: two pieces that far from one are not one
 
 double fraction(double s) { return s - std::floor(s); }
 
@@ -239,6 +241,36 @@ bool is_corner(const BezierCurve& arriving, const BezierCurve& leaving) {
     return angle_between(in, out) > kCornerAngle;
 }
 
+// Removes every inner break where each section's pieces on both sides are parts of one Bézier piece of their
+// degree (bezier_merge.hpp), and merges them: the break was some section's own joint (a circle's arcs meet
+// every 120 degrees) that the others only had to be cut at. Left in place, every such break would be a knot of
+// multiplicity p across the whole loft, a C0 line OpenCASCADE takes as a face edge. A polynomial section keeps
+// only merged pieces whose weights come out 1. The break at the start of closed sections (the seam) stays.
+void merge_smooth_breaks(std::vector<std::vector<std::vector<Vec4>>>& pieces, std::vector<double>& breaks,
+                         const std::vector<bool>& rational, double tolerance) {
+    std::size_t j = 1;  // break j joins piece j - 1 to piece j
+    while (j + 1 < breaks.size()) {
+        std::vector<std::vector<Vec4>> joined;
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+            std::optional<std::vector<Vec4>> one = merged_bezier(pieces[k][j - 1], pieces[k][j], tolerance);
+            if (one && !rational[k] &&
+                std::any_of(one->begin(), one->end(), [](const Vec4& q) { return std::abs(q.w - 1) > 1e-12; }))
+                one.reset();
+            if (!one) break;
+            joined.push_back(std::move(*one));
+        }
+        if (joined.size() < pieces.size()) {
+            ++j;
+            continue;
+        }
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+            pieces[k][j - 1] = std::move(joined[k]);
+            pieces[k].erase(pieces[k].begin() + static_cast<std::ptrdiff_t>(j));
+        }
+        breaks.erase(breaks.begin() + static_cast<std::ptrdiff_t>(j));
+    }
+}
+
 }  // namespace
 
 AlignedSections align_sections(const std::vector<NurbsCurve>& input, const std::string& argument, bool keep_orientation) {
@@ -319,19 +351,23 @@ AlignedSections align_sections(const std::vector<NurbsCurve>& input, const std::
         if (b - merged.back() > kMergeBreaks && 1.0 - b > kMergeBreaks) merged.push_back(b);
     merged.push_back(1.0);
 
-    AlignedSections result;
-    result.closed = closed;
-    result.breaks = merged;
-    for (const Section& s : sections) {
-        std::vector<std::vector<Vec4>> pieces;
-        const std::vector<double> u = break_parameters(s, merged);
+    std::vector<std::vector<std::vector<Vec4>>> pieces(sections.size());
+    for (std::size_t k = 0; k < sections.size(); ++k) {
+        const std::vector<double> u = break_parameters(sections[k], merged);
         try {
-            for (std::size_t j = 0; j + 1 < merged.size(); ++j) pieces.push_back(piece(s.curve, u[j], u[j + 1]));
+            for (std::size_t j = 0; j + 1 < merged.size(); ++j) pieces[k].push_back(piece(sections[k].curve, u[j], u[j + 1]));
         } catch (const Error& e) {
             throw e.renamed("sections", argument);
         }
-        result.curves.push_back(assemble(pieces, merged, s.curve.is_rational()));
     }
+    std::vector<bool> rational;
+    for (const Section& s : sections) rational.push_back(s.curve.is_rational());
+    merge_smooth_breaks(pieces, merged, rational, kMergeTolerance * size);
+
+    AlignedSections result;
+    result.closed = closed;
+    result.breaks = merged;
+    for (std::size_t k = 0; k < sections.size(); ++k) result.curves.push_back(assemble(pieces[k], merged, rational[k]));
     return result;
 }
 

@@ -26,9 +26,13 @@
 // closer than 1e-9 taken as one), every section is cut at the parameters where it reaches those lengths,
 // each piece (a single Bézier span) put in normal form when rational (end weights 1: the one rational
 // parameterisation of an arc that depends on the arc alone, so that equal arcs of two circles match point
-// for point) and mapped linearly onto its interval of normalised length. So the sections share one knot
-// vector (multiplicity p at every merged breakpoint: C0 in the parameter, the geometry unchanged), match
-// exactly by arc length at every breakpoint of any of them, and in between by the piece's parameter.
+// for point) and mapped linearly onto its interval of normalised length. Last, a break where every section
+// runs on within one Bézier piece of its degree (a straight segment, or an arc of one conic below a half
+// turn: bezier_merge.hpp) is dropped and the pieces on both sides merged: a circle's own arc joints opposite
+// the middle of a square's sides leave no knot behind, so a circle lofted to a square has knots at the
+// square's corners only, as Part's Loft has edges there. So the sections share one knot vector
+// (multiplicity p at every break: C0 in the parameter, the geometry unchanged), match exactly by arc length
+// at every break, and in between by the piece's parameter.
 
 #include <string>
 #include <vector>
