@@ -131,6 +131,13 @@ def test_circle_to_square_matches_parts_ruled_loft():
     check(side_faces(loft) == 1, "one side face in the kernel")
     errors = bop_errors(loft.Shape)
     check(not errors, "BOP check of the aligned loft: {}".format(errors))
+    # Issue 25: no more faces than Part's own Loft of the same sections (FreeCAD's circle is three 120 degree arcs,
+    # whose joints used to cut the side faces again: 9 faces against Part's 7).
+    part_loft = Part.makeLoft([circle.Shape.Wires[0], square.Shape.Wires[0], top.Shape.Wires[0]], True, False)
+    for name, ours, parts in (("ruled", ruled, part), ("loft", loft, part_loft)):
+        check(len(ours.Shape.Faces) <= len(parts.Faces), "{}: {} faces, Part's {}".format(
+            name, len(ours.Shape.Faces), len(parts.Faces)))
+    close(loft.Shape.Volume, loft.ExactVolume, 1e-6, "FreeCAD's own volume of the loft")
     # Align off: the twisted hourglass is refused, naming the profile and the place.
     ruled.Align = False
     doc.recompute()

@@ -26,6 +26,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "occt_test_support.hpp"
@@ -34,6 +35,7 @@
 #include "ratbez/occt/check.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/topology.hpp"
+#include "ratbez/join.hpp"
 #include "ratbez/loft.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
@@ -388,6 +390,41 @@ TEST(Topology, RoughFacesGoOverAsPatchesInTheNaturalConversion) {
         EXPECT_LT(std::abs(read.volume - solid.volume()) / solid.volume(), 1e-8);
         for (TopExp_Explorer it(natural.solid, TopAbs_FACE); it.More(); it.Next())
             EXPECT_NE(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_C0);
+    }
+}
+
+// Lofts through circles and polygons go over with Part's Loft's faces: one side face per run between the
+// knots every section needs (a square's corners; a rounded square's joints between its lines and arcs), not one
+// per joint any section happens to have (a circle's own arcs: section_alignment.hpp), and cells whose weights
+// dip between the sections are not halved when OCCT's fixed rule reads them (gprop_patches.hpp). Before: the
+// circle -> square -> circle loft 9 faces (Part 7), the example loft 34 (Part 11).
+TEST(Topology, LoftsGoOverWithPartsFaces) {
+    const Profile thirds({join({arc(2.0, 0, 120), arc(2.0, 120, 240), arc(2.0, 240, 360)})});  // OCCT's circle
+    std::vector<Vec3> corners{{-1.5, -1.5, 4}, {1.5, -1.5, 4}, {1.5, 1.5, 4}, {-1.5, 1.5, 4}};
+    std::vector<NurbsCurve> sides;
+    for (std::size_t k = 0; k < 4; ++k) sides.push_back(line_segment(corners[k], corners[(k + 1) % 4]));
+    const Profile top({join({arc(2.0, 0, 120, {0, 0, 8}), arc(2.0, 120, 240, {0, 0, 8}), arc(2.0, 240, 360, {0, 0, 8})})});
+    // examples/loft.json: a circle, a rounded square, two circles.
+    std::vector<NurbsCurve> rounded{line_segment({6, 0, 10}, {6, 4, 10})};
+    const Vec3 centres[] = {{4, 4, 10}, {-4, 4, 10}, {-4, -4, 10}, {4, -4, 10}};
+    const Vec3 next_sides[][2] = {{{4, 6, 10}, {-4, 6, 10}}, {{-6, 4, 10}, {-6, -4, 10}}, {{-4, -6, 10}, {4, -6, 10}}, {{6, -4, 10}, {6, 0, 10}}};
+    for (int k = 0; k < 4; ++k) {
+        rounded.push_back(arc(2.0, 90.0 * k, 90.0 * (k + 1), centres[k]));
+        rounded.push_back(line_segment(next_sides[k][0], next_sides[k][1]));
+    }
+    const std::vector<Profile> example{Profile({circle(8)}), Profile(rounded), Profile({circle(4, {2, 0, 22})}),
+                                       Profile({circle(6, {3, 0, 30})})};
+    for (const auto& [name, solid, faces] : {std::tuple{std::string("circle, square, circle"), loft({thirds, Profile(sides), top}), 7},
+                                             std::tuple{std::string("ruled circle, square"), loft({thirds, Profile(sides)}, 3, true), 7},
+                                             std::tuple{std::string("examples/loft"), loft(example), 11}}) {
+        SCOPED_TRACE(name);
+        const ConvertedSolid converted = convert(solid);
+        EXPECT_TRUE(BRepCheck_Analyzer(converted.solid).IsValid());
+        EXPECT_EQ(count(converted.solid, TopAbs_FACE), faces);
+        const FixedRule read = fixed_rule(converted.solid);
+        EXPECT_LT(std::abs(read.volume - solid.volume()) / solid.volume(), 1e-8);
+        EXPECT_LT(std::abs(read.area - solid.area()) / solid.area(), 1e-8);
+        expect_no_c0_geometry(converted.solid);
     }
 }
 
