@@ -6,6 +6,7 @@
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <gp_Pnt.hxx>
 
@@ -145,16 +146,30 @@ TEST(Check, BadOptionsThrowNamingTheOption) {
 // OpenCASCADE, has a trimmed face on the exact rational sphere, whose double knots are C0 by multiplicity (a
 // trimmed face keeps its surface's parameter): BOPAlgo reports GeomAbs_C0, which a fillet trips over. The
 // report names it, counts no self-intersection or small edge, and does not pass, although all else agrees.
+// A face read from a file on the NURBS Book's circle form (C0 at its double knots) is checked as files and
+// brep_string hand it out: split there, so the BOP analysis finds no C0 geometry (it checked the unsplit solid
+// before, and "Check against OpenCASCADE" failed 12 FreeCAD models of the corpus on GeomAbs_C0 alone).
+TEST(Check, RunsOnTheSolidAsHandedOut) {
+    const TopoDS_Shape cut = BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(2, 5).Shape(),
+                                             BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 1), 4, 4, 2).Shape()).Shape();
+    const Solid solid = from_occt(cut);
+    const CheckReport report = check(solid, with_grid(5));
+    EXPECT_TRUE(report.passed) << format_report(report);
+    EXPECT_TRUE(report.bop_clean);
+    EXPECT_TRUE(report.bop_findings.empty()) << report.bop_findings.front();
+}
+
 TEST(Check, TheBopAnalysisIsPartOfTheCheck) {
-    const TopoDS_Shape cut = BRepAlgoAPI_Cut(BRepPrimAPI_MakeSphere(3).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 4, 4, 4).Shape()).Shape();
-    const CheckReport report = check(from_occt(cut), with_grid(5));
+    // A B-spline sphere at a placement where OpenCASCADE's face self-intersection search flags its poles (issue
+    // 25: its own NURBS sphere is flagged too). Valid and closed, measured right, and still not passed.
+    const CheckReport report = check(sphere(3, {0, -40, 0}), with_grid(5));
     EXPECT_TRUE(report.valid && report.closed);
     EXPECT_FALSE(report.bop_clean);
     EXPECT_FALSE(report.passed);
-    EXPECT_EQ(report.self_intersections, 0);
+    EXPECT_EQ(report.self_intersections, 1);
     EXPECT_EQ(report.small_edges, 0);
     ASSERT_FALSE(report.bop_findings.empty());
-    EXPECT_EQ(report.bop_findings.front().rfind("BOPAlgo GeomAbs_C0", 0), 0u) << report.bop_findings.front();
+    EXPECT_EQ(report.bop_findings.front(), "BOPAlgo SelfIntersect: face (face 0)");
     EXPECT_NE(std::find(report.failures.begin(), report.failures.end(), "BOP check: " + report.bop_findings.front()),
               report.failures.end());
     const std::string table = format_report(report);

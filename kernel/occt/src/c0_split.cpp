@@ -3,16 +3,29 @@
 #include "c0_split.hpp"
 
 #include <BRepCheck_Analyzer.hxx>
+#include <BRep_Builder.hxx>
 #include <BRepLib.hxx>
+#include <BRepLib_CheckCurveOnSurface.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_Surface.hxx>
+#include <ShapeBuild_ReShape.hxx>
 #include <ShapeUpgrade_ShapeDivideContinuity.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <vector>
 
 namespace ratbez::occt::detail {
 namespace {
+
+// How far above the solid's largest edge tolerance a split piece's edges may be. SameParameter leaves some new
+// edges' p-curves further from their curves than the tolerance it gives them, which FreeCAD's BOP check reports
+// (InvalidCurveOnSurface: Idf's CAP_50SGV_8_10.stp, split, had 7 such edges, up to 8e-5 in a file of 2.3e-4):
+// such an edge gets the distance as its tolerance; beyond this the split costs more than it gains.
+constexpr double kToleranceGrowth = 10;
 
 bool has_c0_face(const TopoDS_Solid& solid) {
     for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next()) {
@@ -22,25 +35,64 @@ bool has_c0_face(const TopoDS_Solid& solid) {
     return false;
 }
 
+// The edges of `faces` whose p-curve there lies further from the 3D curve than the edge's tolerance (the measure
+// of BOPAlgo_ArgumentAnalyzer's CurveOnSurfaceMode, FreeCAD's BOP check) given that distance as tolerance, if
+// it is at most `limit`; false when one is further.
+bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit) {
+    BRep_Builder builder;
+    for (const TopoDS_Face& face : faces)
+        for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next()) {
+            const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
+            if (BRep_Tool::Degenerated(edge)) continue;
+            BRepLib_CheckCurveOnSurface measure(edge, face);
+            measure.Perform();
+            if (!measure.IsDone() || measure.MaxDistance() > limit) return false;
+            if (measure.MaxDistance() > BRep_Tool::Tolerance(edge)) builder.UpdateEdge(edge, 1.01 * measure.MaxDistance());
+        }
+    return true;
+}
+
 }  // namespace
 
-TopoDS_Solid split_at_c0_knots(const TopoDS_Solid& solid) {
-    if (!has_c0_face(solid)) return solid;
+SplitSolid split_at_c0_knots_traced(const TopoDS_Solid& solid) {
+    SplitSolid unchanged{solid, {}};
+    for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next())
+        unchanged.original_face.Bind(faces.Current(), faces.Current());
+    if (!has_c0_face(solid)) return unchanged;
     try {
         ShapeUpgrade_ShapeDivideContinuity divide(solid);
         divide.SetBoundaryCriterion(GeomAbs_C1);
         divide.SetPCurveCriterion(GeomAbs_C1);
         divide.SetSurfaceCriterion(GeomAbs_C1);
-        if (!divide.Perform()) return solid;
+        if (!divide.Perform()) return unchanged;
         TopoDS_Shape result = divide.Result();
         // The new edges along the knot lines come without SameParameter: computed here, they make the
         // pieces valid (BRepCheck flagged every split face before).
-        BRepLib::SameParameter(result, BRep_Tool::MaxTolerance(solid, TopAbs_EDGE), Standard_True);
-        if (result.ShapeType() != TopAbs_SOLID || !BRepCheck_Analyzer(result).IsValid()) return solid;
-        return TopoDS::Solid(result);
+        const double tolerance = BRep_Tool::MaxTolerance(solid, TopAbs_EDGE);
+        BRepLib::SameParameter(result, tolerance, Standard_True);
+        if (result.ShapeType() != TopAbs_SOLID || !BRepCheck_Analyzer(result).IsValid()) return unchanged;
+        // Each face of the input became itself, or a compound / shell of its pieces (the reshape's record);
+        // SameParameter changes tolerances in place, not the faces' identity.
+        SplitSolid split{TopoDS::Solid(result), {}};
+        std::vector<TopoDS_Face> cut;
+        for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next()) {
+            const TopoDS_Shape pieces = divide.GetContext()->Apply(faces.Current());
+            for (TopExp_Explorer piece(pieces, TopAbs_FACE); piece.More(); piece.Next()) {
+                split.original_face.Bind(piece.Current(), faces.Current());
+                if (!piece.Current().IsSame(faces.Current())) cut.push_back(TopoDS::Face(piece.Current()));
+            }
+        }
+        if (BRep_Tool::MaxTolerance(result, TopAbs_EDGE) > kToleranceGrowth * tolerance ||
+            !honest_tolerances(cut, kToleranceGrowth * tolerance))
+            return unchanged;
+        BRepLib::UpdateTolerances(split.solid, Standard_True);  // vertices and faces cover their raised edges
+        if (!BRepCheck_Analyzer(split.solid).IsValid()) return unchanged;
+        return split;
     } catch (const Standard_Failure&) {
-        return solid;
+        return unchanged;
     }
 }
+
+TopoDS_Solid split_at_c0_knots(const TopoDS_Solid& solid) { return split_at_c0_knots_traced(solid).solid; }
 
 }  // namespace ratbez::occt::detail

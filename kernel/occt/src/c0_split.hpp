@@ -11,6 +11,7 @@
 // knots), each piece reads to 1e-7 or better (FreeCAD's sphere minus a box: volume 2.2e-4 off whole, 6e-10
 // split; tests/freecad/test_step_in_freecad.py measures every corpus solid).
 
+#include <TopTools_DataMapOfShapeShape.hxx>
 #include <TopoDS_Solid.hxx>
 
 namespace ratbez::occt::detail {
@@ -19,5 +20,13 @@ namespace ratbez::occt::detail {
 // their C0 knots. Otherwise `solid` itself (an edge alone does not matter to the rule), and also when
 // OpenCASCADE fails or leaves an invalid shape or other than one solid.
 TopoDS_Solid split_at_c0_knots(const TopoDS_Solid& solid);
+
+// The same, and for every face of the result the face of `solid` it is (a piece of): what check() needs to
+// name our faces in its findings on the solid as handed out.
+struct SplitSolid {
+    TopoDS_Solid solid;
+    TopTools_DataMapOfShapeShape original_face;
+};
+SplitSolid split_at_c0_knots_traced(const TopoDS_Solid& solid);
 
 }  // namespace ratbez::occt::detail

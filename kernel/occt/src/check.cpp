@@ -37,6 +37,7 @@
 #include <sstream>
 #include <string>
 
+#include "c0_split.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/topology.hpp"
@@ -58,11 +59,11 @@ int count_edges(const TopoDS_Shape& shape) {
     return n;
 }
 
-// Closed: BRepCheck_Shell finds no free edge, and ShapeAnalysis_FreeBounds finds no free boundary.
-bool is_closed(const ConvertedSolid& converted) {
-    BRepCheck_Shell shell_check(converted.shell);
-    if (shell_check.Closed() != BRepCheck_NoError) return false;
-    ShapeAnalysis_FreeBounds free_bounds(converted.solid);
+// Closed: BRepCheck_Shell finds no free edge in any shell, and ShapeAnalysis_FreeBounds finds no free boundary.
+bool is_closed(const TopoDS_Solid& solid) {
+    for (TopExp_Explorer shells(solid, TopAbs_SHELL); shells.More(); shells.Next())
+        if (BRepCheck_Shell(TopoDS::Shell(shells.Current())).Closed() != BRepCheck_NoError) return false;
+    ShapeAnalysis_FreeBounds free_bounds(solid);
     return count_edges(free_bounds.GetClosedWires()) == 0 && count_edges(free_bounds.GetOpenWires()) == 0;
 }
 
@@ -298,9 +299,10 @@ const char* shape_kind(TopAbs_ShapeEnum type) {
 // BOPAlgo_ArgumentAnalyzer set up as FreeCAD's "Run BOP check" sets it up (TopoShape::isValid / TaskCheckGeometry:
 // every mode on), on a copy of the shape as FreeCAD does: the analysis intersects the shape with itself and may
 // raise the tolerances of what it runs on, which would change the measurements taken after it. Each finding
-// names its status, the kinds of its shapes and, for faces, which face of ours (face i of the Solid).
-void bop_analysis(const ConvertedSolid& converted, CheckReport& report) {
-    BRepBuilderAPI_Copy copier(converted.solid);
+// names its status, the kinds of its shapes and, for faces, which face of ours (face i of the Solid). It runs on
+// the solid as handed out (`handed`: split at C0 knots where to_occt splits it), its faces traced back to ours.
+void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& handed, CheckReport& report) {
+    BRepBuilderAPI_Copy copier(handed.solid);
     BOPAlgo_ArgumentAnalyzer analyzer;
     analyzer.SetShape1(copier.Shape());
     analyzer.ArgumentTypeMode() = true;
@@ -314,11 +316,16 @@ void bop_analysis(const ConvertedSolid& converted, CheckReport& report) {
     analyzer.MergeEdgeMode() = true;
     analyzer.Perform();
     const auto our_face = [&](const TopoDS_Shape& shape) -> std::optional<std::size_t> {
-        for (std::size_t k = 0; k < converted.faces.size(); ++k)
-            if (copier.ModifiedShape(converted.faces[k]).IsSame(shape)) {
-                const auto after = std::upper_bound(converted.first_face.begin(), converted.first_face.end(), k);
-                return static_cast<std::size_t>(after - converted.first_face.begin()) - 1;
-            }
+        for (TopExp_Explorer pieces(handed.solid, TopAbs_FACE); pieces.More(); pieces.Next()) {
+            if (!copier.ModifiedShape(pieces.Current()).IsSame(shape) || !handed.original_face.IsBound(pieces.Current()))
+                continue;
+            const TopoDS_Shape& original = handed.original_face.Find(pieces.Current());
+            for (std::size_t k = 0; k < converted.faces.size(); ++k)
+                if (converted.faces[k].IsSame(original)) {
+                    const auto after = std::upper_bound(converted.first_face.begin(), converted.first_face.end(), k);
+                    return static_cast<std::size_t>(after - converted.first_face.begin()) - 1;
+                }
+        }
         return std::nullopt;
     };
     for (const BOPAlgo_CheckResult& result : analyzer.GetCheckResult()) {
@@ -348,6 +355,10 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
         if (options.progress) options.progress(fraction);
     };
     const ConvertedSolid converted = convert(solid, options.convert);
+    // Validity, closure, OCCT's measures and the BOP analysis are of the solid as files and brep_string hand it
+    // out (to_occt: faces still C0 inside split); the evaluation deviation goes through convert's maps (the split
+    // only segments surfaces, exactly).
+    const detail::SplitSolid handed = detail::split_at_c0_knots_traced(converted.solid);
     // Our own measures (the slack depends on the area), taken once, before OpenCASCADE may raise.
     report.volume = solid.volume();
     report.area = solid.area();
@@ -355,8 +366,8 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
     report_progress(0.1);
 
     try {
-        report.valid = BRepCheck_Analyzer(converted.solid).IsValid();
-        report.closed = is_closed(converted);
+        report.valid = BRepCheck_Analyzer(handed.solid).IsValid();
+        report.closed = is_closed(handed.solid);
         report.max_deviation = evaluation_deviation(solid, converted, options.grid, progress_part(options.progress, 0.2, 0.5));
 
         if (AnalyticDistance analytic(solid.construction()); analytic.exists()) {
@@ -382,13 +393,13 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
 
         report_progress(0.8);
         report.occt_volume = occt_measure(
-            converted.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::VolumeProperties(s, p, eps); },
+            handed.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::VolumeProperties(s, p, eps); },
             report.volume, options.volume_limit, slack.volume);
         report.occt_area = occt_measure(
-            converted.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::SurfaceProperties(s, p, eps); },
+            handed.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::SurfaceProperties(s, p, eps); },
             report.area, options.volume_limit, slack.area);
         report_progress(0.85);
-        if (options.bop_analysis) bop_analysis(converted, report);
+        if (options.bop_analysis) bop_analysis(converted, handed, report);
     } catch (const Standard_Failure& failure) {
         const char* message = failure.GetMessageString();
         report.failures.push_back(std::string("OpenCASCADE raised ") + failure.DynamicType()->Name() +
