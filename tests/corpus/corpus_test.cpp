@@ -150,22 +150,17 @@ TEST_P(CorpusModel, ReadsWithOpenCascadesVolumeAndPassesItsCheck) {
     // files, which hold the .brep files' solids: it is the check's slowest part) finds nothing: no C0 geometry
     // (the check runs on the solid as handed out, faces still C0 inside split there; issue 25: it checked the
     // unsplit one and flagged 12 models), no self-intersection, no small edge.
-    // One model still draws "BOPAlgo SelfIntersect" on its spherical face with poles, as a plain RatBez sphere
-    // does at some placements (issue 25, open: OpenCASCADE's own NURBS sphere draws it too; only its analytic
-    // sphere skips the test): named here, so that any other model's finding fails.
-    const bool known_sphere_finding = GetParam().stem() == "part_sphere";
+    // (A Part sphere read from a file, part_sphere, drew "BOPAlgo SelfIntersect" on its poles as a B-spline face:
+    // it goes over as OCCT's own sphere now, analytic_primitives.hpp.)
     occt::CheckOptions options;
     options.bop_analysis = !is_brep(GetParam());
     for (const Solid& solid : solids) {
         const occt::CheckReport report = occt::check(solid, options);
         for (const std::string& failure : report.failures) {
-            if (known_sphere_finding && failure.starts_with("BOP check: BOPAlgo SelfIntersect: face")) continue;
             ADD_FAILURE() << solid.name() << ": " << failure;
         }
         EXPECT_TRUE(report.valid && report.closed) << solid.name();
-        if (!known_sphere_finding) {
-            EXPECT_EQ(report.self_intersections, 0) << solid.name();
-        }
+        EXPECT_EQ(report.self_intersections, 0) << solid.name();
         EXPECT_EQ(report.small_edges, 0) << solid.name();
     }
 }

@@ -160,9 +160,12 @@ TEST(Check, RunsOnTheSolidAsHandedOut) {
 }
 
 TEST(Check, TheBopAnalysisIsPartOfTheCheck) {
-    // A B-spline sphere at a placement where OpenCASCADE's face self-intersection search flags its poles (issue
-    // 25: its own NURBS sphere is flagged too). Valid and closed, measured right, and still not passed.
-    const CheckReport report = check(sphere(3, {0, -40, 0}), with_grid(5));
+    // A sphere handed over as B-spline faces (analytic_primitives off), at a placement where OpenCASCADE's face
+    // self-intersection search flags its poles (its own NURBS sphere too; by default a sphere goes over as OCCT's
+    // own, which the search leaves out). Valid and closed, measured right, and still not passed.
+    CheckOptions options = with_grid(5);
+    options.convert.analytic_primitives = false;
+    const CheckReport report = check(sphere(3, {0, -40, 0}), options);
     EXPECT_TRUE(report.valid && report.closed);
     EXPECT_FALSE(report.bop_clean);
     EXPECT_FALSE(report.passed);

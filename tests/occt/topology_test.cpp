@@ -6,6 +6,8 @@
 
 #include <BOPAlgo_ArgumentAnalyzer.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <gp_Dir.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepCheck_Shell.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
@@ -34,6 +36,7 @@
 #include "ratbez/extrude.hpp"
 #include "ratbez/occt/check.hpp"
 #include "ratbez/occt/geometry.hpp"
+#include "ratbez/occt/shape_import.hpp"
 #include "ratbez/occt/topology.hpp"
 #include "ratbez/join.hpp"
 #include "ratbez/loft.hpp"
@@ -425,6 +428,48 @@ TEST(Topology, LoftsGoOverWithPartsFaces) {
         EXPECT_LT(std::abs(read.volume - solid.volume()) / solid.volume(), 1e-8);
         EXPECT_LT(std::abs(read.area - solid.area()) / solid.area(), 1e-8);
         expect_no_c0_geometry(converted.solid);
+    }
+}
+
+// Cylinders, cones, spheres and tori go over as OCCT's own primitives (analytic_primitives.hpp): by their record,
+// or, for a lone sphere or torus face read from a file, by their surface. The BOP check's face self-intersection
+// search flags a B-spline sphere's poles at (0, -40, 0) and (100, 0, 0) (OCCT's own NURBS sphere too), never an
+// analytic one. analytic_primitives = false hands over the kernel's B-spline faces.
+TEST(Topology, PrimitivesGoOverAsOcctsOwn) {
+    const Vec3 c{1, -2, 0.5}, axis{0, 1, 2};
+    const Solid read_sphere = from_occt(BRepPrimAPI_MakeSphere(gp_Pnt(100, 0, 0), 3).Shape());
+    const Solid read_torus = from_occt(BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(5, 6, 7), gp_Dir(1, 1, 0)), 4, 1).Shape());
+    ASSERT_EQ(read_sphere.construction().kind(), "none");
+    const std::tuple<std::string, Solid, GeomAbs_SurfaceType> cases[] = {
+        {"sphere at (0, -40, 0)", sphere(3, {0, -40, 0}), GeomAbs_Sphere},
+        {"sphere at (100, 0, 0)", sphere(3, {100, 0, 0}), GeomAbs_Sphere},
+        {"sphere read from OCCT", read_sphere, GeomAbs_Sphere},
+        {"torus read from OCCT", read_torus, GeomAbs_Torus},
+        {"torus", torus(10, 3, c, axis), GeomAbs_Torus},
+        {"cylinder", cylinder(2, 5, c, axis), GeomAbs_Cylinder},
+        {"cone", cone(8, 3, 12, c, axis), GeomAbs_Cone},
+        {"pointed cone", cone(4, 0, 9), GeomAbs_Cone}};
+    for (const auto& [name, solid, kind] : cases) {
+        SCOPED_TRACE(name);
+        const TopoDS_Solid handed = to_occt(solid);
+        EXPECT_TRUE(BRepCheck_Analyzer(handed).IsValid());
+        int curved = 0;
+        for (TopExp_Explorer it(handed, TopAbs_FACE); it.More(); it.Next()) {
+            const GeomAbs_SurfaceType type = BRepAdaptor_Surface(TopoDS::Face(it.Current())).GetType();
+            EXPECT_TRUE(type == kind || type == GeomAbs_Plane) << type;
+            curved += type == kind;
+        }
+        EXPECT_EQ(curved, 1);
+        const FixedRule read = fixed_rule(handed);
+        EXPECT_LT(std::abs(read.volume - solid.volume()) / solid.volume(), 1e-9);
+        const CheckReport report = check(solid, CheckOptions{});
+        EXPECT_TRUE(report.passed && report.bop_clean) << format_report(report);
+        ConvertOptions bspline;
+        bspline.analytic_primitives = false;
+        for (TopExp_Explorer it(to_occt(solid, bspline), TopAbs_FACE); it.More(); it.Next()) {
+            const GeomAbs_SurfaceType type = BRepAdaptor_Surface(TopoDS::Face(it.Current())).GetType();
+            EXPECT_TRUE(type == GeomAbs_BSplineSurface || type == GeomAbs_Plane) << type;
+        }
     }
 }
 

@@ -65,13 +65,14 @@ def test_keyword_names():
         expected.append((ratbez.write_off, ["solid_or_mesh", "path", "tolerance", "max_triangles", "progress"]))
         expected.append((ratbez.check_mesh, ["mesh", "check_self_intersections", "progress"]))
     if ratbez.has_occt:
-        # bezier_faces: an addition, optional (one face per Bézier patch, for FreeCAD's measurements)
-        expected.append((ratbez.write_step, ["solid", "path", "bezier_faces"]))
-        expected.append((ratbez.write_brep, ["solid", "path", "bezier_faces"]))
+        # bezier_faces, analytic_primitives: additions, optional (one face per Bézier patch, for FreeCAD's
+        # measurements; OCCT's own primitives for the four kinds, issue 25)
+        expected.append((ratbez.write_step, ["solid", "path", "bezier_faces", "analytic_primitives"]))
+        expected.append((ratbez.write_brep, ["solid", "path", "bezier_faces", "analytic_primitives"]))
         expected.append((ratbez.read_step, ["path", "progress"]))
         expected.append((ratbez.read_brep, ["path", "progress"]))
-        expected.append((ratbez.occt_check,
-                         ["solid", "grid", "deviation_limit", "volume_limit", "bezier_faces", "progress"]))
+        expected.append((ratbez.occt_check, ["solid", "grid", "deviation_limit", "volume_limit", "bezier_faces",
+                                             "analytic_primitives", "progress"]))
     for function, names in expected:
         assert keywords(function) == names, function.__name__
     # Constructors: __init__(self, ...).

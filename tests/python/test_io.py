@@ -212,6 +212,26 @@ def test_bezier_faces_keyword(tmp_path):
 
 
 @needs_occt
+def test_analytic_primitives_keyword(tmp_path):
+    # A sphere at (0, -40, 0): OCCT's own spherical face by default (STEP: SPHERICAL_SURFACE), which FreeCAD's BOP
+    # check passes; analytic_primitives=False hands over the B-spline face, whose poles the check flags there.
+    solid = ratbez.sphere(3, (0, -40, 0))
+    ratbez.write_step(solid, tmp_path / "analytic.step")
+    ratbez.write_step(solid, tmp_path / "bspline.step", analytic_primitives=False)
+    assert "SPHERICAL_SURFACE" in (tmp_path / "analytic.step").read_text()
+    assert "SPHERICAL_SURFACE" not in (tmp_path / "bspline.step").read_text()
+    assert ratbez.occt_check(solid)["passed"] is True
+    report = ratbez.occt_check(solid, analytic_primitives=False)
+    assert report["passed"] is False and report["bop_findings"] == ["BOPAlgo SelfIntersect: face (face 0)"]
+    # Read back, the sphere has no record; it goes over as OCCT's sphere again, recognised by its surface.
+    read = ratbez.read_step(tmp_path / "analytic.step")
+    assert read.kind == "none"
+    assert ratbez.occt_check(read)["passed"] is True
+    ratbez.write_step(read, tmp_path / "again.step")
+    assert "SPHERICAL_SURFACE" in (tmp_path / "again.step").read_text()
+
+
+@needs_occt
 @pytest.mark.parametrize("make, volume", [
     (lambda: ratbez.sphere(1.5), 4 / 3 * math.pi * 1.5 ** 3),
     (lambda: ratbez.cylinder(1, 2, axis=(1, 0, 1)), 2 * math.pi),

@@ -388,9 +388,11 @@ def straight_line(link, prop):
 # ratbez -> FreeCAD
 
 def shape_from_solid(solid, analytic=None):
-    """The solid as a valid Part.Solid: Part's analytic primitive for a cylinder, cone, sphere or torus when
-    `analytic` (None: the workbench preference, preferences.analytic_primitives), else the exact B-spline B-rep,
-    one face per face of the kernel.
+    """The solid as a valid Part.Solid, through the kernel's one conversion to OpenCASCADE (ratbez.brep_string,
+    as STEP and BREP files get it): a cylinder, cone, sphere or torus as OpenCASCADE's own primitive on its
+    analytic surfaces, as Part makes them, when `analytic` (None: the workbench preference,
+    preferences.analytic_primitives), else the exact B-spline B-rep; every other solid one face per face of
+    the kernel.
 
     Why analytic by default: OpenCASCADE exempts its analytic surfaces from the BOP check's face
     self-intersection search, which flags a B-spline sphere (OpenCASCADE's own toNurbs() sphere too) at some
@@ -406,32 +408,14 @@ def shape_from_solid(solid, analytic=None):
                                     "(1e99)").format(reach))
     if analytic is None:
         analytic = preferences.analytic_primitives()
-    shape = analytic_primitive(solid) if analytic else None
-    if shape is None:
-        shape = _bspline_shape(solid)
+    shape = _occt_shape(solid, analytic)
     if not shape.isValid():
         raise Failure("", translate("the kernel's B-rep is not a valid OpenCASCADE solid"))
     return shape
 
 
-def analytic_primitive(solid):
-    """Part's own cylinder, cone, sphere or torus with the parameters of the solid's construction record
-    (solid.kind, solid.parameters: the kernel keeps them through moves, turns and uniform scalings), or None
-    for any other kind."""
-    p = solid.parameters
-    if solid.kind == "sphere":
-        return Part.makeSphere(p["radius"], V(*p["center"]))
-    if solid.kind == "cylinder":
-        return Part.makeCylinder(p["radius"], p["height"], V(*p["center"]), V(*p["axis"]))
-    if solid.kind == "cone":
-        return Part.makeCone(p["radius1"], p["radius2"], p["height"], V(*p["center"]), V(*p["axis"]))
-    if solid.kind == "torus":
-        return Part.makeTorus(p["major_radius"], p["minor_radius"], V(*p["center"]), V(*p["axis"]))
-    return None
-
-
-def _bspline_shape(solid):
-    text = kernel.ratbez().brep_string(solid)
+def _occt_shape(solid, analytic):
+    text = kernel.ratbez().brep_string(solid, analytic_primitives=analytic)
     shape = Part.Shape()
     try:
         shape.importBrepFromString(text, False)

@@ -235,7 +235,7 @@ class Torus(SolidFeature):
                                      _finite_vector("Center", obj.Center), _finite_vector("Axis", obj.Axis))
 
 
-# The features whose solids have an analytic counterpart in Part (conversion.analytic_primitive).
+# The features whose solids go over as OpenCASCADE primitives when the preference asks (conversion.shape_from_solid).
 PRIMITIVES = (Cylinder, Cone, Sphere, Torus)
 
 

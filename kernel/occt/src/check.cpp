@@ -37,7 +37,7 @@
 #include <sstream>
 #include <string>
 
-#include "c0_split.hpp"
+#include "handout.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/topology.hpp"
@@ -356,9 +356,10 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
     };
     const ConvertedSolid converted = convert(solid, options.convert);
     // Validity, closure, OCCT's measures and the BOP analysis are of the solid as files and brep_string hand it
-    // out (to_occt: faces still C0 inside split); the evaluation deviation goes through convert's maps (the split
-    // only segments surfaces, exactly).
-    const detail::SplitSolid handed = detail::split_at_c0_knots_traced(converted.solid);
+    // out (handout.hpp: faces still C0 inside split, or OCCT's own primitive); the evaluation deviation goes
+    // through convert's maps (the split only segments surfaces, exactly; a primitive's analytic surface is
+    // measured against ours by the analytic row).
+    const detail::SplitSolid handed = detail::handed_out(solid, converted, options.convert);
     // Our own measures (the slack depends on the area), taken once, before OpenCASCADE may raise.
     report.volume = solid.volume();
     report.area = solid.area();

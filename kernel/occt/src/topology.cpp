@@ -19,6 +19,7 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Ax3.hxx>
@@ -35,7 +36,9 @@
 #include <string>
 #include <utility>
 
+#include "analytic_primitives.hpp"
 #include "c0_split.hpp"
+#include "handout.hpp"
 #include "face_sides.hpp"
 #include "gprop_patches.hpp"
 #include "smooth_arcs.hpp"
@@ -758,8 +761,24 @@ ConvertedSolid convert(const Solid& solid, const ConvertOptions& options) {
     }
 }
 
+namespace detail {
+
+SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const ConvertOptions& options) {
+    if (options.analytic_primitives && !options.bezier_faces)
+        if (const std::optional<TopoDS_Solid> primitive = analytic_primitive(solid)) {
+            SplitSolid handed{*primitive, {}};
+            std::size_t i = 0;
+            for (TopExp_Explorer faces(*primitive, TopAbs_FACE); faces.More(); faces.Next(), ++i)
+                handed.original_face.Bind(faces.Current(), converted.faces[converted.first_face[i]]);
+            return handed;
+        }
+    return split_at_c0_knots_traced(converted.solid);
+}
+
+}  // namespace detail
+
 TopoDS_Solid to_occt(const Solid& solid, const ConvertOptions& options) {
-    return detail::split_at_c0_knots(convert(solid, options).solid);
+    return detail::handed_out(solid, convert(solid, options), options).solid;
 }
 
 }  // namespace ratbez::occt

@@ -591,12 +591,16 @@ def bezier_to_power(control_points: Sequence[Point]) -> list:
 def bezier_to_power_matrix(n: int) -> List[List[float]]:
     """The matrix M of Exercise 1.14: [B_{0,n}(u) .. B_{n,n}(u)] = [1 u .. u^n] M."""
 
-def brep_string(solid: Solid, bezier_faces: bool = ...) -> str:
+def brep_string(solid: Solid, bezier_faces: bool = ..., analytic_primitives: bool = ...) -> str:
     """The .brep text as a string (for FreeCAD's Part.Shape.importBrepFromString).
     bezier_faces=True: one face per rational Bezier patch of every face, refined (exactly: knot insertion,
     degree elevation) until OpenCASCADE's fixed Gauss rule -- FreeCAD's Shape.Volume, Area and
     CenterOfMass -- reads each face's area to 1e-9; no C0 knot is left, so FreeCAD's 'Run BOP check'
-    passes. More faces and poles; the same exact geometry."""
+    passes. More faces and poles; the same exact geometry.
+    analytic_primitives=True (the default): a cylinder, cone, sphere or torus (by solid.kind, or a lone sphere
+    or torus face read from a file) goes over as OpenCASCADE's own primitive on its analytic surfaces, as
+    Part's: FreeCAD's BOP check flags a B-spline sphere's poles at some placements, never an analytic one.
+    False: the kernel's B-spline faces."""
 
 def bspline_basis(i: int, p: int, knots: Sequence[float], u: float) -> float:
     """N_{i,p}(u) by the Cox-de Boor recursion with 0/0 := 0."""
@@ -688,8 +692,9 @@ def max_deviation(solid: Solid, mesh: Mesh, samples_per_edge: int = ..., progres
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""
 
-def occt_check(solid: Solid, grid: int = ..., deviation_limit: float = ..., volume_limit: float = ..., bezier_faces: bool = ..., progress: Optional[Callable[[float], object]] = ...) -> dict:
-    """Convert to an OpenCASCADE solid (bezier_faces: as brep_string) and compare: validity, evaluation
+def occt_check(solid: Solid, grid: int = ..., deviation_limit: float = ..., volume_limit: float = ..., bezier_faces: bool = ..., analytic_primitives: bool = ..., progress: Optional[Callable[[float], object]] = ...) -> dict:
+    """Convert to an OpenCASCADE solid (bezier_faces, analytic_primitives: as brep_string; the check
+    runs on the solid as handed out) and compare: validity, evaluation
     deviation, volume and area; for a cylinder, cone, sphere, torus or revolution also the distance to
     OCCT's analytic surface of that kind (max_analytic_deviation) and, for the four primitives, the
     closed-form volume (closed_form_volume); both None otherwise. Also OpenCASCADE's BOP argument analysis
@@ -798,9 +803,9 @@ def write_3mf(solid: Union[Solid, Dict[str, Solid]], path: Path, tolerance: Opti
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""
 
-def write_brep(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: bool = ...) -> None:
-    """Write OpenCASCADE's native .brep text (bezier_faces: as brep_string); a list of solids writes a compound
-    of them, read back by read_brep_all."""
+def write_brep(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: bool = ..., analytic_primitives: bool = ...) -> None:
+    """Write OpenCASCADE's native .brep text (bezier_faces, analytic_primitives: as brep_string); a list of solids
+    writes a compound of them, read back by read_brep_all."""
 
 def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with
@@ -810,9 +815,9 @@ def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
     while the call runs (the GIL is released)."""
 
-def write_step(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: bool = ...) -> None:
-    """Write the exact B-spline B-rep as an AP214 STEP file (bezier_faces: as brep_string). A list of solids
-    (what read_step_all returns) writes one product each, named after solid.name, read back by read_step_all."""
+def write_step(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: bool = ..., analytic_primitives: bool = ...) -> None:
+    """Write the exact B-rep as an AP214 STEP file (bezier_faces, analytic_primitives: as brep_string). A list of
+    solids (what read_step_all returns) writes one product each, named after solid.name, read back by read_step_all."""
 
 def write_stl(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., binary: bool = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),

@@ -356,26 +356,26 @@ void bind_io(py::module_& m) {
     m.attr("has_occt") = true;
     m.def(
         "write_step",
-        [](const py::object& solid, const py::object& path, bool bezier_faces) {
+        [](const py::object& solid, const py::object& path, bool bezier_faces, bool analytic_primitives) {
             const std::vector<Solid> solids = solids_of(solid);
             const std::string file = to_path(path, "path");
             py::gil_scoped_release release;
-            occt::write_step(solids, file, occt::ConvertOptions{bezier_faces});
+            occt::write_step(solids, file, occt::ConvertOptions{bezier_faces, analytic_primitives});
         },
-        py::arg("solid"), py::arg("path"), py::arg("bezier_faces") = false,
-        "Write the exact B-spline B-rep as an AP214 STEP file (bezier_faces: as brep_string). A list of solids\n"
-        "(what read_step_all returns) writes one product each, named after solid.name, read back by read_step_all.");
+        py::arg("solid"), py::arg("path"), py::arg("bezier_faces") = false, py::arg("analytic_primitives") = true,
+        "Write the exact B-rep as an AP214 STEP file (bezier_faces, analytic_primitives: as brep_string). A list of\n"
+        "solids (what read_step_all returns) writes one product each, named after solid.name, read back by read_step_all.");
     m.def(
         "write_brep",
-        [](const py::object& solid, const py::object& path, bool bezier_faces) {
+        [](const py::object& solid, const py::object& path, bool bezier_faces, bool analytic_primitives) {
             const std::vector<Solid> solids = solids_of(solid);
             const std::string file = to_path(path, "path");
             py::gil_scoped_release release;
-            occt::write_brep(solids, file, occt::ConvertOptions{bezier_faces});
+            occt::write_brep(solids, file, occt::ConvertOptions{bezier_faces, analytic_primitives});
         },
-        py::arg("solid"), py::arg("path"), py::arg("bezier_faces") = false,
-        "Write OpenCASCADE's native .brep text (bezier_faces: as brep_string); a list of solids writes a compound\n"
-        "of them, read back by read_brep_all.");
+        py::arg("solid"), py::arg("path"), py::arg("bezier_faces") = false, py::arg("analytic_primitives") = true,
+        "Write OpenCASCADE's native .brep text (bezier_faces, analytic_primitives: as brep_string); a list of solids\n"
+        "writes a compound of them, read back by read_brep_all.");
     m.def(
         "read_step",
         [](const py::object& path, const py::object& progress) { return read_released(path, progress, occt::read_step); },
@@ -408,25 +408,29 @@ void bind_io(py::module_& m) {
             .c_str());
     m.def(
         "brep_string",
-        [](const py::object& solid, bool bezier_faces) {
+        [](const py::object& solid, bool bezier_faces, bool analytic_primitives) {
             const Solid& s = solid_of(solid);
             std::string text;
             {
                 py::gil_scoped_release release;
-                text = occt::brep_string(s, occt::ConvertOptions{bezier_faces});
+                text = occt::brep_string(s, occt::ConvertOptions{bezier_faces, analytic_primitives});
             }
             return text;
         },
-        py::arg("solid"), py::arg("bezier_faces") = false,
+        py::arg("solid"), py::arg("bezier_faces") = false, py::arg("analytic_primitives") = true,
         "The .brep text as a string (for FreeCAD's Part.Shape.importBrepFromString).\n"
         "bezier_faces=True: one face per rational Bezier patch of every face, refined (exactly: knot insertion,\n"
         "degree elevation) until OpenCASCADE's fixed Gauss rule -- FreeCAD's Shape.Volume, Area and\n"
         "CenterOfMass -- reads each face's area to 1e-9; no C0 knot is left, so FreeCAD's 'Run BOP check'\n"
-        "passes. More faces and poles; the same exact geometry.");
+        "passes. More faces and poles; the same exact geometry.\n"
+        "analytic_primitives=True (the default): a cylinder, cone, sphere or torus (by solid.kind, or a lone sphere\n"
+        "or torus face read from a file) goes over as OpenCASCADE's own primitive on its analytic surfaces, as\n"
+        "Part's: FreeCAD's BOP check flags a B-spline sphere's poles at some placements, never an analytic one.\n"
+        "False: the kernel's B-spline faces.");
     m.def(
         "occt_check",
         [](const py::object& solid, int grid, double deviation_limit, double volume_limit, bool bezier_faces,
-           const py::object& progress) {
+           bool analytic_primitives, const py::object& progress) {
             const Solid& s = solid_of(solid);
             occt::CheckOptions options;
             options.progress = python_progress(progress);
@@ -434,6 +438,7 @@ void bind_io(py::module_& m) {
             options.deviation_limit = deviation_limit;
             options.volume_limit = volume_limit;
             options.convert.bezier_faces = bezier_faces;
+            options.convert.analytic_primitives = analytic_primitives;
             occt::CheckReport report;
             {
                 py::gil_scoped_release release;
@@ -445,8 +450,9 @@ void bind_io(py::module_& m) {
             return result;
         },
         py::arg("solid"), py::arg("grid") = 50, py::arg("deviation_limit") = 1e-9, py::arg("volume_limit") = 1e-6,
-        py::arg("bezier_faces") = false, py::arg("progress") = py::none(),
-        (std::string("Convert to an OpenCASCADE solid (bezier_faces: as brep_string) and compare: validity, evaluation\n"
+        py::arg("bezier_faces") = false, py::arg("analytic_primitives") = true, py::arg("progress") = py::none(),
+        (std::string("Convert to an OpenCASCADE solid (bezier_faces, analytic_primitives: as brep_string; the check\n"
+                     "runs on the solid as handed out) and compare: validity, evaluation\n"
                      "deviation, volume and area; for a cylinder, cone, sphere, torus or revolution also the distance to\n"
                      "OCCT's analytic surface of that kind (max_analytic_deviation) and, for the four primitives, the\n"
                      "closed-form volume (closed_form_volume); both None otherwise. Also OpenCASCADE's BOP argument analysis\n"

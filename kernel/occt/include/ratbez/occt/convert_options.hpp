@@ -12,6 +12,10 @@ struct ConvertOptions {
     // refined so that OCCT's fixed Gauss rule — FreeCAD's Shape.Volume, Area, CenterOfMass — reads each
     // to kGPropTolerance, with no C0 knot left in any surface or edge curve (topology.hpp says why).
     bool bezier_faces = false;
+    // true: a cylinder, cone, sphere or torus of ours (by its construction record, or a lone sphere or torus face
+    // read from a file) goes over as OCCT's own primitive on its analytic surfaces, as Part's (the BOP check, its
+    // booleans and Thickness treat those better: src/analytic_primitives.hpp). Not with bezier_faces.
+    bool analytic_primitives = true;
 };
 
 }  // namespace ratbez::occt

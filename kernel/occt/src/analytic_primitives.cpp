@@ -1,0 +1,197 @@
+// Cylinders, cones, spheres and tori as OpenCASCADE's own primitives (see analytic_primitives.hpp).
+
+#include "analytic_primitives.hpp"
+
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_Plane.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Pln.hxx>
+
+#include <cmath>
+
+#include "ratbez/construction.hpp"
+#include "ratbez/occt/geometry.hpp"
+#include "smooth_arcs.hpp"
+
+namespace ratbez::occt::detail {
+namespace {
+
+// Relative to the solid's size: how far a control row may be from the arc, axis or meridian it is taken for
+// (find_arc's own fit), and how far the surface may be from the recognised sphere or torus at 81 samples.
+constexpr double kFit = 1e-11;
+constexpr double kOnSurface = 1e-10;
+
+gp_Ax2 axes(const Vec3& origin, const Vec3& axis) { return gp_Ax2(to_occt_point(origin), gp_Dir(axis.x, axis.y, axis.z)); }
+gp_Ax2 axes(const Vec3& origin, const Vec3& axis, const Vec3& x) {
+    return gp_Ax2(to_occt_point(origin), gp_Dir(axis.x, axis.y, axis.z), gp_Dir(x.x, x.y, x.z));
+}
+
+// A sphere (minor radius 0 means none: major is its radius) or torus: centre, axis, the direction its parameter
+// starts from, radii.
+struct Round {
+    Vec3 centre, axis, x;
+    double major = 0, minor = 0;
+    bool sphere = false;
+};
+
+// The surface as a revolution about one axis of a meridian arc: a sphere when the arc's centre is on the
+// axis, a torus when it is further from it than its radius.
+std::optional<Round> round_surface(const NurbsSurface& surface, double tolerance) {
+    for (const bool along_u : {true, false}) {
+        const std::optional<ArcDirection> arc = find_arc(surface, along_u, tolerance);
+        if (!arc || arc->origin.empty()) continue;
+        std::size_t widest = 0;
+        for (std::size_t j = 0; j < arc->origin.size(); ++j)
+            if (norm(arc->u_axis[j]) > norm(arc->u_axis[widest])) widest = j;
+        const double r_widest = norm(arc->u_axis[widest]);
+        if (!(r_widest > tolerance)) continue;
+        const Vec3 x = arc->u_axis[widest] / r_widest;
+        Vec3 axis = cross(arc->u_axis[widest], arc->v_axis[widest]);
+        axis = axis / norm(axis);
+        const Vec3 base = arc->origin[widest];
+        // Every row a circle about the axis, starting towards x: its height along the axis and its radius.
+        std::vector<Vec3> meridian;
+        bool revolution = true;
+        for (std::size_t j = 0; j < arc->origin.size() && revolution; ++j) {
+            const Vec3 &u = arc->u_axis[j], &v = arc->v_axis[j];
+            const double r = norm(u);
+            const Vec3 offset = arc->origin[j] - base;
+            const double h = dot(offset, axis);
+            revolution = std::abs(norm(v) - r) <= tolerance && std::abs(dot(u, v)) <= tolerance * std::max(r, 1.0) &&
+                         norm(offset - h * axis) <= tolerance &&
+                         (r <= tolerance || (norm(u - r * x) <= tolerance && norm(cross(u, v) / r - r * axis) <= tolerance));
+            meridian.push_back({h, r, 0});
+        }
+        if (!revolution) continue;
+        const int degree = along_u ? surface.degree_v() : surface.degree_u();
+        const std::vector<double>& knots = along_u ? surface.knots_v() : surface.knots_u();
+        const std::optional<ArcDirection> bend = find_arc(NurbsCurve(degree, knots, meridian, arc->omega), tolerance);
+        if (!bend) continue;
+        const Vec3 centre = bend->origin.front();
+        const double radius = norm(bend->u_axis.front());
+        if (std::abs(norm(bend->v_axis.front()) - radius) > tolerance) continue;  // an ellipse
+        if (std::abs(centre.y) <= tolerance) return Round{base + centre.x * axis, axis, x, radius, 0, true};
+        if (centre.y > radius + tolerance) return Round{base + centre.x * axis, axis, x, centre.y, radius, false};
+    }
+    return std::nullopt;
+}
+
+double distance_from(const Round& round, const Vec3& p) {
+    const Vec3 d = p - round.centre;
+    const double h = dot(d, round.axis), r = norm(d - h * round.axis);
+    return round.sphere ? std::abs(norm(d) - round.major) : std::abs(std::hypot(h, r - round.major) - round.minor);
+}
+
+// A solid of one face that is a whole sphere or torus.
+std::optional<Round> one_round_face(const Solid& solid) {
+    if (solid.faces().size() != 1 || solid.faces().front().kind() != Face::Kind::surface) return std::nullopt;
+    const NurbsSurface& surface = solid.faces().front().surface();
+    const double size = std::max(1.0, solid.bounding_box().diagonal());
+    const std::optional<Round> round = round_surface(surface, kFit * size);
+    if (!round) return std::nullopt;
+    const Interval du = surface.domain_u(), dv = surface.domain_v();
+    for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j) {
+            const Vec3 p = surface.point(std::min(du.max, du.min + du.width() * i / 8), std::min(dv.max, dv.min + dv.width() * j / 8));
+            if (distance_from(*round, p) > kOnSurface * size) return std::nullopt;
+        }
+    return round;
+}
+
+std::optional<TopoDS_Solid> made(const Solid& solid) {
+    const Construction& record = solid.construction();
+    if (const auto* c = record.get<Construction::Cylinder>())
+        return BRepPrimAPI_MakeCylinder(axes(c->center, c->axis), c->radius, c->height).Solid();
+    if (const auto* c = record.get<Construction::Cone>())
+        return BRepPrimAPI_MakeCone(axes(c->center, c->axis), c->radius1, c->radius2, c->height).Solid();
+    if (const auto* s = record.get<Construction::Sphere>())
+        return BRepPrimAPI_MakeSphere(to_occt_point(s->center), s->radius).Solid();
+    if (const auto* t = record.get<Construction::Torus>())
+        return BRepPrimAPI_MakeTorus(axes(t->center, t->axis), t->major_radius, t->minor_radius).Solid();
+    if (const std::optional<Round> round = one_round_face(solid)) {
+        const gp_Ax2 frame = axes(round->centre, round->axis, round->x);
+        return round->sphere ? BRepPrimAPI_MakeSphere(frame, round->major).Solid()
+                             : BRepPrimAPI_MakeTorus(frame, round->major, round->minor).Solid();
+    }
+    return std::nullopt;
+}
+
+// Which face of ours an OCCT face of the primitive is: the one surface face for a curved face; for a planar
+// one, the planar face of ours whose outward normal it shares.
+std::optional<std::size_t> face_of(const Solid& solid, const TopoDS_Face& face) {
+    const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(face));
+    Vec3 normal{};
+    if (!plane.IsNull()) {
+        const gp_Dir n = plane->Pln().Axis().Direction();
+        normal = face.Orientation() == TopAbs_REVERSED ? Vec3{-n.X(), -n.Y(), -n.Z()} : Vec3{n.X(), n.Y(), n.Z()};
+    }
+    for (std::size_t i = 0; i < solid.faces().size(); ++i) {
+        const Face& ours = solid.faces()[i];
+        if (plane.IsNull() ? ours.kind() == Face::Kind::surface
+                           : ours.kind() == Face::Kind::planar && dot(ours.plane().normal, normal) > 0.999)
+            return i;
+    }
+    return std::nullopt;
+}
+
+// Whether the face of ours lies on the OCCT face (its surface), at 9 x 9 points of its parameter box (a planar
+// face: its plane's origin), to kOnSurface of the size: a record that does not describe the faces (a wrong
+// claim) must not be handed out.
+bool lies_on(const Face& ours, const TopoDS_Face& face, double size) {
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+    const auto off = [&](const Vec3& p) {
+        GeomAPI_ProjectPointOnSurf foot(to_occt_point(p), surface);
+        return foot.NbPoints() > 0 ? foot.LowerDistance() : HUGE_VAL;
+    };
+    if (ours.kind() == Face::Kind::planar) return off(ours.plane().origin) <= kOnSurface * size;
+    const Interval du = ours.surface().domain_u(), dv = ours.surface().domain_v();
+    for (int i = 0; i <= 8; ++i)
+        for (int j = 0; j <= 8; ++j)
+            if (off(ours.surface().point(std::min(du.max, du.min + du.width() * i / 8),
+                                         std::min(dv.max, dv.min + dv.width() * j / 8))) > kOnSurface * size)
+                return false;
+    return true;
+}
+
+}  // namespace
+
+std::optional<TopoDS_Solid> analytic_primitive(const Solid& solid) {
+    try {
+        const std::optional<TopoDS_Solid> primitive = made(solid);
+        if (!primitive) return std::nullopt;
+        const double size = std::max(1.0, solid.bounding_box().diagonal());
+        // Its faces in the order of ours (face i of the solid is face i of the shape), each checked on ours.
+        std::vector<TopoDS_Face> in_order(solid.faces().size());
+        int faces = 0;
+        for (TopExp_Explorer it(*primitive, TopAbs_FACE); it.More(); it.Next(), ++faces) {
+            const TopoDS_Face face = TopoDS::Face(it.Current());
+            const std::optional<std::size_t> ours = face_of(solid, face);
+            if (!ours || !in_order[*ours].IsNull() || !lies_on(solid.faces()[*ours], face, size)) return std::nullopt;
+            in_order[*ours] = face;
+        }
+        if (faces != static_cast<int>(solid.faces().size())) return std::nullopt;
+        BRep_Builder builder;
+        TopoDS_Shell shell;
+        builder.MakeShell(shell);
+        for (const TopoDS_Face& face : in_order) builder.Add(shell, face);
+        shell.Closed(Standard_True);
+        TopoDS_Solid result;
+        builder.MakeSolid(result);
+        builder.Add(result, shell);
+        return result;
+    } catch (const Standard_Failure&) {
+        return std::nullopt;
+    }
+}
+
+}  // namespace ratbez::occt::detail
