@@ -10,6 +10,8 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepCheck_Shell.hxx>
 #include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAdaptor_Curve.hxx>
@@ -22,7 +24,9 @@
 #include <Geom_ToroidalSurface.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax1.hxx>
@@ -300,9 +304,25 @@ const char* shape_kind(TopAbs_ShapeEnum type) {
 // every mode on), on a copy of the shape as FreeCAD does: the analysis intersects the shape with itself and may
 // raise the tolerances of what it runs on, which would change the measurements taken after it. Each finding
 // names its status, the kinds of its shapes and, for faces, which face of ours (face i of the Solid). It runs on
-// the solid as handed out (`handed`: split at C0 knots where to_occt splits it), its faces traced back to ours.
+// the solid as handed out (`handed`: split at C0 knots where to_occt splits it), its faces traced back to ours,
+// and as FreeCAD gets it: through the .brep text (brep_string, write_brep), read back, then copied. The text
+// round trip matters: on a trimmed sphere read from a file (corpus sphere_minus_box) the search flags a face of
+// the read-back shape and not of the one in memory.
 void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& handed, CheckReport& report) {
-    BRepBuilderAPI_Copy copier(handed.solid);
+    std::stringstream text;
+    BRepTools::Write(handed.solid, text);
+    TopoDS_Shape read;
+    BRep_Builder builder;
+    BRepTools::Read(read, text, builder);
+    TopTools_IndexedMapOfShape handed_faces, read_faces;
+    TopExp::MapShapes(handed.solid, TopAbs_FACE, handed_faces);
+    TopExp::MapShapes(read, TopAbs_FACE, read_faces);
+    if (read.IsNull() || read_faces.Extent() != handed_faces.Extent()) {
+        report.bop_findings.push_back("the .brep text of the solid does not read back");
+        report.bop_clean = false;
+        return;
+    }
+    BRepBuilderAPI_Copy copier(read);
     BOPAlgo_ArgumentAnalyzer analyzer;
     analyzer.SetShape1(copier.Shape());
     analyzer.ArgumentTypeMode() = true;
@@ -316,10 +336,10 @@ void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& han
     analyzer.MergeEdgeMode() = true;
     analyzer.Perform();
     const auto our_face = [&](const TopoDS_Shape& shape) -> std::optional<std::size_t> {
-        for (TopExp_Explorer pieces(handed.solid, TopAbs_FACE); pieces.More(); pieces.Next()) {
-            if (!copier.ModifiedShape(pieces.Current()).IsSame(shape) || !handed.original_face.IsBound(pieces.Current()))
-                continue;
-            const TopoDS_Shape& original = handed.original_face.Find(pieces.Current());
+        for (int k = 1; k <= read_faces.Extent(); ++k) {
+            const TopoDS_Shape& piece = handed_faces(k);  // the same place in the text's order
+            if (!copier.ModifiedShape(read_faces(k)).IsSame(shape) || !handed.original_face.IsBound(piece)) continue;
+            const TopoDS_Shape& original = handed.original_face.Find(piece);
             for (std::size_t k = 0; k < converted.faces.size(); ++k)
                 if (converted.faces[k].IsSame(original)) {
                     const auto after = std::upper_bound(converted.first_face.begin(), converted.first_face.end(), k);
