@@ -54,7 +54,7 @@ bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit) {
 
 }  // namespace
 
-SplitSolid split_at_c0_knots_traced(const TopoDS_Solid& solid) {
+SplitSolid split_at_c0_knots(const TopoDS_Solid& solid) {
     SplitSolid unchanged{solid, {}};
     for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next())
         unchanged.original_face.Bind(faces.Current(), faces.Current());
@@ -92,7 +92,5 @@ SplitSolid split_at_c0_knots_traced(const TopoDS_Solid& solid) {
         return unchanged;
     }
 }
-
-TopoDS_Solid split_at_c0_knots(const TopoDS_Solid& solid) { return split_at_c0_knots_traced(solid).solid; }
 
 }  // namespace ratbez::occt::detail

@@ -16,17 +16,16 @@
 
 namespace ratbez::occt::detail {
 
-// When a face's surface is C0 inside: `solid` with those faces, and the edges whose curves are C0, split at
-// their C0 knots. Otherwise `solid` itself (an edge alone does not matter to the rule), and also when
-// OpenCASCADE fails or leaves an invalid shape or other than one solid.
-TopoDS_Solid split_at_c0_knots(const TopoDS_Solid& solid);
-
-// The same, and for every face of the result the face of `solid` it is (a piece of): what check() needs to
-// name our faces in its findings on the solid as handed out.
+// The solid split, and for every face of the result the face of the input it is (a piece of): what check()
+// needs to name our faces in its findings on the solid as handed out.
 struct SplitSolid {
     TopoDS_Solid solid;
     TopTools_DataMapOfShapeShape original_face;
 };
-SplitSolid split_at_c0_knots_traced(const TopoDS_Solid& solid);
+
+// When a face's surface is C0 inside: `solid` with those faces, and the edges whose curves are C0, split at
+// their C0 knots. Otherwise `solid` itself (an edge alone does not matter to the rule), and also when
+// OpenCASCADE fails or leaves an invalid shape or other than one solid.
+SplitSolid split_at_c0_knots(const TopoDS_Solid& solid);
 
 }  // namespace ratbez::occt::detail

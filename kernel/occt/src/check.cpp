@@ -340,9 +340,9 @@ void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& han
             const TopoDS_Shape& piece = handed_faces(k);  // the same place in the text's order
             if (!copier.ModifiedShape(read_faces(k)).IsSame(shape) || !handed.original_face.IsBound(piece)) continue;
             const TopoDS_Shape& original = handed.original_face.Find(piece);
-            for (std::size_t k = 0; k < converted.faces.size(); ++k)
-                if (converted.faces[k].IsSame(original)) {
-                    const auto after = std::upper_bound(converted.first_face.begin(), converted.first_face.end(), k);
+            for (std::size_t c = 0; c < converted.faces.size(); ++c)
+                if (converted.faces[c].IsSame(original)) {
+                    const auto after = std::upper_bound(converted.first_face.begin(), converted.first_face.end(), c);
                     return static_cast<std::size_t>(after - converted.first_face.begin()) - 1;
                 }
         }

@@ -772,7 +772,7 @@ SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const
                 handed.original_face.Bind(faces.Current(), converted.faces[converted.first_face[i]]);
             return handed;
         }
-    return split_at_c0_knots_traced(converted.solid);
+    return split_at_c0_knots(converted.solid);
 }
 
 }  // namespace detail

@@ -27,8 +27,8 @@
 // each piece (a single Bézier span) put in normal form when rational (end weights 1: the one rational
 // parameterisation of an arc that depends on the arc alone, so that equal arcs of two circles match point
 // for point) and mapped linearly onto its interval of normalised length. Last, a break where every section
-// runs on within one Bézier piece of its degree (a straight segment, or an arc of one conic below a half
-// turn: bezier_merge.hpp) is dropped and the pieces on both sides merged: a circle's own arc joints opposite
+// runs on within one Bézier piece of its degree (a straight segment, or an arc of one conic up to 120
+// degrees: bezier_merge.hpp) is dropped and the pieces on both sides merged: a circle's own arc joints opposite
 // the middle of a square's sides leave no knot behind, so a circle lofted to a square has knots at the
 // square's corners only, as Part's Loft has edges there. So the sections share one knot vector
 // (multiplicity p at every break: C0 in the parameter, the geometry unchanged), match exactly by arc length
