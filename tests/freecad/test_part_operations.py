@@ -53,22 +53,20 @@ VOLUME = 1e-3      # relative, results against the exact volume or Part's
 LOFT_CHANGE = 2e-2  # relative, change of volume of a loft against Part's loft
 suite = Suite()
 
-# (kind, operation): the problem RatBez shows where Part works (measured with FreeCAD 0.20.2). The primitives go to
-# FreeCAD as Part's analytic ones by default and behave as Part's; their " B-spline" kinds are the kernel's faces.
+# (kind, operation): the problem RatBez shows where Part works (measured with FreeCAD 0.20.2). The primitives, and
+# extrusions and revolutions of lines and arcs, go to FreeCAD as OpenCASCADE builds them by default (planes,
+# cylinders, cones, spheres, tori) and behave as Part's; the primitives' " B-spline" kinds are the kernel's faces.
 # "BOPAlgo GeomAbs_C0": the result is valid and of the right volume, but FreeCAD's BOP check flags a face: OCCT
 # offsets a B-spline face by an offset surface one order less continuous. Straight directions go over as cubics
 # with simple knots (C2), so Offset passes; Thickness first extends the faces beside the removed one, and the
 # extension joins the face with a knot of multiplicity degree - 1 (C1: [4, 2, 1, 1, 1, 2, 4] on a cylinder's
-# cubic direction, 4 at degree 5 on the sweep), whose offset is C0 whatever the degree. Part's faces are analytic
+# cubic direction), whose offset is C0 whatever the degree. Part's faces are analytic
 # and pass. "BOPAlgo SelfIntersect" for the B-spline sphere: the offset of its degree 5 face (C2) is flagged
 # self-intersecting, the inward offset is not.
 KNOWN_FAILURES = (
     ("sphere B-spline", "offset+", "BOPAlgo SelfIntersect"),
     ("cylinder B-spline", "thickness", "BOPAlgo GeomAbs_C0"),
     ("cone B-spline", "thickness", "BOPAlgo GeomAbs_C0"),
-    ("revolve270", "thickness", "BOPAlgo GeomAbs_C0"),
-    ("extrude", "thickness", "BOPAlgo GeomAbs_C0"),
-    ("sweep", "thickness", "BOPAlgo GeomAbs_C0"),
     ("loft", "fillet", "raised"),
     ("loft", "offset-", "null shape"),
     ("ruled", "chamfer", "raised"),

@@ -68,12 +68,17 @@ def assert_good_solid(obj, expected_volume, what, centre=None):
     check(not shape.isNull() and shape.isValid(), what + ": invalid shape")
     check(shape.ShapeType == "Solid", "{}: shape type {}".format(what, shape.ShapeType))
     check(len(shape.Shells) == 1 and shape.Shells[0].isClosed(), what + ": shell not closed")
-    # Exact B-rep, not a mesh: few faces, each on a B-spline surface or a plane (a primitive, or a solid of one
-    # face that is a whole sphere or torus, such as a revolved circle: OpenCASCADE's analytic surfaces).
+    # Exact B-rep, not a mesh: few faces, each on a B-spline surface or a plane; OpenCASCADE's analytic surfaces
+    # for a primitive, a revolution, extrusion or sweep of lines and arcs (OpenCASCADE's revolution or prism of
+    # them), and a solid of one face that is a whole sphere or torus.
     check(len(shape.Faces) <= 64, "{}: {} faces (a mesh?)".format(what, len(shape.Faces)))
     analytic = preferences.analytic_primitives()
-    surfaces = ANALYTIC if isinstance(obj.Proxy, features.PRIMITIVES) and analytic else \
-        ("BSplineSurface", "Plane") + (("Toroid", "Sphere") if analytic and len(shape.Faces) == 1 else ())
+    if isinstance(obj.Proxy, features.PRIMITIVES) and analytic:
+        surfaces = ANALYTIC
+    elif isinstance(obj.Proxy, (features.Revolve, features.Extrude, features.Sweep)) and analytic:
+        surfaces = ANALYTIC + ("BSplineSurface",)
+    else:
+        surfaces = ("BSplineSurface", "Plane") + (("Toroid", "Sphere") if analytic and len(shape.Faces) == 1 else ())
     for face in shape.Faces:
         check(type(face.Surface).__name__ in surfaces, "{}: face on a {}".format(what, type(face.Surface).__name__))
     close(obj.ExactVolume, expected_volume, 1e-9, what + " kernel volume")

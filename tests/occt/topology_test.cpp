@@ -38,11 +38,13 @@
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/shape_import.hpp"
 #include "ratbez/occt/topology.hpp"
+#include "ratbez/interpolation.hpp"
 #include "ratbez/join.hpp"
 #include "ratbez/loft.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
 #include "ratbez/revolve.hpp"
+#include "ratbez/solid_transform.hpp"
 
 namespace ratbez::occt {
 namespace {
@@ -470,6 +472,50 @@ TEST(Topology, PrimitivesGoOverAsOcctsOwn) {
             const GeomAbs_SurfaceType type = BRepAdaptor_Surface(TopoDS::Face(it.Current())).GetType();
             EXPECT_TRUE(type == GeomAbs_BSplineSurface || type == GeomAbs_Plane) << type;
         }
+    }
+}
+
+// Extrusions and revolutions of lines and arcs go over as OCCT's prism or revolution of their profile
+// (swept_solids.hpp): planes, cylinders, cones, spheres and tori, face i of ours face i of the shape. Part's
+// Thickness works on those and flagged the B-spline forms (GeomAbs_C0). Swept surfaces OCCT reads worse than our
+// B-splines (an oblique extrusion of a circle) and pieces that are no line or arc stay B-splines.
+TEST(Topology, ExtrusionsAndRevolutionsGoOverAsOcctSweepsThem) {
+    using Types = std::vector<GeomAbs_SurfaceType>;
+    constexpr auto P = GeomAbs_Plane, Cy = GeomAbs_Cylinder, Co = GeomAbs_Cone, Sp = GeomAbs_Sphere, To = GeomAbs_Torus,
+                   B = GeomAbs_BSplineSurface;
+    const Profile slot({line_segment({0, -2, 0}, {10, -2, 0}), arc(2, -90, 90, {10, 0, 0}), line_segment({10, 2, 0}, {0, 2, 0}),
+                        arc(2, 90, 270, {0, 0, 0})});
+    // In the xy plane, turned about the y axis: x in [2, 4], y in [0, 3], a half disc r = 1.5 on the right side.
+    const Profile ring({line_segment({2, 0, 0}, {4, 0, 0}), arc(1.5, -90, 90, {4, 1.5, 0}), line_segment({4, 3, 0}, {2, 3, 0}),
+                        line_segment({2, 3, 0}, {2, 0, 0})});
+    const Profile bowl({line_segment({0, 0, 0}, {3, 0, 0}), line_segment({3, 0, 0}, {1, 4, 0}), line_segment({1, 4, 0}, {0, 4, 0})});
+    const Profile half_disc({arc(2, -90, 90, {0, 0, 0})});
+    const Vec3 y{0, 1, 0};
+    const AffineMap moved = AffineMap::rotation({1, 2, 3}, {1, 1, 0}, 30).after(AffineMap::translation({-5, 40, 7}));
+    const std::tuple<std::string, Solid, Types> cases[] = {
+        {"slot", extrude(slot, {0, 0, 1}, 5), {P, Cy, P, Cy, P, P}},
+        {"disc with a hole", extrude(Profile({circle(5)}), {0, 0, 1}, 3, {Profile({circle(1, {1, 0, 0})})}), {Cy, Cy, P, P}},
+        {"ring, full turn", revolve(ring, {}, y), {P, To, P, Cy}},
+        {"ring, 270 degrees", revolve(ring, {}, y, 270), {P, To, P, Cy, P, P}},
+        {"ring, moved and turned", transformed(revolve(ring, {}, y, 270), moved), {P, To, P, Cy, P, P}},
+        {"bowl, open profile ending on the axis", revolve(bowl, {}, y), {P, Co, P}},
+        {"ball", revolve(half_disc, {}, y), {Sp}},
+        {"quarter ball", revolve(half_disc, {}, y, 90), {Sp, P, P}},
+        {"oblique extrusion of a circle", extrude(Profile({circle(5)}), {0, 1, 1}, 3), {B, P, P}},
+        {"extrusion of an interpolated curve and a line",
+         extrude(Profile({interpolate({{0, 0, 0}, {1, -1, 0}, {3, -1, 0}, {4, 0, 0}}), line_segment({4, 0, 0}, {0, 0, 0})}), {0, 0, 1}, 2),
+         {B, B, P, P}}};
+    for (const auto& [name, solid, types] : cases) {
+        SCOPED_TRACE(name);
+        const TopoDS_Solid handed = to_occt(solid);
+        EXPECT_TRUE(BRepCheck_Analyzer(handed).IsValid());
+        Types handed_types;
+        for (TopExp_Explorer it(handed, TopAbs_FACE); it.More(); it.Next())
+            handed_types.push_back(BRepAdaptor_Surface(TopoDS::Face(it.Current())).GetType());
+        EXPECT_EQ(handed_types, types);
+        EXPECT_LT(std::abs(fixed_rule(handed).volume - solid.volume()) / solid.volume(), 1e-9);
+        const CheckReport report = check(solid, CheckOptions{});
+        EXPECT_TRUE(report.passed && report.bop_clean) << format_report(report);
     }
 }
 

@@ -22,6 +22,7 @@
 #include "ratbez/construction.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "smooth_arcs.hpp"
+#include "swept_solids.hpp"
 
 namespace ratbez::occt::detail {
 namespace {
@@ -144,6 +145,22 @@ std::optional<std::size_t> face_of(const Solid& solid, const TopoDS_Face& face) 
     return std::nullopt;
 }
 
+// The primitive's faces in the order of ours, by face_of.
+std::optional<FacesInOrder> primitive_in_order(const Solid& solid) {
+    const std::optional<TopoDS_Solid> primitive = made(solid);
+    if (!primitive) return std::nullopt;
+    FacesInOrder result{*primitive, std::vector<TopoDS_Face>(solid.faces().size())};
+    int faces = 0;
+    for (TopExp_Explorer it(*primitive, TopAbs_FACE); it.More(); it.Next(), ++faces) {
+        const TopoDS_Face face = TopoDS::Face(it.Current());
+        const std::optional<std::size_t> ours = face_of(solid, face);
+        if (!ours || !result.faces[*ours].IsNull()) return std::nullopt;
+        result.faces[*ours] = face;
+    }
+    if (faces != static_cast<int>(solid.faces().size())) return std::nullopt;
+    return result;
+}
+
 // Whether the face of ours lies on the OCCT face (its surface), at 9 x 9 points of its parameter box (a planar
 // face: its plane's origin), to kOnSurface of the size: a record that does not describe the faces (a wrong
 // claim) must not be handed out.
@@ -167,23 +184,18 @@ bool lies_on(const Face& ours, const TopoDS_Face& face, double size) {
 
 std::optional<TopoDS_Solid> analytic_primitive(const Solid& solid) {
     try {
-        const std::optional<TopoDS_Solid> primitive = made(solid);
-        if (!primitive) return std::nullopt;
+        std::optional<FacesInOrder> occt = primitive_in_order(solid);
+        if (!occt) occt = swept_solid(solid);
+        if (!occt) return std::nullopt;
+        // Each face checked on ours, then the shell assembled in the order of ours (face i is face i of the shape).
         const double size = std::max(1.0, solid.bounding_box().diagonal());
-        // Its faces in the order of ours (face i of the solid is face i of the shape), each checked on ours.
-        std::vector<TopoDS_Face> in_order(solid.faces().size());
-        int faces = 0;
-        for (TopExp_Explorer it(*primitive, TopAbs_FACE); it.More(); it.Next(), ++faces) {
-            const TopoDS_Face face = TopoDS::Face(it.Current());
-            const std::optional<std::size_t> ours = face_of(solid, face);
-            if (!ours || !in_order[*ours].IsNull() || !lies_on(solid.faces()[*ours], face, size)) return std::nullopt;
-            in_order[*ours] = face;
-        }
-        if (faces != static_cast<int>(solid.faces().size())) return std::nullopt;
         BRep_Builder builder;
         TopoDS_Shell shell;
         builder.MakeShell(shell);
-        for (const TopoDS_Face& face : in_order) builder.Add(shell, face);
+        for (std::size_t i = 0; i < solid.faces().size(); ++i) {
+            if (!lies_on(solid.faces()[i], occt->faces[i], size)) return std::nullopt;
+            builder.Add(shell, occt->faces[i]);
+        }
         shell.Closed(Standard_True);
         TopoDS_Solid result;
         builder.MakeSolid(result);

@@ -12,7 +12,8 @@
 // kept through moves, turns and uniform scalings), and a solid of one face whose surface is, exactly, a sphere
 // or a torus (a sphere read from a file has no record): recognised on the kernel's control net (smooth_arcs.hpp:
 // one direction an arc about one axis in every row, the meridian of the rows' heights and radii an arc), then
-// checked at 9 x 9 points of the surface to 1e-10 of its size.
+// checked at 9 x 9 points of the surface to 1e-10 of its size. Extrusions and revolutions of lines and arcs go
+// over as OCCT's prism or revolution of their profile (swept_solids.hpp), as Part's Extrusion and Revolution do.
 // ConvertOptions::analytic_primitives (default true) turns it on; the FreeCAD workbench's preference for
 // B-spline primitives turns it off.
 
@@ -24,7 +25,7 @@
 
 namespace ratbez::occt::detail {
 
-// OCCT's primitive with its faces in the order of ours (face i of `solid` is the i-th face of the result), each
+// OCCT's primitive (or sweep) with its faces in the order of ours (face i of `solid` is the i-th face of the result), each
 // checked to lie on ours (a record that does not describe the faces gives nullopt, as does any other solid).
 std::optional<TopoDS_Solid> analytic_primitive(const Solid& solid);
 

@@ -68,6 +68,20 @@ TEST(SweepExact, CircleAlongCircleIsTheTorus) {
     const Solid half = sweep(tube, arc(R, 0, 180));
     EXPECT_EQ(half.faces().size(), 3u);
     EXPECT_NEAR(enclosed_volume(half), pi * pi * R * r * r, 1e-10);
+    // Both are revolve()'s solids of the section about the path's axis, and recorded so (the OpenCASCADE bridge
+    // hands such a solid over as its own revolution).
+    for (const auto& [solid, angle] : {std::pair{&torus, 360.0}, std::pair{&half, 180.0}}) {
+        const auto* turn = solid->construction().get<Construction::Revolution>();
+        ASSERT_NE(turn, nullptr);
+        EXPECT_LE(norm(turn->axis_point), 1e-12);
+        EXPECT_LE(distance(turn->axis_dir, {0, 0, 1}), 1e-12);
+        EXPECT_NEAR(turn->angle_deg, angle, 1e-9);
+    }
+    // A section tilted out of the planes through the axis is swept as it is, with no record.
+    const Profile tilted({circle(r, {R, 0, 0}, {0, 1, 0.3})});
+    const Solid leaning = sweep(tilted, arc(R, 0, 180));
+    EXPECT_EQ(leaning.construction().kind(), "none");
+    EXPECT_NEAR(enclosed_volume(leaning), pi * pi * R * r * r * std::cos(std::atan(0.3)), 1e-10);
 }
 
 TEST(SweepExact, DiscAlongALineIsTheCylinder) {
@@ -76,6 +90,9 @@ TEST(SweepExact, DiscAlongALineIsTheCylinder) {
     EXPECT_NEAR(enclosed_volume(straight), 3 * pi, 1e-12);
     const Solid oblique = sweep(disc, line_segment({0, 0, 0}, {1, 2, 3}));
     EXPECT_NEAR(enclosed_volume(oblique), 3 * pi, 1e-12);  // the section stays horizontal: area x height
+    // Recorded as the extrusions they are.
+    EXPECT_EQ(straight.construction(), Construction(Construction::Extrusion{{0, 0, 1}, 3}));
+    EXPECT_EQ(oblique.construction(), Construction(Construction::Extrusion{{1, 2, 3}, std::sqrt(14.0)}));
     // A straight path drawn as a cubic with control points along it is still a line.
     const NurbsCurve cubic_line = NurbsCurve::from_bezier(BezierCurve({{0, 0, 0}, {0, 0, 0.5}, {0, 0, 2}, {0, 0, 3}}));
     EXPECT_EQ(sweep_surfaces(disc.pieces(), cubic_line).method, SweepMethod::extrusion);

@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "ratbez/brep.hpp"
+#include "ratbez/construction.hpp"
 #include "ratbez/frame.hpp"
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/nurbs_surface.hpp"
@@ -67,6 +68,9 @@ struct Sweep {
     // a section's point p at the start is at end_frame.to_world(local) at the end, local being p's
     // coordinates in start_frame.
     Frame start_frame, end_frame;
+    // What the exact methods built: Construction::Extrusion (the displacement) or Construction::Revolution (the
+    // arc's centre, axis and angle); none for the approximation.
+    Construction construction;
 };
 
 // `argument` names the section in errors ("curve", "profile").
@@ -79,7 +83,10 @@ inline NurbsSurface sweep_surface(const NurbsCurve& curve, const NurbsCurve& pat
 // A closed planar profile swept along the path: one lateral face per piece, capped by the profile at the
 // start and its rigid image at the end (planar faces), or closed on itself along a closed path. The profile
 // must not lie in a plane containing the path's starting tangent; it is turned to run counterclockwise about
-// it, so that the faces point out.
+// it, so that the faces point out. Along a straight path the solid is the extrusion (recorded as one); along an
+// arc, with the profile in a plane through the arc's axis (across the path, as usual), it is revolve()'s solid
+// of the profile about that axis (its faces u round the axis, v along the profile, and recorded as a revolution),
+// so that both go on as what they are (OpenCASCADE's prism and revolution, the check's analytic surfaces).
 Solid sweep(const Profile& profile, const NurbsCurve& path, double tolerance = 1e-6);
 
 }  // namespace ratbez

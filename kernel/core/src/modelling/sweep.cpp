@@ -594,6 +594,7 @@ Sweep sweep_surfaces_unchecked(const std::vector<NurbsCurve>& sections, const Nu
         for (const NurbsCurve& c : sections) result.surfaces.push_back(extrude_surface(c, line->displacement));
         result.end_frame = start_frame;
         result.end_frame.origin = start_frame.origin + line->displacement;
+        result.construction = Construction::Extrusion{line->displacement, norm(line->displacement)};
         return result;
     }
     if (const std::optional<Arc> arc = as_arc(path)) {
@@ -611,6 +612,7 @@ Sweep sweep_surfaces_unchecked(const std::vector<NurbsCurve>& sections, const Nu
         result.end_frame = Frame{arc->centre + rotated(start.x - arc->centre, arc->axis, c, s),
                                  rotated(start_frame.x_axis, arc->axis, c, s), rotated(start_frame.y_axis, arc->axis, c, s),
                                  rotated(start_frame.z_axis, arc->axis, c, s)};
+        result.construction = Construction::Revolution{arc->centre, arc->axis, arc->angle_deg};
         return result;
     }
 
@@ -715,11 +717,25 @@ Solid sweep(const Profile& profile, const NurbsCurve& path, double tolerance) {
     const Profile oriented = cosine > 0 ? profile : profile.reversed();
     const Vec3 normal = cosine > 0 ? planar.normal : -planar.normal;
     const Sweep swept = sweep_surfaces(oriented.pieces(), path, tolerance, "profile");
+    if (const auto* turn = swept.construction.get<Construction::Revolution>()) {
+        // The profile in a plane through the axis (revolve's first rule, to its tolerance: every control point near
+        // the plane through the axis across the profile): the sweep is its revolution. The bend check above keeps
+        // the profile off the axis, revolve's other rules.
+        const Vec3 across = cross(turn->axis_dir, normal);
+        const Vec3 plane_normal = norm(across) > 0.5 ? unit(cross(across, turn->axis_dir)) : Vec3{};
+        const bool in_plane = std::ranges::all_of(oriented.pieces(), [&](const NurbsCurve& piece) {
+            return std::ranges::all_of(piece.homogeneous_points(), [&](const Vec4& pw) {
+                return std::abs(dot(project(pw) - turn->axis_point, plane_normal)) <= oriented.tolerance();
+            });
+        });
+        if (norm(plane_normal) > 0 && in_plane) return revolve(oriented, turn->axis_point, turn->axis_dir, turn->angle_deg);
+    }
     if (swept.closed) return detail::tube_solid({swept.surfaces}, std::nullopt);
     const Frame& a = swept.start_frame;
     const Vec3 local{dot(normal, a.x_axis), dot(normal, a.y_axis), dot(normal, a.z_axis)};
     const Vec3 end_normal = swept.end_frame.direction_to_world(local);
-    return detail::tube_solid({swept.surfaces}, detail::CapNormals{-normal, end_normal / norm(end_normal)});
+    const Construction record = swept.construction.get<Construction::Extrusion>() ? swept.construction : Construction{};
+    return detail::tube_solid({swept.surfaces}, detail::CapNormals{-normal, end_normal / norm(end_normal)}, record);
 }
 
 }  // namespace ratbez

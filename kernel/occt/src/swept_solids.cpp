@@ -1,0 +1,331 @@
+// Extrusions and revolutions as OpenCASCADE builds them (see swept_solids.hpp).
+
+#include "swept_solids.hpp"
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepLib.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <ElCLib.hxx>
+#include <GC_MakeSegment.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_ElementarySurface.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_MapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "ratbez/construction.hpp"
+#include "ratbez/occt/geometry.hpp"
+#include "smooth_arcs.hpp"
+
+namespace ratbez::occt::detail {
+namespace {
+
+// Relative to the solid's size: how far a control point may be from the line or arc a piece is taken for.
+constexpr double kFit = 1e-11;
+
+gp_Dir to_occt_dir(const Vec3& v) { return gp_Dir(v.x, v.y, v.z); }
+
+// The profile's edges as OCCT lines and circles, each built once on vertices shared as ours are, so that OCCT's
+// sweep history (Generated) finds the face each one sweeps.
+class ProfileEdges {
+public:
+    // `axis`: a revolution's, which its arcs' circles start from (below).
+    explicit ProfileEdges(double tolerance, const Construction::Revolution* axis = nullptr) : tolerance_(tolerance), axis_(axis) {}
+
+    // The coedge as an oriented OCCT edge, or nullopt when its edge is neither a segment nor one circular arc.
+    std::optional<TopoDS_Edge> coedge(const Coedge& c) {
+        const std::optional<TopoDS_Edge> e = edge(*c.edge);
+        if (!e) return std::nullopt;
+        return c.reversed ? TopoDS::Edge(e->Reversed()) : *e;
+    }
+    // The segment of the axis between two vertices of ours that lie on it (closes a profile that ends there).
+    TopoDS_Edge axis_segment(const Vertex& from, const Vertex& to) {
+        return BRepBuilderAPI_MakeEdge(vertex(from), vertex(to)).Edge();
+    }
+    // The edge built for ours, if it was.
+    std::optional<TopoDS_Edge> built(const Edge& e) const {
+        const auto it = edges_.find(&e);
+        return it == edges_.end() ? std::nullopt : std::optional<TopoDS_Edge>(it->second);
+    }
+
+private:
+    std::optional<TopoDS_Edge> edge(const Edge& e) {
+        if (const auto it = edges_.find(&e); it != edges_.end()) return it->second;
+        if (e.degenerate) return std::nullopt;
+        std::optional<TopoDS_Edge> made = segment(e);
+        if (!made) made = arc(e);
+        if (made) edges_.emplace(&e, *made);
+        return made;
+    }
+
+    TopoDS_Vertex vertex(const Vertex& v) {
+        const auto it = vertices_.find(&v);
+        if (it != vertices_.end()) return it->second;
+        return vertices_.emplace(&v, BRepBuilderAPI_MakeVertex(to_occt_point(v.point)).Vertex()).first->second;
+    }
+
+    // A piece whose control points all lie on the segment between its ends: its image is that segment (convex hull).
+    std::optional<TopoDS_Edge> segment(const Edge& e) {
+        const Vec3 a = e.start->point, b = e.end->point, d = b - a;
+        const double length = norm(d);
+        if (e.start == e.end || !(length > tolerance_)) return std::nullopt;
+        for (const Vec4& h : e.curve.homogeneous_points()) {
+            const Vec3 p = Vec3{h.x, h.y, h.z} / h.w - a;
+            const double t = dot(p, d) / length;
+            if (t < -tolerance_ || t > length + tolerance_ || norm(p - d * (t / length)) > tolerance_) return std::nullopt;
+        }
+        BRepBuilderAPI_MakeEdge made(GC_MakeSegment(to_occt_point(a), to_occt_point(b)).Value(), vertex(*e.start), vertex(*e.end));
+        return made.IsDone() ? std::optional<TopoDS_Edge>(made.Edge()) : std::nullopt;
+    }
+
+    // A piece that is one arc of a circle (the kernel's rational quadratic form, smooth_arcs.hpp), turning from its
+    // start to its end counterclockwise about the normal U x V of its arc frame.
+    std::optional<TopoDS_Edge> arc(const Edge& e) {
+        const std::optional<ArcDirection> found = find_arc(e.curve, tolerance_);
+        if (!found) return std::nullopt;
+        const Vec3 &u = found->u_axis.front(), &v = found->v_axis.front();
+        const double r = norm(u);
+        if (!(r > tolerance_) || std::abs(norm(v) - r) > tolerance_ || std::abs(dot(u, v)) > tolerance_ * r) return std::nullopt;
+        // About an axis, the circle starts (parameter 0) straight away from it: only then does OCCT's revolution
+        // (GeomAdaptor_SurfaceOfRevolution::GetType) see a torus rather than a general surface of revolution.
+        const Vec3 centre = found->origin.front();
+        Vec3 x = u;
+        if (axis_) {
+            const Vec3 foot = axis_->axis_point + axis_->axis_dir * dot(centre - axis_->axis_point, axis_->axis_dir);
+            if (norm(centre - foot) > tolerance_) x = centre - foot;
+        }
+        const gp_Circ circle(gp_Ax2(to_occt_point(centre), to_occt_dir(cross(u, v)), to_occt_dir(x)), r);
+        constexpr double kTurn = 2 * std::numbers::pi;
+        const double first = ElCLib::Parameter(circle, to_occt_point(e.start->point));
+        double last = e.start == e.end ? first + kTurn : ElCLib::Parameter(circle, to_occt_point(e.end->point));
+        while (last <= first) last += kTurn;
+        // The sweep and the middle of the piece decide between the two arcs through the ends (a half circle).
+        const Interval domain = e.curve.domain();
+        double middle = ElCLib::Parameter(circle, to_occt_point(e.curve.point(domain.min + domain.width() / 2)));
+        while (middle < first) middle += kTurn;
+        if (std::abs(last - first - found->sweep) > 1e-9 * kTurn || middle > last) return std::nullopt;
+        BRepBuilderAPI_MakeEdge made(new Geom_Circle(circle), vertex(*e.start), vertex(*e.end), first, last);
+        return made.IsDone() ? std::optional<TopoDS_Edge>(made.Edge()) : std::nullopt;
+    }
+
+    double tolerance_;
+    const Construction::Revolution* axis_;
+    std::map<const Edge*, TopoDS_Edge> edges_;
+    std::map<const Vertex*, TopoDS_Vertex> vertices_;
+};
+
+// The coedges as one OCCT wire, in the order given (they chain through shared vertices).
+std::optional<TopoDS_Wire> wire(ProfileEdges& edges, const std::vector<Coedge>& loop) {
+    BRep_Builder builder;
+    TopoDS_Wire result;
+    builder.MakeWire(result);
+    for (const Coedge& c : loop) {
+        const std::optional<TopoDS_Edge> e = edges.coedge(c);
+        if (!e) return std::nullopt;
+        builder.Add(result, *e);
+    }
+    result.Closed(Standard_True);
+    return result;
+}
+
+// A planar face of ours as an OCCT face on the same plane, its loops as wires.
+std::optional<TopoDS_Face> planar_face(ProfileEdges& edges, const Face& face) {
+    const Plane& plane = face.plane();
+    const gp_Pln occt_plane(gp_Ax3(to_occt_point(plane.origin), to_occt_dir(plane.normal), to_occt_dir(plane.x_axis)));
+    const std::optional<TopoDS_Wire> outer = wire(edges, face.loops().front());
+    if (!outer) return std::nullopt;
+    BRepBuilderAPI_MakeFace made(occt_plane, *outer, Standard_True);
+    for (std::size_t k = 1; k < face.loops().size() && made.IsDone(); ++k) {
+        const std::optional<TopoDS_Wire> hole = wire(edges, face.loops()[k]);
+        if (!hole) return std::nullopt;
+        made.Add(*hole);
+    }
+    return made.IsDone() ? std::optional<TopoDS_Face>(made.Face()) : std::nullopt;
+}
+
+// The face of `solid` that is (IsSame) `face`, oriented as in the solid.
+std::optional<TopoDS_Face> in_solid(const TopoDS_Solid& solid, const TopoDS_Shape& face) {
+    for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next())
+        if (it.Current().IsSame(face)) return TopoDS::Face(it.Current());
+    return std::nullopt;
+}
+
+// The swept face of OCCT's solid that an edge of ours generated: what the sweep's history says, else what the sweep
+// itself made of it (a full revolution's MakeRevol lists nothing for an edge in its history).
+template <class Sweep>
+std::optional<TopoDS_Face> generated(Sweep& sweep, const TopoDS_Shape& swept, const TopoDS_Solid& solid, const TopoDS_Edge& edge) {
+    const TopTools_ListOfShape& shapes = sweep.Generated(edge);
+    const TopoDS_Shape face = shapes.Extent() == 1 ? shapes.First() : swept;
+    if (face.IsNull() || face.ShapeType() != TopAbs_FACE) return std::nullopt;
+    return in_solid(solid, face);
+}
+
+TopoDS_Solid oriented(const TopoDS_Shape& shape) {
+    TopoDS_Solid solid;
+    for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More() && solid.IsNull(); it.Next()) solid = TopoDS::Solid(it.Current());
+    if (!solid.IsNull()) BRepLib::OrientClosedSolid(solid);
+    return solid;
+}
+
+// Whether the face of ours uses the edge.
+bool uses(const Face& face, const Edge& e) {
+    bool found = false;
+    for_each_coedge(face, [&](const Coedge& c) { found = found || c.edge.get() == &e; });
+    return found;
+}
+
+// A plane, cylinder, cone, sphere or torus. OCCT's swept surfaces (an oblique extrusion of an arc, an elliptic
+// cylinder; the revolution of an arc that crosses the axis) are exact too, but its integration reads them worse than
+// our B-spline faces (an oblique extrusion of a circle: Shape.Area 2.5e-4 off), so such a solid goes over as B-splines.
+bool elementary(const TopoDS_Face& face) { return BRep_Tool::Surface(face)->IsKind(STANDARD_TYPE(Geom_ElementarySurface)); }
+
+// OCCT's faces in the order of ours: surface face i is what the sweep generated from our edge swept_from[i], the
+// planar face `start` is the sweep's first shape (the profile's face) and any other planar face its last.
+template <class Sweep>
+std::optional<FacesInOrder> in_order(const Solid& solid, Sweep& sweep, auto&& sweep_of, const ProfileEdges& edges,
+                                     const std::vector<const Edge*>& swept_from, std::optional<std::size_t> start) {
+    if (!sweep.IsDone()) return std::nullopt;
+    const TopoDS_Solid occt = oriented(sweep.Shape());
+    if (occt.IsNull()) return std::nullopt;
+    FacesInOrder result{occt, std::vector<TopoDS_Face>(solid.faces().size())};
+    TopTools_MapOfShape used;
+    for (std::size_t i = 0; i < solid.faces().size(); ++i) {
+        const Face& face = solid.faces()[i];
+        std::optional<TopoDS_Face> found;
+        if (face.kind() == Face::Kind::surface && swept_from[i]) {
+            if (const std::optional<TopoDS_Edge> edge = edges.built(*swept_from[i]))
+                found = generated(sweep, sweep_of(*edge), occt, *edge);
+        }
+        else if (face.kind() == Face::Kind::planar && start)
+            found = in_solid(occt, i == *start ? sweep.FirstShape() : sweep.LastShape());
+        if (!found || !used.Add(*found) || !elementary(*found)) return std::nullopt;
+        result.faces[i] = *found;
+    }
+    int faces = 0;
+    for (TopExp_Explorer it(occt, TopAbs_FACE); it.More(); it.Next()) ++faces;
+    if (faces != static_cast<int>(solid.faces().size())) return std::nullopt;
+    return result;
+}
+
+// An extrusion: OCCT's prism of the start cap (the planar face facing against the direction).
+std::optional<FacesInOrder> extrusion(const Solid& solid, const Construction::Extrusion& record, ProfileEdges& edges) {
+    std::optional<std::size_t> start;
+    for (std::size_t i = 0; i < solid.faces().size(); ++i) {
+        const Face& face = solid.faces()[i];
+        if (face.kind() != Face::Kind::planar || !(dot(face.plane().normal, record.direction) < 0)) continue;
+        if (start) return std::nullopt;
+        start = i;
+    }
+    if (!start) return std::nullopt;
+    const std::optional<TopoDS_Face> base = planar_face(edges, solid.faces()[*start]);
+    if (!base) return std::nullopt;
+    // Each lateral face is swept from its side on the start cap: the one side whose edge the cap's face built.
+    std::vector<const Edge*> swept_from(solid.faces().size(), nullptr);
+    for (std::size_t i = 0; i < solid.faces().size(); ++i)
+        if (solid.faces()[i].kind() == Face::Kind::surface)
+            for (const Coedge& side : solid.faces()[i].sides())
+                if (edges.built(*side.edge)) swept_from[i] = side.edge.get();
+    BRepPrimAPI_MakePrism prism(*base, to_occt_vector(record.direction * record.distance));
+    return in_order(solid, prism, [&](const TopoDS_Edge& e) {
+        return const_cast<BRepSweep_Prism&>(prism.Prism()).Shape(e);  // OCCT's Shape(generator) is not const
+    }, edges, swept_from, start);
+}
+
+// The coedges chained end to start (each as given), or nullopt when they do not make one path or loop.
+std::optional<std::vector<Coedge>> chained(std::vector<Coedge> coedges) {
+    const auto first_vertex = [](const Coedge& c) { return c.reversed ? c.edge->end : c.edge->start; };
+    const auto last_vertex = [](const Coedge& c) { return c.reversed ? c.edge->start : c.edge->end; };
+    // Start where no coedge ends (an open path), else anywhere (a loop).
+    std::size_t head = 0;
+    for (std::size_t i = 0; i < coedges.size(); ++i)
+        if (std::none_of(coedges.begin(), coedges.end(), [&](const Coedge& c) { return last_vertex(c) == first_vertex(coedges[i]); }))
+            head = i;
+    std::vector<Coedge> path{coedges[head]};
+    coedges.erase(coedges.begin() + static_cast<std::ptrdiff_t>(head));
+    while (!coedges.empty()) {
+        const auto next = std::find_if(coedges.begin(), coedges.end(),
+                                       [&](const Coedge& c) { return first_vertex(c) == last_vertex(path.back()); });
+        if (next == coedges.end()) return std::nullopt;
+        path.push_back(*next);
+        coedges.erase(next);
+    }
+    return path;
+}
+
+// A revolution: OCCT's revolution of the profile at angle 0 (the u_min side of every face, v along the profile),
+// closed along the axis when it ends there: the start end face of a partial turn, or that face built here.
+std::optional<FacesInOrder> revolution(const Solid& solid, const Construction::Revolution& record, ProfileEdges& edges) {
+    std::vector<Coedge> profile;
+    std::vector<const Edge*> swept_from(solid.faces().size(), nullptr);
+    for (std::size_t i = 0; i < solid.faces().size(); ++i) {
+        if (solid.faces()[i].kind() != Face::Kind::surface) continue;
+        const Coedge& side = solid.faces()[i].sides()[static_cast<std::size_t>(Side::u_min)];
+        if (side.edge->degenerate || !edges.coedge(side)) return std::nullopt;
+        profile.push_back(side);
+        swept_from[i] = side.edge.get();
+    }
+    if (profile.empty()) return std::nullopt;
+    std::optional<std::size_t> start;
+    for (std::size_t i = 0; i < solid.faces().size(); ++i)
+        if (solid.faces()[i].kind() == Face::Kind::planar && uses(solid.faces()[i], *profile.front().edge)) start = i;
+    std::optional<TopoDS_Face> base;
+    if (start) {
+        base = planar_face(edges, solid.faces()[*start]);
+    } else {
+        const std::optional<std::vector<Coedge>> path = chained(profile);
+        if (!path) return std::nullopt;
+        std::optional<TopoDS_Wire> outline = wire(edges, *path);
+        if (!outline) return std::nullopt;
+        const Coedge &head = path->front(), &tail = path->back();
+        const Vertex& from = *(tail.reversed ? tail.edge->start : tail.edge->end);
+        const Vertex& to = *(head.reversed ? head.edge->end : head.edge->start);
+        if (&from != &to) BRep_Builder().Add(*outline, edges.axis_segment(from, to));
+        BRepBuilderAPI_MakeFace made(*outline, Standard_True);
+        if (made.IsDone()) base = made.Face();
+    }
+    if (!base) return std::nullopt;
+    const double angle = record.angle_deg >= 360 ? 2 * std::numbers::pi : record.angle_deg * std::numbers::pi / 180;
+    BRepPrimAPI_MakeRevol revol(*base, gp_Ax1(to_occt_point(record.axis_point), to_occt_dir(record.axis_dir)), angle);
+    return in_order(solid, revol, [&](const TopoDS_Edge& e) {
+        return const_cast<BRepSweep_Revol&>(revol.Revol()).Shape(e);  // OCCT's Shape(generator) is not const
+    }, edges, swept_from, start);
+}
+
+}  // namespace
+
+std::optional<FacesInOrder> swept_solid(const Solid& solid) {
+    try {
+        const double tolerance = kFit * std::max(1.0, solid.bounding_box().diagonal());
+        if (const auto* e = solid.construction().get<Construction::Extrusion>()) {
+            ProfileEdges edges(tolerance);
+            return extrusion(solid, *e, edges);
+        }
+        if (const auto* r = solid.construction().get<Construction::Revolution>()) {
+            ProfileEdges edges(tolerance, r);
+            return revolution(solid, *r, edges);
+        }
+    } catch (const Standard_Failure&) {
+    }
+    return std::nullopt;
+}
+
+}  // namespace ratbez::occt::detail
