@@ -36,7 +36,9 @@ constexpr double kCertifiedWeightSpread = 4;
 // are halved first (bounded too): there no rule of 61 points converges.
 constexpr double kMaxWeightSpread = 16;
 constexpr int kMaxCertificateHalvings = 24;
-// Subdivisions of a patch in v tried in turn (the rule grows with them until the cap).
+// The degree a patch's v direction is raised to, one span, before it is cut (refine): order 24 of the rule.
+constexpr int kMaxElevatedDegree = 11;
+// Then subdivisions of a patch in v tried in turn (the rule grows with them until the cap).
 constexpr int kVSpans[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32};
 
 // The distinct knots within the domain: the lines between the surface's Bézier patches. The knots
@@ -134,15 +136,19 @@ struct Refinement {
 };
 
 // The first refinement (in rule size) whose fixed-rule area is within the tolerance of `exact`, and its volume
-// too when `check_volume`.
+// too when `check_volume`. Degree elevation first, one span: the patch stays one polynomial piece, infinitely
+// smooth, as Part's own lofts are (degree 8); OpenCASCADE's fillets and chamfers fail on a face whose curvature
+// jumps at a simple knot (a loft's patch cut in two at degree 2: C1). Knots only beyond kMaxElevatedDegree.
 Refinement refine(const Handle(Geom_BSplineSurface)& patch, double exact, double relative_tolerance, bool check_volume) {
     const int q = patch->VDegree();
     const int u_order = gprop_integration_order(patch->UDegree(), 1);
+    std::vector<std::pair<int, int>> candidates;  // (degree, spans)
+    for (int degree = q; degree <= std::max(q, kMaxElevatedDegree); ++degree) candidates.emplace_back(degree, 1);
+    for (int spans : kVSpans)
+        if (spans > 1) candidates.emplace_back(std::max(q, 2), spans);  // simple knots at degree 1 would be C0
     Refinement best;
     int previous_order = 0;
-    for (int spans : kVSpans) {
-        // Simple knots in a degree 1 direction would make the face C0: elevate it first.
-        const int degree = (q == 1 && spans > 1) ? 2 : q;
+    for (const auto& [degree, spans] : candidates) {
         const int order = std::min(kMaxGaussPoints, gprop_integration_order(degree, spans));
         if (order <= previous_order || order < u_order) continue;
         previous_order = order;

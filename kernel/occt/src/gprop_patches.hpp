@@ -15,15 +15,16 @@
 // the same rule converges geometrically: a sphere split into its 8 patches reads 1.7e-10.
 //
 // Each cell of the face's grid (its distinct knots, both directions) is therefore handed over as its own
-// face. A cell's rule is then raised, if needed, by refining the patch in v only (v knots raise both N):
-// uniform simple knots (a degree 1 direction is first elevated to 2, so that the face stays C1 and
-// "Run BOP check" does not flag it GeomAbs_C0), until OCCT's own fixed rule on the patch matches the
-// kernel's certified area to `relative_tolerance`, at least as many v points as u points (so that the
-// volume, which only counts v, uses as many as the area); a cell whose weights spread beyond the kernel's
-// certificate must also match OCCT's adaptive volume (there an area can match by chance). A cell that misses
-// even at the 61-point cap (extreme rational weights) is halved in both directions, at most kMaxHalvings
-// times, and cells of weights too extreme for any rule are halved before (gprop_patches.cpp). Knot insertion
-// and degree elevation are exact; the geometry is the kernel's to rounding.
+// face. A cell's rule is then raised, if needed, by refining the patch in v only (v raises both N): first
+// degree elevation, one span (the face stays infinitely smooth, as Part's lofts are: OCCT's offsets of a C1
+// face are C0), then, beyond degree 11, uniform simple knots (a degree 1 direction elevated to 2 first, so
+// that the face stays C1 and "Run BOP check" does not flag it GeomAbs_C0), until OCCT's own fixed rule on the
+// patch matches the kernel's certified area to `relative_tolerance`, at least as many v points as u points
+// (so that the volume, which only counts v, uses as many as the area); a cell whose weights spread beyond the
+// kernel's certificate must also match OCCT's adaptive volume (there an area can match by chance). A cell
+// that misses even at the 61-point cap (extreme rational weights) is halved in both directions, at most
+// kMaxHalvings times, and cells of weights too extreme for any rule are halved before (gprop_patches.cpp).
+// Knot insertion and degree elevation are exact; the geometry is the kernel's to rounding.
 
 #include <Geom_BSplineSurface.hxx>
 
