@@ -69,14 +69,14 @@ def assert_good_solid(obj, expected_volume, what, centre=None):
     check(shape.ShapeType == "Solid", "{}: shape type {}".format(what, shape.ShapeType))
     check(len(shape.Shells) == 1 and shape.Shells[0].isClosed(), what + ": shell not closed")
     # Exact B-rep, not a mesh: few faces, each on a B-spline surface or a plane; OpenCASCADE's analytic surfaces
-    # for a primitive, a revolution, extrusion or sweep of lines and arcs (OpenCASCADE's revolution or prism of
-    # them), and a solid of one face that is a whole sphere or torus.
+    # for a primitive, its analytic and swept surfaces for a revolution, extrusion or sweep along a line or arc
+    # (OpenCASCADE's revolution or prism of the profile), and a solid of one face that is a whole sphere or torus.
     check(len(shape.Faces) <= 64, "{}: {} faces (a mesh?)".format(what, len(shape.Faces)))
     analytic = preferences.analytic_primitives()
     if isinstance(obj.Proxy, features.PRIMITIVES) and analytic:
         surfaces = ANALYTIC
     elif isinstance(obj.Proxy, (features.Revolve, features.Extrude, features.Sweep)) and analytic:
-        surfaces = ANALYTIC + ("BSplineSurface",)
+        surfaces = ANALYTIC + ("BSplineSurface", "SurfaceOfExtrusion", "SurfaceOfRevolution")
     else:
         surfaces = ("BSplineSurface", "Plane") + (("Toroid", "Sphere") if analytic and len(shape.Faces) == 1 else ())
     for face in shape.Faces:

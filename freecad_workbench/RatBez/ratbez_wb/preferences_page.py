@@ -32,7 +32,7 @@ class PreferencesPage:
 
         geometry = QtGui.QGroupBox(translate("Geometry in FreeCAD"))
         form = QtGui.QFormLayout(geometry)
-        self.analytic = QtGui.QCheckBox(translate("Cylinders, cones, spheres and tori on Part's analytic surfaces"))
+        self.analytic = QtGui.QCheckBox(translate("Primitives, extrusions and revolutions on Part's analytic surfaces"))
         self.analytic.setToolTip(translate(
             "The same exact shape as Part's primitive, which OpenCASCADE's booleans, fillets and BOP check "
             "handle best. Off: the kernel's rational B-spline faces (booleans are slower and the BOP check can "

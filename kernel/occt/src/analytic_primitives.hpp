@@ -12,8 +12,9 @@
 // kept through moves, turns and uniform scalings), and a solid of one face whose surface is, exactly, a sphere
 // or a torus (a sphere read from a file has no record): recognised on the kernel's control net (smooth_arcs.hpp:
 // one direction an arc about one axis in every row, the meridian of the rows' heights and radii an arc), then
-// checked at 9 x 9 points of the surface to 1e-10 of its size. Extrusions and revolutions of lines and arcs go
-// over as OCCT's prism or revolution of their profile (swept_solids.hpp), as Part's Extrusion and Revolution do.
+// checked at 9 x 9 points of the surface to 1e-10 of its size. Extrusions and revolutions (lines and arcs of the
+// profile sweeping analytic faces) go over as OCCT's prism or revolution of their profile, where its rule reads
+// them (swept_solids.hpp), as Part's Extrusion and Revolution do.
 // ConvertOptions::analytic_primitives (default true) turns it on; the FreeCAD workbench's preference for
 // B-spline primitives turns it off.
 

@@ -5,15 +5,15 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepGProp.hxx>
 #include <BRepLib.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRep_Builder.hxx>
-#include <BRep_Tool.hxx>
 #include <ElCLib.hxx>
 #include <GC_MakeSegment.hxx>
 #include <Geom_Circle.hxx>
-#include <Geom_ElementarySurface.hxx>
+#include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_MapOfShape.hxx>
@@ -33,7 +33,9 @@
 #include <numbers>
 
 #include "ratbez/construction.hpp"
+#include "ratbez/occt/convert_options.hpp"
 #include "ratbez/occt/geometry.hpp"
+#include "ratbez/properties.hpp"
 #include "smooth_arcs.hpp"
 
 namespace ratbez::occt::detail {
@@ -44,14 +46,14 @@ constexpr double kFit = 1e-11;
 
 gp_Dir to_occt_dir(const Vec3& v) { return gp_Dir(v.x, v.y, v.z); }
 
-// The profile's edges as OCCT lines and circles, each built once on vertices shared as ours are, so that OCCT's
+// The profile's edges as OCCT lines, circles and B-splines, each built once on vertices shared as ours are, so that OCCT's
 // sweep history (Generated) finds the face each one sweeps.
 class ProfileEdges {
 public:
     // `axis`: a revolution's, which its arcs' circles start from (below).
     explicit ProfileEdges(double tolerance, const Construction::Revolution* axis = nullptr) : tolerance_(tolerance), axis_(axis) {}
 
-    // The coedge as an oriented OCCT edge, or nullopt when its edge is neither a segment nor one circular arc.
+    // The coedge as an oriented OCCT edge, or nullopt when its edge has a C0 knot inside.
     std::optional<TopoDS_Edge> coedge(const Coedge& c) {
         const std::optional<TopoDS_Edge> e = edge(*c.edge);
         if (!e) return std::nullopt;
@@ -73,6 +75,7 @@ private:
         if (e.degenerate) return std::nullopt;
         std::optional<TopoDS_Edge> made = segment(e);
         if (!made) made = arc(e);
+        if (!made) made = spline(e);
         if (made) edges_.emplace(&e, *made);
         return made;
     }
@@ -124,6 +127,19 @@ private:
         while (middle < first) middle += kTurn;
         if (std::abs(last - first - found->sweep) > 1e-9 * kTurn || middle > last) return std::nullopt;
         BRepBuilderAPI_MakeEdge made(new Geom_Circle(circle), vertex(*e.start), vertex(*e.end), first, last);
+        return made.IsDone() ? std::optional<TopoDS_Edge>(made.Edge()) : std::nullopt;
+    }
+
+    // Any other piece as its B-spline curve, unless a knot inside makes it C0: OCCT's sweep would keep the
+    // knot in its surface, which "Run BOP check" flags (the B-spline conversion splits the face there).
+    std::optional<TopoDS_Edge> spline(const Edge& e) {
+        const NurbsCurve& curve = e.curve;
+        const std::vector<double>& knots = curve.knots();
+        const Interval domain = curve.domain();
+        for (const double knot : knots)
+            if (knot > domain.min && knot < domain.max && std::count(knots.begin(), knots.end(), knot) >= curve.degree())
+                return std::nullopt;
+        BRepBuilderAPI_MakeEdge made(to_occt(curve), vertex(*e.start), vertex(*e.end), domain.min, domain.max);
         return made.IsDone() ? std::optional<TopoDS_Edge>(made.Edge()) : std::nullopt;
     }
 
@@ -193,11 +209,6 @@ bool uses(const Face& face, const Edge& e) {
     return found;
 }
 
-// A plane, cylinder, cone, sphere or torus. OCCT's swept surfaces (an oblique extrusion of an arc, an elliptic
-// cylinder; the revolution of an arc that crosses the axis) are exact too, but its integration reads them worse than
-// our B-spline faces (an oblique extrusion of a circle: Shape.Area 2.5e-4 off), so such a solid goes over as B-splines.
-bool elementary(const TopoDS_Face& face) { return BRep_Tool::Surface(face)->IsKind(STANDARD_TYPE(Geom_ElementarySurface)); }
-
 // OCCT's faces in the order of ours: surface face i is what the sweep generated from our edge swept_from[i], the
 // planar face `start` is the sweep's first shape (the profile's face) and any other planar face its last.
 template <class Sweep>
@@ -217,7 +228,7 @@ std::optional<FacesInOrder> in_order(const Solid& solid, Sweep& sweep, auto&& sw
         }
         else if (face.kind() == Face::Kind::planar && start)
             found = in_solid(occt, i == *start ? sweep.FirstShape() : sweep.LastShape());
-        if (!found || !used.Add(*found) || !elementary(*found)) return std::nullopt;
+        if (!found || !used.Add(*found)) return std::nullopt;
         result.faces[i] = *found;
     }
     int faces = 0;
@@ -310,19 +321,32 @@ std::optional<FacesInOrder> revolution(const Solid& solid, const Construction::R
     }, edges, swept_from, start);
 }
 
+// Whether OCCT's fixed rule (FreeCAD's Shape.Volume and Area) reads the sweep's volume and area as the kernel
+// measures the solid, to kGPropTolerance. Planes, cylinders, cones, spheres and tori it reads to rounding; its swept
+// surfaces (a revolved B-spline, an oblique extrusion of an arc) sometimes far worse (an oblique extrusion of a
+// circle: Area 2.5e-4 off), and then the B-spline conversion, refined until the rule reads it, is handed out.
+bool reads_right(const TopoDS_Solid& occt, const Solid& solid) {
+    GProp_GProps volume, area;
+    BRepGProp::VolumeProperties(occt, volume);
+    BRepGProp::SurfaceProperties(occt, area);
+    const double v = enclosed_volume(solid), a = surface_area(solid);
+    return std::abs(volume.Mass() - v) <= kGPropTolerance * std::abs(v) && std::abs(area.Mass() - a) <= kGPropTolerance * a;
+}
+
 }  // namespace
 
 std::optional<FacesInOrder> swept_solid(const Solid& solid) {
     try {
         const double tolerance = kFit * std::max(1.0, solid.bounding_box().diagonal());
+        std::optional<FacesInOrder> swept;
         if (const auto* e = solid.construction().get<Construction::Extrusion>()) {
             ProfileEdges edges(tolerance);
-            return extrusion(solid, *e, edges);
-        }
-        if (const auto* r = solid.construction().get<Construction::Revolution>()) {
+            swept = extrusion(solid, *e, edges);
+        } else if (const auto* r = solid.construction().get<Construction::Revolution>()) {
             ProfileEdges edges(tolerance, r);
-            return revolution(solid, *r, edges);
+            swept = revolution(solid, *r, edges);
         }
+        if (swept && reads_right(swept->solid, solid)) return swept;
     } catch (const Standard_Failure&) {
     }
     return std::nullopt;

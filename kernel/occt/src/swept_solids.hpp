@@ -1,15 +1,18 @@
 #pragma once
-// Extrusions and revolutions of lines and circular arcs handed over as OpenCASCADE builds them
-// (BRepPrimAPI_MakePrism / BRepPrimAPI_MakeRevol of the profile's face), as Part's Extrusion and Revolution of a
-// sketch are: planes, cylinders, cones, spheres and tori, their edges lines and circles. Internal to kernel/occt.
+// Extrusions and revolutions handed over as OpenCASCADE builds them (BRepPrimAPI_MakePrism / BRepPrimAPI_MakeRevol
+// of the profile's face), as Part's Extrusion and Revolution of a sketch are: a segment or circular arc of the
+// profile sweeps a plane, cylinder, cone, sphere or torus, any other piece OCCT's swept surface of its B-spline.
+// Internal to kernel/occt.
 //
 // Why: Part's Thickness extends the faces beside the one it removes before it offsets them; a B-spline face is
 // extended with a C1 joint whose offset is C0, which "Run BOP check" flags (BOPAlgo GeomAbs_C0); an analytic
 // face is extended as itself. The shape is the same and exact either way (a circle is a circle).
 // Which solids: those whose construction record is an extrusion or a revolution (extrude, revolve, and sweep along
-// a line or an arc: sweep.hpp; kept through moves, turns and uniform scalings) and whose every profile piece is a straight segment or one circular arc (found on its control
-// points as smooth_arcs.hpp finds arcs); any other piece (a B-spline, an ellipse) leaves the solid to the
-// B-spline conversion, whose faces OCCT's integration reads better than its swept surfaces of such curves.
+// a line or an arc: sweep.hpp; kept through moves, turns and uniform scalings), whose profile pieces have no C0
+// knot inside, and which OCCT's fixed integration rule (FreeCAD's Shape.Volume and Area) reads as the kernel
+// measures them, to kGPropTolerance: measured on each, and chosen. It reads its analytic surfaces to rounding, but
+// some swept ones far worse (an oblique extrusion of a circle: Area 2.5e-4 off; examples/vase.json's revolved
+// rational cubic 1.2e-8); those go over as the B-spline conversion, refined until the rule reads it.
 
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
@@ -28,8 +31,8 @@ struct FacesInOrder {
     std::vector<TopoDS_Face> faces;
 };
 
-// The extrusion or revolution rebuilt by OCCT from our profile's edges, or nullopt (another record, a piece that
-// is neither a segment nor an arc, or OCCT refused).
+// The extrusion or revolution rebuilt by OCCT from our profile's edges, or nullopt (another record, a piece with a
+// C0 knot, a sweep OCCT's rule misreads, or OCCT refused).
 std::optional<FacesInOrder> swept_solid(const Solid& solid);
 
 }  // namespace ratbez::occt::detail

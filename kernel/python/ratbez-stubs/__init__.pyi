@@ -600,6 +600,9 @@ def brep_string(solid: Solid, bezier_faces: bool = ..., analytic_primitives: boo
     analytic_primitives=True (the default): a cylinder, cone, sphere or torus (by solid.kind, or a lone sphere
     or torus face read from a file) goes over as OpenCASCADE's own primitive on its analytic surfaces, as
     Part's: FreeCAD's BOP check flags a B-spline sphere's poles at some placements, never an analytic one.
+    An extrusion, revolution or sweep along a line or arc goes over as OpenCASCADE's prism or revolution of
+    its profile (lines and arcs sweep planes, cylinders, cones, spheres, tori), as Part's Extrusion and
+    Revolution, where OpenCASCADE's rule reads its volume and area to 1e-9: Part's Thickness works on them.
     False: the kernel's B-spline faces."""
 
 def bspline_basis(i: int, p: int, knots: Sequence[float], u: float) -> float:

@@ -426,6 +426,9 @@ void bind_io(py::module_& m) {
         "analytic_primitives=True (the default): a cylinder, cone, sphere or torus (by solid.kind, or a lone sphere\n"
         "or torus face read from a file) goes over as OpenCASCADE's own primitive on its analytic surfaces, as\n"
         "Part's: FreeCAD's BOP check flags a B-spline sphere's poles at some placements, never an analytic one.\n"
+        "An extrusion, revolution or sweep along a line or arc goes over as OpenCASCADE's prism or revolution of\n"
+        "its profile (lines and arcs sweep planes, cylinders, cones, spheres, tori), as Part's Extrusion and\n"
+        "Revolution, where OpenCASCADE's rule reads its volume and area to 1e-9: Part's Thickness works on them.\n"
         "False: the kernel's B-spline faces.");
     m.def(
         "occt_check",

@@ -679,11 +679,6 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
-        <source>Cylinders, cones, spheres and tori on Part&apos;s analytic surfaces</source>
-        <translation>Zylinder, Kegel, Kugeln und Tori auf den analytischen Flächen von Part</translation>
-    </message>
-    <message>
-        <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>Default chordal tolerance</source>
         <translation>Standard-Sehnentoleranz</translation>
     </message>
@@ -922,6 +917,11 @@
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Press, select the path&apos;s edges or its sketch in the 3D view or the tree, and press Done</source>
         <translation>Drücken, die Kanten des Pfads oder seine Skizze in der 3D-Ansicht oder der Baumansicht auswählen und Fertig drücken</translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/preferences_page.py"/>
+        <source>Primitives, extrusions and revolutions on Part&apos;s analytic surfaces</source>
+        <translation>Grundkörper, Extrusionen und Rotationskörper auf den analytischen Flächen von Part</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>

@@ -679,11 +679,6 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/preferences_page.py"/>
-        <source>Cylinders, cones, spheres and tori on Part&apos;s analytic surfaces</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../../ratbez_wb/preferences_page.py"/>
         <source>Default chordal tolerance</source>
         <translation type="unfinished"></translation>
     </message>
@@ -921,6 +916,11 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>Press, select the path&apos;s edges or its sketch in the 3D view or the tree, and press Done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/preferences_page.py"/>
+        <source>Primitives, extrusions and revolutions on Part&apos;s analytic surfaces</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

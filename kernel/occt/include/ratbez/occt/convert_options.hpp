@@ -14,7 +14,9 @@ struct ConvertOptions {
     bool bezier_faces = false;
     // true: a cylinder, cone, sphere or torus of ours (by its construction record, or a lone sphere or torus face
     // read from a file) goes over as OCCT's own primitive on its analytic surfaces, as Part's (the BOP check, its
-    // booleans and Thickness treat those better: src/analytic_primitives.hpp). Not with bezier_faces.
+    // booleans and Thickness treat those better: src/analytic_primitives.hpp); an extrusion or revolution (a sweep
+    // along a line or arc too) as OCCT's prism or revolution of its profile, where OCCT's fixed rule reads it
+    // (src/swept_solids.hpp). Not with bezier_faces.
     bool analytic_primitives = true;
 };
 
