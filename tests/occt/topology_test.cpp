@@ -506,6 +506,9 @@ TEST(Topology, ExtrusionsAndRevolutionsGoOverAsOcctSweepsThem) {
         {"ring, full turn", revolve(ring, {}, y), {P, To, P, Cy}},
         {"ring, 270 degrees", revolve(ring, {}, y, 270), {P, To, P, Cy, P, P}},
         {"ring, moved and turned", transformed(revolve(ring, {}, y, 270), moved), {P, To, P, Cy, P, P}},
+        // A mirror image swaps its faces' parameters (v turns about the axis) and reverses the recorded axis.
+        {"ring, mirrored", transformed(revolve(ring, {}, y, 270), AffineMap::mirror({1, 0, 0}, {1, 0, 0})), {P, To, P, Cy, P, P}},
+        {"ring, full turn, mirrored", transformed(revolve(ring, {}, y), AffineMap::mirror({0, 0, 0}, {0, 1, 1})), {P, To, P, Cy}},
         {"bowl, open profile ending on the axis", revolve(bowl, {}, y), {P, Co, P}},
         {"ball", revolve(half_disc, {}, y), {Sp}},
         {"quarter ball", revolve(half_disc, {}, y, 90), {Sp, P, P}},

@@ -45,6 +45,7 @@
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/topology.hpp"
+#include "swept_solids.hpp"
 
 namespace ratbez::occt {
 namespace {
@@ -127,7 +128,7 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
 // forms in the surface's own gp_Ax3 for the quadrics and the torus (exact). For a revolution, OCCT's
 // Geom_SurfaceOfRevolution of the face's own profile about the recorded axis, evaluated at the point's
 // angle about the axis and its profile parameter v (S(u, v) is the profile point C(v) turned about the
-// axis, 004 §1.5): the distance to that surface point bounds the distance to the surface. No projection
+// axis, 004 §1.5; u in a mirror image, whose faces have their parameters swapped): the distance to that surface point bounds the distance to the surface. No projection
 // search: GeomAPI_ProjectPointOnSurf / OnCurve missed the nearest point by up to 1e-2 of the size on
 // profiles with extreme weights. An extrusion (and a Solid of kind none) has no analytic surface here.
 class AnalyticDistance {
@@ -164,7 +165,9 @@ public:
     void set_face(const Face& face) {
         if (!revolution_) return;
         const NurbsSurface& surface = face.surface();
-        const NurbsCurve profile = surface.isocurve_u(surface.domain_u().min);
+        turns_along_u_ = detail::turns_along_u(surface, revolution_->axis_point, revolution_->axis_dir);
+        const NurbsCurve profile = turns_along_u_ ? surface.isocurve_u(surface.domain_u().min)
+                                                  : surface.isocurve_v(surface.domain_v().min);
         Vec3 farthest{};  // the control point farthest from the axis: the profile's half-plane, in which they all lie
         for (const Vec4& pw : profile.homogeneous_points()) {
             const Vec3 radial = radial_part(project(pw));
@@ -177,13 +180,14 @@ public:
     }
 
     // Distance of the face's point p = S(u, v) to the analytic surface.
-    double operator()(const Vec3& p, double v) const {
+    double operator()(const Vec3& p, double u, double v) const {
         if (revolution_) {
+            const double along_profile = turns_along_u_ ? v : u;
             // Geom_SurfaceOfRevolution's U is the angle about the axis (right-handed, as revolve turns).
             const Vec3 radial = radial_part(p);
             const Vec3 quarter_turn = cross(revolution_->axis_dir, start_radial_);
             const double angle = std::atan2(dot(radial, quarter_turn), dot(radial, start_radial_));
-            return distance(p, from_occt(surface_->Value(angle < 0 ? angle + 2 * std::numbers::pi : angle, v)));
+            return distance(p, from_occt(surface_->Value(angle < 0 ? angle + 2 * std::numbers::pi : angle, along_profile)));
         }
         const gp_Pnt local = to_occt_point(p).Transformed(to_local_);
         const double rho = std::hypot(local.X(), local.Y()), z = local.Z();
@@ -210,6 +214,7 @@ private:
     Handle(Geom_Surface) surface_;
     gp_Trsf to_local_;
     std::optional<Construction::Revolution> revolution_;
+    bool turns_along_u_ = true;  // revolve's layout; a mirror image turns along v
     Vec3 start_radial_{};
 };
 
@@ -404,8 +409,8 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
                         faces_done((static_cast<double>(f) + static_cast<double>(i) / options.grid) /
                                    static_cast<double>(solid.faces().size()));
                     for (int j = 0; j < options.grid; ++j) {
-                        const double v = sample(dv.min, dv.max, j, options.grid);
-                        worst = std::max(worst, analytic(face.point(sample(du.min, du.max, i, options.grid), v), v));
+                        const double u = sample(du.min, du.max, i, options.grid), v = sample(dv.min, dv.max, j, options.grid);
+                        worst = std::max(worst, analytic(face.point(u, v), u, v));
                     }
                 }
             }

@@ -282,14 +282,16 @@ std::optional<std::vector<Coedge>> chained(std::vector<Coedge> coedges) {
     return path;
 }
 
-// A revolution: OCCT's revolution of the profile at angle 0 (the u_min side of every face, v along the profile),
+// A revolution: OCCT's revolution of the profile at angle 0 (the side of every face where the turn starts),
 // closed along the axis when it ends there: the start end face of a partial turn, or that face built here.
 std::optional<FacesInOrder> revolution(const Solid& solid, const Construction::Revolution& record, ProfileEdges& edges) {
     std::vector<Coedge> profile;
     std::vector<const Edge*> swept_from(solid.faces().size(), nullptr);
     for (std::size_t i = 0; i < solid.faces().size(); ++i) {
         if (solid.faces()[i].kind() != Face::Kind::surface) continue;
-        const Coedge& side = solid.faces()[i].sides()[static_cast<std::size_t>(Side::u_min)];
+        const Face& face = solid.faces()[i];
+        const Side start = turns_along_u(face.surface(), record.axis_point, record.axis_dir) ? Side::u_min : Side::v_min;
+        const Coedge& side = face.sides()[static_cast<std::size_t>(start)];
         if (side.edge->degenerate || !edges.coedge(side)) return std::nullopt;
         profile.push_back(side);
         swept_from[i] = side.edge.get();
@@ -334,6 +336,27 @@ bool reads_right(const TopoDS_Solid& occt, const Solid& solid) {
 }
 
 }  // namespace
+
+bool turns_along_u(const NurbsSurface& surface, const Vec3& axis_point, const Vec3& axis_dir) {
+    const auto meridian = [&](const Vec3& p) {  // (height along the axis, distance from it)
+        const Vec3 d = p - axis_point;
+        const double h = dot(d, axis_dir);
+        return Vec3{h, norm(d - axis_dir * h), 0};
+    };
+    // How far five points of the curve through the face's middle along one direction stray in the meridian.
+    const auto spread = [&](bool along_u) {
+        const Interval du = surface.domain_u(), dv = surface.domain_v();
+        const auto at = [&](double t) {
+            return along_u ? surface.point(du.min + du.width() * t, dv.min + dv.width() / 2)
+                           : surface.point(du.min + du.width() / 2, dv.min + dv.width() * t);
+        };
+        const Vec3 first = meridian(at(0));
+        double worst = 0;
+        for (int k = 1; k <= 4; ++k) worst = std::max(worst, distance(meridian(at(k / 4.0)), first));
+        return worst;
+    };
+    return spread(true) <= spread(false);
+}
 
 std::optional<FacesInOrder> swept_solid(const Solid& solid) {
     try {

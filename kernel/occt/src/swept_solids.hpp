@@ -31,6 +31,12 @@ struct FacesInOrder {
     std::vector<TopoDS_Face> faces;
 };
 
+// Whether u is the parameter that turns about the axis on a face of a revolution, as revolve() lays its faces out
+// (u round the axis, v along the profile); a mirror image swaps a face's parameters (solid_transform.hpp), and
+// then v turns. The direction whose curve through the face's middle keeps its height along the axis and its
+// distance from it better, at five points each (a face that is no revolution about the axis still gets one).
+bool turns_along_u(const NurbsSurface& surface, const Vec3& axis_point, const Vec3& axis_dir);
+
 // The extrusion or revolution rebuilt by OCCT from our profile's edges, or nullopt (another record, a piece with a
 // C0 knot, a sweep OCCT's rule misreads, or OCCT refused).
 std::optional<FacesInOrder> swept_solid(const Solid& solid);
