@@ -199,6 +199,33 @@ def test_primitives_are_parts_own_geometry():
 
 
 @suite.test
+def test_extrusions_and_revolutions_are_parts_own_geometry():
+    # Issue 25, items 1 and 2: an extrusion or revolution of lines and arcs goes to FreeCAD as OpenCASCADE's prism
+    # or revolution of its profile (planes, cylinders, tori, spheres), which FreeCAD's BOP check passes and
+    # FreeCAD measures exactly at every placement and scale; a mirror image too.
+    slot = ratbez.extrude([ratbez.line_segment((0, -2, 0), (10, -2, 0)), ratbez.arc(2, -90, 90, (10, 0, 0)),
+                           ratbez.line_segment((10, 2, 0), (0, 2, 0)), ratbez.arc(2, 90, 270, (0, 0, 0))], (0, 0, 1), 5)
+    ring = ratbez.revolve([ratbez.line_segment((2, 0, 0), (4, 0, 0)), ratbez.arc(1.5, -90, 90, (4, 1.5, 0)),
+                           ratbez.line_segment((4, 3, 0), (2, 3, 0)), ratbez.line_segment((2, 3, 0), (2, 0, 0))],
+                          (0, 0, 0), (0, 1, 0), 270)
+    quarter_ball = ratbez.revolve([ratbez.arc(2, -90, 90)], (0, 0, 0), (0, 1, 0), 90)
+    kinds = {"slot": (slot, ("Plane", "Cylinder")), "ring": (ring, ("Plane", "Cylinder", "Toroid")),
+             "quarter ball": (quarter_ball, ("Plane", "Sphere")),
+             "mirrored ring": (ring.mirrored((1, 0, 0), (1, 1, 0)), ("Plane", "Cylinder", "Toroid"))}
+    for kind, (solid, surfaces) in kinds.items():
+        for scale in (1e-3, 1, 1e4):
+            for centre in ((0, 0, 0), (0, 40, 0), (-1e4, 1e4, 1e4)):
+                placed = solid.scaled(scale).translated(centre)
+                what = "{} x{:g} at {}".format(kind, scale, centre)
+                shape = conversion.shape_from_solid(placed)
+                found = sorted({type(face.Surface).__name__ for face in shape.Faces})
+                check(found == sorted(surfaces), "{}: faces on {}".format(what, found))
+                check(len(shape.Faces) == len(placed.faces), "{}: {} faces, ours {}".format(
+                    what, len(shape.Faces), len(placed.faces)))
+                assert_measures(shape, placed.volume(), placed.area(), None, what)
+
+
+@suite.test
 def test_every_example_measures_exactly_in_freecad():
     paths = sorted(glob.glob(os.path.join(EXAMPLES, "*.json")))
     check(len(paths) >= 9, "examples not found in " + EXAMPLES)

@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 
@@ -50,8 +51,9 @@ gp_Dir to_occt_dir(const Vec3& v) { return gp_Dir(v.x, v.y, v.z); }
 // sweep history (Generated) finds the face each one sweeps.
 class ProfileEdges {
 public:
-    // `axis`: a revolution's, which its arcs' circles start from (below).
-    explicit ProfileEdges(double tolerance, const Construction::Revolution* axis = nullptr) : tolerance_(tolerance), axis_(axis) {}
+    // `record`: the sweep's, which its arcs' circles are set square to (below).
+    ProfileEdges(double tolerance, const Construction& record)
+        : tolerance_(tolerance), extrusion_(record.get<Construction::Extrusion>()), axis_(record.get<Construction::Revolution>()) {}
 
     // The coedge as an oriented OCCT edge, or nullopt when its edge has a C0 knot inside.
     std::optional<TopoDS_Edge> coedge(const Coedge& c) {
@@ -108,15 +110,23 @@ private:
         const Vec3 &u = found->u_axis.front(), &v = found->v_axis.front();
         const double r = norm(u);
         if (!(r > tolerance_) || std::abs(norm(v) - r) > tolerance_ || std::abs(dot(u, v)) > tolerance_ * r) return std::nullopt;
-        // About an axis, the circle starts (parameter 0) straight away from it: only then does OCCT's revolution
-        // (GeomAdaptor_SurfaceOfRevolution::GetType) see a torus rather than a general surface of revolution.
+        // OCCT's sweeps see a cylinder, sphere or torus only when the circle stands to the sweep exactly as it should
+        // (to Precision::Angular, 1e-12: BRepSweep_Translation, GeomAdaptor_SurfaceOfRevolution::GetType), which the
+        // fitted normal misses far from the origin (1e4 out: 5e-10). So a normal within the fit of the extrusion's
+        // direction is taken as it, one within it of square to a revolution's axis is made square to it; and about
+        // an axis the circle starts (parameter 0) straight away from it, or OCCT sees no torus either.
         const Vec3 centre = found->origin.front();
-        Vec3 x = u;
+        Vec3 normal = cross(u, v) / (r * r), x = u;
+        const double loose = tolerance_ / r;  // the fit, as an angle
+        if (extrusion_ && norm(cross(normal, extrusion_->direction)) <= loose)
+            normal = dot(normal, extrusion_->direction) > 0 ? extrusion_->direction : -extrusion_->direction;
         if (axis_) {
+            const Vec3 square = normal - axis_->axis_dir * dot(normal, axis_->axis_dir);
+            if (std::abs(dot(normal, axis_->axis_dir)) <= loose) normal = square / norm(square);
             const Vec3 foot = axis_->axis_point + axis_->axis_dir * dot(centre - axis_->axis_point, axis_->axis_dir);
             if (norm(centre - foot) > tolerance_) x = centre - foot;
         }
-        const gp_Circ circle(gp_Ax2(to_occt_point(centre), to_occt_dir(cross(u, v)), to_occt_dir(x)), r);
+        const gp_Circ circle(gp_Ax2(to_occt_point(centre), to_occt_dir(normal), to_occt_dir(x)), r);
         constexpr double kTurn = 2 * std::numbers::pi;
         const double first = ElCLib::Parameter(circle, to_occt_point(e.start->point));
         double last = e.start == e.end ? first + kTurn : ElCLib::Parameter(circle, to_occt_point(e.end->point));
@@ -144,6 +154,7 @@ private:
     }
 
     double tolerance_;
+    const Construction::Extrusion* extrusion_;
     const Construction::Revolution* axis_;
     std::map<const Edge*, TopoDS_Edge> edges_;
     std::map<const Vertex*, TopoDS_Vertex> vertices_;
@@ -327,12 +338,18 @@ std::optional<FacesInOrder> revolution(const Solid& solid, const Construction::R
 // measures the solid, to kGPropTolerance. Planes, cylinders, cones, spheres and tori it reads to rounding; its swept
 // surfaces (a revolved B-spline, an oblique extrusion of an arc) sometimes far worse (an oblique extrusion of a
 // circle: Area 2.5e-4 off), and then the B-spline conversion, refined until the rule reads it, is handed out.
-bool reads_right(const TopoDS_Solid& occt, const Solid& solid) {
-    GProp_GProps volume, area;
+// Measured about the solid's own centre: about the origin a small solid far out loses digits to cancellation
+// whatever its faces are, and that is not the rule's reading. Far out its coordinates hold fewer digits of it in the
+// first place (a solid of size 1e-2 at 1e4: 1e-10 of its size), so the tolerance has a floor of 64 ulps of its
+// reach relative to its size (there 1.6e-8; OCCT read the ring of swept_solids' tests to 1.04e-9).
+bool reads_right(const TopoDS_Solid& occt, const Solid& solid, double reach) {
+    const Box box = solid.bounding_box();
+    GProp_GProps volume(to_occt_point((box.min + box.max) / 2)), area;
     BRepGProp::VolumeProperties(occt, volume);
     BRepGProp::SurfaceProperties(occt, area);
     const double v = enclosed_volume(solid), a = surface_area(solid);
-    return std::abs(volume.Mass() - v) <= kGPropTolerance * std::abs(v) && std::abs(area.Mass() - a) <= kGPropTolerance * a;
+    const double tolerance = std::max(kGPropTolerance, 64 * std::numeric_limits<double>::epsilon() * reach / box.diagonal());
+    return std::abs(volume.Mass() - v) <= tolerance * std::abs(v) && std::abs(area.Mass() - a) <= tolerance * a;
 }
 
 }  // namespace
@@ -360,16 +377,21 @@ bool turns_along_u(const NurbsSurface& surface, const Vec3& axis_point, const Ve
 
 std::optional<FacesInOrder> swept_solid(const Solid& solid) {
     try {
-        const double tolerance = kFit * std::max(1.0, solid.bounding_box().diagonal());
+        // Of the size, and of the distance from the origin: a small solid far out has its control points only to
+        // the rounding of its coordinates (1e4 out: ~1e-12), which a fit at 1e-11 of its size would miss.
+        const Box box = solid.bounding_box();
+        const double reach = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.min.z), std::abs(box.max.x),
+                                       std::abs(box.max.y), std::abs(box.max.z)});
+        const double tolerance = kFit * std::max({1.0, box.diagonal(), reach});
         std::optional<FacesInOrder> swept;
         if (const auto* e = solid.construction().get<Construction::Extrusion>()) {
-            ProfileEdges edges(tolerance);
+            ProfileEdges edges(tolerance, solid.construction());
             swept = extrusion(solid, *e, edges);
         } else if (const auto* r = solid.construction().get<Construction::Revolution>()) {
-            ProfileEdges edges(tolerance, r);
+            ProfileEdges edges(tolerance, solid.construction());
             swept = revolution(solid, *r, edges);
         }
-        if (swept && reads_right(swept->solid, solid)) return swept;
+        if (swept && reads_right(swept->solid, solid, reach)) return swept;
     } catch (const Standard_Failure&) {
     }
     return std::nullopt;
