@@ -128,9 +128,9 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
 // forms in the surface's own gp_Ax3 for the quadrics and the torus (exact). For a revolution, OCCT's
 // Geom_SurfaceOfRevolution of the face's own profile about the recorded axis, evaluated at the point's
 // angle about the axis and its profile parameter v (S(u, v) is the profile point C(v) turned about the
-// axis, 004 §1.5; u in a mirror image, whose faces have their parameters swapped): the distance to that surface point bounds the distance to the surface. No projection
-// search: GeomAPI_ProjectPointOnSurf / OnCurve missed the nearest point by up to 1e-2 of the size on
-// profiles with extreme weights. An extrusion (and a Solid of kind none) has no analytic surface here.
+// axis, 004 §1.5; u in a mirror image, whose faces have their parameters swapped): the distance to that
+// surface point bounds the distance to the surface. No projection search: GeomAPI_ProjectPointOnSurf /
+// OnCurve missed the nearest point by up to 1e-2 of the size on profiles with extreme weights. An extrusion (and a Solid of kind none) has no analytic surface here.
 class AnalyticDistance {
 public:
     explicit AnalyticDistance(const Construction& construction) {

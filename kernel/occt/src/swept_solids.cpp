@@ -42,13 +42,14 @@
 namespace ratbez::occt::detail {
 namespace {
 
-// Relative to the solid's size: how far a control point may be from the line or arc a piece is taken for.
+// Relative to the solid's size (or its distance from the origin, if larger: swept_solid): how far a control point
+// may be from the line or arc a piece is taken for.
 constexpr double kFit = 1e-11;
 
 gp_Dir to_occt_dir(const Vec3& v) { return gp_Dir(v.x, v.y, v.z); }
 
-// The profile's edges as OCCT lines, circles and B-splines, each built once on vertices shared as ours are, so that OCCT's
-// sweep history (Generated) finds the face each one sweeps.
+// The profile's edges as OCCT lines, circles and B-splines, each built once on vertices shared as ours are, so
+// that OCCT's sweep history (Generated) finds the face each one sweeps.
 class ProfileEdges {
 public:
     // `record`: the sweep's, which its arcs' circles are set square to (below).
@@ -236,9 +237,9 @@ std::optional<FacesInOrder> in_order(const Solid& solid, Sweep& sweep, auto&& sw
         if (face.kind() == Face::Kind::surface && swept_from[i]) {
             if (const std::optional<TopoDS_Edge> edge = edges.built(*swept_from[i]))
                 found = generated(sweep, sweep_of(*edge), occt, *edge);
-        }
-        else if (face.kind() == Face::Kind::planar && start)
+        } else if (face.kind() == Face::Kind::planar && start) {
             found = in_solid(occt, i == *start ? sweep.FirstShape() : sweep.LastShape());
+        }
         if (!found || !used.Add(*found)) return std::nullopt;
         result.faces[i] = *found;
     }
