@@ -32,9 +32,9 @@ namespace {
 constexpr double kFit = 1e-11;
 constexpr double kOnSurface = 1e-10;
 
-gp_Ax2 axes(const Vec3& origin, const Vec3& axis) { return gp_Ax2(to_occt_point(origin), gp_Dir(axis.x, axis.y, axis.z)); }
+gp_Ax2 axes(const Vec3& origin, const Vec3& axis) { return gp_Ax2(to_occt_point(origin), to_occt_direction(axis)); }
 gp_Ax2 axes(const Vec3& origin, const Vec3& axis, const Vec3& x) {
-    return gp_Ax2(to_occt_point(origin), gp_Dir(axis.x, axis.y, axis.z), gp_Dir(x.x, x.y, x.z));
+    return gp_Ax2(to_occt_point(origin), to_occt_direction(axis), to_occt_direction(x));
 }
 
 // A sphere (minor radius 0 means none: major is its radius) or torus: centre, axis, the direction its parameter

@@ -135,7 +135,7 @@ class AnalyticDistance {
 public:
     explicit AnalyticDistance(const Construction& construction) {
         const auto frame = [](const Vec3& center, const Vec3& axis) {
-            return gp_Ax3(to_occt_point(center), gp_Dir(axis.x, axis.y, axis.z));
+            return gp_Ax3(to_occt_point(center), to_occt_direction(axis));
         };
         if (const auto* c = construction.get<Construction::Cylinder>()) {
             surface_ = new Geom_CylindricalSurface(frame(c->center, c->axis), c->radius);
@@ -174,9 +174,8 @@ public:
             if (norm(radial) > norm(farthest)) farthest = radial;
         }
         start_radial_ = farthest / norm(farthest);
-        const Vec3& d = revolution_->axis_dir;
-        surface_ = new Geom_SurfaceOfRevolution(to_occt(profile),
-                                                gp_Ax1(to_occt_point(revolution_->axis_point), gp_Dir(d.x, d.y, d.z)));
+        surface_ = new Geom_SurfaceOfRevolution(
+            to_occt(profile), gp_Ax1(to_occt_point(revolution_->axis_point), to_occt_direction(revolution_->axis_dir)));
     }
 
     // Distance of the face's point p = S(u, v) to the analytic surface.

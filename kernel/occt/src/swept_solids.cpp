@@ -46,8 +46,6 @@ namespace {
 // may be from the line or arc a piece is taken for.
 constexpr double kFit = 1e-11;
 
-gp_Dir to_occt_dir(const Vec3& v) { return gp_Dir(v.x, v.y, v.z); }
-
 // The profile's edges as OCCT lines, circles and B-splines, each built once on vertices shared as ours are, so
 // that OCCT's sweep history (Generated) finds the face each one sweeps.
 class ProfileEdges {
@@ -127,7 +125,7 @@ private:
             const Vec3 foot = axis_->axis_point + axis_->axis_dir * dot(centre - axis_->axis_point, axis_->axis_dir);
             if (norm(centre - foot) > tolerance_) x = centre - foot;
         }
-        const gp_Circ circle(gp_Ax2(to_occt_point(centre), to_occt_dir(normal), to_occt_dir(x)), r);
+        const gp_Circ circle(gp_Ax2(to_occt_point(centre), to_occt_direction(normal), to_occt_direction(x)), r);
         constexpr double kTurn = 2 * std::numbers::pi;
         const double first = ElCLib::Parameter(circle, to_occt_point(e.start->point));
         double last = e.start == e.end ? first + kTurn : ElCLib::Parameter(circle, to_occt_point(e.end->point));
@@ -178,7 +176,7 @@ std::optional<TopoDS_Wire> wire(ProfileEdges& edges, const std::vector<Coedge>& 
 // A planar face of ours as an OCCT face on the same plane, its loops as wires.
 std::optional<TopoDS_Face> planar_face(ProfileEdges& edges, const Face& face) {
     const Plane& plane = face.plane();
-    const gp_Pln occt_plane(gp_Ax3(to_occt_point(plane.origin), to_occt_dir(plane.normal), to_occt_dir(plane.x_axis)));
+    const gp_Pln occt_plane(gp_Ax3(to_occt_point(plane.origin), to_occt_direction(plane.normal), to_occt_direction(plane.x_axis)));
     const std::optional<TopoDS_Wire> outer = wire(edges, face.loops().front());
     if (!outer) return std::nullopt;
     BRepBuilderAPI_MakeFace made(occt_plane, *outer, Standard_True);
@@ -329,7 +327,7 @@ std::optional<FacesInOrder> revolution(const Solid& solid, const Construction::R
     }
     if (!base) return std::nullopt;
     const double angle = record.angle_deg >= 360 ? 2 * std::numbers::pi : record.angle_deg * std::numbers::pi / 180;
-    BRepPrimAPI_MakeRevol revol(*base, gp_Ax1(to_occt_point(record.axis_point), to_occt_dir(record.axis_dir)), angle);
+    BRepPrimAPI_MakeRevol revol(*base, gp_Ax1(to_occt_point(record.axis_point), to_occt_direction(record.axis_dir)), angle);
     return in_order(solid, revol, [&](const TopoDS_Edge& e) {
         return const_cast<BRepSweep_Revol&>(revol.Revol()).Shape(e);  // OCCT's Shape(generator) is not const
     }, edges, swept_from, start);

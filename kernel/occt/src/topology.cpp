@@ -697,8 +697,7 @@ private:
         const Plane& plane = face.plane();
         // gp_Ax3(P, N, Vx): main direction N, X direction Vx, Y = N ^ Vx = y_axis for our right-handed frame,
         // so the plane's (u, v) are the coordinates along x_axis and y_axis.
-        const gp_Ax3 frame(to_occt_point(plane.origin), gp_Dir(plane.normal.x, plane.normal.y, plane.normal.z),
-                           gp_Dir(plane.x_axis.x, plane.x_axis.y, plane.x_axis.z));
+        const gp_Ax3 frame(to_occt_point(plane.origin), to_occt_direction(plane.normal), to_occt_direction(plane.x_axis));
         TopoDS_Face made;
         builder_.MakeFace(made, new Geom_Plane(frame), out_.tolerance);
         std::vector<std::vector<Use>> loops;

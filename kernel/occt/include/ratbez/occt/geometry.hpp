@@ -23,6 +23,7 @@
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierCurve.hxx>
 #include <Geom_BezierSurface.hxx>
+#include <gp_Dir.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
@@ -36,6 +37,7 @@ namespace ratbez::occt {
 
 inline gp_Pnt to_occt_point(const Vec3& p) { return gp_Pnt(p.x, p.y, p.z); }
 inline gp_Vec to_occt_vector(const Vec3& v) { return gp_Vec(v.x, v.y, v.z); }
+inline gp_Dir to_occt_direction(const Vec3& v) { return gp_Dir(v.x, v.y, v.z); }  // normalised; v must not be 0
 inline Vec3 from_occt(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 inline Vec3 from_occt(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 
