@@ -130,7 +130,8 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
 // angle about the axis and its profile parameter v (S(u, v) is the profile point C(v) turned about the
 // axis, 004 §1.5; u in a mirror image, whose faces have their parameters swapped): the distance to that
 // surface point bounds the distance to the surface. No projection search: GeomAPI_ProjectPointOnSurf /
-// OnCurve missed the nearest point by up to 1e-2 of the size on profiles with extreme weights. An extrusion (and a Solid of kind none) has no analytic surface here.
+// OnCurve missed the nearest point by up to 1e-2 of the size on profiles with extreme weights. An extrusion
+// (and a Solid of kind none) has no analytic surface here.
 class AnalyticDistance {
 public:
     explicit AnalyticDistance(const Construction& construction) {

@@ -1,6 +1,6 @@
 #pragma once
 // The solid as files, brep_string and check() hand it out, one place for both: convert's (topology.hpp), with
-// faces still C0 inside split (c0_split.hpp), or OpenCASCADE's own primitive where ours is one
+// faces still C0 inside split (c0_split.hpp), or OpenCASCADE's own primitive or sweep where ours is one
 // (analytic_primitives.hpp, ConvertOptions::analytic_primitives). Internal to kernel/occt; defined in
 // topology.cpp beside to_occt.
 
