@@ -22,6 +22,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
+#include <math.hxx>
 #include <gp_Ax3.hxx>
 #include <gp_Dir.hxx>
 #include <gp_Dir2d.hxx>
@@ -185,9 +186,10 @@ private:
     // direction changes only together with the edges along it, and an edge only where every face using it
     // agrees: a trimmed face's p-curves are in the edge's parameter and keep it; a planar face's p-curves are
     // made from whichever curve the edge has. Dropping one drops its partners until nothing changes.
-    // A surface face that keeps a direction OCCT's fixed rule cannot read (rough_direction: a loft through a
+    // A surface face that keeps a direction OCCT's fixed rule cannot read (rough_knots: a loft through a
     // square, a ruled crease) goes over one face per Bézier patch instead, as bezier_faces hands over every
-    // face (gprop_patches.hpp), and its edges keep their parameter; every other face stays one face.
+    // face (gprop_patches.hpp), and its edges keep their parameter; every other face stays one face, one rough
+    // in v only where C1 with its u sides cut at those knots (rough_v_cut_on_sides).
     void plan_arcs() {
         arc_tolerance_ = 1e-11 * std::max(1.0, solid_.bounding_box().diagonal());
         const double tolerance = arc_tolerance_;
@@ -215,8 +217,9 @@ private:
                 }
                 if (faces[i].kind() != Face::Kind::surface) continue;
                 auto& [arc_u, arc_v] = face_arcs_[i];
-                if (patch_rough_ && !patched_.count(i) && ((!arc_u && rough_direction(faces[i].surface(), true)) ||
-                                           (!arc_v && rough_direction(faces[i].surface(), false)))) {
+                if (patch_rough_ && !patched_.count(i) &&
+                    ((!arc_u && !rough_knots(faces[i].surface(), true).empty()) ||
+                     (!arc_v && !rough_knots(faces[i].surface(), false).empty() && !rough_v_cut_on_sides(faces[i])))) {
                     patched_.insert(i);
                     arc_u.reset();
                     arc_v.reset();
@@ -233,6 +236,13 @@ private:
                 }
             }
         }
+        for (std::size_t i = 0; i < faces.size(); ++i)
+            if (faces[i].kind() == Face::Kind::surface && !patched_.count(i) && !face_arcs_[i][1]) {
+                const std::vector<double> rough = rough_knots(faces[i].surface(), false);
+                if (rough.empty()) continue;
+                sides_cut_.insert(i);
+                for (int s : {static_cast<int>(Side::u_max), static_cast<int>(Side::u_min)}) cut_side(faces[i], s, rough);
+            }
         for (const auto& entry : edge_arcs) {  // not a structured binding: clang 14 cannot capture one
             const detail::ArcDirection& arc = entry.second;
             smooth_curves_.emplace(entry.first, detail::smooth(entry.first->curve, arc));
@@ -240,23 +250,47 @@ private:
         }
     }
 
-    // A direction with an interior knot of multiplicity degree or more (C0 by multiplicity: a crease, or the
-    // joint of two rational arcs that is not an arc direction), or on a rational surface degree - 1 or more (C1:
-    // the second derivative of a rational joint jumps): OCCT's single Gauss rule over the face converges slowly
-    // across it (0.9 % on the kernel's own circle joints, 9 % on the ruled example, 0.09 % on the partial
-    // revolve example's rational C1 profile), and BOPAlgo flags a C0 one.
-    static bool rough_direction(const NurbsSurface& surface, bool along_u) {
+    // The distinct interior knots of a direction with their multiplicities.
+    static std::vector<std::pair<double, int>> knot_multiplicities(const NurbsSurface& surface, bool along_u) {
         const std::vector<double>& knots = along_u ? surface.knots_u() : surface.knots_v();
-        const int degree = along_u ? surface.degree_u() : surface.degree_v();
         const Interval domain = along_u ? surface.domain_u() : surface.domain_v();
+        std::vector<std::pair<double, int>> inside;
         for (std::size_t k = 0; k < knots.size();) {
             std::size_t end = k;
             while (end < knots.size() && knots[end] == knots[k]) ++end;
-            if (knots[k] > domain.min && knots[k] < domain.max && static_cast<int>(end - k) >= std::max(1, surface.is_rational() ? degree - 1 : degree))
-                return true;
+            if (knots[k] > domain.min && knots[k] < domain.max) inside.emplace_back(knots[k], static_cast<int>(end - k));
             k = end;
         }
-        return false;
+        return inside;
+    }
+
+    // The rough knots of a direction: interior knots of multiplicity degree or more (C0 by multiplicity: a
+    // crease, or the joint of two rational arcs that is not an arc direction), or on a rational surface degree - 1
+    // or more (C1: the second derivative of a rational joint jumps). OCCT's single Gauss rule over the face
+    // converges slowly across one (0.9 % on the kernel's own circle joints, 9 % on the ruled example, 0.09 % on
+    // the partial revolve example's rational C1 profile), and BOPAlgo flags a C0 one.
+    static std::vector<double> rough_knots(const NurbsSurface& surface, bool along_u) {
+        const int degree = along_u ? surface.degree_u() : surface.degree_v();
+        std::vector<double> rough;
+        for (const auto& [knot, multiplicity] : knot_multiplicities(surface, along_u))
+            if (multiplicity >= std::max(1, surface.is_rational() ? degree - 1 : degree)) rough.push_back(knot);
+        return rough;
+    }
+
+    // Whether a face rough in v only stays one face, its u sides cut at the rough knots. OCCT's fixed rule
+    // (BRepGProp_Gauss, the domain overloads) integrates a face by Green's theorem: one Gauss rule along each edge
+    // of its wire in the edge's parameter, times one in u from the surface's first u to the pcurve's. Only edges
+    // along which v changes count, and of a rectangle's only the u_max side (at u_min the inner integral is
+    // empty). A vertex at each rough v knot on that side splits the outer rule there, so each span is read on its
+    // own, smooth, and the face stays whole: a revolved rational profile is one face, as Part's Revolution makes
+    // it, its side edges cut where the profile's pieces meet (u_min's too: on a full revolution it is the same
+    // seam, and a planar neighbour reads its own rule along the pieces alike). Not for a C0 knot (a crease: BOPAlgo
+    // flags a C0 face, so that one goes over as patches), nor a pole at u_max (no edge to cut).
+    static bool rough_v_cut_on_sides(const Face& face) {
+        const NurbsSurface& surface = face.surface();
+        for (const auto& entry : knot_multiplicities(surface, false))
+            if (entry.second >= surface.degree_v()) return false;
+        return !face.sides()[static_cast<std::size_t>(Side::u_max)].edge->degenerate;
     }
 
     TopoDS_Vertex vertex(const VertexPtr& v) {
@@ -455,7 +489,30 @@ private:
                                                            fixed_of(s, du.min, du.max, dv.min, dv.max), range.min, range.max,
                                                            false);
         }
-        return bounded_face(refined_for_gauss(to_occt(surface)), sides, before);
+        Handle(Geom_BSplineSurface) handed = refined_for_gauss(to_occt(surface));
+        if (sides_cut_.count(i)) with_v_rule_as_u(*handed);
+        return bounded_face(handed, sides, before);
+    }
+
+    // A face whose sides are cut (rough_v_cut_on_sides) is read by the rule per piece in v, but with as many
+    // points in u as in v only (the volume's rule counts v alone: gprop_patches.hpp): a full turn of the revolve
+    // example's rational profile read 2.8e-7 off with 12. Simple knots in v, each span cut alike, until v's
+    // rule is u's (exact; the surface stays C1 at the rough knots only, C-infinity at the new ones).
+    static void with_v_rule_as_u(Geom_BSplineSurface& surface) {
+        const int spans = surface.NbVKnots() - 1;
+        const int u_order = std::min(math::GaussPointsMax(), detail::gprop_integration_order(surface.UDegree(), surface.NbUKnots() - 1));
+        int parts = 1;
+        while (detail::gprop_integration_order(surface.VDegree(), spans * parts) < u_order) ++parts;
+        if (parts == 1) return;
+        TColStd_Array1OfReal knots(1, spans * (parts - 1));
+        for (int k = 0; k < spans; ++k)
+            for (int j = 1; j < parts; ++j) {
+                const double a = surface.VKnot(k + 1), b = surface.VKnot(k + 2);
+                knots.SetValue(k * (parts - 1) + j, a + (b - a) * j / parts);
+            }
+        TColStd_Array1OfInteger once(1, knots.Length());
+        once.Init(1);
+        surface.InsertVKnots(knots, once);
     }
 
     // The same surface with a richer representation for OCCT's fixed Gauss rule, which it sizes by degree and
@@ -494,19 +551,23 @@ private:
             detail::PatchGrid grid = detail::gprop_patch_grid(face.surface(), kGPropTolerance);
             out_.gprop_tolerance_reached = out_.gprop_tolerance_reached && grid.reached;
             for (int s = 0; s < 4; ++s) {
-                const Coedge& coedge = face.sides()[static_cast<std::size_t>(s)];
-                if (coedge.edge->degenerate) continue;
-                const Interval domain = coedge.edge->curve.domain();
-                const bool edge_with_parameter = traversal_increasing(s) != coedge.reversed;
                 const std::vector<double>& lines = along_u(s) ? grid.u : grid.v;
-                for (std::size_t k = 1; k + 1 < lines.size(); ++k)
-                    cuts_[coedge.edge.get()].insert(edge_with_parameter ? lines[k] : domain.min + domain.max - lines[k]);
+                cut_side(face, s, std::vector<double>(lines.begin() + 1, lines.end() - 1));
             }
             grids_.emplace(i, std::move(grid));
         }
         for (const EdgePtr& edge : solid_.edges())
             if (!edge->degenerate && !smooth_curves_.count(edge.get()))
                 for (double knot : interior_knots(edge->curve)) cuts_[edge.get()].insert(knot);
+    }
+
+    // Plans cuts of side s's edge at the surface parameters `at` along it (none on a degenerate side).
+    void cut_side(const Face& face, int s, const std::vector<double>& at) {
+        const Coedge& coedge = face.sides()[static_cast<std::size_t>(s)];
+        if (coedge.edge->degenerate) return;
+        const Interval domain = coedge.edge->curve.domain();
+        const bool edge_with_parameter = traversal_increasing(s) != coedge.reversed;
+        for (double x : at) cuts_[coedge.edge.get()].insert(edge_with_parameter ? x : domain.min + domain.max - x);
     }
 
     // The vertex at grid point (i, j) of a face's patch grid: inside, a new one; on the boundary, the
@@ -740,6 +801,7 @@ private:
     std::map<const Edge*, std::vector<TopoDS_Vertex>> cut_vertices_;   // a vertex per entry of cut_parameters_
     std::map<std::size_t, std::array<std::optional<detail::ArcDirection>, 2>> face_arcs_;  // natural: by face
     std::set<std::size_t> patched_;                                    // natural: faces handed over as patches
+    std::set<std::size_t> sides_cut_;                                  // natural: rough in v, u sides cut there
     double arc_tolerance_ = 0;                                         // natural: find_arc's fit tolerance
     std::map<const Edge*, NurbsCurve> smooth_curves_;                  // natural: edges in the one-span form
     std::vector<std::size_t> shell_of_face_;                           // Solid::shells, by face index

@@ -27,8 +27,10 @@
 // the exact one-span rational form of the same arc (src/smooth_arcs.hpp): the same points, another parameter
 // along the arc (ConvertedSolid::face_parameters / edge_parameters map it back). OpenCASCADE's fixed Gauss rule
 // (FreeCAD's Shape.Volume) then reads the face to ~1e-9 instead of ~1e-2, and no C0 knot is left for FreeCAD's
-// BOP check to flag, with one OCCT face per face of ours. A surface face that still has a C0 direction which is
-// not an arc (a crease, a loft through a polygon) or a rational C1 one goes over one face per Bézier patch, as
+// BOP check to flag, with one OCCT face per face of ours. A face whose v alone is rational C1 at some knots (a
+// revolved rational profile) stays one face with the edges of its u sides cut there (a vertex at each such knot):
+// OCCT's rule runs along each edge piece on its own, smooth. A surface face that still has a C0 direction which is
+// not an arc (a crease, a loft through a polygon) or a rational C1 u goes over one face per Bézier patch, as
 // with bezier_faces below, and only that face; should OCCT refuse those patches (seen on faces read back from
 // files) every face goes over whole instead.
 // Straight and one-span directions are degree-elevated and knot-refined (exact) for OCCT's rule as well.
