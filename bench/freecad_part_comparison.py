@@ -2,8 +2,9 @@
 Part's analytic primitive for a cylinder, cone, sphere or torus by default, else ratbez.brep_string, the natural
 conversion), the kernel's B-spline form of the primitives (the preference off) and Part's primitive of the same
 shape — faces and edges, FreeCAD's Shape.Volume error, FreeCAD's BOP check, and the time of a Part Cut with a box
-through the middle (median of 5). The examples (examples/*.json), which Part has no primitive for, show their
-faces and the same measurements.
+through the middle (median of 5). The examples (examples/*.json), which Part has no primitive for, stand beside
+Part's Revolution, Extrusion, Loft or Sweep of the same input (the profiles' lines, arcs and circles as Part's
+own, other pieces as the same B-splines), with "-" in the B-spline column; the Shape.Volume error is RatBez's.
 
     freecadcmd bench/freecad_part_comparison.py            (with build/kernel/python on the path)
 
@@ -11,6 +12,7 @@ Prints a Markdown table; timings are measurements, never pass/fail.
 """
 
 import glob
+import math
 import os
 import statistics
 import sys
@@ -60,6 +62,50 @@ PART = {
 }
 
 
+# Part's features on the same input as the examples: the profile's lines, arcs and circles as Part's own lines and
+# circles (as a sketch gives them), every other piece as the same B-spline (poles, weights, knots).
+def _part_edge(piece):
+    curve = exact._piece(piece)
+    start, end = App.Vector(*curve.start_point), App.Vector(*curve.end_point)
+    if piece["type"] == "line":
+        return Part.makeLine(start, end)
+    if piece["type"] in ("circle", "arc"):
+        centre = App.Vector(*(list(piece.get("center", (0, 0, 0))) + [0])[:3])
+        circle = Part.Circle(centre, App.Vector(*piece.get("normal", (0, 0, 1))), piece["radius"])
+        circle.XAxis = start - centre  # starts where ours starts (a loft's seam is there)
+        turn = 360.0 if piece["type"] == "circle" else piece["end_deg"] - piece["start_deg"]
+        return circle.toShape(0, math.radians(turn))
+    knots = list(curve.knots)
+    distinct = sorted(set(knots))
+    spline = Part.BSplineCurve()
+    spline.buildFromPolesMultsKnots([App.Vector(*p) for p in curve.points], [knots.count(k) for k in distinct],
+                                    distinct, False, curve.degree, list(curve.weights) if curve.is_rational else None)
+    return spline.toShape()
+
+
+def _part_wire(pieces):
+    return Part.Wire([_part_edge(piece) for piece in pieces])
+
+
+def part_feature_of(spec):
+    """Part's Revolution, Extrusion, Loft, ruled Loft or Sweep of the example's input (made as FreeCAD's features
+    make them), or None."""
+    kind = spec["type"]
+    if kind == "revolve":
+        face = Part.Face(_part_wire(spec["profile"]))
+        return face.revolve(App.Vector(*spec.get("axis_point", (0, 0, 0))), App.Vector(*spec.get("axis_dir", (0, 0, 1))),
+                            spec.get("angle", 360.0))
+    if kind == "extrude":
+        face = Part.Face(_part_wire(spec["profile"]))
+        return face.extrude(App.Vector(*spec["direction"]).normalize() * spec["distance"])
+    if kind in ("loft", "ruled"):
+        wires = [_part_wire(p) for p in (spec["profiles"] if kind == "loft" else (spec["profile_a"], spec["profile_b"]))]
+        return Part.makeLoft(wires, True, kind == "ruled" or spec.get("ruled", False))
+    if kind == "sweep":
+        return Part.Wire(_part_wire(spec["path"])).makePipeShell([_part_wire(spec["profile"])], True, True)
+    return None
+
+
 def main():
     shapes = [("sphere r=3", {"type": "sphere", "radius": 3}),
               ("sphere r=3 at (0, 40, 0)", {"type": "sphere", "radius": 3, "center": [0, 40, 0]}),
@@ -78,9 +124,11 @@ def main():
         forms = [shape]
         if spec["type"] in PART:
             forms += [conversion.shape_from_solid(solid, analytic=False), PART[spec["type"]](spec)]
-        counts = "; ".join("{} / {}".format(len(s.Faces), len(s.Edges)) for s in forms)
-        bop = "; ".join(bop_findings(s) for s in forms)
-        ms = "; ".join("{:.1f}".format(cut_ms(s)) for s in forms)
+        else:  # no B-spline form apart from the workbench's own; Part's feature of the same input
+            forms += [None, part_feature_of(spec)]
+        counts = "; ".join("-" if s is None else "{} / {}".format(len(s.Faces), len(s.Edges)) for s in forms)
+        bop = "; ".join("-" if s is None else bop_findings(s) for s in forms)
+        ms = "; ".join("-" if s is None else "{:.1f}".format(cut_ms(s)) for s in forms)
         print("| {} | {} | {:.1e} | {} | {} |".format(name, counts, error, bop, ms))
         sys.stdout.flush()
 

@@ -259,6 +259,38 @@ def test_a_revolved_rational_profile_has_parts_faces():
                 check(filleted.isValid() and len(filleted.Solids) == 1, "{}: {} Fillet".format(what, whose))
 
 
+@suite.test
+def test_an_extruded_quadratic_has_parts_faces():
+    # Issue 25, item 1: a closed quadratic B-spline (C1 at its knots) as a Part wire, extruded by RatBez and by
+    # Part::Extrusion: Part's 3 faces (the side face one, its sections cut at the knots), FreeCAD's measures exact
+    # (its Area read 1.1e-3 off as one face before, 7 faces as patches), BOP check clean, and Part Thickness through
+    # either cap works as on Part's.
+    doc = new_document("QuadraticExtrusion")
+    section = ratbez.interpolate([(7, 0, 0), (0, 3, 0), (-7, 0, 0), (0, -3, 0)], 2, "chord", None, True)
+    knots = list(section.knots)
+    distinct = sorted(set(knots))
+    curve = Part.BSplineCurve()
+    curve.buildFromPolesMultsKnots([V(*p) for p in section.points], [knots.count(k) for k in distinct], distinct,
+                                   False, 2)
+    profile = doc.addObject("Part::Feature", "QuadraticProfile")
+    profile.Shape = Part.Wire(curve.toShape())
+    ours = RatBez.make_extrude(doc, Profile=profile, Distance=5)
+    theirs = doc.addObject("Part::Extrusion", "PartExtrusion")
+    theirs.Base, theirs.DirMode, theirs.LengthFwd, theirs.Solid = profile, "Normal", 5, True
+    doc.recompute()
+    solid = ratbez.extrude([section], (0, 0, 1), 5)
+    what = "extruded closed quadratic"
+    check(len(ours.Shape.Faces) == len(theirs.Shape.Faces) == 3, "{}: {} faces, Part's {}".format(
+        what, len(ours.Shape.Faces), len(theirs.Shape.Faces)))
+    assert_good_solid(ours, solid.volume(), what)
+    assert_measures(ours.Shape, solid.volume(), solid.area(), None, what)
+    for shape, whose in ((ours.Shape, "RatBez"), (theirs.Shape, "Part")):
+        for cap in [f for f in shape.Faces if type(f.Surface).__name__ == "Plane"]:
+            hollow = shape.makeThickness([cap], -0.3, 1e-6)
+            check(hollow.isValid() and len(hollow.Solids) == 1, "{}: {} Thickness through the cap at z = {:g}".format(
+                what, whose, cap.CenterOfMass.z))
+
+
 def part_feature_revolution(doc, source, angle):
     obj = doc.addObject("Part::Revolution", "PartRevolution")
     obj.Source, obj.Base, obj.Axis, obj.Angle, obj.Solid = source, V(0, 0, 0), V(0, 0, 1), angle, True

@@ -88,8 +88,14 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
             const GeomAdaptor_Surface adaptor(occt_surface);
             const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(occt_surface);
             const auto& [u0, u1, v0, v1] = converted.face_domains[k];
+            // OCCT's parameter ranges along our u and our v (exchanged on a face rough in u, where OCCT's u runs
+            // along our v backwards: topology.hpp).
+            const bool exchanged = converted.face_exchanged[k];
             double occt_u0 = u0, occt_u1 = u1, occt_v0 = v0, occt_v1 = v1;
-            if (plane.IsNull()) occt_surface->Bounds(occt_u0, occt_u1, occt_v0, occt_v1);
+            if (plane.IsNull()) {
+                occt_surface->Bounds(occt_u0, occt_u1, occt_v0, occt_v1);
+                if (exchanged) std::swap(occt_u0, occt_v0), std::swap(occt_u1, occt_v1);
+            }
             // Our parameters of OCCT's sample: the affine map of the domains, or the arc's map (topology.hpp).
             const auto& [to_u, to_v] = converted.face_parameters[k];
             for (int i = 0; i < grid; ++i) {
@@ -102,7 +108,8 @@ double evaluation_deviation(const Solid& solid, const ConvertedSolid& converted,
                         // patch's own (u, v) are not the plane's).
                         worst = std::max(worst, plane->Pln().Distance(to_occt_point(ours)));
                     } else {
-                        const gp_Pnt theirs = adaptor.Value(sample(occt_u0, occt_u1, i, grid), sample(occt_v0, occt_v1, j, grid));
+                        const double a = sample(occt_u0, occt_u1, i, grid), b = sample(occt_v0, occt_v1, j, grid);
+                        const gp_Pnt theirs = exchanged ? adaptor.Value(occt_v0 + occt_v1 - b, a) : adaptor.Value(a, b);
                         worst = std::max(worst, distance(ours, from_occt(theirs)));
                     }
                 }

@@ -19,12 +19,14 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 #include <math.hxx>
 #include <gp_Ax3.hxx>
 #include <gp_Dir.hxx>
+#include <gp_Trsf2d.hxx>
 #include <gp_Dir2d.hxx>
 #include <gp_Pnt2d.hxx>
 
@@ -137,7 +139,7 @@ public:
                 } else if (grids_.count(i)) {
                     patch_faces(faces[i], grids_.at(i));
                 } else {
-                    add(surface_face(i), {du.min, du.max, dv.min, dv.max}, kernel_parameters(i));
+                    add(surface_face(i), {du.min, du.max, dv.min, dv.max}, kernel_parameters(i), exchanged_.count(i) > 0);
                 }
             } catch (const Error& e) {
                 throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
@@ -168,11 +170,12 @@ public:
 private:
     // `domain`: our parameter rectangle the face covers (u0, u1, v0, v1).
     void add(const TopoDS_Face& face, const std::array<double, 4>& domain,
-             std::array<std::function<double(double)>, 2> parameters = {}) {
+             std::array<std::function<double(double)>, 2> parameters = {}, bool exchanged = false) {
         builder_.Add(out_.shells[current_shell_], face);
         out_.faces.push_back(face);
         out_.face_domains.push_back(domain);
         out_.face_parameters.push_back(std::move(parameters));
+        out_.face_exchanged.push_back(exchanged);
     }
 
     // The curve an edge is handed over as: its own, or its arc in the one-span form (plan_arcs).
@@ -189,7 +192,7 @@ private:
     // A surface face that keeps a direction OCCT's fixed rule cannot read (rough_knots: a loft through a
     // square, a ruled crease) goes over one face per Bézier patch instead, as bezier_faces hands over every
     // face (gprop_patches.hpp), and its edges keep their parameter; every other face stays one face, one rough
-    // in v only where C1 with its u sides cut at those knots (rough_v_cut_on_sides).
+    // in v only where C1 with its u sides cut at those knots (cut_on_sides).
     void plan_arcs() {
         arc_tolerance_ = 1e-11 * std::max(1.0, solid_.bounding_box().diagonal());
         const double tolerance = arc_tolerance_;
@@ -217,9 +220,11 @@ private:
                 }
                 if (faces[i].kind() != Face::Kind::surface) continue;
                 auto& [arc_u, arc_v] = face_arcs_[i];
+                const bool rough_u = !arc_u && !rough_knots(faces[i].surface(), true).empty();
+                const bool rough_v = !arc_v && !rough_knots(faces[i].surface(), false).empty();
                 if (patch_rough_ && !patched_.count(i) &&
-                    ((!arc_u && !rough_knots(faces[i].surface(), true).empty()) ||
-                     (!arc_v && !rough_knots(faces[i].surface(), false).empty() && !rough_v_cut_on_sides(faces[i])))) {
+                    ((rough_u && rough_v) || (rough_u && !cut_on_sides(faces[i], true)) ||
+                     (rough_v && !cut_on_sides(faces[i], false)))) {
                     patched_.insert(i);
                     arc_u.reset();
                     arc_v.reset();
@@ -237,12 +242,15 @@ private:
             }
         }
         for (std::size_t i = 0; i < faces.size(); ++i)
-            if (faces[i].kind() == Face::Kind::surface && !patched_.count(i) && !face_arcs_[i][1]) {
-                const std::vector<double> rough = rough_knots(faces[i].surface(), false);
-                if (rough.empty()) continue;
-                sides_cut_.insert(i);
-                for (int s : {static_cast<int>(Side::u_max), static_cast<int>(Side::u_min)}) cut_side(faces[i], s, rough);
-            }
+            if (faces[i].kind() == Face::Kind::surface && !patched_.count(i))
+                for (const bool along : {true, false}) {
+                    const std::vector<double> rough = face_arcs_[i][along ? 0 : 1] ? std::vector<double>{}
+                                                                                   : rough_knots(faces[i].surface(), along);
+                    if (rough.empty()) continue;
+                    if (along) exchanged_.insert(i);
+                    for (int s = 0; s < 4; ++s)
+                        if (along_u(s) == along) cut_side(faces[i], s, rough);
+                }
         for (const auto& entry : edge_arcs) {  // not a structured binding: clang 14 cannot capture one
             const detail::ArcDirection& arc = entry.second;
             smooth_curves_.emplace(entry.first, detail::smooth(entry.first->curve, arc));
@@ -264,33 +272,36 @@ private:
         return inside;
     }
 
-    // The rough knots of a direction: interior knots of multiplicity degree or more (C0 by multiplicity: a
-    // crease, or the joint of two rational arcs that is not an arc direction), or on a rational surface degree - 1
-    // or more (C1: the second derivative of a rational joint jumps). OCCT's single Gauss rule over the face
-    // converges slowly across one (0.9 % on the kernel's own circle joints, 9 % on the ruled example, 0.09 % on
-    // the partial revolve example's rational C1 profile), and BOPAlgo flags a C0 one.
+    // The rough knots of a direction: interior knots of multiplicity degree - 1 or more, where the surface is C1
+    // or less (C0 by multiplicity: a crease, or the joint of two rational arcs that is not an arc direction; C1:
+    // the second derivative jumps, at a rational joint or a quadratic's knot). OCCT's single Gauss rule over the
+    // face converges slowly across one (0.9 % on the kernel's own circle joints, 9 % on the ruled example, 0.09 %
+    // on the partial revolve example's rational C1 profile, 0.1 % on the area of an extruded closed quadratic
+    // interpolation; a cubic's C2 knots cost 7e-6 there), and BOPAlgo flags a C0 one.
     static std::vector<double> rough_knots(const NurbsSurface& surface, bool along_u) {
         const int degree = along_u ? surface.degree_u() : surface.degree_v();
         std::vector<double> rough;
         for (const auto& [knot, multiplicity] : knot_multiplicities(surface, along_u))
-            if (multiplicity >= std::max(1, surface.is_rational() ? degree - 1 : degree)) rough.push_back(knot);
+            if (multiplicity >= std::max(1, degree - 1)) rough.push_back(knot);
         return rough;
     }
 
-    // Whether a face rough in v only stays one face, its u sides cut at the rough knots. OCCT's fixed rule
-    // (BRepGProp_Gauss, the domain overloads) integrates a face by Green's theorem: one Gauss rule along each edge
-    // of its wire in the edge's parameter, times one in u from the surface's first u to the pcurve's. Only edges
-    // along which v changes count, and of a rectangle's only the u_max side (at u_min the inner integral is
-    // empty). A vertex at each rough v knot on that side splits the outer rule there, so each span is read on its
-    // own, smooth, and the face stays whole: a revolved rational profile is one face, as Part's Revolution makes
-    // it, its side edges cut where the profile's pieces meet (u_min's too: on a full revolution it is the same
-    // seam, and a planar neighbour reads its own rule along the pieces alike). Not for a C0 knot (a crease: BOPAlgo
-    // flags a C0 face, so that one goes over as patches), nor a pole at u_max (no edge to cut).
-    static bool rough_v_cut_on_sides(const Face& face) {
+    // Whether a face rough in one direction only (`along_u`: u) stays one face, the edges of its sides along that
+    // direction cut at the rough knots. OCCT's fixed rule (BRepGProp_Gauss, the domain overloads) integrates a
+    // face by Green's theorem: one Gauss rule along each edge of its wire in the edge's parameter, times one in u
+    // from the surface's first u to the pcurve's. Only edges along which v changes count, and of a rectangle's only
+    // the u_max side (at u_min the inner integral is empty). A vertex at each rough v knot on that side splits the
+    // outer rule there, so each span is read on its own, smooth, and the face stays whole: a revolved rational
+    // profile is one face, as Part's Revolution makes it, its side edges cut where the profile's pieces meet (u_min's
+    // too: on a full revolution it is the same seam, and a planar neighbour reads its own rule along the pieces
+    // alike). A face rough in u goes over with u and v exchanged (surface_face), its v sides cut: an extruded closed
+    // quadratic is one side face, its sections cut at the knots. Not for a C0 knot (a crease: BOPAlgo flags a C0
+    // face, so that one goes over as patches), nor a pole on the side the rule reads (no edge to cut there).
+    static bool cut_on_sides(const Face& face, bool along_u) {
         const NurbsSurface& surface = face.surface();
-        for (const auto& entry : knot_multiplicities(surface, false))
-            if (entry.second >= surface.degree_v()) return false;
-        return !face.sides()[static_cast<std::size_t>(Side::u_max)].edge->degenerate;
+        for (const auto& entry : knot_multiplicities(surface, along_u))
+            if (entry.second >= (along_u ? surface.degree_u() : surface.degree_v())) return false;
+        return !face.sides()[static_cast<std::size_t>(along_u ? Side::v_max : Side::u_max)].edge->degenerate;
     }
 
     TopoDS_Vertex vertex(const VertexPtr& v) {
@@ -490,14 +501,31 @@ private:
                                                            false);
         }
         Handle(Geom_BSplineSurface) handed = refined_for_gauss(to_occt(surface));
-        if (sides_cut_.count(i)) with_v_rule_as_u(*handed);
+        // A flat face (a profile line square to a revolution's axis sweeps a disc or an annulus) is a plane face, as
+        // Part's: Sketcher attaches to it, and the BOP check flags the B-spline disc of the vase example at some sizes.
+        if (const Handle(Geom_Plane) plane = flat_patch_plane(handed); !plane.IsNull()) return plane_face(plane, sides);
+        if (!exchanged_.count(i)) {
+            with_v_rule_as_u(*handed);
+            return bounded_face(handed, sides, before);
+        }
+        // Rough in u (cut_on_sides): u and v exchanged, so that OCCT's rule runs along the cut edges, and the new u
+        // reversed, which keeps the surface's normal outward (exchanging alone turns it in, and OCCT's Thickness then
+        // failed on a REVERSED face where Part's works): OCCT's (u, v) is our (v0 + v1 - v, u).
+        handed->ExchangeUV();
+        handed->UReverse();
+        with_v_rule_as_u(*handed);
+        gp_Trsf2d turn;  // (u, v) -> (v0 + v1 - v, u): a quarter turn, orientation kept
+        turn.SetValues(0, -1, dv.min + dv.max, 1, 0, 0);
+        for (auto& side : sides)
+            for (Use& use : side) use.pcurve = Handle(Geom2d_Curve)::DownCast(use.pcurve->Transformed(turn));
         return bounded_face(handed, sides, before);
     }
 
-    // A face whose sides are cut (rough_v_cut_on_sides) is read by the rule per piece in v, but with as many
-    // points in u as in v only (the volume's rule counts v alone: gprop_patches.hpp): a full turn of the revolve
-    // example's rational profile read 2.8e-7 off with 12. Simple knots in v, each span cut alike, until v's
-    // rule is u's (exact; the surface stays C1 at the rough knots only, C-infinity at the new ones).
+    // OCCT's fixed rule takes as many points across u as along v for the volume (the volume's rule counts v alone,
+    // the area's both: gprop_patches.hpp), so a face of few spans in v is read with too few across u: an extruded
+    // closed cubic interpolation (C2 knots in u, one span in v) read 1.7e-4 off with 32 points (7e-6 with 61), a
+    // full turn of the revolve example's rational profile (its sides cut) 2.8e-7 with 12. Simple knots in v, each
+    // span cut alike, until v's rule is u's (exact: the new knots are C-infinity).
     static void with_v_rule_as_u(Geom_BSplineSurface& surface) {
         const int spans = surface.NbVKnots() - 1;
         const int u_order = std::min(math::GaussPointsMax(), detail::gprop_integration_order(surface.UDegree(), surface.NbUKnots() - 1));
@@ -694,23 +722,47 @@ private:
         return new Geom2d_BSplineCurve(poles, weights, knots, multiplicities, spline->Degree());
     }
 
-    // A plane face bounded by the uses of a flat patch's sides: degenerate uses dropped (a plane has no
-    // singular point), pcurves the edges' 3D curves in the plane's coordinates (exact: GeomAPI::To2d of a
-    // B-spline in the plane maps its poles).
+    // A plane face bounded by the uses of a flat face's or patch's sides: degenerate uses dropped (a plane has no
+    // singular point), and a seam's two uses too (a disc or an annulus that a profile line square to the axis
+    // sweeps closes on itself there: on a plane that is no boundary, and Part's faces have none), the rest in
+    // their closed wires (an annulus has two); pcurves the edges' 3D curves in the plane's coordinates (exact:
+    // GeomAPI::To2d of a B-spline in the plane maps its poles).
     TopoDS_Face plane_face(const Handle(Geom_Plane)& plane, const std::array<std::vector<Use>, 4>& sides) {
         TopoDS_Face made;
         builder_.MakeFace(made, plane, out_.tolerance);
-        std::vector<Use> uses;
-        for (const auto& side : sides)
-            for (const Use& use : side) {
-                if (BRep_Tool::Degenerated(use.edge)) continue;
-                double first = 0, last = 0;
-                const Handle(Geom_Curve) curve = BRep_Tool::Curve(use.edge, first, last);
-                uses.push_back(Use{use.edge, use.orientation, in_plane(curve, plane->Pln())});
-            }
+        std::vector<Use> all, uses;
+        for (const auto& side : sides) all.insert(all.end(), side.begin(), side.end());
+        for (const Use& use : all) {
+            const auto same = [&](const Use& other) { return other.edge.IsSame(use.edge); };
+            if (BRep_Tool::Degenerated(use.edge) || std::count_if(all.begin(), all.end(), same) > 1) continue;
+            double first = 0, last = 0;
+            const Handle(Geom_Curve) curve = BRep_Tool::Curve(use.edge, first, last);
+            uses.push_back(Use{use.edge, use.orientation, in_plane(curve, plane->Pln())});
+        }
         attach_pcurves(made, uses);
-        builder_.Add(made, wire(uses));
+        for (const std::vector<Use>& loop : closed_loops(uses)) builder_.Add(made, wire(loop));
         return made;
+    }
+
+    // Uses in order around a face, cut into the closed loops they make (each use is followed by the next that
+    // starts where it ends, in the orientation the face travels it).
+    static std::vector<std::vector<Use>> closed_loops(const std::vector<Use>& uses) {
+        const auto start = [](const Use& use) { return TopExp::FirstVertex(TopoDS::Edge(use.edge.Oriented(use.orientation)), true); };
+        const auto end = [](const Use& use) { return TopExp::LastVertex(TopoDS::Edge(use.edge.Oriented(use.orientation)), true); };
+        std::vector<std::vector<Use>> loops;
+        std::vector<Use> left = uses;
+        while (!left.empty()) {
+            std::vector<Use> loop{left.front()};
+            left.erase(left.begin());
+            while (!end(loop.back()).IsSame(start(loop.front()))) {
+                const auto next = std::find_if(left.begin(), left.end(), [&](const Use& use) { return start(use).IsSame(end(loop.back())); });
+                require(next != left.end(), "solid", "a flat face's boundary does not close");
+                loop.push_back(*next);
+                left.erase(next);
+            }
+            loops.push_back(std::move(loop));
+        }
+        return loops;
     }
 
     // A trimmed face: its surface and one wire per loop, each coedge with its own p-curve (cut where the edge
@@ -801,7 +853,7 @@ private:
     std::map<const Edge*, std::vector<TopoDS_Vertex>> cut_vertices_;   // a vertex per entry of cut_parameters_
     std::map<std::size_t, std::array<std::optional<detail::ArcDirection>, 2>> face_arcs_;  // natural: by face
     std::set<std::size_t> patched_;                                    // natural: faces handed over as patches
-    std::set<std::size_t> sides_cut_;                                  // natural: rough in v, u sides cut there
+    std::set<std::size_t> exchanged_;                                  // natural: rough in u, with u and v exchanged
     double arc_tolerance_ = 0;                                         // natural: find_arc's fit tolerance
     std::map<const Edge*, NurbsCurve> smooth_curves_;                  // natural: edges in the one-span form
     std::vector<std::size_t> shell_of_face_;                           // Solid::shells, by face index

@@ -27,12 +27,13 @@
 // the exact one-span rational form of the same arc (src/smooth_arcs.hpp): the same points, another parameter
 // along the arc (ConvertedSolid::face_parameters / edge_parameters map it back). OpenCASCADE's fixed Gauss rule
 // (FreeCAD's Shape.Volume) then reads the face to ~1e-9 instead of ~1e-2, and no C0 knot is left for FreeCAD's
-// BOP check to flag, with one OCCT face per face of ours. A face whose v alone is rational C1 at some knots (a
-// revolved rational profile) stays one face with the edges of its u sides cut there (a vertex at each such knot):
-// OCCT's rule runs along each edge piece on its own, smooth. A surface face that still has a C0 direction which is
-// not an arc (a crease, a loft through a polygon) or a rational C1 u goes over one face per Bézier patch, as
-// with bezier_faces below, and only that face; should OCCT refuse those patches (seen on faces read back from
-// files) every face goes over whole instead.
+// BOP check to flag, with one OCCT face per face of ours. A face that is C1 at some knots of one direction only
+// (a revolved rational profile, an extruded quadratic) stays one face with the edges of its sides along that
+// direction cut there (a vertex at each such knot; u and v exchanged when it is u): OCCT's rule runs along each
+// edge piece on its own, smooth. A surface face that still has a C0 direction which is not an arc (a crease, a
+// loft through a polygon) or both directions C1 goes over one face per Bézier patch, as with bezier_faces below,
+// and only that face; should OCCT refuse those patches (seen on faces read back from files) every face goes over
+// whole instead.
 // Straight and one-span directions are degree-elevated and knot-refined (exact) for OCCT's rule as well.
 // Tolerance: 1e-10 of the solid's size (exact geometry), or the largest tolerance of its faces (what an
 // imported model's edges carry, Face::tolerance) when that is larger.
@@ -81,6 +82,9 @@ struct ConvertedSolid {
     // face_parameters[k]: OCCT's u and v on faces[k] -> ours, where they differ by more than the affine map of
     // face_domains (an arc direction in its one-span form, src/smooth_arcs.hpp); empty where they do not.
     std::vector<std::array<std::function<double(double)>, 2>> face_parameters;
+    // face_exchanged[k]: on faces[k] OCCT's v is our u and its u our v run backwards, u_occt = v0 + v1 - v (a face
+    // rough in u: topology.cpp's cut_on_sides; a quarter turn of the parameters keeps the face's orientation).
+    std::vector<bool> face_exchanged;
     // The pieces of each non-degenerate edge in increasing parameter (one unless bezier_faces).
     std::map<const Edge*, std::vector<TopoDS_Edge>> edges;
     // OCCT's parameter on an edge -> ours, for the edges handed over as an arc in its one-span form.
