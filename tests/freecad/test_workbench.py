@@ -100,6 +100,10 @@ def xz_profile_sketch(doc, name="Profile"):
     return sketch, volume
 
 
+def vector_tuple(v):
+    return (v.x, v.y, v.z)
+
+
 def output_of(action):
     """What FreeCAD's console printed while `action()` ran."""
     with captured_output() as text:
@@ -369,6 +373,22 @@ def test_revolve_other_profiles_or_refuse_them_clearly():
     doc.recompute()
     slab = RatBez.make_revolve(doc, Profile=plane, Angle=90)
     assert_good_solid(slab, PI / 2 * (3 * 3 - 1) * 3 / 2 * 1, "quarter turn of a plane face")
+    # Part's rational Bézier curve (toNurbs keeps it a Bézier), trimmed, in the vase example's profile: was refused
+    # ("an edge of type BezierCurve cannot be converted"). The trimmed piece runs from 0.2 to 0.9 of the curve.
+    bezier = Part.BezierCurve()
+    bezier.setPoles([V(6, 0, 0), V(14, 0, 6), V(1, 0, 14), V(4, 0, 20)])
+    for i, w in enumerate((1, 2, 0.5, 1)):
+        bezier.setWeight(i + 1, w)
+    piece = bezier.toShape(0.2, 0.9)
+    start, end = piece.valueAt(piece.FirstParameter), piece.valueAt(piece.LastParameter)
+    wire = doc.addObject("Part::Feature", "BezierProfile")
+    wire.Shape = Part.Wire([Part.makeLine(V(0, 0, start.z), start), piece, Part.makeLine(end, V(0, 0, end.z))])
+    vase = RatBez.make_revolve(doc, Profile=wire, AxisPoint=V(0, 0, 0), AxisDirection=V(0, 0, 1))
+    whole = ratbez.NurbsCurve(3, [0, 0, 0, 0, 1, 1, 1, 1], [(6, 0, 0), (14, 0, 6), (1, 0, 14), (4, 0, 20)], [1, 2, 0.5, 1])
+    middle = ratbez.NurbsCurve.from_bezier(whole.insert_knot(0.2, 3).insert_knot(0.9, 3).bezier_segments()[1])
+    exact_vase = ratbez.revolve([ratbez.line_segment((0, 0, start.z), vector_tuple(start)), middle,
+                                 ratbez.line_segment(vector_tuple(end), (0, 0, end.z))], (0, 0, 0), (0, 0, 1))
+    assert_good_solid(vase, exact_vase.volume(), "revolved trimmed rational Bézier")
     # A face with a hole is refused clearly.
     holed = Part.Face([Part.Wire(Part.makeCircle(2, V(5, 0, 0))), Part.Wire(Part.makeCircle(1, V(5, 0, 0)))])
     refused = RatBez.make_revolve(doc, Profile=holed)

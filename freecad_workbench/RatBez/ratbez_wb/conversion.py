@@ -54,6 +54,14 @@ def edge_nurbs_data(edge):
         raise ProfileError(translate("an edge cannot be converted to a NURBS curve"))
     nurbs_edge = nurbs_shape.Edges[0]
     curve = nurbs_edge.Curve
+    if isinstance(curve, Part.BezierCurve):
+        # toNurbs keeps a Bézier curve (a Part Bézier, a Draft BezCurve): the same poles and weights on the knots
+        # 0 and 1 are the same curve with the same parameter, trimmed to the edge's range below.
+        degree = curve.Degree
+        bezier = curve
+        curve = Part.BSplineCurve()
+        curve.buildFromPolesMultsKnots(bezier.getPoles(), [degree + 1, degree + 1], [0.0, 1.0], False, degree,
+                                       bezier.getWeights())
     if not isinstance(curve, Part.BSplineCurve):
         raise ProfileError(translate("an edge of type {} cannot be converted to a NURBS curve").format(
             type(curve).__name__))
