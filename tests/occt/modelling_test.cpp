@@ -3,7 +3,6 @@
 // BRepOffsetAPI_MakePipeShell on the same inputs: exactly (to BRepGProp's accuracy) where both constructions
 // are exact, within the stated bound where both approximate the same geometry.
 
-#include <BOPAlgo_ArgumentAnalyzer.hxx>
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -14,6 +13,7 @@
 #include <numbers>
 
 #include "modelling_test_support.hpp"
+#include "occt_test_support.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/loft.hpp"
 #include "ratbez/occt/check.hpp"
@@ -28,6 +28,7 @@ namespace ratbez::occt {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::bop_check_finds_faults;
 constexpr double pi = std::numbers::pi;
 
 std::vector<Profile> circles(const std::vector<std::pair<double, double>>& radius_height) {
@@ -105,12 +106,7 @@ TEST(Modelling, AlignedCircleToSquareMatchesThruSectionsAndIsBopClean) {
     std::cout.precision(12);
     std::cout << "circle to square, ruled: ours " << enclosed_volume(ours) << " ThruSections " << theirs.volume << "\n";
     EXPECT_NEAR(enclosed_volume(ours), theirs.volume, 0.01 * theirs.volume);
-    BOPAlgo_ArgumentAnalyzer analyzer;
-    analyzer.SetShape1(to_occt(ours, ConvertOptions{true}));
-    analyzer.SelfInterMode() = analyzer.SmallEdgeMode() = analyzer.ContinuityMode() = true;
-    analyzer.CurveOnSurfaceMode() = analyzer.RebuildFaceMode() = true;
-    analyzer.Perform();
-    EXPECT_FALSE(analyzer.HasFaulty());
+    EXPECT_FALSE(bop_check_finds_faults(to_occt(ours, ConvertOptions{true})));
     // The smooth loft circle -> square -> circle is valid too (OCCT's smooth ThruSections of it is not
     // compared: it interpolates differently across).
     const Solid smooth = loft({Profile({circle(2.0)}), Profile(sides), Profile({circle(2.0, {0, 0, 8})})});

@@ -1,6 +1,10 @@
 #pragma once
-// Shared helpers of the OCCT cross-check suites: seeded random NURBS / Bézier geometry and a running
-// maximum that each test prints, so the largest deviation measured is visible in the test log.
+// Shared helpers of the OCCT cross-check suites: seeded random NURBS / Bézier geometry, a running
+// maximum that each test prints, so the largest deviation measured is visible in the test log, and
+// FreeCAD's BOP check.
+
+#include <BOPAlgo_ArgumentAnalyzer.hxx>
+#include <TopoDS_Shape.hxx>
 
 #include <algorithm>
 #include <cstdint>
@@ -16,6 +20,17 @@
 #include "ratbez/vec.hpp"
 
 namespace ratbez::occt::testing {
+
+// Whether FreeCAD's "Run BOP check" (Part > Check geometry) finds a fault: BOPAlgo_ArgumentAnalyzer in the modes
+// FreeCAD switches on.
+inline bool bop_check_finds_faults(const TopoDS_Shape& shape) {
+    BOPAlgo_ArgumentAnalyzer analyzer;
+    analyzer.SetShape1(shape);
+    analyzer.SelfInterMode() = analyzer.SmallEdgeMode() = analyzer.ContinuityMode() = true;
+    analyzer.CurveOnSurfaceMode() = analyzer.RebuildFaceMode() = true;
+    analyzer.Perform();
+    return analyzer.HasFaulty();
+}
 
 class Random {
 public:

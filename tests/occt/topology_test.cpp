@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <BOPAlgo_ArgumentAnalyzer.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <gp_Dir.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -51,6 +50,7 @@ namespace ratbez::occt {
 namespace {
 
 using testing::MaxTracker;
+using testing::bop_check_finds_faults;
 constexpr double kPi = std::numbers::pi;
 constexpr double kPropertiesEps = 1e-9;
 
@@ -315,12 +315,7 @@ void expect_measurable(const Solid& solid, const std::string& name, std::optiona
 
     expect_no_c0_geometry(converted.solid);
     if (bop_check) {
-        BOPAlgo_ArgumentAnalyzer analyzer;
-        analyzer.SetShape1(converted.solid);
-        analyzer.SelfInterMode() = analyzer.SmallEdgeMode() = analyzer.ContinuityMode() = true;
-        analyzer.CurveOnSurfaceMode() = analyzer.RebuildFaceMode() = true;
-        analyzer.Perform();
-        EXPECT_FALSE(analyzer.HasFaulty());
+        EXPECT_FALSE(bop_check_finds_faults(converted.solid));
     }
 
     // The same geometry: our points on OCCT's patches and edge pieces (check() maps each patch's unit square).
@@ -439,12 +434,7 @@ TEST(Topology, FacesRoughInOneDirectionStayWholeWithTheirSidesCut) {
         for (const TopoDS_Face& face : natural.faces) EXPECT_EQ(face.Orientation(), TopAbs_FORWARD);
         const TopoDS_Solid handed = to_occt(solid);
         EXPECT_EQ(count(handed, TopAbs_FACE), faces);
-        BOPAlgo_ArgumentAnalyzer analyzer;
-        analyzer.SetShape1(handed);
-        analyzer.SelfInterMode() = analyzer.SmallEdgeMode() = analyzer.ContinuityMode() = true;
-        analyzer.CurveOnSurfaceMode() = analyzer.RebuildFaceMode() = true;
-        analyzer.Perform();
-        EXPECT_FALSE(analyzer.HasFaulty());
+        EXPECT_FALSE(bop_check_finds_faults(handed));
         CheckOptions options;
         options.grid = 9;
         const CheckReport report = check(solid, options);
