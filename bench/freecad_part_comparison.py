@@ -93,13 +93,14 @@ def part_feature_of(spec):
     kind = spec["type"]
     if kind == "revolve":
         face = Part.Face(_part_wire(spec["profile"]))
-        return face.revolve(App.Vector(*spec.get("axis_point", (0, 0, 0))), App.Vector(*spec.get("axis_dir", (0, 0, 1))),
-                            spec.get("angle", 360.0))
+        axis_point, axis_dir = spec.get("axis_point", (0, 0, 0)), spec.get("axis_dir", (0, 0, 1))
+        return face.revolve(App.Vector(*axis_point), App.Vector(*axis_dir), spec.get("angle", 360.0))
     if kind == "extrude":
         face = Part.Face(_part_wire(spec["profile"]))
         return face.extrude(App.Vector(*spec["direction"]).normalize() * spec["distance"])
     if kind in ("loft", "ruled"):
-        wires = [_part_wire(p) for p in (spec["profiles"] if kind == "loft" else (spec["profile_a"], spec["profile_b"]))]
+        profiles = spec["profiles"] if kind == "loft" else (spec["profile_a"], spec["profile_b"])
+        wires = [_part_wire(p) for p in profiles]
         return Part.makeLoft(wires, True, kind == "ruled" or spec.get("ruled", False))
     if kind == "sweep":
         return Part.Wire(_part_wire(spec["path"])).makePipeShell([_part_wire(spec["profile"])], True, True)

@@ -384,7 +384,8 @@ def test_revolve_other_profiles_or_refuse_them_clearly():
     wire = doc.addObject("Part::Feature", "BezierProfile")
     wire.Shape = Part.Wire([Part.makeLine(V(0, 0, start.z), start), piece, Part.makeLine(end, V(0, 0, end.z))])
     vase = RatBez.make_revolve(doc, Profile=wire, AxisPoint=V(0, 0, 0), AxisDirection=V(0, 0, 1))
-    whole = ratbez.NurbsCurve(3, [0, 0, 0, 0, 1, 1, 1, 1], [(6, 0, 0), (14, 0, 6), (1, 0, 14), (4, 0, 20)], [1, 2, 0.5, 1])
+    whole = ratbez.NurbsCurve(3, [0, 0, 0, 0, 1, 1, 1, 1], [(6, 0, 0), (14, 0, 6), (1, 0, 14), (4, 0, 20)],
+                              [1, 2, 0.5, 1])
     middle = ratbez.NurbsCurve.from_bezier(whole.insert_knot(0.2, 3).insert_knot(0.9, 3).bezier_segments()[1])
     exact_vase = ratbez.revolve([ratbez.line_segment((0, 0, start.z), vector_tuple(start)), middle,
                                  ratbez.line_segment(vector_tuple(end), (0, 0, end.z))], (0, 0, 0), (0, 0, 1))

@@ -413,12 +413,14 @@ TEST(Topology, FacesRoughInOneDirectionStayWholeWithTheirSidesCut) {
                                             {1, 0.8, 1.2, 1}),
                                  line_segment({6, 0, 3}, {6, 0, 0}), line_segment({6, 0, 0}, {10, 0, 0})});
     const Solid partial = revolve(rational_side, {}, {0, 0, 1}, 270);
-    const Profile quadratic({interpolate({{7, 0, 0}, {0, 3, 0}, {-7, 0, 0}, {0, -3, 0}}, 2, Parameterization::chord, {}, true)});
+    const Profile quadratic(
+        {interpolate({{7, 0, 0}, {0, 3, 0}, {-7, 0, 0}, {0, -3, 0}}, 2, Parameterization::chord, {}, true)});
     // name, solid, faces, edges as handed over (the kernel's, the rough edges cut at each joint).
     for (const auto& [name, solid, faces, edges] :
          {std::tuple{std::string("partial revolve"), partial, 5, 11},
           std::tuple{std::string("full revolve"), revolve(rational_side), 3, 6},  // the flat annulus has no seam
-          std::tuple{std::string("partial revolve moved"), transformed(partial, AffineMap::translation({300, -2000, 45})), 5, 11},
+          std::tuple{std::string("partial revolve moved"), transformed(partial, AffineMap::translation({300, -2000, 45})),
+                     5, 11},
           std::tuple{std::string("extruded closed quadratic"), extrude(quadratic, {0, 0, 1}, 5), 3, 11},
           std::tuple{std::string("oblique extrusion of it"), extrude(quadratic, {0, 1, 1}, 5), 3, 11}}) {
         SCOPED_TRACE(name);
@@ -527,7 +529,8 @@ TEST(Topology, PrimitivesGoOverAsOcctsOwn) {
 // Extrusions and revolutions go over as OCCT's prism or revolution of their profile (swept_solids.hpp): lines and
 // arcs as planes, cylinders, cones, spheres and tori, face i of ours face i of the shape. Part's Thickness works on
 // those and flagged the B-spline forms (GeomAbs_C0). A sweep OCCT's fixed rule misreads (an oblique extrusion of a
-// circle, Area 2.5e-4 off; the vase's revolved rational cubic, 1.2e-8) goes over as our B-splines (its flat discs as planes).
+// circle, Area 2.5e-4 off; the vase's revolved rational cubic, 1.2e-8) goes over as our B-splines (the vase's flat
+// discs as planes).
 TEST(Topology, ExtrusionsAndRevolutionsGoOverAsOcctSweepsThem) {
     using Types = std::vector<GeomAbs_SurfaceType>;
     constexpr auto P = GeomAbs_Plane, Cy = GeomAbs_Cylinder, Co = GeomAbs_Cone, Sp = GeomAbs_Sphere, To = GeomAbs_Torus,

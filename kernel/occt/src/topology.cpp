@@ -23,7 +23,6 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
-#include <math.hxx>
 #include <gp_Ax3.hxx>
 #include <gp_Dir.hxx>
 #include <gp_Trsf2d.hxx>
@@ -43,6 +42,7 @@
 #include "c0_split.hpp"
 #include "handout.hpp"
 #include "face_sides.hpp"
+#include "gprop_faces.hpp"
 #include "gprop_patches.hpp"
 #include "smooth_arcs.hpp"
 #include "ratbez/error.hpp"
@@ -72,7 +72,11 @@ Handle(Geom2d_Curve) side_pcurve(int side, double fixed, double a, double b, boo
 }
 
 using detail::along_u;
+using detail::cut_on_sides;
+using detail::refined_for_gauss;
+using detail::rough_knots;
 using detail::traversal_increasing;
+using detail::with_v_rule_as_u;
 
 // The distinct knots of a curve strictly inside its domain.
 std::vector<double> interior_knots(const NurbsCurve& curve) {
@@ -139,7 +143,8 @@ public:
                 } else if (grids_.count(i)) {
                     patch_faces(faces[i], grids_.at(i));
                 } else {
-                    add(surface_face(i), {du.min, du.max, dv.min, dv.max}, kernel_parameters(i), exchanged_.count(i) > 0);
+                    add(surface_face(i), {du.min, du.max, dv.min, dv.max}, kernel_parameters(i),
+                        exchanged_.count(i) > 0);
                 }
             } catch (const Error& e) {
                 throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
@@ -191,8 +196,8 @@ private:
     // made from whichever curve the edge has. Dropping one drops its partners until nothing changes.
     // A surface face that keeps a direction OCCT's fixed rule cannot read (rough_knots: a loft through a
     // square, a ruled crease) goes over one face per Bézier patch instead, as bezier_faces hands over every
-    // face (gprop_patches.hpp), and its edges keep their parameter; every other face stays one face, one rough
-    // in v only where C1 with its u sides cut at those knots (cut_on_sides).
+    // face (gprop_patches.hpp), and its edges keep their parameter; every other face stays one face, one C1 at
+    // knots of one direction only with the edges of its sides along that direction cut there (cut_on_sides).
     void plan_arcs() {
         arc_tolerance_ = 1e-11 * std::max(1.0, solid_.bounding_box().diagonal());
         const double tolerance = arc_tolerance_;
@@ -244,8 +249,8 @@ private:
         for (std::size_t i = 0; i < faces.size(); ++i)
             if (faces[i].kind() == Face::Kind::surface && !patched_.count(i))
                 for (const bool along : {true, false}) {
-                    const std::vector<double> rough = face_arcs_[i][along ? 0 : 1] ? std::vector<double>{}
-                                                                                   : rough_knots(faces[i].surface(), along);
+                    if (face_arcs_[i][along ? 0 : 1]) continue;  // an arc direction is smooth in its one-span form
+                    const std::vector<double> rough = rough_knots(faces[i].surface(), along);
                     if (rough.empty()) continue;
                     if (along) exchanged_.insert(i);
                     for (int s = 0; s < 4; ++s)
@@ -256,52 +261,6 @@ private:
             smooth_curves_.emplace(entry.first, detail::smooth(entry.first->curve, arc));
             out_.edge_parameters.emplace(entry.first, [arc](double t) { return arc.to_kernel(t); });
         }
-    }
-
-    // The distinct interior knots of a direction with their multiplicities.
-    static std::vector<std::pair<double, int>> knot_multiplicities(const NurbsSurface& surface, bool along_u) {
-        const std::vector<double>& knots = along_u ? surface.knots_u() : surface.knots_v();
-        const Interval domain = along_u ? surface.domain_u() : surface.domain_v();
-        std::vector<std::pair<double, int>> inside;
-        for (std::size_t k = 0; k < knots.size();) {
-            std::size_t end = k;
-            while (end < knots.size() && knots[end] == knots[k]) ++end;
-            if (knots[k] > domain.min && knots[k] < domain.max) inside.emplace_back(knots[k], static_cast<int>(end - k));
-            k = end;
-        }
-        return inside;
-    }
-
-    // The rough knots of a direction: interior knots of multiplicity degree - 1 or more, where the surface is C1
-    // or less (C0 by multiplicity: a crease, or the joint of two rational arcs that is not an arc direction; C1:
-    // the second derivative jumps, at a rational joint or a quadratic's knot). OCCT's single Gauss rule over the
-    // face converges slowly across one (0.9 % on the kernel's own circle joints, 9 % on the ruled example, 0.09 %
-    // on the partial revolve example's rational C1 profile, 0.1 % on the area of an extruded closed quadratic
-    // interpolation; a cubic's C2 knots cost 7e-6 there), and BOPAlgo flags a C0 one.
-    static std::vector<double> rough_knots(const NurbsSurface& surface, bool along_u) {
-        const int degree = along_u ? surface.degree_u() : surface.degree_v();
-        std::vector<double> rough;
-        for (const auto& [knot, multiplicity] : knot_multiplicities(surface, along_u))
-            if (multiplicity >= std::max(1, degree - 1)) rough.push_back(knot);
-        return rough;
-    }
-
-    // Whether a face rough in one direction only (`along_u`: u) stays one face, the edges of its sides along that
-    // direction cut at the rough knots. OCCT's fixed rule (BRepGProp_Gauss, the domain overloads) integrates a
-    // face by Green's theorem: one Gauss rule along each edge of its wire in the edge's parameter, times one in u
-    // from the surface's first u to the pcurve's. Only edges along which v changes count, and of a rectangle's only
-    // the u_max side (at u_min the inner integral is empty). A vertex at each rough v knot on that side splits the
-    // outer rule there, so each span is read on its own, smooth, and the face stays whole: a revolved rational
-    // profile is one face, as Part's Revolution makes it, its side edges cut where the profile's pieces meet (u_min's
-    // too: on a full revolution it is the same seam, and a planar neighbour reads its own rule along the pieces
-    // alike). A face rough in u goes over with u and v exchanged (surface_face), its v sides cut: an extruded closed
-    // quadratic is one side face, its sections cut at the knots. Not for a C0 knot (a crease: BOPAlgo flags a C0
-    // face, so that one goes over as patches), nor a pole on the side the rule reads (no edge to cut there).
-    static bool cut_on_sides(const Face& face, bool along_u) {
-        const NurbsSurface& surface = face.surface();
-        for (const auto& entry : knot_multiplicities(surface, along_u))
-            if (entry.second >= (along_u ? surface.degree_u() : surface.degree_v())) return false;
-        return !face.sides()[static_cast<std::size_t>(along_u ? Side::v_max : Side::u_max)].edge->degenerate;
     }
 
     TopoDS_Vertex vertex(const VertexPtr& v) {
@@ -505,7 +464,10 @@ private:
         // Part's: Sketcher attaches to it, and the BOP check flags the B-spline disc of the vase example at some sizes.
         if (const Handle(Geom_Plane) plane = flat_patch_plane(handed); !plane.IsNull()) return plane_face(plane, sides);
         if (!exchanged_.count(i)) {
-            with_v_rule_as_u(*handed);
+            // An arc u in its one-span form is smooth and read to rounding as it is (the primitives' B-spline forms),
+            // unless the face's sides are cut (the turn of a revolved rational profile).
+            const bool arc_u = face_arcs_.count(i) && face_arcs_.at(i)[0];
+            if (!arc_u || !rough_knots(face.surface(), false).empty()) with_v_rule_as_u(*handed);
             return bounded_face(handed, sides, before);
         }
         // Rough in u (cut_on_sides): u and v exchanged, so that OCCT's rule runs along the cut edges, and the new u
@@ -520,52 +482,6 @@ private:
             for (Use& use : side) use.pcurve = Handle(Geom2d_Curve)::DownCast(use.pcurve->Transformed(turn));
         return bounded_face(handed, sides, before);
     }
-
-    // OCCT's fixed rule takes as many points across u as along v for the volume (the volume's rule counts v alone,
-    // the area's both: gprop_patches.hpp), so a face of few spans in v is read with too few across u: an extruded
-    // closed cubic interpolation (C2 knots in u, one span in v) read 1.7e-4 off with 32 points (7e-6 with 61), a
-    // full turn of the revolve example's rational profile (its sides cut) 2.8e-7 with 12. Simple knots in v, each
-    // span cut alike, until v's rule is u's (exact: the new knots are C-infinity).
-    static void with_v_rule_as_u(Geom_BSplineSurface& surface) {
-        const int spans = surface.NbVKnots() - 1;
-        const int u_order = std::min(math::GaussPointsMax(), detail::gprop_integration_order(surface.UDegree(), surface.NbUKnots() - 1));
-        int parts = 1;
-        while (detail::gprop_integration_order(surface.VDegree(), spans * parts) < u_order) ++parts;
-        if (parts == 1) return;
-        TColStd_Array1OfReal knots(1, spans * (parts - 1));
-        for (int k = 0; k < spans; ++k)
-            for (int j = 1; j < parts; ++j) {
-                const double a = surface.VKnot(k + 1), b = surface.VKnot(k + 2);
-                knots.SetValue(k * (parts - 1) + j, a + (b - a) * j / parts);
-            }
-        TColStd_Array1OfInteger once(1, knots.Length());
-        once.Init(1);
-        surface.InsertVKnots(knots, once);
-    }
-
-    // The same surface with a richer representation for OCCT's fixed Gauss rule, which it sizes by degree and
-    // spans (gprop_patches.hpp): a straight direction (a cylinder's or an extrusion's, degree 1, one span)
-    // gets 8 points, and reads a cylinder's centre of mass to only 8e-5 of its size. Degree elevation and knot
-    // insertion are exact and keep the parameter, so the edges along the direction keep theirs. Elevated to
-    // cubic, not quadratic, before the simple knots go in: the face is C2, so OCCT's offset of it (Part Offset,
-    // Thickness: an offset surface is one order less continuous) is C1, which FreeCAD's BOP check accepts; at
-    // quadratic the offsets of every cylinder, cone, revolution and extrusion were flagged GeomAbs_C0.
-    static Handle(Geom_BSplineSurface) refined_for_gauss(Handle(Geom_BSplineSurface) surface) {
-        if (surface->UDegree() == 1 || surface->VDegree() == 1)
-            surface->IncreaseDegree(surface->UDegree() == 1 ? 3 : surface->UDegree(),
-                                    surface->VDegree() == 1 ? 3 : surface->VDegree());
-        constexpr int kSpans = 4;
-        if (surface->NbUKnots() == 2) {
-            const double a = surface->UKnot(1), b = surface->UKnot(2);
-            for (int k = 1; k < kSpans; ++k) surface->InsertUKnot(a + (b - a) * k / kSpans, 1, 0.0);
-        }
-        if (surface->NbVKnots() == 2) {
-            const double a = surface->VKnot(1), b = surface->VKnot(2);
-            for (int k = 1; k < kSpans; ++k) surface->InsertVKnot(a + (b - a) * k / kSpans, 1, 0.0);
-        }
-        return surface;
-    }
-
 
     // bezier_faces: the patch grid of every surface face, and where every edge is cut: at the grid lines
     // of the faces beside it (in its own parameter) and at its own knots.
@@ -747,15 +663,17 @@ private:
     // Uses in order around a face, cut into the closed loops they make (each use is followed by the next that
     // starts where it ends, in the orientation the face travels it).
     static std::vector<std::vector<Use>> closed_loops(const std::vector<Use>& uses) {
-        const auto start = [](const Use& use) { return TopExp::FirstVertex(TopoDS::Edge(use.edge.Oriented(use.orientation)), true); };
-        const auto end = [](const Use& use) { return TopExp::LastVertex(TopoDS::Edge(use.edge.Oriented(use.orientation)), true); };
+        const auto travelled = [](const Use& use) { return TopoDS::Edge(use.edge.Oriented(use.orientation)); };
+        const auto start = [&](const Use& use) { return TopExp::FirstVertex(travelled(use), true); };
+        const auto end = [&](const Use& use) { return TopExp::LastVertex(travelled(use), true); };
         std::vector<std::vector<Use>> loops;
         std::vector<Use> left = uses;
         while (!left.empty()) {
             std::vector<Use> loop{left.front()};
             left.erase(left.begin());
             while (!end(loop.back()).IsSame(start(loop.front()))) {
-                const auto next = std::find_if(left.begin(), left.end(), [&](const Use& use) { return start(use).IsSame(end(loop.back())); });
+                const auto next = std::find_if(left.begin(), left.end(),
+                                               [&](const Use& use) { return start(use).IsSame(end(loop.back())); });
                 require(next != left.end(), "solid", "a flat face's boundary does not close");
                 loop.push_back(*next);
                 left.erase(next);
