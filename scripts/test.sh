@@ -2,7 +2,7 @@
 # Every test, in four stages, each timed (the wall times are printed at the end):
 #  1. build:     scripts/setup.sh (installs what is missing, builds build/ in Release with tests and bench);
 #  2. release:   ctest on build/: every suite (C++ core/occt/openscad/cli/reliability, Python, FreeCAD headless
-#                and GUI, the OpenSCAD binary, the bench table), with 2,000 randomized round trips (10 shards of 200; scripts/soak.sh runs 10,000);
+#                and GUI, the OpenSCAD binary, the bench table), with 1,500 randomized round trips (10 shards of 150; scripts/soak.sh runs 10,000);
 #  3. sanitizers: the C++ suites again in build-asan/ under AddressSanitizer + UndefinedBehaviorSanitizer
 #                (-O1, as ASan recommends; Python and FreeCAD stay out: ASan cannot be preloaded into them),
 #                with 150 round trips (15 of each shard) plus every seed that ever failed;
