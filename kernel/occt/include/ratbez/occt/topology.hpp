@@ -34,7 +34,9 @@
 // loft through a polygon) or both directions C1 goes over one face per Bézier patch, as with bezier_faces below,
 // and only that face; should OCCT refuse those patches (seen on faces read back from files) every face goes over
 // whole instead.
-// Straight and one-span directions are degree-elevated and knot-refined (exact) for OCCT's rule as well.
+// Straight and one-span directions are degree-elevated and knot-refined (exact) for OCCT's rule as well
+// (src/gprop_faces.hpp). A flat surface face (a disc or an annulus a profile line square to the axis sweeps)
+// goes over as a plane face without seam or pole, as Part's.
 // Tolerance: 1e-10 of the solid's size (exact geometry), or the largest tolerance of its faces (what an
 // imported model's edges carry, Face::tolerance) when that is larger.
 // Errors: ratbez::Error naming "solid" when the geometry cannot be represented (degree 0 or > 25).
