@@ -252,7 +252,7 @@ private:
                     if (face_arcs_[i][along ? 0 : 1]) continue;  // an arc direction is smooth in its one-span form
                     const std::vector<double> rough = rough_knots(faces[i].surface(), along);
                     if (rough.empty()) continue;
-                    if (along) exchanged_.insert(i);
+                    (along ? exchanged_ : v_sides_cut_).insert(i);
                     for (int s = 0; s < 4; ++s)
                         if (along_u(s) == along) cut_side(faces[i], s, rough);
                 }
@@ -467,7 +467,7 @@ private:
             // An arc u in its one-span form is smooth and read to rounding as it is (the primitives' B-spline forms),
             // unless the face's sides are cut (the turn of a revolved rational profile).
             const bool arc_u = face_arcs_.count(i) && face_arcs_.at(i)[0];
-            if (!arc_u || !rough_knots(face.surface(), false).empty()) with_v_rule_as_u(*handed);
+            if (!arc_u || v_sides_cut_.count(i)) with_v_rule_as_u(*handed);
             return bounded_face(handed, sides, before);
         }
         // Rough in u (cut_on_sides): u and v exchanged, so that OCCT's rule runs along the cut edges, and the new u
@@ -772,6 +772,7 @@ private:
     std::map<std::size_t, std::array<std::optional<detail::ArcDirection>, 2>> face_arcs_;  // natural: by face
     std::set<std::size_t> patched_;                                    // natural: faces handed over as patches
     std::set<std::size_t> exchanged_;                                  // natural: rough in u, with u and v exchanged
+    std::set<std::size_t> v_sides_cut_;                                // natural: rough in v, its u sides cut
     double arc_tolerance_ = 0;                                         // natural: find_arc's fit tolerance
     std::map<const Edge*, NurbsCurve> smooth_curves_;                  // natural: edges in the one-span form
     std::vector<std::size_t> shell_of_face_;                           // Solid::shells, by face index
