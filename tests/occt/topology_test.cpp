@@ -465,17 +465,32 @@ TEST(Topology, LoftsGoOverWithPartsFaces) {
     }
     const std::vector<Profile> example{Profile({circle(8)}), Profile(rounded), Profile({circle(4, {2, 0, 22})}),
                                        Profile({circle(6, {3, 0, 30})})};
-    for (const auto& [name, solid, faces] : {std::tuple{std::string("circle, square, circle"), loft({thirds, Profile(sides), top}), 7},
-                                             std::tuple{std::string("ruled circle, square"), loft({thirds, Profile(sides)}, 3, true), 7},
-                                             std::tuple{std::string("examples/loft"), loft(example), 11}}) {
+    // examples/interpolated_loft.json: closed interpolations, matched by their own parameters from the starts of
+    // least twist: one side face, C1 (the quadratic's knots), as Part's Loft of the same curves has no edge
+    // across its side (it had 16 strips when matched by arc length at every knot). OCCT's rule reads it to 1e-7
+    // (cubic cap edges of several C2 spans each; the issue asks for 1e-4).
+    auto closed_interpolation = [](std::vector<Vec3> points, int degree, Parameterization kind) {
+        return Profile({interpolate(points, degree, kind, {}, true)});
+    };
+    const std::vector<Profile> smooth{
+        closed_interpolation({{6, 0, 0}, {2, 3, 0}, {-3, 5, 0}, {-3, 0, 0}, {-3, -5, 0}, {2, -3, 0}}, 3, Parameterization::centripetal),
+        closed_interpolation({{0, 5, 8}, {-4, 4, 8}, {-5, 0, 8}, {-4, -4, 8}, {0, -5, 8}, {4, -4, 8}, {6, 0, 8}, {4, 4, 8}}, 3,
+                             Parameterization::chord),
+        closed_interpolation({{7, 0, 16}, {0, 3, 16}, {-7, 0, 16}, {0, -3, 16}}, 2, Parameterization::chord)};
+    for (const auto& [name, solid, faces, reading] :
+         {std::tuple{std::string("circle, square, circle"), loft({thirds, Profile(sides), top}), 7, 1e-8},
+          std::tuple{std::string("ruled circle, square"), loft({thirds, Profile(sides)}, 3, true), 7, 1e-8},
+          std::tuple{std::string("examples/loft"), loft(example), 11, 1e-8},
+          std::tuple{std::string("examples/interpolated_loft"), loft(smooth, 2), 3, 1e-6}}) {
         SCOPED_TRACE(name);
         const ConvertedSolid converted = convert(solid);
         EXPECT_TRUE(BRepCheck_Analyzer(converted.solid).IsValid());
         EXPECT_EQ(count(converted.solid, TopAbs_FACE), faces);
         const FixedRule read = fixed_rule(converted.solid);
-        EXPECT_LT(std::abs(read.volume - solid.volume()) / solid.volume(), 1e-8);
-        EXPECT_LT(std::abs(read.area - solid.area()) / solid.area(), 1e-8);
+        EXPECT_LT(std::abs(read.volume - solid.volume()) / solid.volume(), reading);
+        EXPECT_LT(std::abs(read.area - solid.area()) / solid.area(), reading);
         expect_no_c0_geometry(converted.solid);
+        EXPECT_FALSE(bop_check_finds_faults(converted.solid));
     }
     // The loft's side faces are refined for OCCT's rule by degree elevation, one span, not by a simple knot: no
     // curvature jump inside a face (OCCT's offset of a C1 face is C0), as Part's loft faces (degree 8, one span).

@@ -10,7 +10,7 @@
 // case (index % 10 == 0). The other CGAL checks (closed, manifold, outward) run on all.
 // The Release suite runs 10 shards of 150 cases (1,500, sized to the test command's 20 minutes); the sanitizer
 // build (Debug + ASan + UBSan, about 15x slower) runs 10 shards of 15 (150), with the same stage schedule,
-// and FoundSeeds replays every seed that ever failed.
+// and FoundSeed replays every seed that ever failed, one test each.
 // RATBEZ_ROUND_TRIP_CASES sets the cases per shard (scripts/soak.sh runs 1,000 per shard and more).
 //
 // Case i of the run uses the seed base + i (base 20261122 unless RATBEZ_ROUND_TRIP_SEED says otherwise);
@@ -289,7 +289,7 @@ void run_shard(int shard, double weight_exponent) {
 class RoundTrip : public ::testing::TestWithParam<int> {};
 
 // The issue's full weight range, [1e-3, 1e3], every stage, max_deviation within the tolerance itself.
-// What it found, all fixed in the kernel (each seed is replayed with every stage by FoundSeeds below):
+// What it found, all fixed in the kernel (each seed is replayed with every stage by FoundSeed below):
 //  - revolve's and Face::planar's area checks used a fixed-depth rule that missed edges whose weights
 //    crowd them into a sliver of their parameter range (seed 20261421: "outer loop must run
 //    counterclockwise"); they now use the adaptive cubature of properties.cpp;
@@ -314,17 +314,21 @@ class RoundTrip : public ::testing::TestWithParam<int> {};
 TEST_P(RoundTrip, Shard) { run_shard(GetParam(), 3.0); }
 
 // Every seed that ever failed above, with every stage (as case index 0), so that each stays covered in
-// the sanitizer build too, whose shards run fewer cases.
-TEST(RoundTrip, FoundSeeds) {
-    constexpr std::uint64_t found[] = {20261122, 20261232, 20261262, 20261322, 20261332, 20261342, 20261372,
-                                       20261421, 20261482, 20261992, 20264282, 20266302, 20266752, 20268472,
-                                       20268482, 20268692, 20269892};
-    for (const std::uint64_t seed : found) {
-        const Case c = CaseGenerator(seed, 3.0).make();
-        const std::string failure = run_case(c, 0);
-        EXPECT_TRUE(failure.empty()) << "seed " << seed << ": " << c.summary << "\n  " << failure;
-    }
+// the sanitizer build too, whose shards run fewer cases. One test per seed: under the sanitizers a seed
+// takes about 4 s, and ctest runs them side by side.
+class FoundSeed : public ::testing::TestWithParam<std::uint64_t> {};
+
+TEST_P(FoundSeed, PassesEveryStage) {
+    const Case c = CaseGenerator(GetParam(), 3.0).make();
+    const std::string failure = run_case(c, 0);
+    EXPECT_TRUE(failure.empty()) << "seed " << GetParam() << ": " << c.summary << "\n  " << failure;
 }
+
+INSTANTIATE_TEST_SUITE_P(RoundTrip, FoundSeed,
+                         ::testing::Values(20261122, 20261232, 20261262, 20261322, 20261332, 20261342, 20261372,
+                                           20261421, 20261482, 20261992, 20264282, 20266302, 20266752, 20268472,
+                                           20268482, 20268692, 20269892),
+                         [](const ::testing::TestParamInfo<std::uint64_t>& info) { return std::to_string(info.param); });
 
 INSTANTIATE_TEST_SUITE_P(Reliability, RoundTrip, ::testing::Range(0, shards));
 

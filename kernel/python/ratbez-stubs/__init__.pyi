@@ -680,10 +680,10 @@ def line_segment(start: Point, end: Point) -> NurbsCurve:
     """The straight segment from start to end as a degree-1 NurbsCurve."""
 
 def loft(profiles: Sequence[Union[Curve, Sequence[Curve]]], degree: int = ..., ruled: bool = ..., align: bool = ...) -> Solid:
-    """A solid lofted through >= 2 closed planar profiles (each a curve or a list of curves joined end to end), capped by the first and last; ruled=True uses straight rulings between consecutive profiles. align=True (the default) matches the profiles by arc length from the start points of least twist; align=False by their own starts and parameters. One side face per smooth run (cut where every profile has a corner). A loft whose side surface meets itself raises ratbez.Error saying where."""
+    """A solid lofted through >= 2 closed planar profiles (each a curve or a list of curves joined end to end), capped by the first and last; ruled=True uses straight rulings between consecutive profiles. align=True (the default) matches the profiles by arc length at their corners and joints from the start points of least twist, each on its own parameter between them (smooth profiles stay smooth); align=False by their own starts and parameters. One side face per smooth run (cut where every profile has a corner). A loft whose side surface meets itself raises ratbez.Error saying where."""
 
 def loft_surface(curves: Union[Curve, Sequence[Curve]], degree: int = ..., align: bool = ...) -> NurbsSurface:
-    """The skinned surface through >= 2 section curves (The NURBS Book 10.3), passing through every section exactly; degree across >= 1 (at most sections - 1 is used). u along the sections, v across, both [0, 1]. align=True (the default) matches the sections by normalised arc length from the start points of least twist (align=False: by parameter, as given). A surface that meets itself raises ratbez.Error."""
+    """The skinned surface through >= 2 section curves (The NURBS Book 10.3), passing through every section exactly; degree across >= 1 (at most sections - 1 is used). u along the sections, v across, both [0, 1]. align=True (the default) matches the sections by normalised arc length at their corners and joints from the start points of least twist, each on its own parameter between them (align=False: by parameter, as given). A surface that meets itself raises ratbez.Error."""
 
 def max_deviation(solid: Solid, mesh: Mesh, samples_per_edge: int = ..., progress: Optional[Callable[[float], object]] = ...) -> float:
     """The largest distance from a point of `mesh` to the solid's exact boundary (model units): every
@@ -776,7 +776,7 @@ def revolve_surface(curve: Curve, axis_point: Point = ..., axis_dir: Point = ...
     """The exact surface of revolution of any curve (open or closed) about the axis by angle degrees in (0, 360]: u runs along the rotation over [0, 1], v along the curve (its domain)."""
 
 def ruled_surface(curve_a: Curve, curve_b: Curve, align: bool = ...) -> NurbsSurface:
-    """The exact ruled surface between two curves (degrees raised, knots merged): u along both over [0, 1], v from curve_a (0) to curve_b (1) along straight rulings. align=True (the default) matches the curves by normalised arc length (closed ones oriented alike and started at the points of least twist, open ones end to end); align=False rules point u of one to point u of the other. A surface whose rulings cross raises ratbez.Error saying where."""
+    """The exact ruled surface between two curves (degrees raised, knots merged): u along both over [0, 1], v from curve_a (0) to curve_b (1) along straight rulings. align=True (the default) matches the curves by normalised arc length at their corners and joints (closed ones oriented alike and started at the points of least twist, open ones end to end), each on its own parameter between them; align=False rules point u of one to point u of the other. A surface whose rulings cross raises ratbez.Error saying where."""
 
 def sphere(radius: float, center: Point = ...) -> Solid:
     """A sphere of radius > 0 about center, exact rational faces."""

@@ -209,8 +209,8 @@ void bind_modelling(py::module_& m) {
         py::arg("curve_a"), py::arg("curve_b"), py::arg("align") = true,
         "The exact ruled surface between two curves (degrees raised, knots merged): u along both over [0, 1], "
         "v from curve_a (0) to curve_b (1) along straight rulings. align=True (the default) matches the curves "
-        "by normalised arc length (closed ones oriented alike and started at the points of least twist, open "
-        "ones end to end); align=False rules point u of one to point u of the other. A surface whose rulings "
+        "by normalised arc length at their corners and joints (closed ones oriented alike and started at the "
+        "points of least twist, open ones end to end), each on its own parameter between them; align=False rules point u of one to point u of the other. A surface whose rulings "
         "cross raises ratbez.Error saying where.");
     m.def(
         "loft_surface",
@@ -220,8 +220,9 @@ void bind_modelling(py::module_& m) {
         py::arg("curves"), py::arg("degree") = 3, py::arg("align") = true,
         "The skinned surface through >= 2 section curves (The NURBS Book 10.3), passing through every section "
         "exactly; degree across >= 1 (at most sections - 1 is used). u along the sections, v across, both [0, 1]. "
-        "align=True (the default) matches the sections by normalised arc length from the start points of least "
-        "twist (align=False: by parameter, as given). A surface that meets itself raises ratbez.Error.");
+        "align=True (the default) matches the sections by normalised arc length at their corners and joints from "
+        "the start points of least twist, each on its own parameter between them (align=False: by parameter, as "
+        "given). A surface that meets itself raises ratbez.Error.");
     m.def(
         "loft",
         [](const py::object& profiles, int degree, bool ruled, bool align) {
@@ -235,7 +236,8 @@ void bind_modelling(py::module_& m) {
         py::arg("profiles"), py::arg("degree") = 3, py::arg("ruled") = false, py::arg("align") = true,
         "A solid lofted through >= 2 closed planar profiles (each a curve or a list of curves joined end to "
         "end), capped by the first and last; ruled=True uses straight rulings between consecutive profiles. "
-        "align=True (the default) matches the profiles by arc length from the start points of least twist; "
+        "align=True (the default) matches the profiles by arc length at their corners and joints from the start "
+        "points of least twist, each on its own parameter between them (smooth profiles stay smooth); "
         "align=False by their own starts and parameters. One side face per smooth run (cut where every "
         "profile has a corner). A loft whose side surface meets itself raises ratbez.Error saying where.");
     m.def(

@@ -13,7 +13,9 @@
 #include "nurbs_test_support.hpp"
 #include "ratbez/arc_length.hpp"
 #include "ratbez/bspline_basis.hpp"
+#include "ratbez/closest_point.hpp"
 #include "ratbez/curves.hpp"
+#include "ratbez/interpolation.hpp"
 #include "ratbez/join.hpp"
 #include "ratbez/ruled.hpp"
 
@@ -114,6 +116,54 @@ TEST(SectionAlignment, JointsOnlyOneSectionHasLeaveNoBreak) {
     EXPECT_EQ(kept.breaks.size(), 10u);
 }
 
+// The largest multiplicity of an interior knot: p or more is C0 in the parameter (an edge in OpenCASCADE).
+int largest_inner_multiplicity(const NurbsCurve& c) {
+    int largest = 0;
+    for (const double u : breakpoints(c.degree(), c.knots()))
+        if (u > c.domain().min && u < c.domain().max)
+            largest = std::max(largest, static_cast<int>(std::count(c.knots().begin(), c.knots().end(), u)));
+    return largest;
+}
+
+TEST(SectionAlignment, SmoothSectionsRunOnTheirOwnParameterBetweenCorners) {
+    // The sections of examples/interpolated_loft.json: closed interpolations (centripetal cubic, chord cubic,
+    // quadratic) with knots at unrelated lengths. Cut and matched by arc length at every knot, each would be C0
+    // at all of them (16 side faces in OpenCASCADE; Part's Loft of the same curves has no such edges); as
+    // their own parameters run, from the starts of least twist, they stay smooth: one side face.
+    const std::vector<NurbsCurve> smooth{
+        interpolate({{6, 0, 0}, {2, 3, 0}, {-3, 5, 0}, {-3, 0, 0}, {-3, -5, 0}, {2, -3, 0}}, 3, Parameterization::centripetal, {}, true),
+        interpolate({{0, 5, 8}, {-4, 4, 8}, {-5, 0, 8}, {-4, -4, 8}, {0, -5, 8}, {4, -4, 8}, {6, 0, 8}, {4, 4, 8}}, 3,
+                    Parameterization::chord, {}, true),
+        interpolate({{7, 0, 16}, {0, 3, 16}, {-7, 0, 16}, {0, -3, 16}}, 2, Parameterization::chord, {}, true)};
+    const AlignedSections aligned = align_sections(smooth, "curves");
+    EXPECT_EQ(aligned.breaks, (std::vector<double>{0.0, 1.0}));
+    for (std::size_t k = 0; k < smooth.size(); ++k) {
+        SCOPED_TRACE(k);
+        const NurbsCurve& c = aligned.curves[k];
+        EXPECT_EQ(c.knots(), aligned.curves[0].knots());  // one knot vector
+        EXPECT_LE(largest_inner_multiplicity(c), c.degree() - 1);  // C1 or better everywhere (the quadratic: C1)
+        // The same curve: every point on the section, and a whole turn of it.
+        for (int i = 0; i <= 50; ++i)
+            EXPECT_LE(closest_point(smooth[k], c.point(i / 50.0)).distance, 1e-12);
+        EXPECT_NEAR(ArcLength(c).total(), ArcLength(smooth[k]).total(), 1e-9);
+    }
+    // The starts of least twist are kept: each start is the point of its section nearest to the previous start
+    // here (the sections are alike enough).
+    EXPECT_LE(distance(aligned.curves[0].start_point(), {6, 0, 0}), 1e-12);
+    // A smooth section against a square: the square's corners stay breaks, matched by arc length; between
+    // them the smooth section runs on its own parameter (no knot of multiplicity p inside a side).
+    const AlignedSections cornered = align_sections({square(3, 0, 0), smooth[1]}, "curves");
+    ASSERT_EQ(cornered.breaks.size(), 5u);
+    const NurbsCurve& ring = cornered.curves[1];
+    for (const double u : breakpoints(ring.degree(), ring.knots())) {
+        const auto m = std::count(ring.knots().begin(), ring.knots().end(), u);
+        const bool at_break = std::find(cornered.breaks.begin(), cornered.breaks.end(), u) != cornered.breaks.end();
+        EXPECT_EQ(m >= ring.degree(), at_break) << u;
+    }
+    const ArcLength ring_length(ring);
+    for (const double b : cornered.breaks) EXPECT_NEAR(ring_length.at(b) / ring_length.total(), b, 1e-12);
+}
+
 TEST(SectionAlignment, OrientationStartAndOpenSections) {
     // A clockwise copy is turned round: the result runs as the first section does.
     const AlignedSections closed = align_sections({circle(1.0), turned_circle(1.0, 2, 40, {0, 0, -1})}, "curves");
@@ -147,6 +197,13 @@ TEST(SectionAlignment, CreasesRunThroughEverySection) {
         for (std::size_t i = 0; i < 2; ++i)
             EXPECT_LE(distance(restarted[i].point(u), squares.curves[i].point(std::fmod(u + 0.25, 1.0))), 1e-14);
     }
+    // A smooth curve keeps its continuity: a closed cubic interpolation restarted inside a span has simple
+    // knots still, and its old start (C2) is the one knot of multiplicity 3.
+    const NurbsCurve ring = interpolate({{3, 0, 0}, {0, 2, 0}, {-3, 0, 0}, {0, -2, 0}, {1, -1, 0}}, 3, Parameterization::chord, {}, true);
+    const NurbsCurve turned = restarted_at({ring}, 0.3).front();
+    for (const double u : breakpoints(3, turned.knots()))
+        if (u > 0 && u < 1) EXPECT_EQ(std::count(turned.knots().begin(), turned.knots().end(), u), u == 0.7 ? 3 : 1) << u;
+    for (int k = 0; k <= 20; ++k) EXPECT_LE(distance(turned.point(k / 20.0), ring.point(std::fmod(k / 20.0 + 0.3, 1.0))), 1e-14);
 }
 
 }  // namespace

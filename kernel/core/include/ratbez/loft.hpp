@@ -2,8 +2,9 @@
 // Lofting (skinning) through section curves, The NURBS Book §10.3:
 //  0. with `align` (the default), the sections are matched by normalised arc length (section_alignment.hpp
 //     in the modelling sources: closed sections oriented alike and started at the points of least twist,
-//     open ones end to end, the breakpoints of every section matched exactly by arc length); without it
-//     they are joined by their parameters as given;
+//     open ones end to end, every corner or joint of a section matched exactly by arc length, each section
+//     on its own parameter between them, so smooth sections stay smooth); without it they are joined by
+//     their parameters as given;
 //  1. the sections are made compatible (one degree p, one clamped knot vector U on [0, 1]; A5.9, A5.4 by
 //     compatible_curves.hpp), and each is scaled in homogeneous space so that its first weight is 1 (a
 //     curve's weights are only defined up to a common factor, which would otherwise change the loft);
@@ -54,8 +55,8 @@ inline NurbsSurface loft_surface(const std::vector<NurbsCurve>& curves, int degr
 // joined into one curve (join.hpp: its pieces end to end, the knots where they meet), turned to run
 // counterclockwise about the direction the loft travels (from its control points' centre towards the
 // next profile's), and the profiles lofted as above; ruled = true lofts with degree 1 across (straight
-// rulings between consecutive profiles). With `align` the profiles are matched by arc length from the start
-// points of least twist (the first profile's start sets the seam, moved to a crease when every profile has
+// rulings between consecutive profiles). With `align` the profiles are matched by arc length at their corners
+// and joints, from the start points of least twist (the first profile's start sets the seam, moved to a crease when every profile has
 // a corner at matching places); without it their starting points and parameters are matched as given.
 // One side face per smooth run: the side surface is cut only along creases that run through every section
 // (a square lofted to a square has four side faces, a circle to a circle one, a circle to a square one).

@@ -81,14 +81,8 @@ NurbsCurve join(const std::vector<NurbsCurve>& input) {
             points.insert(points.end(), pw.begin() + 1, pw.end());
         }
         // The last knot written for the domain end must be exact: reparameterized() maps ends exactly.
-        // A5.8's tolerance is in homogeneous space: d w_min / (1 + |P|_max) keeps the Euclidean change below d.
-        double w_min = points.front().w, p_max = 0;
-        for (const Vec4& q : points) {
-            w_min = std::min(w_min, q.w);
-            p_max = std::max(p_max, norm(project(q)));
-        }
-        const double homogeneous_tolerance = tolerance * w_min / (1.0 + p_max);
-        for (const double u : joints) detail::remove_knot(p, knots, points, u, p, homogeneous_tolerance);
+        const double homogeneous = detail::homogeneous_tolerance(points, tolerance);
+        for (const double u : joints) detail::remove_knot(p, knots, points, u, p, homogeneous);
         if (!rational)
             for (Vec4& q : points) q.w = 1.0;
         return NurbsCurve::from_homogeneous(p, std::move(knots), std::move(points), rational);

@@ -76,4 +76,26 @@ int remove_knot(int p, std::vector<double>& U, std::vector<Vec4>& Pw, double u, 
     return t;
 }
 
+double homogeneous_tolerance(const std::vector<Vec4>& pw, double tolerance) {
+    double w_min = pw.front().w, p_max = 0;
+    for (const Vec4& q : pw) {
+        w_min = std::min(w_min, q.w);
+        p_max = std::max(p_max, norm(project(q)));
+    }
+    return tolerance * w_min / (1.0 + p_max);
+}
+
+NurbsCurve without_removable_knots(const NurbsCurve& curve, double tolerance) {
+    const int p = curve.degree();
+    std::vector<double> knots = curve.knots();
+    std::vector<Vec4> pw = curve.homogeneous_points();
+    const double d = homogeneous_tolerance(pw, tolerance);
+    const Interval domain = curve.domain();
+    std::vector<double> interior;
+    for (const double u : knots)
+        if (u > domain.min && u < domain.max && (interior.empty() || interior.back() != u)) interior.push_back(u);
+    for (const double u : interior) remove_knot(p, knots, pw, u, p, d);
+    return NurbsCurve::from_homogeneous(p, std::move(knots), std::move(pw), curve.is_rational());
+}
+
 }  // namespace ratbez::detail

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "ratbez/nurbs_curve.hpp"
 #include "ratbez/vec.hpp"
 
 namespace ratbez::detail {
@@ -15,5 +16,14 @@ namespace ratbez::detail {
 // tolerance removes unconditionally, for data known to have the continuity). Returns how many times it was
 // removed; knots and pw shrink accordingly.
 int remove_knot(int p, std::vector<double>& knots, std::vector<Vec4>& pw, double u, int num, double tolerance);
+
+// A5.8's homogeneous tolerance for a Euclidean one: d w_min / (1 + |P|_max) keeps the points of the curve
+// with homogeneous polygon `pw` within d of where they were (the book's Eq. 5.30).
+double homogeneous_tolerance(const std::vector<Vec4>& pw, double tolerance);
+
+// The same curve with every interior knot removed as often as it moves the curve by at most `tolerance`
+// (Euclidean): a knot's multiplicity then tells the curve's continuity there, whatever made the knot
+// vector (a curve cut into Bézier pieces and put together again has multiplicity p at every break).
+NurbsCurve without_removable_knots(const NurbsCurve& curve, double tolerance);
 
 }  // namespace ratbez::detail

@@ -8,10 +8,12 @@
 
 #include "geometry/bezier_merge.hpp"
 #include "geometry/clamping.hpp"
+#include "geometry/knot_removal.hpp"
 #include "math/numeric_internal.hpp"
 #include "math/vector_angle.hpp"
 #include "ratbez/arc_length.hpp"
 #include "ratbez/bspline_basis.hpp"
+#include "ratbez/compatible_curves.hpp"
 #include "ratbez/error.hpp"
 
 namespace ratbez::detail {
@@ -147,48 +149,57 @@ std::vector<Vec4> homogeneous(const BezierCurve& bezier) {
     return points;
 }
 
-// One curve from Bézier pieces on consecutive intervals [breaks[j], breaks[j + 1]]: knots of multiplicity p
-// at the breaks; each piece's weights scaled so that its first equals the previous piece's last (the same
-// curve, one homogeneous polygon).
-NurbsCurve assemble(const std::vector<std::vector<Vec4>>& pieces, const std::vector<double>& breaks, bool rational) {
-    const std::size_t p = pieces.front().size() - 1;
-    std::vector<double> knots(p + 1, breaks.front());
+// A part of a section between two consecutive breaks of the common parameter: its homogeneous control points
+// and the knots inside it, already on the common parameter (none for one Bézier piece).
+struct Stretch {
+    std::vector<double> inner_knots;
     std::vector<Vec4> points;
-    for (std::size_t j = 0; j < pieces.size(); ++j) {
-        std::vector<Vec4> pw = pieces[j];
+};
+
+// The part of `curve` over [ua, ub] on the interval [a, b] of the common parameter (its knots mapped
+// linearly): the same curve in its own parameterisation, its inner knots keeping their multiplicities.
+Stretch stretch(const NurbsCurve& curve, double ua, double ub, double a, double b) {
+    const NurbsCurve part = restricted(curve, ua, ub);
+    Stretch result{{}, part.homogeneous_points()};
+    for (const double u : part.knots())
+        if (u > ua && u < ub) result.inner_knots.push_back(a + (u - ua) * ((b - a) / (ub - ua)));
+    return result;
+}
+
+// One degree-p curve from stretches on consecutive intervals [breaks[j], breaks[j + 1]]: knots of multiplicity
+// p at the breaks; each stretch's weights scaled so that its first equals the previous stretch's last (the
+// same curve, one homogeneous polygon).
+NurbsCurve assemble(const std::vector<Stretch>& stretches, const std::vector<double>& breaks, int p, bool rational) {
+    std::vector<double> knots(to_size(p + 1), breaks.front());
+    std::vector<Vec4> points;
+    for (std::size_t j = 0; j < stretches.size(); ++j) {
+        std::vector<Vec4> pw = stretches[j].points;
         if (j == 0) {
             points = pw;
         } else {
             const double factor = points.back().w / pw.front().w;
             for (Vec4& q : pw) q *= factor;
-            points.insert(points.end(), pw.begin() + 1, pw.end());  // the joint: the previous piece's end
+            points.insert(points.end(), pw.begin() + 1, pw.end());  // the joint: the previous stretch's end
         }
-        knots.insert(knots.end(), j + 1 < pieces.size() ? p : p + 1, breaks[j + 1]);
+        knots.insert(knots.end(), stretches[j].inner_knots.begin(), stretches[j].inner_knots.end());
+        knots.insert(knots.end(), to_size(j + 1 < stretches.size() ? p : p + 1), breaks[j + 1]);
     }
     if (!rational)
         for (Vec4& q : points) q.w = 1.0;
-    return NurbsCurve::from_homogeneous(static_cast<int>(p), std::move(knots), std::move(points), rational);
+    return NurbsCurve::from_homogeneous(p, std::move(knots), std::move(points), rational);
 }
 
 // The closed curve started at parameter u: its part over [u, end] followed by its part over [start, u],
-// each span keeping its parameter width.
+// each keeping its knots (so its continuity) and its parameter width; the old start becomes a knot of
+// multiplicity p.
 NurbsCurve started_at(const NurbsCurve& curve, double u) {
     const Interval d = curve.domain();
     // At a knot within 1e-9 of the domain's width: at that knot (no sliver of a span before it).
     for (const double k : breakpoints(curve.degree(), curve.knots()))
         if (std::abs(k - u) <= 1e-9 * d.width()) u = k;
-    std::vector<std::vector<Vec4>> pieces;
-    std::vector<double> breaks{0.0};
-    for (const auto& [a, b] : {std::pair{u, d.max}, std::pair{d.min, u}}) {
-        const NurbsCurve part = restricted(curve, a, b);
-        const std::vector<double> spans = breakpoints(part.degree(), part.knots());
-        const std::vector<BezierCurve> segments = part.bezier_segments();
-        for (std::size_t k = 0; k < segments.size(); ++k) {
-            pieces.push_back(homogeneous(segments[k]));
-            breaks.push_back(breaks.back() + (spans[k + 1] - spans[k]));
-        }
-    }
-    return assemble(pieces, breaks, curve.is_rational());
+    const double joint = d.max - u, end = joint + (u - d.min);
+    return assemble({stretch(curve, u, d.max, 0.0, joint), stretch(curve, d.min, u, joint, end)}, {0.0, joint, end},
+                    curve.degree(), curve.is_rational());
 }
 
 // The Bézier control points of the curve between parameters ua < ub (no knot between them), in normal
@@ -239,6 +250,13 @@ bool is_corner(const BezierCurve& arriving, const BezierCurve& leaving) {
     const Vec3 in = end_direction(arriving, true), out = end_direction(leaving, false);
     if (norm(in) == 0 || norm(out) == 0) return true;  // a piece that is a point: no tangent to continue
     return angle_between(in, out) > kCornerAngle;
+}
+
+// True when the curve is C0 at u in its own parameter: u is a knot of multiplicity p or more (the knots
+// of `curve` at the multiplicities its continuity needs: without_removable_knots).
+bool is_c0_at(const NurbsCurve& curve, double u) {
+    const std::vector<double>& knots = curve.knots();
+    return std::count(knots.begin(), knots.end(), u) >= curve.degree();
 }
 
 // Removes every inner break where each section's pieces on both sides are parts of one Bézier piece of their
@@ -364,10 +382,38 @@ AlignedSections align_sections(const std::vector<NurbsCurve>& input, const std::
     for (const Section& s : sections) rational.push_back(s.curve.is_rational());
     merge_smooth_breaks(pieces, merged, rational, kMergeTolerance * size);
 
+    // The breaks that stay: the ends, and every break where some section is C0 in its own parameter (a corner,
+    // a circle's arc joint, a line meeting an arc). Between two of them every section runs on its own
+    // parameter, mapped linearly (a stretch); a single piece left there by the merging keeps its normal form.
+    std::vector<NurbsCurve> own;  // each knot at the multiplicity the section's continuity needs
+    std::vector<std::vector<double>> at;
+    for (const Section& s : sections) {
+        own.push_back(without_removable_knots(s.curve, kMergeTolerance * size));
+        at.push_back(break_parameters(s, merged));
+    }
+    std::vector<std::size_t> kept{0};
+    for (std::size_t j = 1; j + 1 < merged.size(); ++j)
+        for (std::size_t k = 0; k < sections.size(); ++k)
+            if (is_c0_at(own[k], at[k][j])) {
+                kept.push_back(j);
+                break;
+            }
+    kept.push_back(merged.size() - 1);
+
     AlignedSections result;
     result.closed = closed;
-    result.breaks = merged;
-    for (std::size_t k = 0; k < sections.size(); ++k) result.curves.push_back(assemble(pieces[k], merged, rational[k]));
+    for (const std::size_t j : kept) result.breaks.push_back(merged[j]);
+    std::vector<NurbsCurve> aligned;
+    for (std::size_t k = 0; k < sections.size(); ++k) {
+        std::vector<Stretch> stretches;
+        for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
+            const std::size_t a = kept[i], b = kept[i + 1];
+            stretches.push_back(b == a + 1 ? Stretch{{}, pieces[k][a]}
+                                           : stretch(own[k], at[k][a], at[k][b], merged[a], merged[b]));
+        }
+        aligned.push_back(assemble(stretches, result.breaks, own[k].degree(), rational[k]));
+    }
+    result.curves = make_compatible(aligned, argument);
     return result;
 }
 

@@ -26,13 +26,19 @@
 // closer than 1e-9 taken as one), every section is cut at the parameters where it reaches those lengths,
 // each piece (a single Bézier span) put in normal form when rational (end weights 1: the one rational
 // parameterisation of an arc that depends on the arc alone, so that equal arcs of two circles match point
-// for point) and mapped linearly onto its interval of normalised length. Last, a break where every section
-// runs on within one Bézier piece of its degree (a straight segment, or an arc of one conic up to 120
-// degrees: bezier_merge.hpp) is dropped and the pieces on both sides merged: a circle's own arc joints opposite
-// the middle of a square's sides leave no knot behind, so a circle lofted to a square has knots at the
-// square's corners only, as Part's Loft has edges there. So the sections share one knot vector
-// (multiplicity p at every break: C0 in the parameter, the geometry unchanged), match exactly by arc length
-// at every break, and in between by the piece's parameter.
+// for point) and mapped linearly onto its interval of normalised length. A break where every section runs on
+// within one Bézier piece of its degree (a straight segment, or an arc of one conic up to 120 degrees:
+// bezier_merge.hpp) is dropped and the pieces on both sides merged: a circle's own arc joints opposite the
+// middle of a square's sides leave no knot behind, so a circle lofted to a square has knots at the square's
+// corners only, as Part's Loft has edges there. Last, a break where every section is C1 or smoother in its own
+// parameter (no knot of multiplicity p there once every removable knot is removed, A5.8) is dropped too:
+// mapped linearly piece by piece, the sections would be C0 in the common parameter at every such break (the
+// geometry smooth), a line OpenCASCADE takes as a face edge, so closed interpolations with knots at unrelated
+// lengths gave 16 side faces where Part's Loft of them gives one or two. Between two breaks that stay (a corner,
+// a circle's arc joint, a line meeting an arc: C0 in some section's parameter), each section runs on its own
+// parameter mapped linearly, its knots and continuity kept. So the sections share one knot vector
+// (make_compatible: multiplicity p at every break that stays, the sections' own knots merged between), match
+// exactly by arc length at every break and at the starts, and in between by their own parameters.
 
 #include <string>
 #include <vector>
@@ -42,8 +48,8 @@
 namespace ratbez::detail {
 
 struct AlignedSections {
-    std::vector<NurbsCurve> curves;  // on [0, 1], one knot vector (breaks with multiplicity p each)
-    std::vector<double> breaks;      // the merged breakpoints, 0 and 1 included
+    std::vector<NurbsCurve> curves;  // on [0, 1], one degree, one knot vector (breaks with multiplicity p each)
+    std::vector<double> breaks;      // the breakpoints that stay, 0 and 1 included
     bool closed = false;
 };
 
