@@ -150,20 +150,15 @@ TEST_P(CorpusModel, ReadsWithOpenCascadesVolumeAndPassesItsCheck) {
     // files, which hold the .brep files' solids: it is the check's slowest part) finds nothing: no C0 geometry
     // (the check runs on the solid as handed out, faces still C0 inside split there; issue 25: it checked the
     // unsplit one and flagged 12 models), no self-intersection, no small edge.
-    // One model draws "BOPAlgo SelfIntersect" on its trimmed spherical face with a pole, as FreeCAD's check of the
-    // shape brep_string gives does (issue 25, open; the whole sphere part_sphere goes over as OCCT's own now,
-    // analytic_primitives.hpp): named here, so that any other model's finding fails.
-    const bool known_sphere_finding = GetParam().stem() == "sphere_minus_box";
+    // sphere_minus_box's face trimmed on a sphere with a pole drew "BOPAlgo SelfIntersect" as a B-spline; it goes
+    // over on OCCT's sphere now (sphere_faces.hpp), as the whole sphere part_sphere goes over as OCCT's own.
     occt::CheckOptions options;
     options.bop_analysis = !is_brep(GetParam());
     for (const Solid& solid : solids) {
         const occt::CheckReport report = occt::check(solid, options);
-        for (const std::string& failure : report.failures) {
-            if (known_sphere_finding && failure == "BOP check: BOPAlgo SelfIntersect: face (face 0)") continue;
-            ADD_FAILURE() << solid.name() << ": " << failure;
-        }
+        for (const std::string& failure : report.failures) ADD_FAILURE() << solid.name() << ": " << failure;
         EXPECT_TRUE(report.valid && report.closed) << solid.name();
-        EXPECT_EQ(report.self_intersections, known_sphere_finding && options.bop_analysis ? 1 : 0) << solid.name();
+        EXPECT_EQ(report.self_intersections, 0) << solid.name();
         EXPECT_EQ(report.small_edges, 0) << solid.name();
     }
 }

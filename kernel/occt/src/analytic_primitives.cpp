@@ -10,6 +10,7 @@
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_Plane.hxx>
+#include <gp_Ax3.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -93,11 +94,8 @@ double distance_from(const Round& round, const Vec3& p) {
     return round.sphere ? std::abs(norm(d) - round.major) : std::abs(std::hypot(h, r - round.major) - round.minor);
 }
 
-// A solid of one face that is a whole sphere or torus.
-std::optional<Round> one_round_face(const Solid& solid) {
-    if (solid.faces().size() != 1 || solid.faces().front().kind() != Face::Kind::surface) return std::nullopt;
-    const NurbsSurface& surface = solid.faces().front().surface();
-    const double size = std::max(1.0, solid.bounding_box().diagonal());
+// The sphere or torus the surface is, recognised on its control net and checked at 9 x 9 points.
+std::optional<Round> exact_round(const NurbsSurface& surface, double size) {
     const std::optional<Round> round = round_surface(surface, kFit * size);
     if (!round) return std::nullopt;
     const Interval du = surface.domain_u(), dv = surface.domain_v();
@@ -107,6 +105,12 @@ std::optional<Round> one_round_face(const Solid& solid) {
             if (distance_from(*round, p) > kOnSurface * size) return std::nullopt;
         }
     return round;
+}
+
+// A solid of one face that is a whole sphere or torus.
+std::optional<Round> one_round_face(const Solid& solid) {
+    if (solid.faces().size() != 1 || solid.faces().front().kind() != Face::Kind::surface) return std::nullopt;
+    return exact_round(solid.faces().front().surface(), std::max(1.0, solid.bounding_box().diagonal()));
 }
 
 std::optional<TopoDS_Solid> made(const Solid& solid) {
@@ -204,6 +208,12 @@ std::optional<TopoDS_Solid> analytic_primitive(const Solid& solid) {
     } catch (const Standard_Failure&) {
         return std::nullopt;
     }
+}
+
+Handle(Geom_SphericalSurface) exact_sphere(const NurbsSurface& surface, double size) {
+    const std::optional<Round> round = exact_round(surface, size);
+    if (!round || !round->sphere) return {};
+    return new Geom_SphericalSurface(gp_Ax3(axes(round->centre, round->axis, round->x)), round->major);
 }
 
 }  // namespace ratbez::occt::detail

@@ -18,6 +18,7 @@
 // ConvertOptions::analytic_primitives (default true) turns it on; the FreeCAD workbench's preference for
 // B-spline primitives turns it off.
 
+#include <Geom_SphericalSurface.hxx>
 #include <TopoDS_Solid.hxx>
 
 #include <optional>
@@ -29,5 +30,10 @@ namespace ratbez::occt::detail {
 // OCCT's primitive (or sweep) with its faces in the order of ours (face i of `solid` is the i-th face of the result), each
 // checked to lie on ours (a record that does not describe the faces gives nullopt, as does any other solid).
 std::optional<TopoDS_Solid> analytic_primitive(const Solid& solid);
+
+// The sphere the surface is, exactly (recognised as above, checked to 1e-10 of `size`), on OCCT's spherical
+// surface with the kernel's axis and start direction; null for any other surface (sphere_faces.hpp uses it for
+// faces trimmed on a sphere).
+Handle(Geom_SphericalSurface) exact_sphere(const NurbsSurface& surface, double size);
 
 }  // namespace ratbez::occt::detail

@@ -35,9 +35,8 @@ bool has_c0_face(const TopoDS_Solid& solid) {
     return false;
 }
 
-// The edges of `faces` whose p-curve there lies further from the 3D curve than the edge's tolerance (the measure
-// of BOPAlgo_ArgumentAnalyzer's CurveOnSurfaceMode, FreeCAD's BOP check) given that distance as tolerance, if
-// it is at most `limit`; false when one is further.
+}  // namespace
+
 bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit) {
     BRep_Builder builder;
     for (const TopoDS_Face& face : faces)
@@ -51,8 +50,6 @@ bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit) {
         }
     return true;
 }
-
-}  // namespace
 
 SplitSolid split_at_c0_knots(const TopoDS_Solid& solid) {
     SplitSolid unchanged{solid, {}};

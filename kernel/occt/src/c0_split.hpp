@@ -12,9 +12,17 @@
 // split; tests/freecad/test_step_in_freecad.py measures every corpus solid).
 
 #include <TopTools_DataMapOfShapeShape.hxx>
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
 
+#include <vector>
+
 namespace ratbez::occt::detail {
+
+// The edges of `faces` whose p-curve there lies further from the 3D curve than the edge's tolerance (the measure
+// of BOPAlgo_ArgumentAnalyzer's CurveOnSurfaceMode, FreeCAD's BOP check) given that distance as tolerance, if
+// it is at most `limit`; false when one is further. For p-curves made by OpenCASCADE (SameParameter, projection).
+bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit);
 
 // The solid split, and for every face of the result the face of the input it is (a piece of): what check()
 // needs to name our faces in its findings on the solid as handed out.

@@ -21,6 +21,7 @@
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapIteratorOfDataMapOfShapeShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Ax3.hxx>
@@ -41,6 +42,7 @@
 #include "analytic_primitives.hpp"
 #include "c0_split.hpp"
 #include "handout.hpp"
+#include "sphere_faces.hpp"
 #include "face_sides.hpp"
 #include "gprop_faces.hpp"
 #include "gprop_patches.hpp"
@@ -804,7 +806,17 @@ SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const
                 handed.original_face.Bind(faces.Current(), converted.faces[converted.first_face[i]]);
             return handed;
         }
-    return split_at_c0_knots(converted.solid);
+    if (!options.analytic_primitives || options.bezier_faces) return split_at_c0_knots(converted.solid);
+    // Faces on a sphere first, whole (a face trimmed on a sphere read from a file is C0 inside in the NURBS Book's
+    // circle form; on OCCT's sphere it need not be split), then the rest split; traced through both to convert's.
+    SplitSolid whole{converted.solid, {}};
+    for (TopExp_Explorer faces(converted.solid, TopAbs_FACE); faces.More(); faces.Next())
+        whole.original_face.Bind(faces.Current(), faces.Current());
+    const SplitSolid spheres = with_sphere_faces(solid, converted, whole);
+    SplitSolid split = split_at_c0_knots(spheres.solid);
+    for (TopTools_DataMapIteratorOfDataMapOfShapeShape it(split.original_face); it.More(); it.Next())
+        split.original_face.ChangeFind(it.Key()) = spheres.original_face.Find(it.Value());
+    return split;
 }
 
 }  // namespace detail

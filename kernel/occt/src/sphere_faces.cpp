@@ -1,0 +1,189 @@
+// Faces trimmed on a sphere, on OCCT's spherical surface (see sphere_faces.hpp).
+
+#include "sphere_faces.hpp"
+
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <BRepLib.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <ShapeBuild_ReShape.hxx>
+#include <ShapeFix_Face.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "analytic_primitives.hpp"
+
+namespace ratbez::occt::detail {
+namespace {
+
+// OpenCASCADE's adaptive volume of the rebuilt solid against the kernel's (its p-curves are projections).
+constexpr double kVolume = 1e-7;
+// How far a projected p-curve may be from its edge (relative to the size; the edge's tolerance then covers it).
+constexpr double kProjection = 1e-6;
+// Attempts, each leaving out the faces the one before refused.
+constexpr int kAttempts = 3;
+
+// The face's surface normal at a point of its parameter box away from a pole, and that point.
+std::optional<std::pair<gp_Pnt, gp_Vec>> sample_normal(const TopoDS_Face& face) {
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    for (const double f : {0.5, 0.3, 0.7}) {
+        gp_Pnt point;
+        gp_Vec du, dv;
+        surface->D1(u0 + f * (u1 - u0), v0 + (1 - f) * (v1 - v0), point, du, dv);
+        const gp_Vec normal = du.Crossed(dv);
+        if (normal.Magnitude() > 1e-12 * du.Magnitude() * dv.Magnitude() && normal.Magnitude() > 0)
+            return std::pair{point, normal};
+    }
+    return std::nullopt;
+}
+
+// `face` (as it lies in the solid) on `surface`, from its own edges: p-curves projected, seams and poles
+// made by ShapeFix_Face (edge changes recorded in `context`), the face turned so that its material stays on
+// the same side. Where the new parameters run the other way round (the normals disagree), the wires are
+// reversed and the face with them, so that every edge is still used once each way in the shell. Null when
+// that cannot be decided.
+TopoDS_Face on_surface(const TopoDS_Face& face, const Handle(Geom_Surface)& surface, double tolerance,
+                       const Handle(ShapeBuild_ReShape)& context) {
+    const TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+    const auto old_normal = sample_normal(forward);
+    if (!old_normal) return {};
+    GeomAPI_ProjectPointOnSurf foot(old_normal->first, surface);
+    if (!foot.IsDone() || foot.NbPoints() == 0) return {};
+    double u = 0, v = 0;
+    foot.LowerDistanceParameters(u, v);
+    gp_Pnt point;
+    gp_Vec du, dv;
+    surface->D1(u, v, point, du, dv);
+    const double agree = du.Crossed(dv).Dot(old_normal->second);
+    if (agree == 0) return {};
+
+    BRep_Builder builder;
+    TopoDS_Face made;
+    builder.MakeFace(made, surface, tolerance);
+    for (TopoDS_Iterator wires(forward); wires.More(); wires.Next()) {
+        if (wires.Value().ShapeType() != TopAbs_WIRE) continue;
+        std::vector<TopoDS_Shape> edges;
+        for (TopoDS_Iterator it(wires.Value()); it.More(); it.Next())
+            if (!BRep_Tool::Degenerated(TopoDS::Edge(it.Value()))) edges.push_back(agree > 0 ? it.Value() : it.Value().Reversed());
+        if (agree < 0) std::reverse(edges.begin(), edges.end());
+        TopoDS_Wire wire;
+        builder.MakeWire(wire);
+        for (const TopoDS_Shape& edge : edges) builder.Add(wire, edge);
+        builder.Add(made, wire);
+    }
+    ShapeFix_Face fix(made);
+    fix.SetContext(context);
+    fix.SetPrecision(tolerance);
+    fix.SetMaxTolerance(std::max(1e-4, 1e3 * tolerance));
+    fix.FixOrientationMode() = 0;  // decided above, for the whole shell
+    fix.Perform();
+    const TopoDS_Face fixed = fix.Face();
+    return TopoDS::Face(agree > 0 ? TopoDS_Shape(fixed) : fixed.Reversed());
+}
+
+int count_faces(const TopoDS_Shape& shape) {
+    int n = 0;
+    for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) ++n;
+    return n;
+}
+
+// One attempt with the faces of ours that have a surface in `surfaces`: the rebuilt solid, or nullopt with the
+// faces whose projected p-curves came out too far from their edges added to `refused` (or none, when the solid
+// as a whole is not valid or not of the kernel's volume).
+std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& converted, const SplitSolid& handed,
+                                  const std::vector<Handle(Geom_Surface)>& surfaces, std::vector<std::size_t>& refused) {
+    const double size = std::max(1.0, solid.bounding_box().diagonal());
+    // On a copy: the p-curves added to shared edges must not reach the B-spline solid kept as the fallback.
+    BRepBuilderAPI_Copy copier(handed.solid);
+    const Handle(ShapeBuild_ReShape) context = new ShapeBuild_ReShape;
+    struct Traced {
+        TopoDS_Shape face;      // of the copy, or rebuilt
+        TopoDS_Shape original;  // convert's
+        std::size_t ours;       // rebuilt from face `ours` of the solid; solid.faces().size() when not rebuilt
+    };
+    std::vector<Traced> traced;
+    for (TopExp_Explorer pieces(handed.solid, TopAbs_FACE); pieces.More(); pieces.Next()) {
+        const TopoDS_Shape& original = handed.original_face.Find(pieces.Current());
+        const TopoDS_Face piece = TopoDS::Face(copier.ModifiedShape(pieces.Current()));
+        std::size_t ours = solid.faces().size();
+        for (std::size_t i = 0; i < solid.faces().size() && ours == solid.faces().size(); ++i)
+            if (!surfaces[i].IsNull() && converted.faces[converted.first_face[i]].IsSame(original)) ours = i;
+        if (ours == solid.faces().size()) {
+            traced.push_back({piece, original, ours});
+            continue;
+        }
+        const TopoDS_Face made = on_surface(piece, surfaces[ours], converted.tolerance, context);
+        if (made.IsNull()) {
+            refused.push_back(ours);
+            return std::nullopt;
+        }
+        context->Replace(piece.Oriented(TopAbs_FORWARD), made);
+        traced.push_back({made, original, ours});
+    }
+    const TopoDS_Shape result = context->Apply(copier.Shape());
+    if (result.ShapeType() != TopAbs_SOLID || count_faces(result) != count_faces(handed.solid)) return std::nullopt;
+    BRepLib::SameParameter(result, converted.tolerance, Standard_True);
+    SplitSolid elementary{TopoDS::Solid(result), {}};
+    const std::size_t refused_before = refused.size();
+    for (const Traced& t : traced) {
+        std::vector<TopoDS_Face> finals;
+        for (TopExp_Explorer final_faces(context->Apply(t.face), TopAbs_FACE); final_faces.More(); final_faces.Next()) {
+            elementary.original_face.Bind(final_faces.Current(), t.original);
+            finals.push_back(TopoDS::Face(final_faces.Current()));
+        }
+        if (t.ours < solid.faces().size() && !honest_tolerances(finals, kProjection * size)) refused.push_back(t.ours);
+    }
+    if (refused.size() > refused_before) return std::nullopt;
+    BRepLib::UpdateTolerances(result, Standard_True);
+    BRepTools::RemoveUnusedPCurves(result);
+    if (!BRepCheck_Analyzer(result).IsValid()) return std::nullopt;
+    GProp_GProps properties;
+    BRepGProp::VolumeProperties(result, properties, 1e-9);
+    const double volume = solid.volume();
+    if (!(std::abs(properties.Mass() - volume) <= kVolume * std::abs(volume))) return std::nullopt;
+    return elementary;
+}
+
+}  // namespace
+
+SplitSolid with_sphere_faces(const Solid& solid, const ConvertedSolid& converted, const SplitSolid& handed) {
+    const double size = std::max(1.0, solid.bounding_box().diagonal());
+    // The sphere of each face of ours handed over whole (not as Bézier patches), trimmed or not.
+    std::vector<Handle(Geom_Surface)> surfaces(solid.faces().size());
+    for (std::size_t i = 0; i < solid.faces().size(); ++i) {
+        const Face& face = solid.faces()[i];
+        if (face.kind() == Face::Kind::planar || converted.first_face[i + 1] - converted.first_face[i] != 1) continue;
+        surfaces[i] = exact_sphere(face.surface(), size);
+    }
+    // Faces whose p-curves OpenCASCADE cannot project close enough stay B-splines; the rest is tried again.
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        if (std::all_of(surfaces.begin(), surfaces.end(), [](const Handle(Geom_Surface)& s) { return s.IsNull(); }))
+            return handed;
+        std::vector<std::size_t> refused;
+        try {
+            if (std::optional<SplitSolid> made = rebuilt(solid, converted, handed, surfaces, refused)) return *made;
+        } catch (const Standard_Failure&) {
+            return handed;
+        }
+        if (refused.empty()) return handed;
+        for (const std::size_t i : refused) surfaces[i].Nullify();
+    }
+    return handed;
+}
+
+}  // namespace ratbez::occt::detail
