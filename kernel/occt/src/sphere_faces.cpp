@@ -138,12 +138,12 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
     const TopoDS_Shape result = context->Apply(copier.Shape());
     if (result.ShapeType() != TopAbs_SOLID || count_faces(result) != count_faces(handed.solid)) return std::nullopt;
     BRepLib::SameParameter(result, converted.tolerance, Standard_True);
-    SplitSolid elementary{TopoDS::Solid(result), {}};
+    SplitSolid on_spheres{TopoDS::Solid(result), {}};
     const std::size_t refused_before = refused.size();
     for (const Traced& t : traced) {
         std::vector<TopoDS_Face> finals;
         for (TopExp_Explorer final_faces(context->Apply(t.face), TopAbs_FACE); final_faces.More(); final_faces.Next()) {
-            elementary.original_face.Bind(final_faces.Current(), t.original);
+            on_spheres.original_face.Bind(final_faces.Current(), t.original);
             finals.push_back(TopoDS::Face(final_faces.Current()));
         }
         if (t.ours < solid.faces().size() && !honest_tolerances(finals, kProjection * size)) refused.push_back(t.ours);
@@ -156,7 +156,7 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
     BRepGProp::VolumeProperties(result, properties, 1e-9);
     const double volume = solid.volume();
     if (!(std::abs(properties.Mass() - volume) <= kVolume * std::abs(volume))) return std::nullopt;
-    return elementary;
+    return on_spheres;
 }
 
 }  // namespace
