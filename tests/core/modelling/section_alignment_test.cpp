@@ -202,7 +202,9 @@ TEST(SectionAlignment, CreasesRunThroughEverySection) {
     const NurbsCurve ring = interpolate({{3, 0, 0}, {0, 2, 0}, {-3, 0, 0}, {0, -2, 0}, {1, -1, 0}}, 3, Parameterization::chord, {}, true);
     const NurbsCurve turned = restarted_at({ring}, 0.3).front();
     for (const double u : breakpoints(3, turned.knots()))
-        if (u > 0 && u < 1) EXPECT_EQ(std::count(turned.knots().begin(), turned.knots().end(), u), u == 0.7 ? 3 : 1) << u;
+        if (u > 0 && u < 1) {
+            EXPECT_EQ(std::count(turned.knots().begin(), turned.knots().end(), u), u == 0.7 ? 3 : 1) << u;
+        }
     for (int k = 0; k <= 20; ++k) EXPECT_LE(distance(turned.point(k / 20.0), ring.point(std::fmod(k / 20.0 + 0.3, 1.0))), 1e-14);
 }
 
