@@ -15,6 +15,7 @@
 #include <ShapeFix_Face.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapOfShapeInteger.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Iterator.hxx>
 #include <TopoDS_Wire.hxx>
@@ -105,11 +106,15 @@ int count_faces(const TopoDS_Shape& shape) {
 // One attempt with the faces of ours that have a surface in `surfaces`: the rebuilt solid, or nullopt with the
 // faces whose projected p-curves came out too far from their edges added to `refused` (or none, when the solid
 // as a whole is not valid or not of the kernel's volume).
-std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& converted, const SplitSolid& handed,
+std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& converted,
                                   const std::vector<Handle(Geom_Surface)>& surfaces, std::vector<std::size_t>& refused) {
     const double size = std::max(1.0, solid.bounding_box().diagonal());
+    // Which face of ours each OCCT face on a sphere is (one OCCT face each: with_sphere_faces).
+    TopTools_DataMapOfShapeInteger on_sphere;
+    for (std::size_t i = 0; i < surfaces.size(); ++i)
+        if (!surfaces[i].IsNull()) on_sphere.Bind(converted.faces[converted.first_face[i]], static_cast<int>(i));
     // On a copy: the p-curves added to shared edges must not reach the B-spline solid kept as the fallback.
-    BRepBuilderAPI_Copy copier(handed.solid);
+    BRepBuilderAPI_Copy copier(converted.solid);
     const Handle(ShapeBuild_ReShape) context = new ShapeBuild_ReShape;
     struct Traced {
         TopoDS_Shape face;      // of the copy, or rebuilt
@@ -117,16 +122,14 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
         std::size_t ours;       // rebuilt from face `ours` of the solid; solid.faces().size() when not rebuilt
     };
     std::vector<Traced> traced;
-    for (TopExp_Explorer pieces(handed.solid, TopAbs_FACE); pieces.More(); pieces.Next()) {
-        const TopoDS_Shape& original = handed.original_face.Find(pieces.Current());
-        const TopoDS_Face piece = TopoDS::Face(copier.ModifiedShape(pieces.Current()));
-        std::size_t ours = solid.faces().size();
-        for (std::size_t i = 0; i < solid.faces().size() && ours == solid.faces().size(); ++i)
-            if (!surfaces[i].IsNull() && converted.faces[converted.first_face[i]].IsSame(original)) ours = i;
-        if (ours == solid.faces().size()) {
-            traced.push_back({piece, original, ours});
+    for (TopExp_Explorer faces(converted.solid, TopAbs_FACE); faces.More(); faces.Next()) {
+        const TopoDS_Shape& original = faces.Current();
+        const TopoDS_Face piece = TopoDS::Face(copier.ModifiedShape(original));
+        if (!on_sphere.IsBound(original)) {
+            traced.push_back({piece, original, solid.faces().size()});
             continue;
         }
+        const std::size_t ours = static_cast<std::size_t>(on_sphere.Find(original));
         const TopoDS_Face made = on_surface(piece, surfaces[ours], converted.tolerance, context);
         if (made.IsNull()) {
             refused.push_back(ours);
@@ -136,7 +139,7 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
         traced.push_back({made, original, ours});
     }
     const TopoDS_Shape result = context->Apply(copier.Shape());
-    if (result.ShapeType() != TopAbs_SOLID || count_faces(result) != count_faces(handed.solid)) return std::nullopt;
+    if (result.ShapeType() != TopAbs_SOLID || count_faces(result) != count_faces(converted.solid)) return std::nullopt;
     BRepLib::SameParameter(result, converted.tolerance, Standard_True);
     SplitSolid on_spheres{TopoDS::Solid(result), {}};
     const std::size_t refused_before = refused.size();
@@ -161,7 +164,7 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
 
 }  // namespace
 
-SplitSolid with_sphere_faces(const Solid& solid, const ConvertedSolid& converted, const SplitSolid& handed) {
+std::optional<SplitSolid> with_sphere_faces(const Solid& solid, const ConvertedSolid& converted) {
     const double size = std::max(1.0, solid.bounding_box().diagonal());
     // The sphere of each face of ours handed over whole (not as Bézier patches), trimmed or not.
     std::vector<Handle(Geom_Surface)> surfaces(solid.faces().size());
@@ -173,17 +176,17 @@ SplitSolid with_sphere_faces(const Solid& solid, const ConvertedSolid& converted
     // Faces whose p-curves OpenCASCADE cannot project close enough stay B-splines; the rest is tried again.
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
         if (std::all_of(surfaces.begin(), surfaces.end(), [](const Handle(Geom_Surface)& s) { return s.IsNull(); }))
-            return handed;
+            return std::nullopt;
         std::vector<std::size_t> refused;
         try {
-            if (std::optional<SplitSolid> made = rebuilt(solid, converted, handed, surfaces, refused)) return *made;
+            if (std::optional<SplitSolid> made = rebuilt(solid, converted, surfaces, refused)) return made;
         } catch (const Standard_Failure&) {
-            return handed;
+            return std::nullopt;
         }
-        if (refused.empty()) return handed;
+        if (refused.empty()) return std::nullopt;
         for (const std::size_t i : refused) surfaces[i].Nullify();
     }
-    return handed;
+    return std::nullopt;
 }
 
 }  // namespace ratbez::occt::detail

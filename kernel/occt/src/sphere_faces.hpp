@@ -15,14 +15,16 @@
 // (Cylinders, cones and tori were tried the same way, on untrimmed faces: their projected rims came out 3e-7 of
 // the size off, and their B-spline faces pass the BOP check.)
 
+#include <optional>
+
 #include "c0_split.hpp"
 #include "ratbez/brep.hpp"
 #include "ratbez/occt/topology.hpp"
 
 namespace ratbez::occt::detail {
 
-// `handed`: convert's solid as it is handed out (split at C0 knots), its faces traced to convert's (and so to
-// `solid`'s); the result traced the same way.
-SplitSolid with_sphere_faces(const Solid& solid, const ConvertedSolid& converted, const SplitSolid& handed);
+// convert's solid with its faces on a sphere rebuilt on OCCT's, every face traced to convert's; nullopt when no
+// face is on a sphere or the rebuilt solid is refused (handed_out then splits convert's solid as before).
+std::optional<SplitSolid> with_sphere_faces(const Solid& solid, const ConvertedSolid& converted);
 
 }  // namespace ratbez::occt::detail

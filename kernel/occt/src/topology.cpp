@@ -806,17 +806,16 @@ SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const
                 handed.original_face.Bind(faces.Current(), converted.faces[converted.first_face[i]]);
             return handed;
         }
-    if (!options.analytic_primitives || options.bezier_faces) return split_at_c0_knots(converted.solid);
     // Faces on a sphere first, whole (a face trimmed on a sphere read from a file is C0 inside in the NURBS Book's
     // circle form; on OCCT's sphere it need not be split), then the rest split; traced through both to convert's.
-    SplitSolid whole{converted.solid, {}};
-    for (TopExp_Explorer faces(converted.solid, TopAbs_FACE); faces.More(); faces.Next())
-        whole.original_face.Bind(faces.Current(), faces.Current());
-    const SplitSolid spheres = with_sphere_faces(solid, converted, whole);
-    SplitSolid split = split_at_c0_knots(spheres.solid);
-    for (TopTools_DataMapIteratorOfDataMapOfShapeShape it(split.original_face); it.More(); it.Next())
-        split.original_face.ChangeFind(it.Key()) = spheres.original_face.Find(it.Value());
-    return split;
+    if (options.analytic_primitives && !options.bezier_faces)
+        if (const std::optional<SplitSolid> spheres = with_sphere_faces(solid, converted)) {
+            SplitSolid split = split_at_c0_knots(spheres->solid);
+            for (TopTools_DataMapIteratorOfDataMapOfShapeShape it(split.original_face); it.More(); it.Next())
+                split.original_face.ChangeFind(it.Key()) = spheres->original_face.Find(it.Value());
+            return split;
+        }
+    return split_at_c0_knots(converted.solid);
 }
 
 }  // namespace detail

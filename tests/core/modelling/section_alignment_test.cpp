@@ -1,7 +1,7 @@
 // section_alignment.hpp (issue 26): sections matched by normalised arc length from the start points of
 // least twist. A circle lofted to itself turned by any angle is a cylinder (rulings vertical to 1e-13);
-// breakpoints of every section land at the same normalised arc length on all; orientation, open sections,
-// creases and the restart at a crease.
+// corners and joints of every section land at the same normalised arc length on all, smooth sections run on
+// their own parameter between them (issue 25); orientation, open sections, creases and the restart at a crease.
 
 #include "modelling/section_alignment.hpp"
 
