@@ -3,11 +3,17 @@
 
 #include <gtest/gtest.h>
 
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_SphericalSurface.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp_Explorer.hxx>
@@ -24,6 +30,7 @@
 #include "ratbez/error.hpp"
 #include "temp_directory_test_support.hpp"
 #include "ratbez/occt/files.hpp"
+#include "ratbez/occt/shape_import.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
 #include "ratbez/revolve.hpp"
@@ -80,6 +87,39 @@ TEST_F(Files, StepRoundTripGivesTheSameValidSolid) {
         const double volume = solid.volume();
         tracker.add(std::abs(occt_volume(shape) - volume) / volume);
         EXPECT_NEAR(occt_volume(shape), volume, 1e-6 * volume) << name;
+    }
+}
+
+// A face trimmed on a sphere (FreeCAD's sphere minus a box, from OCCT's own Cut) written to STEP and read back
+// as FreeCAD reads it: the reader projects each edge onto the sphere itself. With the kernel's rational arcs as the
+// edges and a fitted seam it left p-curves 4.4e-6 off (BOPAlgo InvalidCurveOnSurface); on OCCT's circles
+// (exact_edges.hpp, sphere_faces.hpp) its projections are the sphere's iso lines, exact, and the check is clean.
+TEST_F(Files, FaceTrimmedOnASphereReadsBackCleanFromStep) {
+    for (const gp_Pnt& centre : {gp_Pnt(0, 0, 0), gp_Pnt(0, -40, 0), gp_Pnt(100, 0, 0)}) {
+        SCOPED_TRACE(centre.X() + centre.Y());
+        const Solid solid = from_occt(
+            BRepAlgoAPI_Cut(BRepPrimAPI_MakeSphere(centre, 6).Shape(), BRepPrimAPI_MakeBox(centre, 10, 10, 10).Shape()).Shape());
+        const std::string file = path("sphere_minus_box.step");
+        write_step(solid, file);
+        STEPControl_Reader reader;
+        ASSERT_EQ(reader.ReadFile(file.c_str()), IFSelect_RetDone);
+        ASSERT_GT(reader.TransferRoots(), 0);
+        const TopoDS_Shape shape = reader.OneShape();
+        ASSERT_EQ(count_solids(shape), 1);
+        EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+        EXPECT_FALSE(testing::bop_check_finds_faults(shape));
+        EXPECT_NEAR(occt_volume(shape), solid.volume(), 1e-7 * solid.volume());
+        // Every edge of the spherical face is a circle: its three rims and its seam.
+        for (TopExp_Explorer faces(shape, TopAbs_FACE); faces.More(); faces.Next()) {
+            const TopoDS_Face& face = TopoDS::Face(faces.Current());
+            if (Handle(Geom_SphericalSurface)::DownCast(BRep_Tool::Surface(face)).IsNull()) continue;
+            for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next()) {
+                const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
+                double first = 0, last = 0;
+                if (!BRep_Tool::Degenerated(edge))
+                    EXPECT_TRUE(BRep_Tool::Curve(edge, first, last)->IsKind(STANDARD_TYPE(Geom_Circle)));
+            }
+        }
     }
 }
 

@@ -3,29 +3,40 @@
 #include "sphere_faces.hpp"
 
 #include <BRepBuilderAPI_Copy.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_TEdge.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_Plane.hxx>
+#include <Geom_SphericalSurface.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <ShapeBuild_ReShape.hxx>
 #include <ShapeFix_Face.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_DataMapOfShapeInteger.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Iterator.hxx>
 #include <TopoDS_Wire.hxx>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <vector>
 
 #include "analytic_primitives.hpp"
+#include "exact_edges.hpp"
+#include "ratbez/occt/geometry.hpp"
 
 namespace ratbez::occt::detail {
 namespace {
@@ -51,6 +62,34 @@ std::optional<std::pair<gp_Pnt, gp_Vec>> sample_normal(const TopoDS_Face& face) 
             return std::pair{point, normal};
     }
     return std::nullopt;
+}
+
+// The seam ShapeFix_Face adds to a face on a sphere gets a 3D curve fitted to its iso line (a polynomial of degree 8,
+// 1e-5 off at size 30: FreeCAD's STEP reader then left it InvalidCurveOnSurface). Where its p-curves are the
+// meridian u = const run at unit speed in v (t -> v = a + s t, s = +-1), that meridian is the exact 3D curve: the
+// circle about the centre through S(u, a), turning towards s dS/dv, whose angle t is the edge's parameter.
+void exact_seams(const TopoDS_Face& face, const Handle(Geom_SphericalSurface)& sphere, double tolerance) {
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+        if (!BRep_Tool::IsClosed(edge, face) || BRep_Tool::Degenerated(edge)) continue;
+        double first = 0, last = 0;
+        const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+        if (pcurve.IsNull() || !(last > first) || !edge.Location().IsIdentity() || !face.Location().IsIdentity()) continue;
+        const gp_Pnt2d start = pcurve->Value(first), middle = pcurve->Value((first + last) / 2), end = pcurve->Value(last);
+        const double s = (end.Y() - start.Y()) / (last - first);
+        constexpr double kLine = 1e-12;  // of the parameters, radians
+        if (std::abs(std::abs(s) - 1) > kLine || std::abs(end.X() - start.X()) > kLine || std::abs(middle.X() - start.X()) > kLine ||
+            std::abs(middle.Y() - (start.Y() + end.Y()) / 2) > kLine)
+            continue;
+        const double u = start.X(), a = start.Y() - (s > 0 ? 1 : -1) * first;
+        gp_Pnt on;
+        gp_Vec du, dv;
+        sphere->D1(u, a, on, du, dv);
+        const gp_Pnt centre = sphere->Location();
+        const gp_Dir x(gp_Vec(centre, on)), y(s > 0 ? dv : -dv);
+        BRep_Builder().UpdateEdge(edge, new Geom_Circle(gp_Ax2(centre, x.Crossed(y), x), sphere->Radius()), tolerance);
+        Handle(BRep_TEdge)::DownCast(edge.TShape())->Tolerance(tolerance);
+    }
 }
 
 // `face` (as it lies in the solid) on `surface`, from its own edges: p-curves projected, seams and poles
@@ -97,6 +136,53 @@ TopoDS_Face on_surface(const TopoDS_Face& face, const Handle(Geom_Surface)& surf
     return TopoDS::Face(agree > 0 ? TopoDS_Shape(fixed) : fixed.Reversed());
 }
 
+// The edges of the faces to be rebuilt that are, exactly, arcs of a circle (exact_edges.hpp), replaced in `context`
+// by the same arc on OCCT's circle between the copy's vertices: ShapeFix_Face projects a circle that is a meridian
+// or a parallel onto the sphere exactly (a line), and so does a STEP reader that gets the file's edges as circles
+// (with the kernel's rational arcs FreeCAD's reader left p-curves 4.4e-6 off: InvalidCurveOnSurface). Only where
+// every face of the edge is rebuilt or a plane, whose p-curves are exact too (a B-spline neighbour keeps the edge).
+// The edges replaced, in the copy's orientation.
+std::vector<TopoDS_Edge> circle_edges(const Solid& solid, const ConvertedSolid& converted,
+                                      const TopTools_DataMapOfShapeInteger& on_sphere, const BRepBuilderAPI_Copy& copier,
+                                      const Handle(ShapeBuild_ReShape)& context) {
+    std::map<TopoDS_TShape*, const Edge*> ours;
+    for (const auto& [edge, pieces] : converted.edges)
+        if (pieces.size() == 1) ours.emplace(pieces.front().TShape().get(), edge);
+    TopTools_IndexedDataMapOfShapeListOfShape faces_of;
+    TopExp::MapShapesAndUniqueAncestors(converted.solid, TopAbs_EDGE, TopAbs_FACE, faces_of);
+    const double fit = exact_fit(solid);
+    std::vector<TopoDS_Edge> replaced;
+    for (int i = 1; i <= faces_of.Extent(); ++i) {
+        const TopoDS_Edge& original = TopoDS::Edge(faces_of.FindKey(i));
+        const auto found = ours.find(original.TShape().get());
+        if (found == ours.end() || found->second->degenerate) continue;
+        bool touches_sphere = false, others_planes = true;
+        for (const TopoDS_Shape& face : faces_of(i)) {
+            if (on_sphere.IsBound(face)) touches_sphere = true;
+            else others_planes = others_planes && BRep_Tool::Surface(TopoDS::Face(face))->IsKind(STANDARD_TYPE(Geom_Plane));
+        }
+        if (!touches_sphere || !others_planes) continue;
+        const Edge& e = *found->second;
+        const std::optional<EdgeCircle> arc = edge_circle(e, fit);
+        if (!arc) continue;
+        const gp_Circ circle(gp_Ax2(to_occt_point(arc->centre), to_occt_direction(arc->normal), to_occt_direction(arc->x)), arc->radius);
+        const std::optional<std::pair<double, double>> range = arc_parameters(circle, e, arc->sweep);
+        if (!range) continue;
+        // The copy's edge, forward, runs from our start to our end (convert builds it so); its vertices are kept.
+        const TopoDS_Edge copy = TopoDS::Edge(copier.ModifiedShape(original).Oriented(TopAbs_FORWARD));
+        TopoDS_Vertex first, last;
+        TopExp::Vertices(copy, first, last);
+        if (first.IsNull() || last.IsNull() || BRep_Tool::Pnt(first).Distance(to_occt_point(e.start->point)) > converted.tolerance)
+            continue;
+        BRepBuilderAPI_MakeEdge made(new Geom_Circle(circle), first, last, range->first, range->second);
+        if (!made.IsDone()) continue;
+        BRep_Builder().UpdateEdge(made.Edge(), converted.tolerance);
+        context->Replace(copy, made.Edge());
+        replaced.push_back(made.Edge());
+    }
+    return replaced;
+}
+
 int count_faces(const TopoDS_Shape& shape) {
     int n = 0;
     for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) ++n;
@@ -107,7 +193,8 @@ int count_faces(const TopoDS_Shape& shape) {
 // faces whose projected p-curves came out too far from their edges added to `refused` (or none, when the solid
 // as a whole is not valid or not of the kernel's volume).
 std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& converted,
-                                  const std::vector<Handle(Geom_Surface)>& surfaces, std::vector<std::size_t>& refused) {
+                                  const std::vector<Handle(Geom_Surface)>& surfaces, bool circles_as_occts,
+                                  std::vector<std::size_t>& refused) {
     const double size = std::max(1.0, solid.bounding_box().diagonal());
     // Which face of ours each OCCT face on a sphere is (one OCCT face each: with_sphere_faces).
     TopTools_DataMapOfShapeInteger on_sphere;
@@ -121,6 +208,8 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
         TopoDS_Shape original;  // convert's
         std::size_t ours;       // rebuilt from face `ours` of the solid; solid.faces().size() when not rebuilt
     };
+    const std::vector<TopoDS_Edge> circles =
+        circles_as_occts ? circle_edges(solid, converted, on_sphere, copier, context) : std::vector<TopoDS_Edge>{};
     std::vector<Traced> traced;
     for (TopExp_Explorer faces(converted.solid, TopAbs_FACE); faces.More(); faces.Next()) {
         const TopoDS_Shape& original = faces.Current();
@@ -130,7 +219,7 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
             continue;
         }
         const std::size_t ours = static_cast<std::size_t>(on_sphere.Find(original));
-        const TopoDS_Face made = on_surface(piece, surfaces[ours], converted.tolerance, context);
+        const TopoDS_Face made = on_surface(TopoDS::Face(context->Apply(piece)), surfaces[ours], converted.tolerance, context);
         if (made.IsNull()) {
             refused.push_back(ours);
             return std::nullopt;
@@ -140,6 +229,17 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
     }
     const TopoDS_Shape result = context->Apply(copier.Shape());
     if (result.ShapeType() != TopAbs_SOLID || count_faces(result) != count_faces(converted.solid)) return std::nullopt;
+    // The circles' p-curves on the planes beside the sphere (exact; ShapeFix_Face made those on the sphere), and
+    // the seams' 3D curves.
+    for (TopExp_Explorer faces(result, TopAbs_FACE); faces.More(); faces.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(faces.Current());
+        if (const auto sphere = Handle(Geom_SphericalSurface)::DownCast(BRep_Tool::Surface(face)); !sphere.IsNull())
+            exact_seams(face, sphere, converted.tolerance);
+        if (!BRep_Tool::Surface(face)->IsKind(STANDARD_TYPE(Geom_Plane))) continue;
+        for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next())
+            for (const TopoDS_Edge& circle : circles)
+                if (edges.Current().IsSame(circle)) BRepLib::BuildPCurveForEdgeOnPlane(TopoDS::Edge(edges.Current()), face);
+    }
     BRepLib::SameParameter(result, converted.tolerance, Standard_True);
     SplitSolid on_spheres{TopoDS::Solid(result), {}};
     const std::size_t refused_before = refused.size();
@@ -173,18 +273,24 @@ std::optional<SplitSolid> with_sphere_faces(const Solid& solid, const ConvertedS
         if (face.kind() == Face::Kind::planar || converted.first_face[i + 1] - converted.first_face[i] != 1) continue;
         surfaces[i] = exact_sphere(face.surface(), size);
     }
-    // Faces whose p-curves OpenCASCADE cannot project close enough stay B-splines; the rest is tried again.
-    for (int attempt = 0; attempt < kAttempts; ++attempt) {
-        if (std::all_of(surfaces.begin(), surfaces.end(), [](const Handle(Geom_Surface)& s) { return s.IsNull(); }))
-            return std::nullopt;
-        std::vector<std::size_t> refused;
-        try {
-            if (std::optional<SplitSolid> made = rebuilt(solid, converted, surfaces, refused)) return made;
-        } catch (const Standard_Failure&) {
-            return std::nullopt;
+    // Faces whose p-curves OpenCASCADE cannot project close enough stay B-splines; the rest is tried again. First
+    // with the circles as OCCT's, then with the kernel's arcs: ShapeFix_Face projects a circle that runs along the
+    // sphere's seam onto either side of it, and may then take the face for the rest of the sphere (the kernel's
+    // octant of FreeCAD's sphere minus a box at (0, -40, 0) came out as the other seven: the volume check refused
+    // it); the arcs' projections follow on from their neighbours'.
+    for (const bool circles : {true, false}) {
+        std::vector<Handle(Geom_Surface)> tried = surfaces;
+        for (int attempt = 0; attempt < kAttempts; ++attempt) {
+            if (std::all_of(tried.begin(), tried.end(), [](const Handle(Geom_Surface)& s) { return s.IsNull(); })) break;
+            std::vector<std::size_t> refused;
+            try {
+                if (std::optional<SplitSolid> made = rebuilt(solid, converted, tried, circles, refused)) return made;
+            } catch (const Standard_Failure&) {
+                break;
+            }
+            if (refused.empty()) break;
+            for (const std::size_t i : refused) tried[i].Nullify();
         }
-        if (refused.empty()) return std::nullopt;
-        for (const std::size_t i : refused) surfaces[i].Nullify();
     }
     return std::nullopt;
 }

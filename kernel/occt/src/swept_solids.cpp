@@ -10,7 +10,6 @@
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRep_Builder.hxx>
-#include <ElCLib.hxx>
 #include <GC_MakeSegment.hxx>
 #include <Geom_Circle.hxx>
 #include <GProp_GProps.hxx>
@@ -37,14 +36,10 @@
 #include "ratbez/occt/convert_options.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/properties.hpp"
-#include "smooth_arcs.hpp"
+#include "exact_edges.hpp"
 
 namespace ratbez::occt::detail {
 namespace {
-
-// Relative to the solid's size (or its distance from the origin, if larger: swept_solid): how far a control point
-// may be from the line or arc a piece is taken for.
-constexpr double kFit = 1e-11;
 
 // The profile's edges as OCCT lines, circles and B-splines, each built once on vertices shared as ours are, so
 // that OCCT's sweep history (Generated) finds the face each one sweeps.
@@ -87,36 +82,26 @@ private:
         return vertices_.emplace(&v, BRepBuilderAPI_MakeVertex(to_occt_point(v.point)).Vertex()).first->second;
     }
 
-    // A piece whose control points all lie on the segment between its ends: its image is that segment (convex hull).
+    // A piece whose image is the segment between its ends.
     std::optional<TopoDS_Edge> segment(const Edge& e) {
-        const Vec3 a = e.start->point, b = e.end->point, d = b - a;
-        const double length = norm(d);
-        if (e.start == e.end || !(length > tolerance_)) return std::nullopt;
-        for (const Vec4& h : e.curve.homogeneous_points()) {
-            const Vec3 p = Vec3{h.x, h.y, h.z} / h.w - a;
-            const double t = dot(p, d) / length;
-            if (t < -tolerance_ || t > length + tolerance_ || norm(p - d * (t / length)) > tolerance_) return std::nullopt;
-        }
-        BRepBuilderAPI_MakeEdge made(GC_MakeSegment(to_occt_point(a), to_occt_point(b)).Value(), vertex(*e.start), vertex(*e.end));
+        if (!is_segment(e, tolerance_)) return std::nullopt;
+        BRepBuilderAPI_MakeEdge made(GC_MakeSegment(to_occt_point(e.start->point), to_occt_point(e.end->point)).Value(),
+                                     vertex(*e.start), vertex(*e.end));
         return made.IsDone() ? std::optional<TopoDS_Edge>(made.Edge()) : std::nullopt;
     }
 
-    // A piece that is one arc of a circle (the kernel's rational quadratic form, smooth_arcs.hpp), turning from its
-    // start to its end counterclockwise about the normal U x V of its arc frame.
+    // A piece that is one arc of a circle, turning from its start to its end counterclockwise about the normal.
     std::optional<TopoDS_Edge> arc(const Edge& e) {
-        const std::optional<ArcDirection> found = find_arc(e.curve, tolerance_);
+        const std::optional<EdgeCircle> found = edge_circle(e, tolerance_);
         if (!found) return std::nullopt;
-        const Vec3 &u = found->u_axis.front(), &v = found->v_axis.front();
-        const double r = norm(u);
-        if (!(r > tolerance_) || std::abs(norm(v) - r) > tolerance_ || std::abs(dot(u, v)) > tolerance_ * r) return std::nullopt;
         // OCCT's sweeps see a cylinder, sphere or torus only when the circle stands to the sweep exactly as it should
         // (to Precision::Angular, 1e-12: BRepSweep_Translation, GeomAdaptor_SurfaceOfRevolution::GetType), which the
         // fitted normal misses far from the origin (1e4 out: 5e-10). So a normal within the fit of the extrusion's
         // direction is taken as it, one within it of square to a revolution's axis is made square to it; and about
         // an axis the circle starts (parameter 0) straight away from it, or OCCT sees no torus either.
-        const Vec3 centre = found->origin.front();
-        Vec3 normal = cross(u, v) / (r * r), x = u;
-        const double loose = tolerance_ / r;  // the fit, as an angle
+        const Vec3 centre = found->centre;
+        Vec3 normal = found->normal, x = found->x;
+        const double loose = tolerance_ / found->radius;  // the fit, as an angle
         if (extrusion_ && norm(cross(normal, extrusion_->direction)) <= loose)
             normal = dot(normal, extrusion_->direction) > 0 ? extrusion_->direction : -extrusion_->direction;
         if (axis_) {
@@ -125,17 +110,10 @@ private:
             const Vec3 foot = axis_->axis_point + axis_->axis_dir * dot(centre - axis_->axis_point, axis_->axis_dir);
             if (norm(centre - foot) > tolerance_) x = centre - foot;
         }
-        const gp_Circ circle(gp_Ax2(to_occt_point(centre), to_occt_direction(normal), to_occt_direction(x)), r);
-        constexpr double kTurn = 2 * std::numbers::pi;
-        const double first = ElCLib::Parameter(circle, to_occt_point(e.start->point));
-        double last = e.start == e.end ? first + kTurn : ElCLib::Parameter(circle, to_occt_point(e.end->point));
-        while (last <= first) last += kTurn;
-        // The sweep and the middle of the piece decide between the two arcs through the ends (a half circle).
-        const Interval domain = e.curve.domain();
-        double middle = ElCLib::Parameter(circle, to_occt_point(e.curve.point(domain.min + domain.width() / 2)));
-        while (middle < first) middle += kTurn;
-        if (std::abs(last - first - found->sweep) > 1e-9 * kTurn || middle > last) return std::nullopt;
-        BRepBuilderAPI_MakeEdge made(new Geom_Circle(circle), vertex(*e.start), vertex(*e.end), first, last);
+        const gp_Circ circle(gp_Ax2(to_occt_point(centre), to_occt_direction(normal), to_occt_direction(x)), found->radius);
+        const std::optional<std::pair<double, double>> range = arc_parameters(circle, e, found->sweep);
+        if (!range) return std::nullopt;
+        BRepBuilderAPI_MakeEdge made(new Geom_Circle(circle), vertex(*e.start), vertex(*e.end), range->first, range->second);
         return made.IsDone() ? std::optional<TopoDS_Edge>(made.Edge()) : std::nullopt;
     }
 
@@ -341,13 +319,13 @@ std::optional<FacesInOrder> revolution(const Solid& solid, const Construction::R
 // whatever its faces are, and that is not the rule's reading. Far out its coordinates hold fewer digits of it in the
 // first place (a solid of size 1e-2 at 1e4: 1e-10 of its size), so the tolerance has a floor of 64 ulps of its
 // reach relative to its size (there 1.6e-8; OCCT read the ring of swept_solids' tests to 1.04e-9).
-bool reads_right(const TopoDS_Solid& occt, const Solid& solid, double reach) {
+bool reads_right(const TopoDS_Solid& occt, const Solid& solid) {
     const Box box = solid.bounding_box();
     GProp_GProps volume(to_occt_point((box.min + box.max) / 2)), area;
     BRepGProp::VolumeProperties(occt, volume);
     BRepGProp::SurfaceProperties(occt, area);
     const double v = enclosed_volume(solid), a = surface_area(solid);
-    const double tolerance = std::max(kGPropTolerance, 64 * std::numeric_limits<double>::epsilon() * reach / box.diagonal());
+    const double tolerance = std::max(kGPropTolerance, 64 * std::numeric_limits<double>::epsilon() * reach(box) / box.diagonal());
     return std::abs(volume.Mass() - v) <= tolerance * std::abs(v) && std::abs(area.Mass() - a) <= tolerance * a;
 }
 
@@ -376,12 +354,7 @@ bool turns_along_u(const NurbsSurface& surface, const Vec3& axis_point, const Ve
 
 std::optional<FacesInOrder> swept_solid(const Solid& solid) {
     try {
-        // Of the size, and of the distance from the origin: a small solid far out has its control points only to
-        // the rounding of its coordinates (1e4 out: ~1e-12), which a fit at 1e-11 of its size would miss.
-        const Box box = solid.bounding_box();
-        const double reach = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.min.z), std::abs(box.max.x),
-                                       std::abs(box.max.y), std::abs(box.max.z)});
-        const double tolerance = kFit * std::max({1.0, box.diagonal(), reach});
+        const double tolerance = exact_fit(solid);
         std::optional<FacesInOrder> swept;
         if (const auto* e = solid.construction().get<Construction::Extrusion>()) {
             ProfileEdges edges(tolerance, solid.construction());
@@ -390,7 +363,7 @@ std::optional<FacesInOrder> swept_solid(const Solid& solid) {
             ProfileEdges edges(tolerance, solid.construction());
             swept = revolution(solid, *r, edges);
         }
-        if (swept && reads_right(swept->solid, solid, reach)) return swept;
+        if (swept && reads_right(swept->solid, solid)) return swept;
     } catch (const Standard_Failure&) {
     }
     return std::nullopt;

@@ -9,6 +9,7 @@
 #include <Geom_BSplineCurve.hxx>
 #include <Geom2d_Line.hxx>
 #include <GeomAPI.hxx>
+#include <Geom_Line.hxx>
 #include <Geom_Plane.hxx>
 #include <gp.hxx>
 #include <gp_Pln.hxx>
@@ -41,6 +42,7 @@
 
 #include "analytic_primitives.hpp"
 #include "c0_split.hpp"
+#include "exact_edges.hpp"
 #include "handout.hpp"
 #include "sphere_faces.hpp"
 #include "face_sides.hpp"
@@ -131,6 +133,7 @@ public:
             plan_patches([](std::size_t) { return true; });
         } else {
             plan_arcs();
+            plan_lines();
             if (!patched_.empty()) plan_patches([this](std::size_t i) { return patched_.count(i) > 0; });
         }
         for (std::size_t i = 0; i < faces.size(); ++i) {
@@ -265,6 +268,21 @@ private:
         }
     }
 
+    // Edges between planar faces only that run at constant speed along a segment (a box's edges read from a file):
+    // OCCT's line, as Part's edges are (exact_edges.hpp), its parameter ours times the edge's speed
+    // (edge_parameters maps it back), the planes' p-curves OCCT's 2D lines.
+    void plan_lines() {
+        std::map<const Edge*, bool> between_planes;
+        for (const Face& face : solid_.faces())
+            for_each_coedge(face, [&](const Coedge& c) {
+                const auto [entry, first] = between_planes.emplace(c.edge.get(), true);
+                entry->second = entry->second && face.kind() == Face::Kind::planar;
+            });
+        const double fit = detail::exact_fit(solid_);
+        for (const auto& [edge, planes] : between_planes)
+            if (planes && !edge->degenerate && detail::runs_linearly(*edge, fit)) line_edges_.insert(edge);
+    }
+
     TopoDS_Vertex vertex(const VertexPtr& v) {
         auto it = out_.vertices.find(v.get());
         if (it != out_.vertices.end()) return it->second;
@@ -322,8 +340,17 @@ private:
         at.push_back(vertex(e->start));
         for (std::size_t k = 1; k + 1 < cuts.size(); ++k) at.push_back(new_vertex(e->curve.point(cuts[k])));
         at.push_back(vertex(e->end));
-        const Handle(Geom_BSplineCurve) whole = to_occt(curve_of(*e));
         std::vector<TopoDS_Edge> made;
+        if (cuts.size() == 2 && line_edges_.count(e.get())) {
+            // Unit speed on OCCT's line: s = speed * t, through the start at s = speed * domain.min.
+            const Vec3 a = e->start->point, d = e->end->point - a;
+            const double speed = norm(d) / domain.width();
+            const gp_Lin line(to_occt_point(a - d * (domain.min / domain.width())), to_occt_direction(d));
+            out_.edge_parameters.emplace(e.get(), [speed](double s) { return s / speed; });
+            made.push_back(new_edge(new Geom_Line(line), Interval{speed * domain.min, speed * domain.max}, at[0], at[1]));
+            return out_.edges.emplace(e.get(), std::move(made)).first->second;
+        }
+        const Handle(Geom_BSplineCurve) whole = to_occt(curve_of(*e));
         for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
             Handle(Geom_BSplineCurve) piece = whole;
             if (cuts.size() > 2) {
@@ -740,8 +767,16 @@ private:
             for (const Coedge& coedge : loop) {
                 const std::vector<TopoDS_Edge>& edge_pieces = pieces(coedge.edge);
                 const std::vector<double>& cuts = cut_parameters_.at(coedge.edge.get());
-                const Handle(Geom2d_BSplineCurve) whole = to_occt_2d(curve_of(*coedge.edge), plane.origin, plane.x_axis, plane.y_axis);
                 std::vector<Use> piece_uses;
+                if (line_edges_.count(coedge.edge.get())) {  // one piece on OCCT's line (plan_lines)
+                    double first = 0, last = 0;
+                    const Handle(Geom_Curve) line = BRep_Tool::Curve(edge_pieces.front(), first, last);
+                    const Use use{edge_pieces.front(), coedge.reversed ? TopAbs_REVERSED : TopAbs_FORWARD, in_plane(line, gp_Pln(frame))};
+                    uses.push_back(use);
+                    all.push_back(use);
+                    continue;
+                }
+                const Handle(Geom2d_BSplineCurve) whole = to_occt_2d(curve_of(*coedge.edge), plane.origin, plane.x_axis, plane.y_axis);
                 for (std::size_t k = 0; k < edge_pieces.size(); ++k) {
                     Handle(Geom2d_BSplineCurve) pcurve = whole;
                     if (edge_pieces.size() > 1) {
@@ -777,6 +812,7 @@ private:
     std::set<std::size_t> v_sides_cut_;                                // natural: rough in v, its u sides cut
     double arc_tolerance_ = 0;                                         // natural: find_arc's fit tolerance
     std::map<const Edge*, NurbsCurve> smooth_curves_;                  // natural: edges in the one-span form
+    std::set<const Edge*> line_edges_;                                  // natural: edges on OCCT's line (plan_lines)
     std::vector<std::size_t> shell_of_face_;                           // Solid::shells, by face index
     std::size_t current_shell_ = 0;                                    // the shell the face being built goes to
 };

@@ -1,0 +1,79 @@
+// Segments and circular arcs among the kernel's edges (see exact_edges.hpp).
+
+#include "exact_edges.hpp"
+
+#include <ElCLib.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "ratbez/occt/geometry.hpp"
+#include "smooth_arcs.hpp"
+
+namespace ratbez::occt::detail {
+
+double reach(const Box& box) {
+    return std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.min.z), std::abs(box.max.x), std::abs(box.max.y),
+                     std::abs(box.max.z)});
+}
+
+double exact_fit(const Solid& solid) {
+    const Box box = solid.bounding_box();
+    return 1e-11 * std::max({1.0, box.diagonal(), reach(box)});
+}
+
+std::optional<EdgeCircle> edge_circle(const Edge& e, double tolerance) {
+    const std::optional<ArcDirection> found = find_arc(e.curve, tolerance);
+    if (!found) return std::nullopt;
+    const Vec3 &u = found->u_axis.front(), &v = found->v_axis.front();
+    const double r = norm(u);
+    if (!(r > tolerance) || std::abs(norm(v) - r) > tolerance || std::abs(dot(u, v)) > tolerance * r) return std::nullopt;
+    return EdgeCircle{found->origin.front(), cross(u, v) / (r * r), u, r, found->sweep};
+}
+
+std::optional<std::pair<double, double>> arc_parameters(const gp_Circ& circle, const Edge& e, double sweep) {
+    constexpr double kTurn = 2 * std::numbers::pi;
+    const double first = ElCLib::Parameter(circle, to_occt_point(e.start->point));
+    double last = e.start == e.end ? first + kTurn : ElCLib::Parameter(circle, to_occt_point(e.end->point));
+    while (last <= first) last += kTurn;
+    const Interval domain = e.curve.domain();
+    double middle = ElCLib::Parameter(circle, to_occt_point(e.curve.point(domain.min + domain.width() / 2)));
+    while (middle < first) middle += kTurn;
+    if (std::abs(last - first - sweep) > 1e-9 * kTurn || middle > last) return std::nullopt;
+    return std::pair{first, last};
+}
+
+bool is_segment(const Edge& e, double tolerance) {
+    const Vec3 a = e.start->point, d = e.end->point - a;
+    const double length = norm(d);
+    if (e.start == e.end || !(length > tolerance)) return false;
+    for (const Vec4& h : e.curve.homogeneous_points()) {
+        const Vec3 p = Vec3{h.x, h.y, h.z} / h.w - a;
+        const double t = dot(p, d) / length;
+        if (t < -tolerance || t > length + tolerance || norm(p - d * (t / length)) > tolerance) return false;
+    }
+    return true;
+}
+
+bool runs_linearly(const Edge& e, double tolerance) {
+    const NurbsCurve& curve = e.curve;
+    const std::vector<Vec4>& h = curve.homogeneous_points();
+    const std::vector<double>& knots = curve.knots();
+    const int p = curve.degree();
+    const Interval domain = curve.domain();
+    if (e.start == e.end || h.size() < 2 || !(domain.width() > 0)) return false;
+    for (const Vec4& point : h)
+        if (point.w != h.front().w) return false;
+    const Vec3 a = e.start->point, b = e.end->point;
+    for (std::size_t i = 0; i < h.size(); ++i) {
+        double greville = 0;
+        for (int k = 1; k <= p; ++k) greville += knots[i + static_cast<std::size_t>(k)];
+        greville /= p;
+        const Vec3 on_line = a + (b - a) * ((greville - domain.min) / domain.width());
+        if (norm(Vec3{h[i].x, h[i].y, h[i].z} / h[i].w - on_line) > tolerance) return false;
+    }
+    return true;
+}
+
+}  // namespace ratbez::occt::detail
