@@ -69,7 +69,6 @@ KNOWN_FAILURES = (
     ("cone B-spline", "thickness", "BOPAlgo GeomAbs_C0"),
     ("loft", "fillet", "raised"),
     ("loft", "offset-", "null shape"),
-    ("ruled", "chamfer", "raised"),
     ("ruled", "thickness", "invalid shape"),
 )
 
@@ -77,7 +76,7 @@ KNOWN_FAILURES = (
 PART_FAILS = (
     ("loft", "offset+"),        # invalid (bad orientation of a sub-shape); RatBez's too
     ("loft", "thickness"),      # raises; RatBez too
-    ("ruled", "offset+"),       # invalid; RatBez's is valid, BOP SelfIntersect at a vertex
+    ("ruled", "offset+"),       # invalid; RatBez's too
 )
 
 

@@ -32,16 +32,25 @@ std::optional<EdgeCircle> edge_circle(const Edge& e, double tolerance) {
     return EdgeCircle{found->origin.front(), cross(u, v) / (r * r), u, r, found->sweep};
 }
 
-std::optional<std::pair<double, double>> arc_parameters(const gp_Circ& circle, const Edge& e, double sweep) {
+std::optional<std::pair<double, double>> arc_range(const gp_Circ& circle, const gp_Pnt& start, const gp_Pnt& middle, const gp_Pnt& end,
+                                    bool closed) {
     constexpr double kTurn = 2 * std::numbers::pi;
-    const double first = ElCLib::Parameter(circle, to_occt_point(e.start->point));
-    double last = e.start == e.end ? first + kTurn : ElCLib::Parameter(circle, to_occt_point(e.end->point));
+    const double first = ElCLib::Parameter(circle, start);
+    double last = closed ? first + kTurn : ElCLib::Parameter(circle, end);
     while (last <= first) last += kTurn;
-    const Interval domain = e.curve.domain();
-    double middle = ElCLib::Parameter(circle, to_occt_point(e.curve.point(domain.min + domain.width() / 2)));
-    while (middle < first) middle += kTurn;
-    if (std::abs(last - first - sweep) > 1e-9 * kTurn || middle > last) return std::nullopt;
+    double through = ElCLib::Parameter(circle, middle);
+    while (through < first) through += kTurn;
+    if (through > last) return std::nullopt;
     return std::pair{first, last};
+}
+
+std::optional<std::pair<double, double>> arc_parameters(const gp_Circ& circle, const Edge& e, double sweep) {
+    const Interval domain = e.curve.domain();
+    const std::optional<std::pair<double, double>> range =
+        arc_range(circle, to_occt_point(e.start->point), to_occt_point(e.curve.point(domain.min + domain.width() / 2)),
+                  to_occt_point(e.end->point), e.start == e.end);
+    if (!range || std::abs(range->second - range->first - sweep) > 1e-9 * 2 * std::numbers::pi) return std::nullopt;
+    return range;
 }
 
 bool is_segment(const Edge& e, double tolerance) {

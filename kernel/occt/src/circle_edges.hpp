@@ -1,0 +1,29 @@
+#pragma once
+// Arcs of a circle handed over on OpenCASCADE's circle, as Part's edges are. Internal to kernel/occt.
+//
+// Why: OCCT's fillet and chamfer work along the edges beside the one they are given, and where two of the kernel's
+// rational arcs meet at a vertex they lose their way. A chamfer of a ruled solid's corner ruling (a circle ruled to a
+// square, the ruling from a point of the circle to a corner) left a corner face of negative area, "Bad orientation
+// of sub-shape", with the rims as B-splines in any rational form, degree or knots tried, and Part's own polynomial
+// approximations as well; with the rims on OCCT's circles it is valid, on the same exact side surfaces.
+// The circle runs on the angle; the kernel's arc does not (its parameter is a tangent of half the angle), so an
+// edge's p-curve on a B-spline face is refitted to the angle by BRepLib::SameParameter, within the edge's tolerance;
+// the 3D curve and every surface stay exact, as does the kernel's own solid (its measures and meshes).
+// Which edges: those the kernel holds as one arc of a circle (exact_edges.hpp) and hands over in one piece, used
+// once by each of their faces (not a seam). The solid is used only when it is valid, every edge kept within 1e-6
+// of the size of its faces, and OpenCASCADE's fixed rule (FreeCAD's Shape.Volume and Area) reads it as well as the
+// B-spline edges' solid or to kGPropTolerance; otherwise the B-spline edges stay.
+
+#include <optional>
+
+#include "c0_split.hpp"
+#include "ratbez/brep.hpp"
+#include "ratbez/occt/topology.hpp"
+
+namespace ratbez::occt::detail {
+
+// convert's solid with its arcs on OCCT's circles, every face traced to convert's; nullopt when it has no such arc or
+// the result is refused.
+std::optional<SplitSolid> with_circle_edges(const Solid& solid, const ConvertedSolid& converted);
+
+}  // namespace ratbez::occt::detail
