@@ -116,8 +116,9 @@ TEST_F(Files, FaceTrimmedOnASphereReadsBackCleanFromStep) {
             for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next()) {
                 const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
                 double first = 0, last = 0;
-                if (!BRep_Tool::Degenerated(edge))
+                if (!BRep_Tool::Degenerated(edge)) {
                     EXPECT_TRUE(BRep_Tool::Curve(edge, first, last)->IsKind(STANDARD_TYPE(Geom_Circle)));
+                }
             }
         }
     }
