@@ -70,7 +70,6 @@ KNOWN_FAILURES = (
     ("loft", "fillet", "raised"),
     ("loft", "offset-", "null shape"),
     ("ruled", "chamfer", "raised"),
-    ("ruled", "thickness", "invalid shape"),
 )
 
 # (kind, operation) where Part itself gives no valid solid of the right volume: RatBez is not required to work.

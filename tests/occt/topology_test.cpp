@@ -12,6 +12,7 @@
 #include <BRepCheck_Shell.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
+#include <BRepOffsetAPI_MakeThickSolid.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -27,6 +28,7 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 
@@ -505,6 +507,44 @@ TEST(Topology, LoftsGoOverWithPartsFaces) {
     const TopoDS_Solid loft_solid = convert(loft({thirds, Profile(sides), top})).solid;
     for (TopExp_Explorer it(loft_solid, TopAbs_FACE); it.More(); it.Next())
         EXPECT_EQ(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_CN);
+}
+
+// OCCT's Thickness hollows a ruled solid through its top cap, as it hollows Part's ruled Loft. The closed side face
+// goes over in patches (patch_faces), meeting itself along the ruling where the circle closes; that ruling's
+// p-curves are lines on both of its sides, as are the rulings between the patches (linear_pcurve). Before: a
+// B-spline p-curve on one side, and the Thickness's inner face there came out with p-curves 6e-5 apart,
+// "Unorientable shape" (FreeCAD's test_part_operations listed it as a known failure).
+TEST(Topology, RuledSolidsAreHollowedByOcctsThickness) {
+    const Profile thirds({join({arc(2.0, 0, 120), arc(2.0, 120, 240), arc(2.0, 240, 360)})});  // OCCT's circle
+    std::vector<NurbsCurve> sides;
+    const std::vector<Vec3> corners{{-1.5, -1.5, 4}, {1.5, -1.5, 4}, {1.5, 1.5, 4}, {-1.5, 1.5, 4}};
+    for (std::size_t k = 0; k < 4; ++k) sides.push_back(line_segment(corners[k], corners[(k + 1) % 4]));
+    for (const auto& [name, solid] : {std::pair{std::string("circle, square"), loft({thirds, Profile(sides)}, 3, true)},
+                                      std::pair{std::string("circle, circle"),
+                                                loft({Profile({circle(2)}), Profile({circle(1, {0, 0, 4})})}, 3, true)}}) {
+        SCOPED_TRACE(name);
+        const TopoDS_Solid handed = to_occt(solid);
+        TopoDS_Face top;
+        double highest = -1e300;
+        for (TopExp_Explorer it(handed, TopAbs_FACE); it.More(); it.Next()) {
+            const TopoDS_Face face = TopoDS::Face(it.Current());
+            if (BRepAdaptor_Surface(face).GetType() != GeomAbs_Plane) continue;
+            GProp_GProps props;
+            BRepGProp::SurfaceProperties(face, props);
+            if (props.CentreOfMass().Z() > highest) { highest = props.CentreOfMass().Z(); top = face; }
+        }
+        ASSERT_FALSE(top.IsNull());
+        TopTools_ListOfShape removed;
+        removed.Append(top);
+        BRepOffsetAPI_MakeThickSolid thick;
+        thick.MakeThickSolidByJoin(handed, removed, -0.5, 1e-7);
+        ASSERT_TRUE(thick.IsDone());
+        EXPECT_TRUE(BRepCheck_Analyzer(thick.Shape()).IsValid());
+        GProp_GProps props;
+        BRepGProp::VolumeProperties(thick.Shape(), props);
+        EXPECT_GT(props.Mass(), 0.1 * solid.volume());
+        EXPECT_LT(props.Mass(), 0.9 * solid.volume());
+    }
 }
 
 // Cylinders, cones, spheres and tori go over as OCCT's own primitives (analytic_primitives.hpp): by their record,
