@@ -42,6 +42,7 @@
 
 #include "analytic_primitives.hpp"
 #include "c0_split.hpp"
+#include "circle_edges.hpp"
 #include "exact_edges.hpp"
 #include "handout.hpp"
 #include "sphere_faces.hpp"
@@ -852,14 +853,18 @@ SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const
             return handed;
         }
     // Faces on a sphere first, whole (a face trimmed on a sphere read from a file is C0 inside in the NURBS Book's
-    // circle form; on OCCT's sphere it need not be split), then the rest split; traced through both to convert's.
-    if (options.analytic_primitives && !options.bezier_faces)
-        if (const std::optional<SplitSolid> spheres = with_sphere_faces(solid, converted)) {
-            SplitSolid split = split_at_c0_knots(spheres->solid);
+    // circle form; on OCCT's sphere it need not be split; its rims on OCCT's circles), else arcs on OCCT's circles;
+    // then the rest split; traced through both to convert's.
+    if (options.analytic_primitives && !options.bezier_faces) {
+        std::optional<SplitSolid> rebuilt = with_sphere_faces(solid, converted);
+        if (!rebuilt) rebuilt = with_circle_edges(solid, converted);
+        if (rebuilt) {
+            SplitSolid split = split_at_c0_knots(rebuilt->solid);
             for (TopTools_DataMapIteratorOfDataMapOfShapeShape it(split.original_face); it.More(); it.Next())
-                split.original_face.ChangeFind(it.Key()) = spheres->original_face.Find(it.Value());
+                split.original_face.ChangeFind(it.Key()) = rebuilt->original_face.Find(it.Value());
             return split;
         }
+    }
     return split_at_c0_knots(converted.solid);
 }
 

@@ -69,11 +69,13 @@ TEST(SectionAlignment, BreakpointsMeetAtTheSameNormalisedArcLength) {
         EXPECT_NEAR(circle_length.at(b) / circle_length.total(), b, 1e-12);
         EXPECT_NEAR(square_length.at(b) / square_length.total(), b, 1e-12);
     }
-    // The first section keeps its start (+x); the least twist starts the square at the middle of its side
-    // facing +x, and puts its corners at 1/8, 3/8, ... where the circle points the same way.
-    EXPECT_LE(distance(square_curve.start_point(), {1.5, 0, 4}), 1e-9);
+    // The least twist matches the square's corners to the circle at 45, 135, ... degrees, and the seam goes to
+    // the first of them (from +x, the circle's own start): the square starts at its corner (1.5, 1.5), the circle
+    // at 45 degrees, and the corners are at 0, 1/4, 1/2 and 3/4, where the circle points the same way.
+    EXPECT_LE(distance(square_curve.start_point(), {1.5, 1.5, 4}), 1e-9);
+    EXPECT_LE(distance(round.start_point(), {std::sqrt(2.0), std::sqrt(2.0), 0}), 1e-9);
     for (int k = 0; k < 4; ++k) {
-        const double b = (2 * k + 1) / 8.0;
+        const double b = k / 4.0;
         const Vec3 corner = square_curve.point(b), on_circle = round.point(b);
         EXPECT_NEAR(std::abs(corner.x), 1.5, 1e-9) << k;
         EXPECT_NEAR(std::abs(corner.y), 1.5, 1e-9) << k;
@@ -82,14 +84,15 @@ TEST(SectionAlignment, BreakpointsMeetAtTheSameNormalisedArcLength) {
 }
 
 // A section's own joints where every other section runs on within one piece leave no break: a circle of three
-// 120 degree arcs (as OpenCASCADE makes one) against a square has breaks at the square's corners only (and
-// the seam), where Part's Loft puts its edges; each break still matched exactly by arc length. Without the
-// merge the circle's joints at 1/3 and 2/3 were knots of the loft too, and OpenCASCADE face edges.
+// 120 degree arcs (as OpenCASCADE makes one) against a square has breaks at the square's corners only, where
+// Part's Loft puts its edges, the seam at the first of them; each break still matched exactly by arc length.
+// Without the merge the circle's joints at 1/3 and 2/3 were knots of the loft too, and OpenCASCADE face edges;
+// with the seam at the circle's start (halfway along a side), the side faces met there in a fold.
 TEST(SectionAlignment, JointsOnlyOneSectionHasLeaveNoBreak) {
     const NurbsCurve thirds = join({arc(2.0, 0, 120), arc(2.0, 120, 240), arc(2.0, 240, 360)});
     const AlignedSections aligned = align_sections({thirds, square(1.5, 4, 0)}, "curves");
-    ASSERT_EQ(aligned.breaks.size(), 6u);
-    for (int k = 0; k < 4; ++k) EXPECT_NEAR(aligned.breaks[static_cast<std::size_t>(k + 1)], (2 * k + 1) / 8.0, 1e-12) << k;
+    ASSERT_EQ(aligned.breaks.size(), 5u);
+    for (int k = 0; k < 5; ++k) EXPECT_NEAR(aligned.breaks[static_cast<std::size_t>(k)], k / 4.0, 1e-12) << k;
     for (const NurbsCurve& c : aligned.curves) {
         EXPECT_EQ(breakpoints(c.degree(), c.knots()), aligned.breaks);
         const ArcLength length(c);
@@ -99,7 +102,7 @@ TEST(SectionAlignment, JointsOnlyOneSectionHasLeaveNoBreak) {
     const NurbsCurve& round = aligned.curves[0];
     EXPECT_NEAR(round.bezier_segments()[1].weights()[1], std::cos(pi / 4), 1e-12);
     for (int k = 0; k < 4; ++k) {
-        const Vec3 on_circle = round.point(aligned.breaks[static_cast<std::size_t>(k + 1)]);
+        const Vec3 on_circle = round.point(aligned.breaks[static_cast<std::size_t>(k)]);
         EXPECT_NEAR(std::atan2(on_circle.y, on_circle.x), (45 + 90 * k - (k >= 2 ? 360 : 0)) * pi / 180, 1e-9) << k;
     }
     // A break where the pieces are arcs of two different circles stays: a circle against a rounded square
