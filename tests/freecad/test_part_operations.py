@@ -67,9 +67,6 @@ KNOWN_FAILURES = (
     ("sphere B-spline", "offset+", "BOPAlgo SelfIntersect"),
     ("cylinder B-spline", "thickness", "BOPAlgo GeomAbs_C0"),
     ("cone B-spline", "thickness", "BOPAlgo GeomAbs_C0"),
-    ("loft", "fillet", "raised"),
-    ("loft", "offset-", "null shape"),
-    ("ruled", "chamfer", "raised"),
 )
 
 # (kind, operation) where Part itself gives no valid solid of the right volume: RatBez is not required to work.

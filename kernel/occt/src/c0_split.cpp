@@ -37,17 +37,19 @@ bool has_c0_face(const TopoDS_Solid& solid) {
 
 }  // namespace
 
+bool honest_tolerance(const TopoDS_Edge& edge, const TopoDS_Face& face, double limit) {
+    if (BRep_Tool::Degenerated(edge)) return true;
+    BRepLib_CheckCurveOnSurface measure(edge, face);
+    measure.Perform();
+    if (!measure.IsDone() || measure.MaxDistance() > limit) return false;
+    if (measure.MaxDistance() > BRep_Tool::Tolerance(edge)) BRep_Builder().UpdateEdge(edge, 1.01 * measure.MaxDistance());
+    return true;
+}
+
 bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit) {
-    BRep_Builder builder;
     for (const TopoDS_Face& face : faces)
-        for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next()) {
-            const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
-            if (BRep_Tool::Degenerated(edge)) continue;
-            BRepLib_CheckCurveOnSurface measure(edge, face);
-            measure.Perform();
-            if (!measure.IsDone() || measure.MaxDistance() > limit) return false;
-            if (measure.MaxDistance() > BRep_Tool::Tolerance(edge)) builder.UpdateEdge(edge, 1.01 * measure.MaxDistance());
-        }
+        for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next())
+            if (!honest_tolerance(TopoDS::Edge(edges.Current()), face, limit)) return false;
     return true;
 }
 

@@ -12,6 +12,7 @@
 // split; tests/freecad/test_step_in_freecad.py measures every corpus solid).
 
 #include <TopTools_DataMapOfShapeShape.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
 
@@ -23,6 +24,8 @@ namespace ratbez::occt::detail {
 // of BOPAlgo_ArgumentAnalyzer's CurveOnSurfaceMode, FreeCAD's BOP check) given that distance as tolerance, if
 // it is at most `limit`; false when one is further. For p-curves made by OpenCASCADE (SameParameter, projection).
 bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit);
+// The same for one edge on one face.
+bool honest_tolerance(const TopoDS_Edge& edge, const TopoDS_Face& face, double limit);
 
 // The solid split, and for every face of the result the face of the input it is (a piece of): what check()
 // needs to name our faces in its findings on the solid as handed out.

@@ -32,10 +32,6 @@ std::optional<EdgeCircle> edge_circle(const Edge& e, double tolerance) {
     return EdgeCircle{found->origin.front(), cross(u, v) / (r * r), u, r, found->sweep};
 }
 
-namespace {
-
-// The parameters (first, last) on `circle` of an arc of it turning counterclockwise from `start` through `middle` to
-// `end` (all the way round when `closed`); nullopt when the middle is not on that turn.
 std::optional<std::pair<double, double>> arc_range(const gp_Circ& circle, const gp_Pnt& start, const gp_Pnt& middle, const gp_Pnt& end,
                                     bool closed) {
     constexpr double kTurn = 2 * std::numbers::pi;
@@ -47,8 +43,6 @@ std::optional<std::pair<double, double>> arc_range(const gp_Circ& circle, const 
     if (through > last) return std::nullopt;
     return std::pair{first, last};
 }
-
-}  // namespace
 
 std::optional<std::pair<double, double>> arc_parameters(const gp_Circ& circle, const Edge& e, double sweep) {
     const Interval domain = e.curve.domain();

@@ -36,9 +36,13 @@ struct EdgeCircle {
 };
 std::optional<EdgeCircle> edge_circle(const Edge& e, double tolerance);
 
-// The edge's ends as parameters (first, last) on `circle` (OCCT's angle), turning counterclockwise from its start to
-// its end through its middle point; nullopt unless that turn is `sweep` (the two arcs through the ends of a half
-// circle are told apart by the middle).
+// The parameters (first, last) on `circle` (OCCT's angle) of an arc of it turning counterclockwise from `start`
+// through `middle` to `end` (all the way round when `closed`); nullopt when the middle is not on that turn.
+std::optional<std::pair<double, double>> arc_range(const gp_Circ& circle, const gp_Pnt& start, const gp_Pnt& middle, const gp_Pnt& end,
+                                    bool closed);
+
+// The edge's ends as parameters on `circle` (arc_range, through the edge's middle point); nullopt unless that turn is
+// `sweep` (the two arcs through the ends of a half circle are told apart by the middle).
 std::optional<std::pair<double, double>> arc_parameters(const gp_Circ& circle, const Edge& e, double sweep);
 
 // Whether every control point of a non-closed edge lies within `tolerance` of the segment between its ends (its
