@@ -428,10 +428,16 @@ TEST(HostileWeights, ExtremeWeightsGiveExactVolume) {
 
 // With a middle weight of 1e3 and beyond the mesh once missed its tolerance and volume (the volume part
 // is ExtremeWeightsGiveExactVolume above, fixed by the adaptive quadrature of properties.cpp;
-// max_deviation's seeds missed the crowded conic and overestimated).
+// max_deviation's seeds missed the crowded conic and overestimated). Under the sanitizers the partial ring only
+// (the full ring runs the same code, and took 47 s there).
 TEST(HostileWeights, ExtremeWeightsGiveExactMesh) {
+#if defined(__SANITIZE_ADDRESS__)
+    const std::vector<double> angles{123.0};
+#else
+    const std::vector<double> angles{360.0, 123.0};
+#endif
     for (double w : {1e3, 1e6})
-        for (double angle : {360.0, 123.0}) {
+        for (double angle : angles) {
             const std::string what = "weights " + std::to_string(w) + ", angle " + std::to_string(angle);
             const Solid solid = revolve(Profile(extreme_weight_ring(w, {1, 1 / w, 1})), {}, {0, 0, 1}, angle);
             expect_meshes_within_tolerance(solid, what);

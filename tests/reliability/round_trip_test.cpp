@@ -8,7 +8,7 @@
 // Budget (2 cores, beside every other suite): the cheap stages run on EVERY case; the expensive ones on
 // a deterministic subset: the OCCT check, CGAL's self-intersection test and max_deviation on every 10th
 // case (index % 10 == 0). The other CGAL checks (closed, manifold, outward) run on all.
-// The Release suite runs 10 shards of 150 cases (1,500, sized to the test command's 20 minutes); the sanitizer
+// The Release suite runs 10 shards of 100 cases (1,000, sized to the test command's 20 minutes); the sanitizer
 // build (Debug + ASan + UBSan, about 15x slower) runs 10 shards of 15 (150), with the same stage schedule,
 // and FoundSeed replays every seed that ever failed, one test each.
 // RATBEZ_ROUND_TRIP_CASES sets the cases per shard (scripts/soak.sh runs 1,000 per shard and more).
@@ -51,10 +51,10 @@ constexpr int default_cases_per_shard = 15;
 #if __has_feature(address_sanitizer)
 constexpr int default_cases_per_shard = 15;
 #else
-constexpr int default_cases_per_shard = 150;
+constexpr int default_cases_per_shard = 100;
 #endif
 #else
-constexpr int default_cases_per_shard = 150;
+constexpr int default_cases_per_shard = 100;
 #endif
 constexpr int shards = 10;
 constexpr std::uint64_t default_seed = 20261122;
