@@ -16,7 +16,7 @@
 // splits those afterwards). The solid is used only when it is valid and every refitted p-curve
 // lies within 1e-6 of the size of its edge (the edge's tolerance then covers it); otherwise the B-spline edges stay.
 // OpenCASCADE's fixed rule (FreeCAD's Shape.Volume and Area) reads the p-curves refitted to a hundredth of the
-// tolerance as it read the kernel's (the examples to 1e-11 or better: bench/freecad_part_comparison.py); measuring
+// tolerance as it read the kernel's (examples/ruled.json to 2.4e-11: bench/freecad_part_comparison.py); measuring
 // that on each solid took three quarters of the conversion's time on FreeCAD's models, and is left to the tests.
 
 #include <optional>

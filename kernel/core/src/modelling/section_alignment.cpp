@@ -374,8 +374,8 @@ AlignedSections align_sections(const std::vector<NurbsCurve>& input, const std::
     // at the first corner of any. A seam is a break that always stays, and there each section's pieces are in
     // normal form on both sides, their weights continuous but not smooth across it: a circle's seam halfway along a
     // square's side skinned into a fold between the side faces, tangent only at the sections (circle -> square ->
-    // circle: 1.3 degrees halfway; OpenCASCADE's inward Offset came out null, its Fillet raised, on the ruled solid
-    // its Chamfer). At a corner the side faces meet at an edge anyway, and the old start merges away below.
+    // circle: 1.3 degrees halfway; OpenCASCADE took the edge for a tangent one, its inward Offset came out null and
+    // its Fillet raised). At a corner the side faces meet at an edge anyway, and the old start merges away below.
     if (closed) {
         bool seam_at_corner = false;
         double first = 1.0;
