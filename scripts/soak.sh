@@ -6,7 +6,7 @@
 # Prints the counts per format; exits non-zero on any crash, hang past the Ctrl-C latency, inconsistent solid or
 # stray exception, leaving each such file in build/soak-findings/. Not part of scripts/test.sh (minutes long).
 # Then the big randomized round-trip run: ROUND_TRIPS cases per shard of reliability_round_trip_tests (default
-# 1000: cases 0 to 9,999 of the same seeds, where the test command runs 0 to 1,999).
+# 1000: cases 0 to 9,999 of the same seeds, where the test command runs 0 to 999).
 # Usage: bash scripts/soak.sh [COUNT] [FIRST_SEED]   (ROUND_TRIPS=0 skips the round trips)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
