@@ -5,7 +5,7 @@ a circle r = 2 at z = 0 (starting at +X) ruled to a 3 x 3 square at z = 4 (start
 Left: what ratbez built before issue 26, point u of the circle ruled to point u of the square (the surface
 `ratbez.ruled_surface(circle, square, align=False)` now refuses: it pinches near the square's corners, volume
 18.6). Right: `ratbez.ruled_surface(circle, square)`, matched by arc length from the start of least twist
-(the loft's volume 43.16, OpenCASCADE's ruled ThruSections 43.16). Side surfaces only, tessellated to 0.005,
+(the loft's volume 43.09, OpenCASCADE's ruled ThruSections 43.16). Side surfaces only, tessellated to 0.005,
 drawn by OpenSCAD:
 
     PYTHONPATH=build/kernel/python /usr/bin/python3 docs/loft_alignment.py [out.png]
