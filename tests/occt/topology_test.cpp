@@ -511,11 +511,10 @@ TEST(Topology, LoftsGoOverWithPartsFaces) {
         EXPECT_EQ(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_CN);
 }
 
-// OCCT's Thickness hollows a ruled solid through its top cap, as it hollows Part's ruled Loft. The closed side face
-// goes over in patches (patch_faces), meeting itself along the ruling where the circle closes; that ruling's
-// p-curves are lines on both of its sides, as are the rulings between the patches (linear_pcurve). Before: a
-// B-spline p-curve on one side, and the Thickness's inner face there came out with p-curves 6e-5 apart,
-// "Unorientable shape" (FreeCAD's test_part_operations listed it as a known failure).
+// OCCT's Thickness hollows a ruled solid through its top cap, as it hollows Part's ruled Loft. Before the seam of
+// closed sections went to a corner (align_sections), the circle -> square's side faces met halfway along a side in
+// a fold, and the Thickness's inner face there came out with p-curves 6e-5 apart, "Unorientable shape" (FreeCAD's
+// test_part_operations listed it as a known failure).
 TEST(Topology, RuledSolidsAreHollowedByOcctsThickness) {
     const Profile thirds({join({arc(2.0, 0, 120), arc(2.0, 120, 240), arc(2.0, 240, 360)})});  // OCCT's circle
     std::vector<NurbsCurve> sides;

@@ -94,17 +94,8 @@ std::vector<double> interior_knots(const NurbsCurve& curve) {
     return values;
 }
 
-// The straight pcurve from a (at t0) to b (at t1), parameterised by t: OCCT's line where t runs at unit speed
-// (a ruling of a side patch, t and v both over [0, 1]), a degree 1 B-spline otherwise. Why the line: a closed
-// ruled face cut into patches meets itself along such a ruling, and its other rulings between patches are lines
-// (side_pcurve); with a B-spline on one side of the closing ruling, OCCT's Thickness gave an inner face whose
-// p-curves missed each other by 6e-5 ("Unorientable shape"), with a line on both sides it is valid.
+// The straight pcurve from a (at t0) to b (at t1), parameterised by t: a degree 1 B-spline.
 Handle(Geom2d_Curve) linear_pcurve(const gp_Pnt2d& a, const gp_Pnt2d& b, double t0, double t1) {
-    const double length = a.Distance(b);
-    if (length > 0 && std::abs(length - (t1 - t0)) <= 1e-14 * (t1 - t0)) {
-        const gp_Dir2d direction(b.XY() - a.XY());
-        return new Geom2d_Line(gp_Pnt2d(a.XY() - t0 * direction.XY()), direction);
-    }
     TColgp_Array1OfPnt2d poles(1, 2);
     poles.SetValue(1, a);
     poles.SetValue(2, b);
