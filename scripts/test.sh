@@ -7,7 +7,7 @@
 #                (-O1, as ASan recommends; Python and FreeCAD stay out: ASan cannot be preloaded into them),
 #                with 150 round trips (15 of each shard) plus every seed that ever failed;
 #  4. fuzzing:   every libFuzzer target for a bounded time (scripts/fuzz.sh).
-# Budget: at most 20 minutes on 2 cores with a warm ccache (measured 866 s on a fresh clone, README). Runs unattended (CI=true, no stdin); exits
+# Budget: at most 20 minutes on 2 cores with a warm ccache (measured 866 and 958 s on fresh clones, README). Runs unattended (CI=true, no stdin); exits
 # non-zero when anything fails. Run as root on Debian 12: bash scripts/test.sh
 # (RATBEZ_BUILD_DIR and RATBEZ_ASAN_DIR override build/ and build-asan/, RATBEZ_JOBS the -j 2,
 # RATBEZ_FUZZ_SECONDS the 10 s per fuzz target; RATBEZ_ROUND_TRIP_CASES sets the cases per shard of both runs.)
