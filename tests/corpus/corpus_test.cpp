@@ -125,6 +125,16 @@ double max_face_tolerance(const Solid& solid) {
     return tolerance;
 }
 
+// The file whose OpenCASCADE reading is the reference: a STEP file's .brep sibling where FreeCAD wrote both
+// (make_corpus.py), the same solids in OpenCASCADE's own format. OpenCASCADE's STEP reader turns a face bound that
+// it cannot tell the sides of (sphere_minus_box_off_axis: read as the eighth of the sphere in the box; ratbez reads
+// the bounds as written, files.cpp), so its reading of the STEP file is no reference there.
+fs::path reference_file(const fs::path& file) {
+    fs::path brep = file;
+    brep.replace_extension(".brep");
+    return !is_brep(file) && fs::exists(brep) ? brep : file;
+}
+
 std::vector<Solid> read_all(const fs::path& file) {
     return is_brep(file) ? occt::read_brep_all(file.string()) : occt::read_step_all(file.string());
 }
@@ -139,7 +149,7 @@ TEST_P(CorpusModel, ReadsWithOpenCascadesVolumeAndPassesItsCheck) {
         volume += solid.volume();
         area_times_tolerance += solid.area() * max_face_tolerance(solid);
     }
-    const double reference = occt_volume(occt_shape(GetParam()));
+    const double reference = occt_volume(occt_shape(reference_file(GetParam())));
     // A face trimmed by p-curves a file tolerance t off its edges moves the boundary by up to t: the volume by up
     // to area x t. Exact files (t ~ 1e-7) are held to the 1e-6 of issue 24.
     const double bound = std::max(1e-6 * reference, area_times_tolerance);
@@ -200,7 +210,7 @@ std::size_t brepmesh_triangles(const TopoDS_Shape& shape, double deflection) {
 
 TEST_P(CorpusModel, MeshesInNoMoreTrianglesThanBRepMeshAtItsDeflection) {
     const std::vector<Solid> solids = read_all(GetParam());
-    const TopoDS_Shape shape = occt_shape(GetParam());
+    const TopoDS_Shape shape = occt_shape(reference_file(GetParam()));
     std::size_t shapes = 0;
     for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) ++shapes;
     if (shapes != solids.size())

@@ -43,6 +43,13 @@ def sphere_minus_box():
     return Part.makeSphere(6).cut(Part.makeBox(10, 10, 10))
 
 
+def sphere_minus_box_off_axis():
+    # The box's face y = 0 of the sphere runs along the sphere's seam: OpenCASCADE's STEP reader, FreeCAD's too,
+    # reads FreeCAD's file of it, placed anywhere off the plane y = 0, as the eighth of the sphere in the box.
+    centre = Vector(0, -40, 0)
+    return Part.makeSphere(6, centre).cut(Part.makeBox(10, 10, 10, centre))
+
+
 def box_with_void():
     return Part.makeBox(20, 20, 20).cut(Part.makeSphere(5, Vector(10, 10, 10)))
 
@@ -211,6 +218,7 @@ def main():
         "chamfered_box": chamfered_box(),
         "box_minus_sphere": box_minus_sphere(),
         "sphere_minus_box": sphere_minus_box(),
+        "sphere_minus_box_off_axis": sphere_minus_box_off_axis(),
         "box_with_void": box_with_void(),
         "fused_cylinders": fused_cylinders(),
         "cylinder_cut_cylinder": cylinder_cut_cylinder(),
@@ -225,14 +233,20 @@ def main():
     doc = App.newDocument("corpus")
     made["partdesign_pocket_hole"] = partdesign_body(doc).Shape
     made["partdesign_revolution"] = partdesign_revolution(doc).Shape
+    # RATBEZ_CORPUS_ONLY=name,name writes only those (the others' files stay byte for byte).
+    only = [name for name in os.environ.get("RATBEZ_CORPUS_ONLY", "").split(",") if name]
     failures = 0
     for name, shape in made.items():
+        if only and name not in only:
+            continue
         try:
             write(name, shape)
         except Exception:
             traceback.print_exc()
             failures += 1
     for name, shape in shipped_models():
+        if only and name not in only:
+            continue
         try:
             write(name, shape)
         except Exception:

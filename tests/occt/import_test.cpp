@@ -13,6 +13,9 @@
 #include <TColgp_Array2OfPnt.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <Geom2d_Curve.hxx>
+#include <gp_Vec2d.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
@@ -342,6 +345,34 @@ TEST(ImportShapes, TrimmedFacesImportExactly) {
     const Solid scooped_solid = from_occt(scooped);  // (a range-for over a temporary's faces() would dangle)
     for (const Face& face : scooped_solid.faces()) trimmed += face.kind() == Face::Kind::trimmed;
     EXPECT_EQ(trimmed, 1u);
+}
+
+// Ventilator.stp of pythonocc-demos: an exporter's p-curves leave their B-spline surface's domain by 2.3e-9 of its
+// range (the edges' tolerance 2e-4), and the face was refused ("leaves its exact form's domain"). A bounded
+// direction comes back inside from as far as the face's tolerance reaches in its parameter; beyond, still refused.
+TEST(ImportShapes, PCurvesJustOutsideABSplineDomainComeBackInside) {
+    const auto with_pcurve_outside = [](double overshoot) {
+        const TopoDS_Shape box = BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeBox(10, 10, 10).Shape()).Shape();
+        const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current());
+        double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+        BRep_Tool::Surface(face)->Bounds(u0, u1, v0, v1);
+        for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+            const TopoDS_Edge edge = TopoDS::Edge(it.Current());
+            double first = 0, last = 0;
+            const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+            const gp_Pnt2d middle = pcurve->Value(0.5 * (first + last));
+            if (std::abs(middle.Y() - v1) > 1e-12 * (v1 - v0)) continue;  // the side v = v1
+            const Handle(Geom2d_Curve) moved = Handle(Geom2d_Curve)::DownCast(pcurve->Translated(gp_Vec2d(0, overshoot * (v1 - v0))));
+            BRep_Builder().UpdateEdge(edge, moved, face, BRep_Tool::Tolerance(edge));
+            return box;
+        }
+        ADD_FAILURE() << "no edge on the side v = v1";
+        return box;
+    };
+    // 3e-9 of the range is 3e-8 on the 10 mm face, inside its edges' tolerance 1e-7.
+    EXPECT_NEAR(from_occt(with_pcurve_outside(3e-9)).volume(), 1000, 1e-9 * 1000);
+    const std::string refused = refusal(with_pcurve_outside(1e-6));
+    EXPECT_NE(refused.find("leaves its"), std::string::npos) << refused;
 }
 
 TEST(ImportShapes, SurfacesWithoutAnExactFormAreRefusedNamingTheFace) {

@@ -16,6 +16,13 @@
 #include <Message_ProgressIndicator.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
+#include <Resource_Manager.hxx>
+#include <ShapeAlgo.hxx>
+#include <ShapeAlgo_AlgoContainer.hxx>
+#include <ShapeAlgo_ToolContainer.hxx>
+#include <ShapeFix_Face.hxx>
+#include <ShapeFix_Shape.hxx>
+#include <ShapeProcess_Context.hxx>
 #include <TDF_Label.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
@@ -266,10 +273,67 @@ void flatten(const Handle(XCAFDoc_ShapeTool)& tool, const TDF_Label& label, cons
     out.push_back({placement.IsIdentity() ? shape : shape.Moved(placement), label_name(label)});
 }
 
-// The shapes of a STEP file with their product names: XCAF's free shapes, assemblies flattened.
-// Runs in the reader's child process (isolated_shapes).
-std::vector<NamedShape> read_step_shapes_here(const std::string& path, const Progress& progress) {
-    QuietMessenger quiet(QuietMessenger::Lock::skip_in_child);
+// The shapes as the file gives them, held against themselves (self_consistency.hpp), errors blamed on the file.
+std::vector<NamedShape> checked(std::vector<NamedShape> shapes, const std::string& path);
+
+// Whether OpenCASCADE's STEP translation keeps the orientation the file gives each face's bounds or turns a bound
+// it takes for the wrong way round (ShapeFix_Face::FixOrientation, FixOrientationMode in the FromSTEP sequence of
+// its STEP resource). Its test is the sign of the area the bound's p-curves enclose (ShapeAnalysis::IsOuterBound),
+// which cannot tell the two sides of a loop on a closed surface apart when a p-curve runs along the seam: FreeCAD's
+// sphere minus a box at its centre, written by FreeCAD anywhere off the plane y = 0, was read as the eighth of the
+// sphere inside the box (the box's faces turned to match), by FreeCAD and OpenCASCADE alike. The file's own
+// orientation is read first; OpenCASCADE's turning is kept for files whose bounds need it (a face given by a seam
+// alone, as a whole torus; read_step_shapes_here).
+enum class FaceBounds { as_written, as_turned_by_occt };
+
+// A ShapeFix_Shape that keeps each face's bounds as they come (FixOrientationMode 0), its other fixes OpenCASCADE's.
+class ToolsKeepingFaceBounds : public ShapeAlgo_ToolContainer {
+public:
+    Handle(ShapeFix_Shape) FixShape() const override {
+        Handle(ShapeFix_Shape) fix = ShapeAlgo_ToolContainer::FixShape();
+        fix->FixFaceTool()->FixOrientationMode() = 0;
+        return fix;
+    }
+};
+
+// Sets the face bound rule of OpenCASCADE's STEP translation for one translation and puts the old one back, where
+// the translation takes it from (XSAlgo_AlgoContainer::ProcessShape): without a STEP resource file (none is set,
+// in Debian's OpenCASCADE and in FreeCAD) the ShapeFix_Shape of the tool container; with one (CSF_STEPDefaults),
+// the resource's FixOrientationMode. Both are per process: the readers run in a child process.
+class FaceBoundRule {
+public:
+    explicit FaceBoundRule(FaceBounds bounds)
+        : resource_(ShapeProcess_Context().LoadResourceManager(Interface_Static::CVal("read.step.resource.name"))),
+          sequence_(Interface_Static::CVal("read.step.sequence")),
+          key_(sequence_ + ".FixShape.FixOrientationMode"),
+          tools_(ShapeAlgo::AlgoContainer()->ToolContainer()) {
+        if (bounds == FaceBounds::as_turned_by_occt) return;
+        if (resource_->Find((sequence_ + ".exec.op").c_str())) {
+            if (resource_->Find(key_.c_str())) old_mode_ = resource_->Integer(key_.c_str());
+            resource_->SetResource(key_.c_str(), 0);
+            set_mode_ = true;
+        } else {
+            ShapeAlgo::AlgoContainer()->SetToolContainer(new ToolsKeepingFaceBounds);
+        }
+    }
+    ~FaceBoundRule() {
+        ShapeAlgo::AlgoContainer()->SetToolContainer(tools_);
+        if (set_mode_) resource_->SetResource(key_.c_str(), old_mode_);
+    }
+    FaceBoundRule(const FaceBoundRule&) = delete;
+    FaceBoundRule& operator=(const FaceBoundRule&) = delete;
+
+private:
+    Handle(Resource_Manager) resource_;
+    std::string sequence_, key_;
+    Handle(ShapeAlgo_ToolContainer) tools_;
+    bool set_mode_ = false;
+    int old_mode_ = -1;  // OpenCASCADE's default: the fix on
+};
+
+// The shapes of a STEP file with their product names: XCAF's free shapes, assemblies flattened; each face's
+// bounds kept as written or as OpenCASCADE turns them (FaceBounds).
+std::vector<NamedShape> translated_step(const std::string& path, const Progress& progress, FaceBounds bounds) {
     try {
         // The parse is the first quarter of the progress, the translation the second (the conversion the second half).
         CapturedProgress captured(progress);
@@ -284,7 +348,11 @@ std::vector<NamedShape> read_step_shapes_here(const std::string& path, const Pro
         Handle(TDocStd_Document) document;
         application->NewDocument("MDTV-XCAF", document);
         Handle(PolledIndicator) indicator = new PolledIndicator(captured, 0.25, 0.5);
-        const bool transferred = reader.Transfer(document, indicator->Start());
+        bool transferred = false;
+        {
+            const FaceBoundRule rule(bounds);
+            transferred = reader.Transfer(document, indicator->Start());
+        }
         captured.rethrow_if_stopped();
         require(transferred, "path", "'" + path + "' holds no shape OpenCASCADE can translate");
         const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
@@ -300,6 +368,20 @@ std::vector<NamedShape> read_step_shapes_here(const std::string& path, const Pro
     } catch (const Standard_Failure& failure) {
         throw Error("path", "reading STEP from '" + path + "' failed: " + failure.GetMessageString());
     }
+}
+
+// The shapes of a STEP file, checked: with the face bounds as written where those make consistent solids, else as
+// OpenCASCADE turns them (FaceBounds; its errors are the ones reported). Runs in the reader's child process
+// (isolated_shapes).
+std::vector<NamedShape> read_step_shapes_here(const std::string& path, const Progress& progress) {
+    QuietMessenger quiet(QuietMessenger::Lock::skip_in_child);
+    std::vector<NamedShape> as_written = translated_step(path, progress, FaceBounds::as_written);
+    try {
+        return checked(std::move(as_written), path);
+    } catch (const Error&) {
+        // The file's bounds make no consistent solid as written: translated again, OpenCASCADE turning them.
+    }
+    return checked(translated_step(path, progress, FaceBounds::as_turned_by_occt), path);
 }
 
 // The shape of a .brep file (one, possibly a compound of several solids).
@@ -329,7 +411,7 @@ std::vector<NamedShape> read_brep_shapes_here(const std::string& path, const Pro
     } catch (const Standard_Failure& failure) {
         throw Error("path", "reading .brep from '" + path + "' failed: " + failure.GetMessageString());
     }
-    return {NamedShape{shape, ""}};
+    return checked({NamedShape{shape, ""}}, path);
 }
 
 // The child's answer: the names, then the shapes as one compound in OpenCASCADE's binary format (exact
@@ -340,6 +422,18 @@ TopoDS_Compound compound_of(const std::vector<NamedShape>& shapes) {
     builder.MakeCompound(all);
     for (const NamedShape& s : shapes) builder.Add(all, s.shape);
     return all;
+}
+
+std::vector<NamedShape> checked(std::vector<NamedShape> shapes, const std::string& path) {
+    try {
+        // Held against itself where OpenCASCADE's checks on a hostile shape cannot hurt the caller.
+        blamed_on(path, [&] { detail::check_self_consistency(compound_of(shapes)); });
+    } catch (const Standard_OutOfMemory&) {
+        throw std::bad_alloc();
+    } catch (const Standard_Failure& failure) {
+        throw Error("path", "reading '" + path + "' failed: " + failure.GetMessageString());
+    }
+    return shapes;
 }
 
 std::string pack(const std::vector<NamedShape>& shapes) {
@@ -378,9 +472,9 @@ std::vector<NamedShape> unpack(const std::string& bytes, const std::string& path
     return shapes;
 }
 
-// The shapes `read_here` reads from the file, read in a child process under the reader's limits
-// (child_process.hpp): OpenCASCADE crashing, looping or allocating without bound on a hostile file ends the
-// child, not the caller, and the caller's Progress (Ctrl-C) kills it within a poll interval. The reading
+// The shapes `read_here` reads from the file and holds against themselves (checked), read in a child process
+// under the reader's limits (child_process.hpp): OpenCASCADE crashing, looping or allocating without bound on a
+// hostile file ends the child, not the caller, and the caller's Progress (Ctrl-C) kills it within a poll interval. The reading
 // is the first half of the progress.
 // `prescan` looks at the file's text first (file_prescan.hpp), in the parent: its refusals name the count.
 std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress& progress,
@@ -401,10 +495,7 @@ std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress&
             // The child reports the whole read as [0, 1] of its part; the readers report [0, 0.5] of theirs.
             const Progress child_progress = [&report](double fraction) { report(2 * fraction); };
             try {
-                const std::vector<NamedShape> shapes = read_here(path, child_progress);
-                // Held against itself where OpenCASCADE's checks on a hostile shape cannot hurt the caller.
-                blamed_on(path, [&] { detail::check_self_consistency(compound_of(shapes)); });
-                return pack(shapes);
+                return pack(read_here(path, child_progress));  // checked by the reader
             } catch (const Standard_OutOfMemory&) {
                 throw std::bad_alloc();
             } catch (const Standard_Failure& failure) {

@@ -4,6 +4,7 @@
 #include <BRepCheck_ListOfStatus.hxx>
 #include <BRepCheck_Result.hxx>
 #include <BRepCheck_Status.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom2d_Curve.hxx>
@@ -47,11 +48,32 @@ std::string point_text(const gp_Pnt& p) {
     return text;
 }
 
+double coordinate_scale(const gp_Pnt& at) { return std::max({1.0, std::abs(at.X()), std::abs(at.Y()), std::abs(at.Z())}); }
+
 // How far apart OpenCASCADE lets two things be that the file puts together: the sum of their tolerances,
 // and a few ulps of the coordinates for files written with tolerance 0.
 double allowed(double tolerance_a, double tolerance_b, const gp_Pnt& at) {
-    const double scale = std::max({1.0, std::abs(at.X()), std::abs(at.Y()), std::abs(at.Z())});
-    return tolerance_a + tolerance_b + 1e-12 * scale;
+    return tolerance_a + tolerance_b + 1e-12 * coordinate_scale(at);
+}
+
+// A gap beyond the file's tolerances by no more than 1e-9 of the coordinates is the file's rounding, not a fault:
+// exporters write 1e-7 (OpenCASCADE's least tolerance) whatever the model's size, and a part 600 mm across
+// (11752.stp, pythonocc-demos) has p-curves 4e-7 off their edges' curves between the points OpenCASCADE's own
+// check compares (ShapeAnalysis_Edge: 2.5e-9 there). The tolerance of the edge or vertex is raised to the gap
+// found (kept), so that the conversion, the meshes and the checks downstream allow for what the file holds.
+bool within_rounding(double gap, double limit, const gp_Pnt& at) { return gap <= limit + 1e-9 * coordinate_scale(at); }
+
+void keep_edge_gap(const TopoDS_Edge& edge, double gap) {
+    if (gap <= BRep_Tool::Tolerance(edge)) return;
+    BRep_Builder builder;
+    builder.UpdateEdge(edge, gap);
+    // OpenCASCADE's rule: a vertex's tolerance is at least its edges'.
+    for (TopExp_Explorer it(edge, TopAbs_VERTEX); it.More(); it.Next())
+        if (BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())) < gap) builder.UpdateVertex(TopoDS::Vertex(it.Current()), gap);
+}
+
+void keep_vertex_gap(const TopoDS_Vertex& vertex, double gap) {
+    if (gap > BRep_Tool::Tolerance(vertex)) BRep_Builder().UpdateVertex(vertex, gap);
 }
 
 // An edge of a face: its 3D curve passes through its vertices and its p-curve on the face's surface follows
@@ -75,6 +97,10 @@ void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face) {
             const gp_Pnt2d uv = pcurve->Value(t);
             const double gap = surface->Value(uv.X(), uv.Y()).Distance(vertex);
             const double limit = allowed(edge_tolerance, BRep_Tool::Tolerance(first_vertex), vertex);
+            if (gap > limit && within_rounding(gap, limit, vertex)) {
+                keep_edge_gap(edge, gap);
+                continue;
+            }
             require(gap <= limit, "shape", [&] {
                 return "the collapsed edge's p-curve leaves its vertex " + point_text(vertex) + " by " + number(gap) +
                        ", more than the file's tolerance " + number(limit);
@@ -90,6 +116,10 @@ void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face) {
         const gp_Pnt at = BRep_Tool::Pnt(vertex);
         const double gap = curve->Value(t).Distance(at);
         const double limit = allowed(edge_tolerance, BRep_Tool::Tolerance(vertex), at);
+        if (gap > limit && within_rounding(gap, limit, at)) {
+            keep_vertex_gap(vertex, gap);
+            continue;
+        }
         require(gap <= limit, "shape", [&] {
             return "the vertex " + point_text(at) + " is " + number(gap) + " from the end of its edge's curve, more than the file's tolerance " +
                    number(limit);
@@ -110,6 +140,10 @@ void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face) {
         if (gap > limit) {
             GeomAPI_ProjectPointOnCurve projection(on_surface, curve, first, last);
             if (projection.NbPoints() > 0) gap = std::min(gap, projection.LowerDistance());
+        }
+        if (gap > limit && within_rounding(gap, limit, on_curve)) {
+            keep_edge_gap(edge, gap);
+            continue;
         }
         require(gap <= limit, "shape", [&] {
             return "its p-curve on the face is " + number(gap) + " from its 3D curve at " + point_text(on_surface) +

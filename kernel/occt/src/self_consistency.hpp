@@ -3,7 +3,8 @@
 // whatever the file says, and a vertex moved off its edges, a p-curve that leaves its edge's 3D curve, a loop
 // that does not close or a shell that does not close or is not oriented would otherwise become a Solid whose
 // exact measures and mesh describe different shapes. Everything is held to the file's own tolerances (an edge's
-// tolerance bounds its curves' distance, a vertex's its distance from its edges).
+// tolerance bounds its curves' distance, a vertex's its distance from its edges); a gap beyond them by no more
+// than 1e-9 of the coordinates is the file's rounding, and raises the edge's or vertex's tolerance to it.
 
 #include <TopoDS_Shape.hxx>
 
@@ -12,7 +13,7 @@ namespace ratbez::occt::detail {
 // Throws Error("shape", "solid s: face f: edge e: ...") naming the first inconsistency and its distance (solids,
 // faces and edges numbered from 0 in the order OpenCASCADE's explorer meets them, as the importer numbers them);
 // then BRepCheck's verdict on each solid. Shapes without solids (surface models, sewn later) are checked face
-// by face only.
+// by face only. Raises the tolerances of the shape's edges and vertices where it keeps a gap (above).
 void check_self_consistency(const TopoDS_Shape& shape);
 
 }  // namespace ratbez::occt::detail

@@ -30,6 +30,7 @@
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_Plane.hxx>
+#include <GeomAdaptor_Surface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_SphericalSurface.hxx>
 #include <Geom_SurfaceOfLinearExtrusion.hxx>
@@ -143,25 +144,50 @@ struct NaturalRectangle {
     std::array<std::optional<TopoDS_Edge>, 4> sides;  // oriented as the face uses them; OCCT's parameters
 };
 
+// The end of a full turn from `lo`: lo + period, less an ulp where the rounded sum leaves a difference above the
+// period (from 5 pi / 4 it does by 9e-16, where OpenCASCADE seams a sphere it read), which OpenCASCADE's
+// conversions refuse (Standard_DomainError).
+double full_turn_end(double lo, double period) {
+    double hi = lo + period;
+    while (hi - lo > period) hi = std::nextafter(hi, lo);
+    return hi;
+}
+
+// The largest tolerance OpenCASCADE gives the face, its edges and its vertices: how far the file lets its
+// boundary curves keep from the surface and from each other.
+double file_tolerance(const TopoDS_Face& face) {
+    double tolerance = BRep_Tool::Tolerance(face);
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next())
+        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Edge(it.Current())));
+    for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next())
+        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())));
+    return tolerance;
+}
+
 // A rectangle of OCCT parameters made to fit the surface: a direction that closes with a period (a full turn)
 // spans at most that period, and a bounded direction (a sphere's latitude, a B-spline's domain) stays inside
 // its bounds. Files overshoot both by rounding: FreeCAD writes a full turn as 6.28318530717959 (one ulp above
 // 2 pi in .brep; STEP's 12 digits overshoot by 4e-13) and a sphere's latitude past pi/2 by as much, which
-// OpenCASCADE's own conversions then refuse (Standard_DomainError). A rectangle wider than the period by
-// more than 1e-9 of it is left alone (the conversion reports it).
-std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<double, 4> r) {
+// OpenCASCADE's own conversions then refuse (Standard_DomainError). A bounded direction also comes back inside
+// from as far as the face's `tolerance` reaches in its parameter (GeomAdaptor_Surface's resolution): p-curves
+// fitted by an exporter overshoot a B-spline's domain (Ventilator.stp, pythonocc-demos: by 2.3e-9 of a v range
+// of 0.5, its edges' tolerance 2e-4). A rectangle wider than the period by more than 1e-9 of it is left alone
+// (the conversion reports it).
+std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<double, 4> r, double tolerance) {
     double a = 0, b = 0, c = 0, d = 0;
     basis->Bounds(a, b, c, d);
-    const auto snap = [](double& lo, double& hi, bool periodic, double period, double min, double max) {
+    const GeomAdaptor_Surface adaptor(basis);
+    const auto snap = [](double& lo, double& hi, bool periodic, double period, double min, double max, double reach) {
         if (periodic) {
-            if (hi - lo > period && hi - lo <= period * (1 + 1e-9)) hi = lo + period;
+            if (hi - lo > period && hi - lo <= period * (1 + 1e-9)) hi = full_turn_end(lo, period);
             return;
         }
-        if (!Precision::IsInfinite(min) && lo < min && min - lo <= 1e-9 * std::max(1.0, max - min)) lo = min;
-        if (!Precision::IsInfinite(max) && hi > max && hi - max <= 1e-9 * std::max(1.0, max - min)) hi = max;
+        const double slack = std::max(1e-9 * std::max(1.0, max - min), reach);
+        if (!Precision::IsInfinite(min) && lo < min && min - lo <= slack) lo = min;
+        if (!Precision::IsInfinite(max) && hi > max && hi - max <= slack) hi = max;
     };
-    snap(r[0], r[1], basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b);
-    snap(r[2], r[3], basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d);
+    snap(r[0], r[1], basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b, adaptor.UResolution(tolerance));
+    snap(r[2], r[3], basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d, adaptor.VResolution(tolerance));
     return r;
 }
 
@@ -186,7 +212,7 @@ std::array<double, 4> trimmed_rectangle(const TopoDS_Face& face, const Handle(Ge
         const double margin = 0.01 * (hi - lo);
         if (periodic) {
             if (hi - lo >= period * (1 - 1e-9)) {
-                hi = lo + period;
+                hi = full_turn_end(lo, period);
                 return;
             }
             const double room = std::min(margin, 0.5 * (period - (hi - lo)));
@@ -198,18 +224,7 @@ std::array<double, 4> trimmed_rectangle(const TopoDS_Face& face, const Handle(Ge
     };
     widen(u0, u1, basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b);
     widen(v0, v1, basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d);
-    return snapped(basis, {u0, u1, v0, v1});
-}
-
-// The largest tolerance OpenCASCADE gives the face, its edges and its vertices: how far the file lets its
-// boundary curves keep from the surface and from each other.
-double file_tolerance(const TopoDS_Face& face) {
-    double tolerance = BRep_Tool::Tolerance(face);
-    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next())
-        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Edge(it.Current())));
-    for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next())
-        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())));
-    return tolerance;
+    return snapped(basis, {u0, u1, v0, v1}, file_tolerance(face));
 }
 
 class Importer {
@@ -396,7 +411,7 @@ private:
             uses.emplace_back(e, samples);
         }
         if (!(u1 > u0 && v1 > v0)) return std::nullopt;
-        NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}), {}};
+        NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}, file_tolerance(face)), {}};
         // Pcurves made by projection (STEP files without them) sit on the sides to about 1e-7 of the rectangle.
         const double tol_u = 1e-6 * (u1 - u0), tol_v = 1e-6 * (v1 - v0);
         for (const auto& use : uses) {
