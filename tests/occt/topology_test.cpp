@@ -12,6 +12,7 @@
 #include <BRepCheck_Shell.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepFilletAPI_MakeChamfer.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepGProp.hxx>
 #include <BRepOffsetAPI_MakeThickSolid.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -786,6 +787,40 @@ TEST(Topology, ArcsBesideBsplineFacesGoOverOnOcctsCircles) {
     }
 }
 
+// An arc from the circle's own start runs from 0, as OCCT's arcs do: where the start's angle rounded to 2 pi
+// (atan2 of -1e-17), the arc ran over [2 pi, 8 pi / 3], and OCCT's fillet of the ruled circle -> triangle, all its
+// edges at 0.4, took 8 s and came out "BOPAlgo GeomAbs_C0" (Part's Loft: 0.1 s, clean); from 0: 0.2 s and clean.
+TEST(Topology, ArcsOnOcctsCirclesStartWhereTheCircleStarts) {
+    const auto corner = [](double degrees) {
+        return Vec3{2.5 * std::cos(degrees * std::numbers::pi / 180), 2.5 * std::sin(degrees * std::numbers::pi / 180), 4};
+    };
+    const Profile triangle({line_segment(corner(0), corner(120)), line_segment(corner(120), corner(240)),
+                            line_segment(corner(240), corner(0))});
+    const Solid ruled = loft({Profile({circle(2)}), triangle}, 3, true);
+    const TopoDS_Solid handed = to_occt(ruled);
+    int circles = 0;
+    TopTools_IndexedMapOfShape edges;
+    TopExp::MapShapes(handed, TopAbs_EDGE, edges);
+    BRepFilletAPI_MakeFillet fillet(handed);
+    for (int i = 1; i <= edges.Extent(); ++i) {
+        const TopoDS_Edge& edge = TopoDS::Edge(edges(i));
+        double first = 0, last = 0;
+        const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+        if (curve.IsNull()) continue;
+        fillet.Add(0.4, edge);
+        if (!curve->IsKind(STANDARD_TYPE(Geom_Circle))) continue;
+        ++circles;
+        EXPECT_GE(first, 0);
+        EXPECT_LT(first, 2 * std::numbers::pi - 1e-6);
+        EXPECT_LE(last, 2 * std::numbers::pi + 1e-12);
+    }
+    EXPECT_EQ(circles, 3);
+    fillet.Build();
+    ASSERT_TRUE(fillet.IsDone());
+    EXPECT_TRUE(BRepCheck_Analyzer(fillet.Shape()).IsValid());
+    EXPECT_FALSE(bop_check_finds_faults(fillet.Shape()));
+    EXPECT_NEAR(occt_volume(fillet.Shape()), 40.5503, 1e-3);  // Part's Loft: 40.8101 on its other surface
+}
 
 // The other side of the same cut: the octant of the sphere inside the box (OCCT's Common; what OCCT's STEP reader,
 // FreeCAD's too, makes of FreeCAD's own STEP file of the sphere minus a box at (0, -40, 0)). Its face's rims lie on

@@ -35,7 +35,9 @@ std::optional<EdgeCircle> edge_circle(const Edge& e, double tolerance) {
 std::optional<std::pair<double, double>> arc_range(const gp_Circ& circle, const gp_Pnt& start, const gp_Pnt& middle, const gp_Pnt& end,
                                     bool closed) {
     constexpr double kTurn = 2 * std::numbers::pi;
-    const double first = ElCLib::Parameter(circle, start);
+    // A start on the circle's own start rounds to either end of [0, 2 pi): at 0, as OCCT's own arcs start there.
+    double first = ElCLib::Parameter(circle, start);
+    if (kTurn - first <= 1e-12 * kTurn) first = 0;
     double last = closed ? first + kTurn : ElCLib::Parameter(circle, end);
     while (last <= first) last += kTurn;
     double through = ElCLib::Parameter(circle, middle);
