@@ -3,13 +3,30 @@
 // after a pre-scan of the file's counts and numbers (file_prescan.hpp). Each case runs where a crash or a
 // hang of the fix cannot take the test binary down (completes_in_child), with a time limit.
 
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
+#include <GProp_GProps.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <Interface_Static.hxx>
+#include <STEPControl_Writer.hxx>
+#include <gp_Ax2.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
 #include <gp_Trsf.hxx>
+#include <gp_Vec2d.hxx>
 #include <gp_Vec.hxx>
 #include <gtest/gtest.h>
 #include <sys/prctl.h>
@@ -19,6 +36,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -249,15 +267,13 @@ TEST_F(HostileFiles, APCurveOffItsEdgeIsRefusedNamingTheDistance) {
     EXPECT_NE(message.find("its p-curve on the face is 1 from its 3D curve"), std::string::npos) << message;
 }
 
-// The other side of the rule (self_consistency.cpp, within_rounding): 11752.stp of pythonocc-demos, a part 600 mm
-// across written with tolerance 1e-7, has p-curves 4e-7 off their edges' curves (OpenCASCADE's own check of 23
-// points finds 2.5e-9), and was refused. A gap within 1e-9 of the coordinates is the file's rounding: kept, its
-// edge's tolerance raised to it. The same gap at the origin, and 25 times as much at 600, are still refused.
-TEST_F(HostileFiles, APCurveOffItsEdgeByTheFilesRoundingIsKeptItsToleranceRaised) {
-    const auto shifted_box = [&](const std::string& name, const std::string& shift, double x) {
-        const std::string text = freecad_box();
-        const std::size_t second = text.find("1 0 0 1 0 \n", text.find("Curve2ds")) + 11;
-        const std::string moved = text.substr(0, second) + "1 0 " + shift + " 1 0 \n" + text.substr(second + 11);
+// The other side of the rule (self_consistency.cpp, within_rounding): exporters write tolerance 1e-7 whatever the
+// model's size, and 11752.stp of pythonocc-demos, a part 600 mm across, has edges 4e-7 off where its file says they
+// meet. A gap within 1e-9 of the coordinates is the file's rounding: kept, the tolerance raised to it (here a
+// vertex 4e-7 off its edges' ends). The same gap at the origin, and 25 times as much at 600, are still refused.
+TEST_F(HostileFiles, AVertexOffItsEdgesByTheFilesRoundingIsKeptItsToleranceRaised) {
+    const auto moved_box = [&](const std::string& name, const std::string& y, double x) {
+        const std::string moved = replaced_once(freecad_box(), "\nVe\n1e-07\n2 0 0\n", "\nVe\n1e-07\n2 " + y + " 0\n");
         TopoDS_Shape box;
         BRep_Builder builder;
         EXPECT_TRUE(BRepTools::Read(box, written(name, moved).c_str(), builder));
@@ -266,16 +282,39 @@ TEST_F(HostileFiles, APCurveOffItsEdgeByTheFilesRoundingIsKeptItsToleranceRaised
         EXPECT_TRUE(BRepTools::Write(box.Moved(TopLoc_Location(translation)), path(name).c_str()));
         return path(name);
     };
-    const Solid kept = read_brep(shifted_box("kept.brep", "4e-07", 600));
+    const Solid kept = read_brep(moved_box("kept.brep", "4e-07", 600));
     EXPECT_NEAR(kept.volume(), 24, 1e-5);
     double tolerance = 0;
     for (const Face& face : kept.faces()) tolerance = std::max(tolerance, face.tolerance());
-    EXPECT_GE(tolerance, 4e-7 * (1 - 1e-6));
+    EXPECT_GE(tolerance, 2e-7);
     EXPECT_LT(tolerance, 1e-6);
-    const std::string at_origin = error_of([&] { read_brep(shifted_box("origin.brep", "4e-07", 0)); });
-    EXPECT_NE(at_origin.find("its p-curve on the face is 4e-07 from its 3D curve"), std::string::npos) << at_origin;
-    const std::string far_off = error_of([&] { read_brep(shifted_box("far_off.brep", "1e-05", 600)); });
-    EXPECT_NE(far_off.find("its p-curve on the face is 1e-05 from its 3D curve"), std::string::npos) << far_off;
+    const std::string at_origin = error_of([&] { read_brep(moved_box("origin.brep", "4e-07", 0)); });
+    EXPECT_NE(at_origin.find("is 4e-07 from the end of its edge's curve"), std::string::npos) << at_origin;
+    const std::string far_off = error_of([&] { read_brep(moved_box("far_off.brep", "1e-05", 600)); });
+    EXPECT_NE(far_off.find("is 1e-05 from the end of its edge's curve"), std::string::npos) << far_off;
+}
+
+// STEP files mostly carry no p-curves, and OpenCASCADE's reader fits its own that stray between the points it fits
+// (1.3e-3 on a sphere near its pole in a 3D printer part 50 mm across, its edge's tolerance 1e-7): 32 of 108 files
+// from public repositories were refused so. Where the edge's 3D curve lies on the surface, a p-curve within 1e-3
+// of the model's size of it is OpenCASCADE's loose fit, not the file's fault (self_consistency.cpp, kLoosePcurve).
+// Here a sphere cut by a tilted box beside its pole, written without p-curves: OpenCASCADE's fit strays 2.4e-6 from
+// an edge it gives tolerance 1e-7.
+TEST_F(HostileFiles, STEPFilesWithoutPCurvesReadOnOpenCascadesLooseFit) {
+    const TopoDS_Shape drilled =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeSphere(25).Shape(),
+                        BRepPrimAPI_MakeBox(gp_Ax2(gp_Pnt(1.5, 1.5, 22), gp_Dir(0, 0.1, 1)), 10, 10, 10).Shape())
+            .Shape();
+    STEPControl_Writer writer;
+    Interface_Static::SetIVal("write.surfacecurve.mode", 0);
+    writer.Transfer(drilled, STEPControl_AsIs);
+    Interface_Static::SetIVal("write.surfacecurve.mode", 1);
+    ASSERT_EQ(writer.Write(path("no_pcurves.step").c_str()), IFSelect_RetDone);
+    EXPECT_EQ(test::read_file(path("no_pcurves.step")).find("PCURVE"), std::string::npos);
+    GProp_GProps properties;
+    BRepGProp::VolumeProperties(drilled, properties, 1e-12);
+    const Solid read = read_step(path("no_pcurves.step"));
+    EXPECT_NEAR(read.volume(), properties.Mass(), 1e-6 * properties.Mass());
 }
 
 // A shell missing a face, and one with a face turned inside out: open, and not oriented.

@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <vector>
 
@@ -153,16 +152,9 @@ FittedPcurve PcurveFitter::fit(const NurbsCurve& edge, const std::function<gp_Pn
         try {
             Geom2dAPI_Interpolate interpolate(points, parameters, Standard_False, 1e-15 * std::max(1.0, d.width()));
             interpolate.Perform();
-            if (!interpolate.IsDone()) {
-                std::fprintf(stderr, "interp failed n=%d\n", n);
-                for (int k = 0; k < n; ++k) std::fprintf(stderr, "  t=%.17g uv=(%.17g, %.17g)\n", ts[k], uvs[k].X(), uvs[k].Y());
-                break;
-            }
+            if (!interpolate.IsDone()) break;  // (two samples on one place): the best fit so far, if any
             interpolated = interpolate.Curve();
-        } catch (const Standard_Failure& f) {
-            std::fprintf(stderr, "interp threw %s n=%d domain u [%g %g] v [%g %g]\n", f.GetMessageString(), n, surface_.domain_u().min, surface_.domain_u().max, surface_.domain_v().min, surface_.domain_v().max);
-            for (int k = 0; k < 3; ++k) { gp_Pnt2d g = guess(ts[k]); std::fprintf(stderr, "  guess t=%g (%g %g)\n", ts[k], g.X(), g.Y()); }
-            for (int k = 0; k < n; ++k) std::fprintf(stderr, "  t=%.17g uv=(%.17g, %.17g)\n", ts[k], uvs[k].X(), uvs[k].Y());
+        } catch (const Standard_Failure&) {
             break;
         }
         NurbsCurve candidate = from_occt_2d(interpolated);

@@ -4,12 +4,15 @@
 #include <BRepCheck_ListOfStatus.hxx>
 #include <BRepCheck_Result.hxx>
 #include <BRepCheck_Status.hxx>
+#include <BRepBndLib.hxx>
 #include <BRep_Builder.hxx>
+#include <Bnd_Box.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom2d_Curve.hxx>
 #include <Geom_Curve.hxx>
 #include <Geom_Surface.hxx>
+#include <ShapeAnalysis_Surface.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -76,9 +79,19 @@ void keep_vertex_gap(const TopoDS_Vertex& vertex, double gap) {
     if (gap > BRep_Tool::Tolerance(vertex)) BRep_Builder().UpdateVertex(vertex, gap);
 }
 
+// How far a p-curve may keep from its edge's 3D curve where the 3D curve itself lies on the face's surface: a
+// thousandth of the model's size. STEP files mostly carry no p-curves (31 of 32 such files of 108 tried from
+// public repositories: SolidWorks, Fusion, Inventor, CATIA), and OpenCASCADE's reader fits its own to its 23
+// points on the curve, gives the edge a tolerance from those points (1e-7), and between them the fit strays
+// (1.3e-3 on a sphere near its pole, a 3D printer part 50 mm across). The file's geometry, the 3D curve on its
+// surface, is consistent; the importer fits its own p-curves from the 3D curves (pcurve_fit.hpp), with
+// OpenCASCADE's as the first guess only. Beyond this bound a p-curve is the file's fault (a p-curve moved off).
+constexpr double kLoosePcurve = 1e-3;
+
 // An edge of a face: its 3D curve passes through its vertices and its p-curve on the face's surface follows
-// its 3D curve, within the edge's and the vertices' tolerances.
-void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face) {
+// its 3D curve, within the edge's and the vertices' tolerances, or, where OpenCASCADE made the p-curve loosely,
+// the 3D curve lies on the surface within them (kLoosePcurve). `size`: the model's.
+void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face, double size) {
     const double edge_tolerance = BRep_Tool::Tolerance(edge);
     TopoDS_Vertex first_vertex, last_vertex;
     TopExp::Vertices(edge, first_vertex, last_vertex);
@@ -145,6 +158,12 @@ void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face) {
             keep_edge_gap(edge, gap);
             continue;
         }
+        if (gap > limit && gap <= kLoosePcurve * size) {
+            // The 3D curve's point on the surface, found from where the p-curve puts it (a local search).
+            ShapeAnalysis_Surface on_surface_near(surface);
+            on_surface_near.NextValueOfUV(uv, on_curve, limit);
+            if (on_surface_near.Gap() <= limit) continue;
+        }
         require(gap <= limit, "shape", [&] {
             return "its p-curve on the face is " + number(gap) + " from its 3D curve at " + point_text(on_surface) +
                    ", more than the file's tolerance " + number(limit);
@@ -153,11 +172,11 @@ void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face) {
 }
 
 // A face: each edge on it, and each loop closed (every vertex of a wire ends as many of its edges as it starts).
-void check_face(const TopoDS_Face& face) {
+void check_face(const TopoDS_Face& face, double size) {
     int e = 0;
     for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next(), ++e) {
         try {
-            check_edge_on_face(TopoDS::Edge(it.Current()), face);
+            check_edge_on_face(TopoDS::Edge(it.Current()), face, size);
         } catch (const Error& error) {
             throw Error("shape", "edge " + std::to_string(e) + ": " + std::string(error.reason()));
         }
@@ -202,6 +221,13 @@ void check_shell(const TopoDS_Shape& shell, const TopTools_IndexedMapOfShape& fa
     }
 }
 
+// The diagonal of the shape's bounding box.
+double size_of(const TopoDS_Shape& shape) {
+    Bnd_Box box;
+    BRepBndLib::Add(shape, box);
+    return box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
+}
+
 std::string status_name(BRepCheck_Status status) {
     // The names of BRepCheck_Status without the prefix; the enum's own numbering otherwise.
     static const char* const kNames[] = {"NoError", "InvalidPointOnCurve", "InvalidPointOnCurveOnSurface", "InvalidPointOnSurface",
@@ -241,11 +267,12 @@ void check_self_consistency(const TopoDS_Shape& shape) {
         any_solid = true;
         const std::string solid = "solid " + std::to_string(s) + ": ";
         TopTools_IndexedMapOfShape faces;
+        const double size = size_of(solids.Current());
         int f = 0;
         for (TopExp_Explorer it(solids.Current(), TopAbs_FACE); it.More(); it.Next(), ++f) {
             faces.Add(it.Current());
             try {
-                check_face(TopoDS::Face(it.Current()));
+                check_face(TopoDS::Face(it.Current()), size);
             } catch (const Error& error) {
                 throw Error("shape", solid + "face " + std::to_string(f) + ": " + std::string(error.reason()));
             }
@@ -258,10 +285,11 @@ void check_self_consistency(const TopoDS_Shape& shape) {
         }
     }
     if (any_solid) return;
+    const double size = size_of(shape);
     int f = 0;
     for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next(), ++f) {
         try {
-            check_face(TopoDS::Face(it.Current()));
+            check_face(TopoDS::Face(it.Current()), size);
         } catch (const Error& error) {
             throw Error("shape", "face " + std::to_string(f) + ": " + std::string(error.reason()));
         }

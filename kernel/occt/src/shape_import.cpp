@@ -171,15 +171,15 @@ double file_tolerance(const TopoDS_Face& face) {
 // OpenCASCADE's own conversions then refuse (Standard_DomainError). A bounded direction also comes back inside
 // from as far as the face's `tolerance` reaches in its parameter (GeomAdaptor_Surface's resolution): p-curves
 // fitted by an exporter overshoot a B-spline's domain (Ventilator.stp, pythonocc-demos: by 2.3e-9 of a v range
-// of 0.5, its edges' tolerance 2e-4). A rectangle wider than the period by more than 1e-9 of it is left alone
-// (the conversion reports it).
+// of 0.5, its edges' tolerance 2e-4), and a full turn by as much. A rectangle wider than the period by more than
+// 1e-9 of it and that reach is left alone (the conversion reports it).
 std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<double, 4> r, double tolerance) {
     double a = 0, b = 0, c = 0, d = 0;
     basis->Bounds(a, b, c, d);
     const GeomAdaptor_Surface adaptor(basis);
     const auto snap = [](double& lo, double& hi, bool periodic, double period, double min, double max, double reach) {
         if (periodic) {
-            if (hi - lo > period && hi - lo <= period * (1 + 1e-9)) hi = full_turn_end(lo, period);
+            if (hi - lo > period && hi - lo <= period + std::max(1e-9 * period, reach)) hi = full_turn_end(lo, period);
             return;
         }
         const double slack = std::max(1e-9 * std::max(1.0, max - min), reach);
