@@ -474,8 +474,8 @@ std::vector<NamedShape> unpack(const std::string& bytes, const std::string& path
 
 // The shapes `read_here` reads from the file and holds against themselves (checked), read in a child process
 // under the reader's limits (child_process.hpp): OpenCASCADE crashing, looping or allocating without bound on a
-// hostile file ends the child, not the caller, and the caller's Progress (Ctrl-C) kills it within a poll interval. The reading
-// is the first half of the progress.
+// hostile file ends the child, not the caller, and the caller's Progress (Ctrl-C) kills it within a poll
+// interval. The reading is the first half of the progress.
 // `prescan` looks at the file's text first (file_prescan.hpp), in the parent: its refusals name the count.
 std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress& progress,
                                         std::vector<NamedShape> (*read_here)(const std::string&, const Progress&),
