@@ -16,14 +16,17 @@
 #include <Geom_SphericalSurface.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <STEPControl_Reader.hxx>
+#include <STEPControl_Writer.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <fstream>
 #include <sstream>
+#include <numbers>
 #include <string>
 
 #include "occt_test_support.hpp"
@@ -122,6 +125,30 @@ TEST_F(Files, FaceTrimmedOnASphereReadsBackCleanFromStep) {
             }
         }
     }
+}
+
+// OpenCASCADE's STEP translation turned the loop of a face along a sphere's seam (FixOrientation): a sphere minus a
+// box at its centre, off the plane y = 0, came back as the box's eighth of the sphere. The bounds are read as
+// written (files.cpp, FaceBoundRule), where the translation takes its rule from: the tool container without a STEP
+// resource file (Debian, FreeCAD), the resource's FixOrientationMode with one (CSF_STEPDefaults).
+TEST_F(Files, FaceBoundsAlongASpheresSeamReadAsWrittenWithAndWithoutAResourceFile) {
+    const gp_Pnt centre(0, -40, 0);
+    const TopoDS_Shape cut = BRepAlgoAPI_Cut(BRepPrimAPI_MakeSphere(centre, 6).Shape(), BRepPrimAPI_MakeBox(centre, 10, 10, 10).Shape()).Shape();
+    STEPControl_Writer writer;
+    writer.Transfer(cut, STEPControl_AsIs);
+    const std::string file = path("sphere_minus_box.step");
+    ASSERT_EQ(writer.Write(file.c_str()), IFSelect_RetDone);
+    const double seven_eighths = 7.0 / 8 * 4.0 / 3 * std::numbers::pi * 216;
+    EXPECT_NEAR(read_step(file).volume(), seven_eighths, 1e-9 * seven_eighths);
+
+    const fs::path resource = "/usr/share/opencascade/resources/XSTEPResource/STEP";
+    if (!fs::exists(resource)) GTEST_SKIP() << "no STEP resource file at " << resource;
+    fs::copy_file(resource, path("STEP"));
+    // The reader's child process inherits the variable; OpenCASCADE loads the resource there.
+    ASSERT_EQ(setenv("CSF_STEPDefaults", path("").c_str(), 1), 0);
+    const double with_resource = read_step(file).volume();
+    unsetenv("CSF_STEPDefaults");
+    EXPECT_NEAR(with_resource, seven_eighths, 1e-9 * seven_eighths);
 }
 
 TEST_F(Files, BrepFileAndStringReadBack) {

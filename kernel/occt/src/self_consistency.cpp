@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -140,6 +141,7 @@ void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face, double
     }
     // The p-curve runs its range as the 3D curve runs its own (proportionally where the file does not claim
     // the same parameter).
+    std::optional<ShapeAnalysis_Surface> near_surface;  // made for the first loose sample, kept along the edge
     for (int k = 0; k < kSamples; ++k) {
         const double s = static_cast<double>(k) / (kSamples - 1);
         const gp_Pnt on_curve = curve->Value(first + (last - first) * s);
@@ -160,9 +162,9 @@ void check_edge_on_face(const TopoDS_Edge& edge, const TopoDS_Face& face, double
         }
         if (gap > limit && gap <= kLoosePcurve * size) {
             // The 3D curve's point on the surface, found from where the p-curve puts it (a local search).
-            ShapeAnalysis_Surface on_surface_near(surface);
-            on_surface_near.NextValueOfUV(uv, on_curve, limit);
-            if (on_surface_near.Gap() <= limit) continue;
+            if (!near_surface) near_surface.emplace(surface);
+            near_surface->NextValueOfUV(uv, on_curve, limit);
+            if (near_surface->Gap() <= limit) continue;
         }
         require(gap <= limit, "shape", [&] {
             return "its p-curve on the face is " + number(gap) + " from its 3D curve at " + point_text(on_surface) +
