@@ -22,7 +22,8 @@
 // Rounding sets a floor under every cell's estimate: the quotient rule and the subdivision leave
 // errors of about ε · size in S_s and S_t, so a cell's integral carries noise of about
 // ε · size^(k-1) · (its rounding lengths in s and t: control polygon lengths plus the quotient rule's
-// cancellation, see rounding_length), k = 2 for area, 3 for volume. Refining a
+// cancellation, see rounding_length), k = 2 for area, 3 for volume; a curve's cell made by halving also
+// measures its noise (the rule on its own net against its parent's on the same points, see assess). Refining a
 // cell whose estimate is at that floor cannot improve it (with weights 1e300 thousands of cells sit
 // where the surface all but stops), so such a cell counts as converged.
 // Both phases count cells against kMaxCells, so hostile input costs bounded work; when the budget runs
@@ -67,6 +68,9 @@ constexpr int kQuickRulePoints = 6;
 constexpr std::size_t kMaxCells = 40'000;
 // The rounding floor of a cell, in units of ε · size^(k-1) · (polygon lengths): generous for degree 25.
 constexpr double kNoiseFactor = 16 * std::numeric_limits<double>::epsilon();
+// A curve's cell's measured noise (assess) counts this many times in its floor: the error estimate compares three
+// rules, each as noisy.
+constexpr double kMeasuredNoiseFactor = 4;
 
 using Integrand = Cubature::Integrand;
 
@@ -275,7 +279,18 @@ void assess(Cell& cell, double noise_scale) {
         cell.error = 0;
         return;
     }
-    if (std::isnan(cell.whole)) cell.whole = rule(cell, 0, 1, 0, 1, kRulePoints);
+    // A curve's cell (degree_v = 0: Green's edges and trimming curves) made by halving has its whole rule from its
+    // parent, at the same points of the curve: the rule again on its own net differs from it only by rounding,
+    // which measures the cell's noise. Its control points are rounded to ε · |C| however short the cell is (and a
+    // trimming curve's inner integral loses as much in u - start), so that noise does not shrink with the cell:
+    // far out in its parameters a hole's boundary was halved into tens of thousands of cells, their noise adding
+    // up beyond the tolerance, until the budget ran out (a screw thread's face from a SolidWorks STEP file).
+    double measured_noise = 0;
+    if (std::isnan(cell.whole)) {
+        cell.whole = rule(cell, 0, 1, 0, 1, kRulePoints);
+    } else if (cell.source->degree_v == 0) {
+        measured_noise = std::abs(rule(cell, 0, 1, 0, 1, kRulePoints) - cell.whole);
+    }
     cell.halves_u = {rule(cell, 0, 0.5, 0, 1, kRulePoints), rule(cell, 0.5, 1, 0, 1, kRulePoints)};
     if (cell.source->degree_v == 0)
         cell.halves_v = {cell.whole, 0.0};  // a curve: nothing varies along t
@@ -285,7 +300,8 @@ void assess(Cell& cell, double noise_scale) {
     const double error_u = std::abs(along_u - cell.whole), error_v = std::abs(along_v - cell.whole);
     cell.estimate = along_u + along_v - cell.whole;
     const double floor = noise_scale * (rounding_length(cell, true) + rounding_length(cell, false)) +
-                         cell.source->relative_noise * (std::abs(cell.halves_u[0]) + std::abs(cell.halves_u[1]));
+                         cell.source->relative_noise * (std::abs(cell.halves_u[0]) + std::abs(cell.halves_u[1])) +
+                         kMeasuredNoiseFactor * measured_noise;
     cell.error = error_u + error_v > floor ? error_u + error_v : 0.0;
     cell.split_along_u = error_u >= error_v;
 }
