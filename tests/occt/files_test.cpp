@@ -20,7 +20,11 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shape.hxx>
+#include <TopoDS_Solid.hxx>
+#include <gp_Pnt.hxx>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -34,6 +38,7 @@
 #include "temp_directory_test_support.hpp"
 #include "ratbez/occt/files.hpp"
 #include "ratbez/occt/shape_import.hpp"
+#include "ratbez/occt/topology.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
 #include "ratbez/revolve.hpp"
@@ -149,6 +154,46 @@ TEST_F(Files, FaceBoundsAlongASpheresSeamReadAsWrittenWithAndWithoutAResourceFil
     const double with_resource = read_step(file).volume();
     unsetenv("CSF_STEPDefaults");
     EXPECT_NEAR(with_resource, seven_eighths, 1e-9 * seven_eighths);
+}
+
+// An exporter gives one face of a part a loose tolerance (1e-2 here, as SolidWorks and Fusion do on a few faces of
+// 3D printer parts), and short edges elsewhere keep OpenCASCADE's 1e-7. The solid handed back to OpenCASCADE gave
+// every edge and vertex the loosest face's tolerance: the BOP check then found short edges "TooSmallEdge" and
+// vertices near each other "SelfIntersect" (21 of 108 public STEP files, whose own reading by OpenCASCADE has
+// neither). Each edge of a read face now carries what it measures (topology.cpp, measure_read_tolerances).
+TEST_F(Files, ALooseFaceInAFileLeavesTheOtherEdgesTheirOwnTolerance) {
+    // A 20 x 10 x 10 box with a step 0.02 high cut from its top at the far end: edges 0.02 long at x = 15.
+    TopoDS_Shape stepped =
+        BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(20, 10, 10).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(15, -1, 9.98), 10, 12, 1).Shape())
+            .Shape();
+    BRep_Builder builder;
+    for (TopExp_Explorer faces(stepped, TopAbs_FACE); faces.More(); faces.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(faces.Current());
+        GProp_GProps props;
+        BRepGProp::SurfaceProperties(face, props);
+        if (std::abs(props.CentreOfMass().X()) > 1e-9) continue;  // the face x = 0, far from the step
+        builder.UpdateFace(face, 1e-2);
+        for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) builder.UpdateEdge(TopoDS::Edge(it.Current()), 1e-2);
+        for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next()) builder.UpdateVertex(TopoDS::Vertex(it.Current()), 1e-2);
+    }
+    const Solid solid = from_occt(stepped);
+    double loosest = 0;
+    for (const Face& face : solid.faces()) loosest = std::max(loosest, face.tolerance());
+    EXPECT_GE(loosest, 1e-2);
+    const TopoDS_Solid handed = to_occt(solid);
+    EXPECT_TRUE(BRepCheck_Analyzer(handed).IsValid());
+    EXPECT_FALSE(testing::bop_check_finds_faults(handed));
+    int short_edges = 0;
+    for (TopExp_Explorer edges(handed, TopAbs_EDGE); edges.More(); edges.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
+        GProp_GProps props;
+        BRepGProp::LinearProperties(edge, props);
+        if (props.Mass() > 0.1) continue;
+        ++short_edges;
+        EXPECT_LT(BRep_Tool::Tolerance(edge), 1e-6);
+        for (TopExp_Explorer it(edge, TopAbs_VERTEX); it.More(); it.Next()) EXPECT_LT(BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())), 1e-6);
+    }
+    EXPECT_EQ(short_edges, 4);
 }
 
 TEST_F(Files, BrepFileAndStringReadBack) {

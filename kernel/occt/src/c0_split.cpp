@@ -16,6 +16,7 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 
+#include <algorithm>
 #include <vector>
 
 namespace ratbez::occt::detail {
@@ -53,7 +54,7 @@ bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit) {
     return true;
 }
 
-SplitSolid split_at_c0_knots(const TopoDS_Solid& solid) {
+SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach) {
     SplitSolid unchanged{solid, {}};
     for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next())
         unchanged.original_face.Bind(faces.Current(), faces.Current());
@@ -67,22 +68,25 @@ SplitSolid split_at_c0_knots(const TopoDS_Solid& solid) {
         TopoDS_Shape result = divide.Result();
         // The new edges along the knot lines come without SameParameter: computed here, they make the
         // pieces valid (BRepCheck flagged every split face before).
-        const double tolerance = BRep_Tool::MaxTolerance(solid, TopAbs_EDGE);
-        BRepLib::SameParameter(result, tolerance, Standard_True);
+        const double tolerance = std::max(BRep_Tool::MaxTolerance(solid, TopAbs_EDGE), reach);
+        BRepLib::SameParameter(result, BRep_Tool::MaxTolerance(solid, TopAbs_EDGE), Standard_True);
         if (result.ShapeType() != TopAbs_SOLID || !BRepCheck_Analyzer(result).IsValid()) return unchanged;
         // Each face of the input became itself, or a compound / shell of its pieces (the reshape's record);
         // SameParameter changes tolerances in place, not the faces' identity.
         SplitSolid split{TopoDS::Solid(result), {}};
-        std::vector<TopoDS_Face> cut;
-        for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next()) {
-            const TopoDS_Shape pieces = divide.GetContext()->Apply(faces.Current());
+        // Every face's edges measured, not only the pieces': SameParameter, forced, recomputes the p-curves of the
+        // uncut faces' edges too, and gives them its sampled deviation, which BOPAlgo's measure can exceed (a read
+        // solid's edges carry their own measured tolerances, topology.cpp).
+        std::vector<TopoDS_Face> faces;
+        for (TopExp_Explorer face(solid, TopAbs_FACE); face.More(); face.Next()) {
+            const TopoDS_Shape pieces = divide.GetContext()->Apply(face.Current());
             for (TopExp_Explorer piece(pieces, TopAbs_FACE); piece.More(); piece.Next()) {
-                split.original_face.Bind(piece.Current(), faces.Current());
-                if (!piece.Current().IsSame(faces.Current())) cut.push_back(TopoDS::Face(piece.Current()));
+                split.original_face.Bind(piece.Current(), face.Current());
+                faces.push_back(TopoDS::Face(piece.Current()));
             }
         }
         if (BRep_Tool::MaxTolerance(result, TopAbs_EDGE) > kToleranceGrowth * tolerance ||
-            !honest_tolerances(cut, kToleranceGrowth * tolerance))
+            !honest_tolerances(faces, kToleranceGrowth * tolerance))
             return unchanged;
         BRepLib::UpdateTolerances(split.solid, Standard_True);  // vertices and faces cover their raised edges
         if (!BRepCheck_Analyzer(split.solid).IsValid()) return unchanged;

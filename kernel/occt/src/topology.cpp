@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <array>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <cmath>
 #include <set>
@@ -118,7 +119,8 @@ public:
         // differ by several 1e-12 of the size (seed 20261992 of the round trip test: 3e-12, which a
         // tolerance of 1e-12 of the size flagged as BRepCheck_InvalidCurveOnSurface). 1e-10 leaves a
         // margin and is still far below OCCT's default confusion tolerance unless the solid is huge.
-        out_.tolerance = std::max(Precision::Confusion(), 1e-10 * box.diagonal());
+        base_tolerance_ = std::max(Precision::Confusion(), 1e-10 * box.diagonal());
+        out_.tolerance = base_tolerance_;
         for (const Face& face : solid.faces()) out_.tolerance = std::max(out_.tolerance, face.tolerance());
     }
 
@@ -169,6 +171,7 @@ public:
             builder_.SameRange(occt_edge, Standard_True);
             builder_.SameParameter(occt_edge, Standard_True);
         }
+        measure_read_tolerances();
         builder_.MakeSolid(out_.solid);
         for (TopoDS_Shell& shell : out_.shells) {
             shell.Closed(Standard_True);
@@ -179,6 +182,48 @@ public:
     }
 
 private:
+    // A face read from a file keeps its boundary within its own tolerance of its surface (Face::tolerance: 1.5
+    // times the largest the file gives the face, its edges and vertices). Each of its edges is given what it
+    // measures, the largest distance between its 3D curve and its p-curve on the surface (BOPAlgo's measure,
+    // honest_tolerance), and each vertex what covers its edges' ends there: a bracket whose median edge
+    // OpenCASCADE reads at 1e-7 went out with every tolerance at its worst face's 6e-3 before, and the BOP check
+    // found short edges elsewhere "TooSmallEdge" and near vertices "SelfIntersect". Faces of exact constructions
+    // (tolerance 0) keep the base tolerance.
+    void measure_read_tolerances() {
+        const auto& faces = solid_.faces();
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+            if (!(faces[i].tolerance() > base_tolerance_)) continue;
+            for (std::size_t k = out_.first_face[i]; k < out_.first_face[i + 1]; ++k) {
+                const TopoDS_Face& face = out_.faces[k];
+                for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+                    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+                    if (!detail::honest_tolerance(edge, face, std::numeric_limits<double>::infinity()))
+                        builder_.UpdateEdge(edge, faces[i].tolerance());
+                    cover_ends(edge, face);
+                }
+            }
+        }
+    }
+
+    // Each vertex of `edge` raised to the edge's tolerance and to its distance from the ends of the edge's 3D
+    // curve and of its p-curve on `face` (BRepCheck's InvalidPointOnCurve and InvalidPointOnCurveOnSurface).
+    void cover_ends(const TopoDS_Edge& edge, const TopoDS_Face& face) {
+        double first = 0, last = 0;
+        const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+        const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+        const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+        TopoDS_Vertex start, end;
+        TopExp::Vertices(edge, start, end);
+        for (const auto& [vertex, t] : {std::pair{start, first}, std::pair{end, last}}) {
+            if (vertex.IsNull()) continue;
+            const gp_Pnt point = BRep_Tool::Pnt(vertex);
+            double reach = BRep_Tool::Tolerance(edge);
+            if (!curve.IsNull()) reach = std::max(reach, point.Distance(curve->Value(t)));
+            if (!pcurve.IsNull()) reach = std::max(reach, point.Distance(surface->Value(pcurve->Value(t).X(), pcurve->Value(t).Y())));
+            builder_.UpdateVertex(vertex, reach * (1 + 1e-9));
+        }
+    }
+
     // `domain`: our parameter rectangle the face covers (u0, u1, v0, v1).
     void add(const TopoDS_Face& face, const std::array<double, 4>& domain,
              std::array<std::function<double(double)>, 2> parameters = {}, bool exchanged = false) {
@@ -294,7 +339,7 @@ private:
 
     TopoDS_Vertex new_vertex(const Vec3& point) {
         TopoDS_Vertex made;
-        builder_.MakeVertex(made, to_occt_point(point), out_.tolerance);
+        builder_.MakeVertex(made, to_occt_point(point), base_tolerance_);
         return made;
     }
 
@@ -303,7 +348,7 @@ private:
     TopoDS_Edge new_edge(const Handle(Geom_Curve)& curve, const Interval& range, const TopoDS_Vertex& start,
                          const TopoDS_Vertex& end) {
         TopoDS_Edge made;
-        builder_.MakeEdge(made, curve, out_.tolerance);
+        builder_.MakeEdge(made, curve, base_tolerance_);
         builder_.Add(made, start.Oriented(TopAbs_FORWARD));
         builder_.Add(made, end.Oriented(TopAbs_REVERSED));
         builder_.Range(made, range.min, range.max);
@@ -392,11 +437,11 @@ private:
                 return &other != &use && other.edge.IsSame(use.edge);
             });
             if (twin == uses.end()) {
-                builder_.UpdateEdge(use.edge, use.pcurve, face, out_.tolerance);
+                builder_.UpdateEdge(use.edge, use.pcurve, face, base_tolerance_);
             } else if (use.orientation == TopAbs_FORWARD) {
                 require(twin->orientation == TopAbs_REVERSED, "solid",
                         "an edge is used twice by one face in the same direction");
-                builder_.UpdateEdge(use.edge, use.pcurve, twin->pcurve, face, out_.tolerance);
+                builder_.UpdateEdge(use.edge, use.pcurve, twin->pcurve, face, base_tolerance_);
             }
         }
     }
@@ -444,7 +489,7 @@ private:
     TopoDS_Face bounded_face(const Handle(Geom_Surface)& surface, const std::array<std::vector<Use>, 4>& sides,
                              std::size_t degenerate_before) {
         TopoDS_Face made;
-        builder_.MakeFace(made, surface, out_.tolerance);
+        builder_.MakeFace(made, surface, base_tolerance_);
         std::vector<Use> uses;
         for (const auto& side : sides) uses.insert(uses.end(), side.begin(), side.end());
         attach_pcurves(made, uses);
@@ -675,7 +720,7 @@ private:
     // GeomAPI::To2d of a B-spline in the plane maps its poles).
     TopoDS_Face plane_face(const Handle(Geom_Plane)& plane, const std::array<std::vector<Use>, 4>& sides) {
         TopoDS_Face made;
-        builder_.MakeFace(made, plane, out_.tolerance);
+        builder_.MakeFace(made, plane, base_tolerance_);
         std::vector<Use> all, uses;
         for (const auto& side : sides) all.insert(all.end(), side.begin(), side.end());
         for (const Use& use : all) {
@@ -717,7 +762,7 @@ private:
     // is cut, as planar faces do), a degenerate coedge as a Degenerated edge of its own.
     TopoDS_Face trimmed_face(const Face& face) {
         TopoDS_Face made;
-        builder_.MakeFace(made, to_occt(face.surface()), out_.tolerance);
+        builder_.MakeFace(made, to_occt(face.surface()), base_tolerance_);
         const std::size_t degenerate_before = degenerate_ranges_.size();
         std::vector<std::vector<Use>> loops;
         std::vector<Use> all;
@@ -760,7 +805,7 @@ private:
         // so the plane's (u, v) are the coordinates along x_axis and y_axis.
         const gp_Ax3 frame(to_occt_point(plane.origin), to_occt_direction(plane.normal), to_occt_direction(plane.x_axis));
         TopoDS_Face made;
-        builder_.MakeFace(made, new Geom_Plane(frame), out_.tolerance);
+        builder_.MakeFace(made, new Geom_Plane(frame), base_tolerance_);
         std::vector<std::vector<Use>> loops;
         std::vector<Use> all;
         for (const auto& loop : face.loops()) {
@@ -811,6 +856,7 @@ private:
     std::set<std::size_t> patched_;                                    // natural: faces handed over as patches
     std::set<std::size_t> exchanged_;                                  // natural: rough in u, with u and v exchanged
     std::set<std::size_t> v_sides_cut_;                                // natural: rough in v, its u sides cut
+    double base_tolerance_ = 0;  // of every vertex, edge and face; read faces' edges and vertices measured
     double arc_tolerance_ = 0;                                         // natural: find_arc's fit tolerance
     std::map<const Edge*, NurbsCurve> smooth_curves_;                  // natural: edges in the one-span form
     std::set<const Edge*> line_edges_;                                  // natural: edges on OCCT's line (plan_lines)
@@ -850,13 +896,13 @@ SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const
         std::optional<SplitSolid> rebuilt = with_sphere_faces(solid, converted);
         if (!rebuilt) rebuilt = with_circle_edges(solid, converted);
         if (rebuilt) {
-            SplitSolid split = split_at_c0_knots(rebuilt->solid);
+            SplitSolid split = split_at_c0_knots(rebuilt->solid, converted.tolerance);
             for (TopTools_DataMapIteratorOfDataMapOfShapeShape it(split.original_face); it.More(); it.Next())
                 split.original_face.ChangeFind(it.Key()) = rebuilt->original_face.Find(it.Value());
             return split;
         }
     }
-    return split_at_c0_knots(converted.solid);
+    return split_at_c0_knots(converted.solid, converted.tolerance);
 }
 
 }  // namespace detail

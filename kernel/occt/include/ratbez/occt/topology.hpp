@@ -92,7 +92,10 @@ struct ConvertedSolid {
     // OCCT's parameter on an edge -> ours, for the edges handed over as an arc in its one-span form.
     std::map<const Edge*, std::function<double(double)>> edge_parameters;
     std::map<const Vertex*, TopoDS_Vertex> vertices;
-    double tolerance = 0;                             // the tolerance given to every vertex, edge and face
+    // The largest tolerance a vertex, edge or face may need: the base one (1e-10 of the size, at least OCCT's
+    // confusion) or a read face's own (Face::tolerance); the edges and vertices of read faces carry what they
+    // measure (topology.cpp, measure_read_tolerances).
+    double tolerance = 0;
     bool gprop_tolerance_reached = true;              // bezier_faces: every patch met kGPropTolerance
 };
 
