@@ -539,7 +539,17 @@ void write_step(std::span<const Solid> solids, const std::string& path, const Co
             }
             STEPCAFControl_Writer writer;  // its constructor initialises the STEP statics (STEPControl_Controller::Init)
             Interface_Static::SetCVal("write.step.schema", "AP214IS");
-            require(writer.Transfer(document, STEPControl_AsIs), "solids", "OpenCASCADE could not translate them to STEP");
+            // The file's uncertainty is the greatest tolerance of the solids, not OpenCASCADE's default average: a
+            // reader takes it as its precision and refits every p-curve further from its edge than that. Read
+            // solids carry their edges' measured tolerances (topology.cpp), and with their average as the
+            // uncertainty a hotend mount read from an Autodesk STEP file came back through our own STEP 3.7e-7 off
+            // in volume (1.3e-11 so). Per process, and put back at once (FreeCAD writes its own STEP files in the
+            // same session).
+            const int precision_mode = Interface_Static::IVal("write.precision.mode");
+            Interface_Static::SetIVal("write.precision.mode", 1);
+            const bool transferred = writer.Transfer(document, STEPControl_AsIs);
+            Interface_Static::SetIVal("write.precision.mode", precision_mode);
+            require(transferred, "solids", "OpenCASCADE could not translate them to STEP");
             require(writer.Write(name.c_str()) == IFSelect_RetDone, "path", "cannot write '" + path + "'");
             XCAFApp_Application::GetApplication()->Close(document);
         } catch (const Standard_Failure& failure) {
