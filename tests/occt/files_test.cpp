@@ -7,12 +7,14 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom_Circle.hxx>
+#include <Geom_Surface.hxx>
 #include <Geom_SphericalSurface.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
@@ -23,6 +25,8 @@
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Solid.hxx>
 #include <TopoDS_Vertex.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Dir.hxx>
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
@@ -234,6 +238,31 @@ TEST_F(Files, AReadSolidsSTEPStatesItsGreatestToleranceAsItsUncertainty) {
     // Intervalled): 2e-3 here; the average would give 1e-4.
     EXPECT_GE(uncertainty, 0.5 * greatest);
     EXPECT_NEAR(read_step(file).volume(), solid.volume(), 1e-12 * solid.volume());
+}
+
+// A part from a STEP file without p-curves (as most are): OpenCASCADE's reader fits loose ones, the importer its
+// own, and each edge goes back with what it measures. The faces on the tilted hole and the dimple hold their
+// surfaces in the circle form, C0 inside, and go back split at those knots (c0_split.hpp) — valid, nothing C0 left,
+// clean in the BOP check — where the split's SameParameter leaves edges short of BRepCheck's measure until they are
+// measured too, and where a split given up hands back the solid it was given, unaltered.
+TEST_F(Files, APartReadWithoutPCurvesGoesBackSplitValidAndBOPClean) {
+    TopoDS_Shape part = BRepPrimAPI_MakeBox(gp_Pnt(-20, -15, 0), 40, 30, 12).Shape();
+    part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-8, 0, -5), gp_Dir(0.2, 0.1, 1)), 4, 30).Shape()).Shape();
+    part = BRepAlgoAPI_Cut(part, BRepPrimAPI_MakeSphere(gp_Pnt(10, 3, 16), 7).Shape()).Shape();
+    STEPControl_Writer writer;
+    Interface_Static::SetIVal("write.surfacecurve.mode", 0);
+    writer.Transfer(part, STEPControl_AsIs);
+    Interface_Static::SetIVal("write.surfacecurve.mode", 1);
+    const std::string file = path("no_pcurves.step");
+    ASSERT_EQ(writer.Write(file.c_str()), IFSelect_RetDone);
+    const Solid solid = read_step(file);
+    EXPECT_NEAR(solid.volume(), occt_volume(part), 1e-6 * occt_volume(part));
+    const TopoDS_Solid handed = to_occt(solid);
+    EXPECT_TRUE(BRepCheck_Analyzer(handed).IsValid());
+    for (TopExp_Explorer it(handed, TopAbs_FACE); it.More(); it.Next()) {
+        EXPECT_NE(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_C0);
+    }
+    EXPECT_FALSE(testing::bop_check_finds_faults(handed));
 }
 
 TEST_F(Files, BrepFileAndStringReadBack) {

@@ -2,6 +2,7 @@
 
 #include "c0_split.hpp"
 
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRep_Builder.hxx>
 #include <BRepLib.hxx>
@@ -60,7 +61,11 @@ SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach) {
         unchanged.original_face.Bind(faces.Current(), faces.Current());
     if (!has_c0_face(solid)) return unchanged;
     try {
-        ShapeUpgrade_ShapeDivideContinuity divide(solid);
+        // On a copy: the division keeps the uncut faces' edges, and SameParameter and honest_tolerances below change
+        // them in place, so a split given up would hand back `solid` altered (a read solid's measured tolerances
+        // then left one of its faces with a self-intersecting wire).
+        BRepBuilderAPI_Copy copier(solid);
+        ShapeUpgrade_ShapeDivideContinuity divide(copier.Shape());
         divide.SetBoundaryCriterion(GeomAbs_C1);
         divide.SetPCurveCriterion(GeomAbs_C1);
         divide.SetSurfaceCriterion(GeomAbs_C1);
@@ -70,7 +75,7 @@ SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach) {
         // pieces valid (BRepCheck flagged every split face before).
         const double tolerance = std::max(BRep_Tool::MaxTolerance(solid, TopAbs_EDGE), reach);
         BRepLib::SameParameter(result, BRep_Tool::MaxTolerance(solid, TopAbs_EDGE), Standard_True);
-        if (result.ShapeType() != TopAbs_SOLID || !BRepCheck_Analyzer(result).IsValid()) return unchanged;
+        if (result.ShapeType() != TopAbs_SOLID) return unchanged;
         // Each face of the input became itself, or a compound / shell of its pieces (the reshape's record);
         // SameParameter changes tolerances in place, not the faces' identity.
         SplitSolid split{TopoDS::Solid(result), {}};
@@ -79,7 +84,7 @@ SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach) {
         // solid's edges carry their own measured tolerances, topology.cpp).
         std::vector<TopoDS_Face> faces;
         for (TopExp_Explorer face(solid, TopAbs_FACE); face.More(); face.Next()) {
-            const TopoDS_Shape pieces = divide.GetContext()->Apply(face.Current());
+            const TopoDS_Shape pieces = divide.GetContext()->Apply(copier.ModifiedShape(face.Current()));
             for (TopExp_Explorer piece(pieces, TopAbs_FACE); piece.More(); piece.Next()) {
                 split.original_face.Bind(piece.Current(), face.Current());
                 faces.push_back(TopoDS::Face(piece.Current()));
@@ -89,6 +94,7 @@ SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach) {
             !honest_tolerances(faces, kToleranceGrowth * tolerance))
             return unchanged;
         BRepLib::UpdateTolerances(split.solid, Standard_True);  // vertices and faces cover their raised edges
+        // Valid only now: SameParameter's sampled tolerances can be short of BRepCheck's too until measured.
         if (!BRepCheck_Analyzer(split.solid).IsValid()) return unchanged;
         return split;
     } catch (const Standard_Failure&) {

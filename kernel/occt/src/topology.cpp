@@ -2,6 +2,7 @@
 
 #include "ratbez/occt/topology.hpp"
 
+#include <BRepCheck_Analyzer.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2d_BSplineCurve.hxx>
@@ -201,6 +202,20 @@ private:
                         builder_.UpdateEdge(edge, faces[i].tolerance());
                     cover_ends(edge, face);
                 }
+            }
+        }
+        // Validity first: a face the measured tolerances leave invalid (BRepCheck: a wire whose p-curves cross
+        // near a vertex further from it than the vertex's measured tolerance, as on a 3D printer part from the
+        // public campaign) gives its edges and vertices its own tolerance, as the file did.
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+            if (!(faces[i].tolerance() > base_tolerance_)) continue;
+            for (std::size_t k = out_.first_face[i]; k < out_.first_face[i + 1]; ++k) {
+                const TopoDS_Face& face = out_.faces[k];
+                if (BRepCheck_Analyzer(face).IsValid()) continue;
+                for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next())
+                    builder_.UpdateEdge(TopoDS::Edge(it.Current()), faces[i].tolerance());
+                for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next())
+                    builder_.UpdateVertex(TopoDS::Vertex(it.Current()), faces[i].tolerance());
             }
         }
     }
