@@ -186,8 +186,8 @@ private:
     // A face read from a file keeps its boundary within its own tolerance of its surface (Face::tolerance: 1.5
     // times the largest the file gives the face, its edges and vertices). Each of its edges is given what it
     // measures, the largest distance between its 3D curve and its p-curve on the surface (BOPAlgo's measure,
-    // honest_tolerance), and each vertex what covers its edges' ends there: a bracket whose median edge
-    // OpenCASCADE reads at 1e-7 went out with every tolerance at its worst face's 6e-3 before, and the BOP check
+    // honest_tolerance), and each vertex what covers its edges' ends there: a hotend mount whose median edge
+    // OpenCASCADE reads at 1e-7 went out with every tolerance at its worst face's 5.8e-3 before, and the BOP check
     // found short edges elsewhere "TooSmallEdge" and near vertices "SelfIntersect". Faces of exact constructions
     // (tolerance 0) keep the base tolerance.
     void measure_read_tolerances() {
@@ -234,7 +234,10 @@ private:
             const gp_Pnt point = BRep_Tool::Pnt(vertex);
             double reach = BRep_Tool::Tolerance(edge);
             if (!curve.IsNull()) reach = std::max(reach, point.Distance(curve->Value(t)));
-            if (!pcurve.IsNull()) reach = std::max(reach, point.Distance(surface->Value(pcurve->Value(t).X(), pcurve->Value(t).Y())));
+            if (!pcurve.IsNull()) {
+                const gp_Pnt2d uv = pcurve->Value(t);
+                reach = std::max(reach, point.Distance(surface->Value(uv.X(), uv.Y())));
+            }
             builder_.UpdateVertex(vertex, reach * (1 + 1e-9));
         }
     }
