@@ -73,8 +73,9 @@ SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach) {
         TopoDS_Shape result = divide.Result();
         // The new edges along the knot lines come without SameParameter: computed here, they make the
         // pieces valid (BRepCheck flagged every split face before).
-        const double tolerance = std::max(BRep_Tool::MaxTolerance(solid, TopAbs_EDGE), reach);
-        BRepLib::SameParameter(result, BRep_Tool::MaxTolerance(solid, TopAbs_EDGE), Standard_True);
+        const double largest_edge = BRep_Tool::MaxTolerance(solid, TopAbs_EDGE);
+        const double tolerance = std::max(largest_edge, reach);
+        BRepLib::SameParameter(result, largest_edge, Standard_True);
         if (result.ShapeType() != TopAbs_SOLID) return unchanged;
         // Each face of the input became itself, or a compound / shell of its pieces (the reshape's record);
         // SameParameter changes tolerances in place, not the faces' identity.

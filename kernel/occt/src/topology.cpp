@@ -191,32 +191,35 @@ private:
     // found short edges elsewhere "TooSmallEdge" and near vertices "SelfIntersect". Faces of exact constructions
     // (tolerance 0) keep the base tolerance.
     void measure_read_tolerances() {
-        const auto& faces = solid_.faces();
-        for (std::size_t i = 0; i < faces.size(); ++i) {
-            if (!(faces[i].tolerance() > base_tolerance_)) continue;
-            for (std::size_t k = out_.first_face[i]; k < out_.first_face[i + 1]; ++k) {
-                const TopoDS_Face& face = out_.faces[k];
-                for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
-                    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
-                    if (!detail::honest_tolerance(edge, face, std::numeric_limits<double>::infinity()))
-                        builder_.UpdateEdge(edge, faces[i].tolerance());
-                    cover_ends(edge, face);
-                }
+        for_each_read_face([&](const TopoDS_Face& face, double tolerance) {
+            for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+                const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+                if (!detail::honest_tolerance(edge, face, std::numeric_limits<double>::infinity()))
+                    builder_.UpdateEdge(edge, tolerance);
+                cover_ends(edge, face);
             }
-        }
+        });
         // Validity first: a face the measured tolerances leave invalid (BRepCheck: a wire whose p-curves cross
         // near a vertex further from it than the vertex's measured tolerance, as on a 3D printer part from the
         // public campaign) gives its edges and vertices its own tolerance, as the file did.
+        for_each_read_face([&](const TopoDS_Face& face, double tolerance) {
+            if (BRepCheck_Analyzer(face).IsValid()) return;
+            for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next())
+                builder_.UpdateEdge(TopoDS::Edge(it.Current()), tolerance);
+            for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next())
+                builder_.UpdateVertex(TopoDS::Vertex(it.Current()), tolerance);
+        });
+    }
+
+    // visit(OCCT face, its read face's tolerance) for every OCCT face made from a face read with more than the base
+    // tolerance.
+    template <class Visitor>
+    void for_each_read_face(Visitor&& visit) const {
+        const auto& faces = solid_.faces();
         for (std::size_t i = 0; i < faces.size(); ++i) {
             if (!(faces[i].tolerance() > base_tolerance_)) continue;
-            for (std::size_t k = out_.first_face[i]; k < out_.first_face[i + 1]; ++k) {
-                const TopoDS_Face& face = out_.faces[k];
-                if (BRepCheck_Analyzer(face).IsValid()) continue;
-                for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next())
-                    builder_.UpdateEdge(TopoDS::Edge(it.Current()), faces[i].tolerance());
-                for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next())
-                    builder_.UpdateVertex(TopoDS::Vertex(it.Current()), faces[i].tolerance());
-            }
+            for (std::size_t k = out_.first_face[i]; k < out_.first_face[i + 1]; ++k)
+                visit(out_.faces[k], faces[i].tolerance());
         }
     }
 
