@@ -4,6 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -13,23 +18,32 @@
 #include <BRep_Tool.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
+#include <GeomConvert.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Geom_Circle.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_Surface.hxx>
 #include <Geom_SphericalSurface.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
+#include <ShapeFix_Solid.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopLoc_Location.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Solid.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Ax3.hxx>
 #include <gp_Dir.hxx>
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -38,9 +52,11 @@
 #include <sstream>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "occt_test_support.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/tessellate.hpp"
 #include "temp_directory_test_support.hpp"
 #include "ratbez/occt/files.hpp"
 #include "ratbez/occt/shape_import.hpp"
@@ -240,6 +256,53 @@ TEST_F(Files, AReadSolidsSTEPStatesItsGreatestToleranceAsItsUncertainty) {
     EXPECT_NEAR(read_step(file).volume(), solid.volume(), 1e-12 * solid.volume());
 }
 
+// A face read with a tolerance larger than 1e-3 of the part's size (042_Belt_Clip_10mm.stp: faces up to 0.088 in a
+// part of 36) cannot be meshed closer than its edges lie to its surface: the default tolerance is that face's, and a
+// finer one asked for says so (it said the faces "overlap or fold back on each other").
+TEST_F(Files, ALooseFaceSetsTheDefaultMeshToleranceAndAFinerOneSaysWhy) {
+    // A part whose drilled hole's face lies 0.05 outside the hole's edges, the file's tolerance 0.1 there.
+    TopoDS_Shape box = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(20, 10, 10).Shape(),
+                                       BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(10, 5, -1), gp_Dir(0, 0, 1)), 3, 12).Shape()).Shape();
+    BRep_Builder builder;
+    for (TopExp_Explorer it(box, TopAbs_FACE); it.More(); it.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(it.Current());
+        TopLoc_Location location;
+        const Handle(Geom_CylindricalSurface) hole = Handle(Geom_CylindricalSurface)::DownCast(BRep_Tool::Surface(face, location));
+        if (hole.IsNull()) continue;
+        const Handle(Geom_Surface) wider = new Geom_CylindricalSurface(hole->Position(), hole->Radius() + 0.05);
+        // The p-curves in (angle, z) hold on the wider cylinder too; they are kept per surface, so given again.
+        std::vector<std::pair<TopoDS_Edge, std::array<Handle(Geom2d_Curve), 2>>> pcurves;
+        const TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));  // as UpdateEdge takes them
+        for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+            const TopoDS_Edge edge = TopoDS::Edge(e.Current());
+            double first = 0, last = 0;
+            pcurves.push_back({edge, {BRep_Tool::CurveOnSurface(TopoDS::Edge(edge.Oriented(TopAbs_FORWARD)), forward, first, last),
+                                      BRep_Tool::CurveOnSurface(TopoDS::Edge(edge.Oriented(TopAbs_REVERSED)), forward, first, last)}});
+        }
+        builder.UpdateFace(face, wider, location, 0.1);
+        for (const auto& [edge, curves] : pcurves) {
+            if (curves[0] == curves[1]) builder.UpdateEdge(edge, curves[0], wider, location, 0.1);
+            else builder.UpdateEdge(edge, curves[0], curves[1], wider, location, 0.1);
+        }
+        for (TopExp_Explorer v(face, TopAbs_VERTEX); v.More(); v.Next()) builder.UpdateVertex(TopoDS::Vertex(v.Current()), 0.1);
+    }
+    const Solid solid = from_occt(box);
+    double loosest = 0;
+    for (const Face& face : solid.faces()) loosest = std::max(loosest, face.tolerance());
+    const double by_size = 1e-3 * solid.bounding_box().diagonal();
+    ASSERT_GT(loosest, by_size);
+    EXPECT_EQ(default_tolerance(solid), loosest);
+    const Mesh mesh = tessellate(solid, default_tolerance(solid));
+    EXPECT_TRUE(mesh.is_closed());
+    try {
+        tessellate(solid, by_size);
+        ADD_FAILURE() << "a mesh finer than the face's tolerance";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.argument(), "solid");
+        EXPECT_NE(std::string(e.reason()).find("was read with tolerance 0.15"), std::string::npos) << e.what();
+    }
+}
+
 // A part from a STEP file without p-curves (as most are): OpenCASCADE's reader fits loose ones, the importer its
 // own, and each edge goes back with what it measures. The faces on the tilted hole and the dimple hold their
 // surfaces in the circle form, C0 inside, and go back split at those knots (c0_split.hpp) — valid, nothing C0 left,
@@ -261,6 +324,49 @@ TEST_F(Files, APartReadWithoutPCurvesGoesBackSplitValidAndBOPClean) {
     EXPECT_TRUE(BRepCheck_Analyzer(handed).IsValid());
     for (TopExp_Explorer it(handed, TopAbs_FACE); it.More(); it.Next()) {
         EXPECT_NE(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_C0);
+    }
+    EXPECT_FALSE(testing::bop_check_finds_faults(handed));
+}
+
+// A read face whose C0 knot line crosses an edge 6.5e-8 from its vertex: the C0 split cut a sliver that long off
+// the edge, shorter than its tolerance, which the BOP check flags (TooSmallEdge, SelfIntersect): a SolidWorks
+// cylinder of 061_Maybe_Tophat_assm.STEP has its knot 2.8e-8 rad before the quarter point where its bottom's arcs
+// meet. Here OpenCASCADE's B-spline cylinder (double knots every 120 degrees from its placement's x direction)
+// turned to put one 6.5e-8 before (0, -r), closed by discs whose circles are halves meeting there.
+TEST_F(Files, AKnotLineNearAVertexCutsNoSliver) {
+    constexpr double pi = std::numbers::pi, radius = 2.3, height = 7, sliver = 6.5e-8;
+    constexpr double start = 5 * pi / 6 - sliver / radius;
+    const Handle(Geom_CylindricalSurface) cylinder =
+        new Geom_CylindricalSurface(gp_Ax3(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), gp_Dir(std::cos(start), std::sin(start), 0)), radius);
+    BRepBuilderAPI_Sewing sewing(1e-6);
+    sewing.Add(BRepBuilderAPI_MakeFace(GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(cylinder, 0, 2 * pi, 0, height)),
+                                       1e-7).Face());
+    for (const double z : {0.0, height}) {
+        const Handle(Geom_Circle) circle = new Geom_Circle(gp_Ax2(gp_Pnt(0, 0, z), gp_Dir(0, 0, 1)), radius);
+        sewing.Add(BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle, pi / 2, 3 * pi / 2).Edge(),
+                                                                   BRepBuilderAPI_MakeEdge(circle, 3 * pi / 2, 5 * pi / 2).Edge())
+                                               .Wire())
+                       .Face());
+    }
+    sewing.Perform();
+    ShapeFix_Solid orient(BRepBuilderAPI_MakeSolid(TopoDS::Shell(sewing.SewedShape())).Solid());
+    orient.Perform();
+    STEPControl_Writer writer;
+    writer.Transfer(orient.Solid(), STEPControl_AsIs);
+    const std::string file = path("sliver.step");
+    ASSERT_EQ(writer.Write(file.c_str()), IFSelect_RetDone);
+    const Solid solid = read_step(file);
+    EXPECT_NEAR(solid.volume(), pi * radius * radius * height, 1e-9 * solid.volume());
+    const TopoDS_Solid handed = to_occt(solid);
+    EXPECT_TRUE(BRepCheck_Analyzer(handed).IsValid());
+    int c0_faces = 0;
+    for (TopExp_Explorer it(handed, TopAbs_FACE); it.More(); it.Next())
+        c0_faces += BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity() == GeomAbs_C0;
+    EXPECT_EQ(c0_faces, 0) << "the side is split at its knot lines";
+    for (TopExp_Explorer it(handed, TopAbs_EDGE); it.More(); it.Next()) {
+        GProp_GProps length;
+        BRepGProp::LinearProperties(it.Current(), length);
+        EXPECT_GT(length.Mass(), 1e-6) << "a sliver";
     }
     EXPECT_FALSE(testing::bop_check_finds_faults(handed));
 }

@@ -119,6 +119,13 @@ def test_a_list_of_solids_writes_one_file_read_back_in_order_with_names(tmp_path
     assert len(getattr(ratbez, reader)(path)) == 1
     for bad, argument in (([], "solid"), ([bolt, 3], "solid[1]"), (5, "solid")):
         raises_naming(argument, getattr(ratbez, writer), bad, path)
+    # The one-solid reader names as the all-solids reader does (it gave a file's unnamed solid no name).
+    getattr(ratbez, writer)(plain, tmp_path / ("ball" + suffix))
+    assert getattr(ratbez, reader.replace("_all", ""))(tmp_path / ("ball" + suffix)).name == "ball"
+    # A file name the format does not go by is refused, as the mesh writers refuse theirs (STEP went into x.stl).
+    for other in ("x.stl", "x.scad", "x"):
+        assert "must end in" in str(raises_naming("path", getattr(ratbez, writer), plain, tmp_path / other))
+    getattr(ratbez, writer)(plain, tmp_path / ("CAPS" + suffix.upper()))  # any case, as CAD systems name them
 
 
 @needs_occt

@@ -10,9 +10,14 @@
 #include <BRep_Tool.hxx>
 #include <Geom_Surface.hxx>
 #include <ShapeBuild_ReShape.hxx>
+#include <ShapeFix_Wireframe.hxx>
 #include <ShapeUpgrade_ShapeDivideContinuity.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_MapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
@@ -35,6 +40,32 @@ bool has_c0_face(const TopoDS_Solid& solid) {
         if (!surface.IsNull() && surface->Continuity() == GeomAbs_C0) return true;
     }
     return false;
+}
+
+// `split` without the slivers its division cut: a knot line passing closer to a vertex than `precision` (the
+// solid's largest edge tolerance) cuts a piece that short off the edge there. 061_Maybe_Tophat_assm.STEP: a knot
+// 2.8e-8 rad before the quarter point where two arcs meet gave two edges 6.5e-8 long that the BOP check flags
+// (TooSmallEdge, SelfIntersect). Each such new edge is dropped and its ends merged (ShapeFix_Wireframe, recorded
+// in `context`, so the division's record of each face's pieces still applies); a limit angle below 0 makes every
+// merge a drop, where ShapeFix would otherwise join the sliver to its neighbour into one curve C0 at the join
+// (GeomAbs_C0 in the BOP check). Edges the division left as they were keep theirs, short or not.
+TopoDS_Shape without_slivers(const TopoDS_Shape& split, const TopoDS_Shape& divided, double precision,
+                             const Handle(ShapeBuild_ReShape)& context) {
+    TopTools_IndexedMapOfShape kept;
+    TopExp::MapShapes(divided, TopAbs_EDGE, kept);
+    ShapeFix_Wireframe fix(split);
+    fix.SetContext(context);
+    fix.SetPrecision(precision);
+    TopTools_MapOfShape small, multiple;
+    TopTools_DataMapOfShapeListOfShape edge_faces, face_small;
+    fix.CheckSmallEdges(small, edge_faces, face_small, multiple);
+    TopTools_MapOfShape slivers;
+    for (TopTools_MapIteratorOfMapOfShape edge(small); edge.More(); edge.Next())
+        if (!kept.Contains(edge.Key())) slivers.Add(edge.Key());
+    if (slivers.IsEmpty()) return split;
+    constexpr double kAlwaysDrop = -0.5;  // radians; ShapeFix reads -1 as no limit
+    fix.MergeSmallEdges(slivers, edge_faces, face_small, multiple, Standard_True, kAlwaysDrop);
+    return fix.Shape();
 }
 
 }  // namespace
@@ -70,10 +101,10 @@ SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach) {
         divide.SetPCurveCriterion(GeomAbs_C1);
         divide.SetSurfaceCriterion(GeomAbs_C1);
         if (!divide.Perform()) return unchanged;
-        TopoDS_Shape result = divide.Result();
+        const double largest_edge = BRep_Tool::MaxTolerance(solid, TopAbs_EDGE);
+        TopoDS_Shape result = without_slivers(divide.Result(), copier.Shape(), largest_edge, divide.GetContext());
         // The new edges along the knot lines come without SameParameter: computed here, they make the
         // pieces valid (BRepCheck flagged every split face before).
-        const double largest_edge = BRep_Tool::MaxTolerance(solid, TopAbs_EDGE);
         const double tolerance = std::max(largest_edge, reach);
         BRepLib::SameParameter(result, largest_edge, Standard_True);
         if (result.ShapeType() != TopAbs_SOLID) return unchanged;

@@ -593,14 +593,6 @@ std::string brep_string(const Solid& solid, const ConvertOptions& options) {
     return out.str();
 }
 
-Solid read_step(const std::string& path, const Progress& progress, std::string* left_out) {
-    return one_solid(read_step_shapes(path, progress), path, progress, "read_step_all", left_out);
-}
-
-Solid read_brep(const std::string& path, const Progress& progress, std::string* left_out) {
-    return one_solid(read_brep_shapes(path, progress), path, progress, "read_brep_all", left_out);
-}
-
 namespace {
 
 // Every solid of a model file named, and no two alike, so that a name picks one solid (a dict's key, a module, a
@@ -623,6 +615,14 @@ std::vector<Solid> named_after_file(std::vector<Solid> solids, const std::string
 }
 
 }  // namespace
+
+Solid read_step(const std::string& path, const Progress& progress, std::string* left_out) {
+    return named_after_file({one_solid(read_step_shapes(path, progress), path, progress, "read_step_all", left_out)}, path).front();
+}
+
+Solid read_brep(const std::string& path, const Progress& progress, std::string* left_out) {
+    return named_after_file({one_solid(read_brep_shapes(path, progress), path, progress, "read_brep_all", left_out)}, path).front();
+}
 
 std::vector<Solid> read_step_all(const std::string& path, const Progress& progress, std::string* left_out) {
     return named_after_file(solids_from_file(read_step_shapes(path, progress), path, progress, left_out), path);

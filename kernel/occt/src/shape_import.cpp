@@ -843,10 +843,11 @@ std::string what_instead(const TopoDS_Shape& shape) {
     int shells = 0, faces = 0;
     for (TopExp_Explorer it(shape, TopAbs_SHELL); it.More(); it.Next()) ++shells;
     for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) ++faces;
+    const auto count = [](int n, const char* one) { return std::to_string(n) + " " + one + (n == 1 ? "" : "s"); };
     if (shells > 0)
-        return "; it holds " + std::to_string(shells) + " shell(s) of " + std::to_string(faces) +
-               " faces, a surface model that does not sew into closed shells";
-    if (faces > 0) return "; it holds " + std::to_string(faces) + " loose faces";
+        return "; it holds " + count(shells, "shell") + " of " + count(faces, "face") +
+               ", a surface model that does not sew into closed shells";
+    if (faces > 0) return "; it holds " + count(faces, "loose face");
     return "";
 }
 

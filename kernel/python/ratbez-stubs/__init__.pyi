@@ -628,7 +628,8 @@ def cylinder(radius: float, height: float, center: Point = ..., axis: Point = ..
     """A cylinder; center is the base center."""
 
 def default_tolerance(solid: Solid) -> float:
-    """The tessellation tolerance used when none is given: 1e-3 of the bounding-box diagonal."""
+    """The tessellation tolerance used when none is given: 1e-3 of the bounding-box diagonal, or the largest
+    Face.tolerance of a solid read from a file if that is more (no mesh follows that face closer)."""
 
 def ellipse_arc(a: float, b: float, start_deg: float, end_deg: float, center: Point = ..., normal: Point = ...) -> NurbsCurve:
     """An elliptical arc with semi-axes a and b as an exact NurbsCurve."""
@@ -807,8 +808,9 @@ def write_3mf(solid: Union[Solid, Dict[str, Solid]], path: Path, tolerance: Opti
     while the call runs (the GIL is released)."""
 
 def write_brep(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: bool = ..., analytic_primitives: bool = ...) -> None:
-    """Write OpenCASCADE's native .brep text (bezier_faces, analytic_primitives: as brep_string); a list of solids
-    writes a compound of them, read back by read_brep_all."""
+    """Write OpenCASCADE's native .brep text to a file whose name ends in .brep or .brp (bezier_faces,
+    analytic_primitives: as brep_string); a list of solids writes a compound of them, read back by
+    read_brep_all."""
 
 def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with
@@ -819,8 +821,9 @@ def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional
     while the call runs (the GIL is released)."""
 
 def write_step(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: bool = ..., analytic_primitives: bool = ...) -> None:
-    """Write the exact B-rep as an AP214 STEP file (bezier_faces, analytic_primitives: as brep_string). A list of
-    solids (what read_step_all returns) writes one product each, named after solid.name, read back by read_step_all."""
+    """Write the exact B-rep as an AP214 STEP file, its name ending in .step or .stp (bezier_faces,
+    analytic_primitives: as brep_string). A list of solids (what read_step_all returns) writes one product
+    each, named after solid.name, read back by read_step_all."""
 
 def write_stl(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., binary: bool = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),

@@ -171,9 +171,16 @@ void export_library(const py::dict& solids, const std::string& file, const py::o
         TessellationOptions tessellation;
         tessellation.tolerance = part.tolerance;
         tessellation.progress = progress_part(poll, share * static_cast<double>(i), share * static_cast<double>(i + 1));
-        meshes.push_back(exporter::tessellate_for_export(*part.solid, tessellation));
-        part.mesh = &meshes.back();
-        part.checks = exporter::tessellation_checks(*part.solid, *part.mesh, part.tolerance);
+        try {
+            meshes.push_back(exporter::tessellate_for_export(*part.solid, tessellation));
+            part.mesh = &meshes.back();
+            part.checks = exporter::tessellation_checks(*part.solid, *part.mesh, part.tolerance);
+        } catch (const TooFine&) {
+            throw;  // about the tolerance asked
+        } catch (const Error& e) {
+            // Which solid of the dict: the FreeCAD workbench passes each object's Label as its name.
+            throw e.renamed("solid", "solids['" + exporter::comment_text(part.module_name) + "']");
+        }
     }
     options.progress = progress_part(poll, kTessellationShare, 1);
     exporter::export_library(parts, file, options);
@@ -359,23 +366,29 @@ void bind_io(py::module_& m) {
         [](const py::object& solid, const py::object& path, bool bezier_faces, bool analytic_primitives) {
             const std::vector<Solid> solids = solids_of(solid);
             const std::string file = to_path(path, "path");
+            if (!has_extension(file, ".step") && !has_extension(file, ".stp"))
+                throw Error("path", "a STEP file name must end in .step or .stp");
             py::gil_scoped_release release;
             occt::write_step(solids, file, occt::ConvertOptions{bezier_faces, analytic_primitives});
         },
         py::arg("solid"), py::arg("path"), py::arg("bezier_faces") = false, py::arg("analytic_primitives") = true,
-        "Write the exact B-rep as an AP214 STEP file (bezier_faces, analytic_primitives: as brep_string). A list of\n"
-        "solids (what read_step_all returns) writes one product each, named after solid.name, read back by read_step_all.");
+        "Write the exact B-rep as an AP214 STEP file, its name ending in .step or .stp (bezier_faces,\n"
+        "analytic_primitives: as brep_string). A list of solids (what read_step_all returns) writes one product\n"
+        "each, named after solid.name, read back by read_step_all.");
     m.def(
         "write_brep",
         [](const py::object& solid, const py::object& path, bool bezier_faces, bool analytic_primitives) {
             const std::vector<Solid> solids = solids_of(solid);
             const std::string file = to_path(path, "path");
+            if (!has_extension(file, ".brep") && !has_extension(file, ".brp"))
+                throw Error("path", "an OpenCASCADE .brep file name must end in .brep or .brp");
             py::gil_scoped_release release;
             occt::write_brep(solids, file, occt::ConvertOptions{bezier_faces, analytic_primitives});
         },
         py::arg("solid"), py::arg("path"), py::arg("bezier_faces") = false, py::arg("analytic_primitives") = true,
-        "Write OpenCASCADE's native .brep text (bezier_faces, analytic_primitives: as brep_string); a list of solids\n"
-        "writes a compound of them, read back by read_brep_all.");
+        "Write OpenCASCADE's native .brep text to a file whose name ends in .brep or .brp (bezier_faces,\n"
+        "analytic_primitives: as brep_string); a list of solids writes a compound of them, read back by\n"
+        "read_brep_all.");
     m.def(
         "read_step",
         [](const py::object& path, const py::object& progress) { return read_released(path, progress, occt::read_step); },

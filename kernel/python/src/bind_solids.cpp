@@ -288,7 +288,8 @@ void bind_solids(py::module_& m) {
         });
 
     m.def("default_tolerance", &default_tolerance, py::arg("solid"),
-          "The tessellation tolerance used when none is given: 1e-3 of the bounding-box diagonal.");
+          "The tessellation tolerance used when none is given: 1e-3 of the bounding-box diagonal, or the largest\n"
+          "Face.tolerance of a solid read from a file if that is more (no mesh follows that face closer).");
 
     m.def(
         "cylinder",

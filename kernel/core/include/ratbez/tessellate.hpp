@@ -92,7 +92,8 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options);
 Mesh tessellate(const Face& face, const TessellationOptions& options);
 // A bare surface as the face Face::from_surface(surface) makes of it.
 Mesh tessellate(const NurbsSurface& surface, const TessellationOptions& options);
-// The tolerance used when the caller gives none: 1e-3 of the solid's bounding-box diagonal.
+// The tolerance used when the caller gives none: 1e-3 of the solid's bounding-box diagonal, or the largest
+// tolerance a face of it was read with (Face::tolerance) if that is more: no mesh follows that face closer.
 double default_tolerance(const Solid& solid);
 inline Mesh tessellate(const Solid& solid, double tolerance, std::optional<double> angle_deg = std::nullopt) {
     TessellationOptions options;

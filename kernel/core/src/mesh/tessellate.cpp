@@ -44,6 +44,7 @@
 #include "mesh/triangle_grid.hpp"
 #include "mesh/domain_triangulation.hpp"
 #include "mesh/weight_limit.hpp"
+#include "math/numeric_internal.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/convex_hull.hpp"
 #include "ratbez/convexity.hpp"
@@ -1034,18 +1035,34 @@ Estimate estimate_triangles(std::span<const Face> faces, detail::TessellationSet
 
 }  // namespace
 
-double default_tolerance(const Solid& solid) { return 1e-3 * solid.bounding_box().diagonal(); }
+namespace {
+
+// The face of `solid` read with the largest tolerance (Face::tolerance: how far the file's edges lie from the
+// face's surface, 0 for faces the kernel made), and that tolerance. No mesh follows such a face's boundary
+// closer than its edges lie to its surface.
+std::pair<std::size_t, double> loosest_face(const Solid& solid) {
+    std::pair<std::size_t, double> loosest{0, 0.0};
+    for (std::size_t i = 0; i < solid.faces().size(); ++i)
+        if (solid.faces()[i].tolerance() > loosest.second) loosest = {i, solid.faces()[i].tolerance()};
+    return loosest;
+}
+
+}  // namespace
+
+double default_tolerance(const Solid& solid) {
+    return std::max(1e-3 * solid.bounding_box().diagonal(), loosest_face(solid).second);
+}
 
 namespace {
 
 detail::TessellationSettings settings_of(const TessellationOptions& options) {
     require(std::isfinite(options.tolerance) && options.tolerance > 0, "tolerance",
-            "must be a finite number > 0 (got " + std::to_string(options.tolerance) + ")");
+            "must be a finite number > 0 (got " + detail::number(options.tolerance) + ")");
     detail::TessellationSettings settings;
     settings.tolerance = options.tolerance;
     if (options.angle_deg) {
         require(std::isfinite(*options.angle_deg) && *options.angle_deg > 0 && *options.angle_deg < 180, "angle_deg",
-                "must be in (0, 180) degrees (got " + std::to_string(*options.angle_deg) + ")");
+                "must be in (0, 180) degrees (got " + detail::number(*options.angle_deg) + ")");
         settings.angle_rad = *options.angle_deg * std::numbers::pi / 180.0;
     }
     require(options.max_triangles > 0, "max_triangles", "must be positive");
@@ -1114,19 +1131,36 @@ Mesh at_unit_scale(const Shape& shape, const Box& box, const TessellationOptions
 
 Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
     detail::require_tessellatable_weights(solid.faces(), "solid");
-    return at_unit_scale(solid, solid.bounding_box(), options, [](const Solid& s, const TessellationOptions& o) {
-        Mesh mesh = run_within_budget(s.faces(), settings_of(o));
-        // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
-        // solid whose faces fold onto each other — a profile that runs back over itself, found by
-        // fuzz_geometry — from handing out an open mesh.
-        require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
-                                           "back on each other, e.g. a profile that runs back over itself)");
-        // A convex solid gets a convex mesh: the straddling offsets follow each face's own spacing, and a
-        // sphere's came out with half its triangles a little out of plane with their neighbours, which
-        // sends OpenSCAD's minkowski() from its convex fast path to decomposition (0.96 s -> 570 s).
-        if (is_convex(s)) return convex_hull(mesh);  // a few flips where the mesh is nearly convex already
-        return mesh;
-    });
+    const auto whole_mesh = [&] {
+        return at_unit_scale(solid, solid.bounding_box(), options, [](const Solid& s, const TessellationOptions& o) {
+            Mesh mesh = run_within_budget(s.faces(), settings_of(o));
+            // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
+            // solid whose faces fold onto each other — a profile that runs back over itself, found by
+            // fuzz_geometry — from handing out an open mesh.
+            require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh (they overlap or fold "
+                                               "back on each other, e.g. a profile that runs back over itself)");
+            // A convex solid gets a convex mesh: the straddling offsets follow each face's own spacing, and a
+            // sphere's came out with half its triangles a little out of plane with their neighbours, which
+            // sends OpenSCAD's minkowski() from its convex fast path to decomposition (0.96 s -> 570 s).
+            if (is_convex(s)) return convex_hull(mesh);  // a few flips where the mesh is nearly convex already
+            return mesh;
+        });
+    };
+    try {
+        return whole_mesh();
+    } catch (const TooFine&) {
+        throw;
+    } catch (const Error& e) {
+        // A face read from a file whose edges lie further from its surface than the tolerance asked (042_Belt_Clip's
+        // up to 0.088, asked 0.036): its boundary cannot be followed, which the errors above blame on the faces.
+        const auto [face, loose] = loosest_face(solid);
+        if (e.argument() != "solid" || !(loose > options.tolerance)) throw;
+        const double scale = std::pow(10.0, std::floor(std::log10(loose)) - 1);
+        const std::string enough = detail::number(std::ceil(loose / scale * (1 - 1e-12)) * scale);  // two digits, rounded up
+        throw Error("solid", "face " + std::to_string(face) + " was read with tolerance " + enough +
+                                 " (its edges lie up to that far from its surface in the file), more than the tolerance asked (" +
+                                 detail::number(options.tolerance) + "): no mesh follows it closer; ask for at least " + enough);
+    }
 }
 
 Mesh tessellate(const Face& face, const TessellationOptions& options) {
