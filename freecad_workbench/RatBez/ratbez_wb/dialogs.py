@@ -26,7 +26,8 @@ def tolerance_field(value):
     spin.setSpecialValueText(translate("Automatic"))
     spin.setValue(value or 0.0)
     spin.setToolTip(translate("Largest distance between the mesh and the exact surfaces (Automatic: the "
-                              "kernel's default, 1e-3 of the solid's size)"))
+                              "kernel's default, 1e-3 of the solid's size, or more for a part read from a file "
+                              "whose faces the file gives a larger tolerance)"))
     return spin
 
 

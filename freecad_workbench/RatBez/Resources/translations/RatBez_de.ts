@@ -820,8 +820,8 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/dialogs.py"/>
-        <source>Largest distance between the mesh and the exact surfaces (Automatic: the kernel&apos;s default, 1e-3 of the solid&apos;s size)</source>
-        <translation>Größter Abstand zwischen dem Netz und den exakten Flächen (Automatisch: der Standardwert des Kerns, 1e-3 der Größe des Körpers)</translation>
+        <source>Largest distance between the mesh and the exact surfaces (Automatic: the kernel&apos;s default, 1e-3 of the solid&apos;s size, or more for a part read from a file whose faces the file gives a larger tolerance)</source>
+        <translation>Größter Abstand zwischen dem Netz und den exakten Flächen (Automatisch: der Standardwert des Kerns, 1e-3 der Größe des Körpers, oder mehr für ein aus einer Datei gelesenes Teil, dessen Flächen die Datei mit einer größeren Toleranz angibt)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>

@@ -820,7 +820,7 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/dialogs.py"/>
-        <source>Largest distance between the mesh and the exact surfaces (Automatic: the kernel&apos;s default, 1e-3 of the solid&apos;s size)</source>
+        <source>Largest distance between the mesh and the exact surfaces (Automatic: the kernel&apos;s default, 1e-3 of the solid&apos;s size, or more for a part read from a file whose faces the file gives a larger tolerance)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
