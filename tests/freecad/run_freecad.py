@@ -12,6 +12,7 @@ in the output; a hang is killed after the timeout.
 import argparse
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -58,13 +59,18 @@ def main():
             command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad", script]
         else:
             command = ["freecadcmd", script]
+        # A session of its own: a hang is killed with everything it started (xvfb-run leaves FreeCAD and Xvfb
+        # running when only it is killed).
+        process = subprocess.Popen(command, env=env, cwd=root, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                   start_new_session=True)
         try:
-            result = subprocess.run(command, env=env, cwd=root, stdout=subprocess.PIPE,
-                                    stderr=subprocess.STDOUT, timeout=args.timeout)
-            output = result.stdout.decode("utf-8", "replace")
-            status = result.returncode
-        except subprocess.TimeoutExpired as expired:
-            output = (expired.stdout or b"").decode("utf-8", "replace")
+            stdout, _ = process.communicate(timeout=args.timeout)
+            output = stdout.decode("utf-8", "replace")
+            status = process.returncode
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            stdout, _ = process.communicate()
+            output = stdout.decode("utf-8", "replace")
             output += "\nrun_freecad: TIMEOUT after {} s\n".format(args.timeout)
             status = -1
         sys.stdout.write(output)
