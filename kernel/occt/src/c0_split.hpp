@@ -35,10 +35,11 @@ struct SplitSolid {
 };
 
 // When a face's surface is C0 inside: `solid` with those faces, and the edges whose curves are C0, split at
-// their C0 knots. Otherwise `solid` itself (an edge alone does not matter to the rule), and also when
-// OpenCASCADE fails or leaves an invalid shape or other than one solid, or raises an edge's tolerance more than
-// kToleranceGrowth times above `reach` (the largest tolerance a face of the solid may need, ConvertedSolid::tolerance)
-// or its largest edge tolerance.
+// their C0 knots, where a knot line passing within the solid's largest edge tolerance of a vertex cuts no sliver
+// edge (the piece is dropped and its ends merged). Otherwise `solid` itself (an edge alone does not matter to
+// the rule), and also when OpenCASCADE fails or leaves an invalid shape or other than one solid, or raises an
+// edge's tolerance more than kToleranceGrowth times above `reach` (the largest tolerance a face of the solid may
+// need, ConvertedSolid::tolerance) or its largest edge tolerance.
 SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach);
 
 }  // namespace ratbez::occt::detail

@@ -25,10 +25,11 @@ void write_brep(std::span<const Solid> solids, const std::string& path, const Co
 std::string brep_string(const Solid& solid, const ConvertOptions& options = {});
 
 // The one solid of a STEP file or a .brep file, converted exactly (shape_import.hpp says which faces convert
-// and which are refused), named as read_step_all names it (the file's name for it, else the file's stem). Throws ratbez::Error naming "path" for a missing or unreadable file, a file that is
-// not STEP / .brep, a file with no solid or several (pointing at read_step_all), and a face that does not
-// convert ("'a.step': face 7: ..."). `progress` gets the fraction done (reading the file is the first half,
-// the faces the second) and may throw to cancel; OpenCASCADE's reader is stopped at its next check.
+// and which are refused), named as read_step_all names it (the file's name for it, else the file's stem).
+// Throws ratbez::Error naming "path" for a missing or unreadable file, a file that is not STEP / .brep, a file
+// with no solid or several (pointing at read_step_all), and a face that does not convert ("'a.step': face 7:
+// ..."). `progress` gets the fraction done (reading the file is the first half, the faces the second) and may
+// throw to cancel; OpenCASCADE's reader is stopped at its next check.
 // `left_out`, if given, gets what of the file no solid holds ("left out 12 face(s) outside every solid: ...",
 // from_occt), or "".
 Solid read_step(const std::string& path, const Progress& progress = {}, std::string* left_out = nullptr);
