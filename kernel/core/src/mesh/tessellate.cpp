@@ -1158,8 +1158,7 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
         // Said so where that face's own tolerance meshes (tried: the advice must hold), else the error stands.
         const auto [face, loose] = loosest_face(solid);
         if (e.argument() != "solid" || !(loose > options.tolerance)) throw;
-        const double scale = std::pow(10.0, std::floor(std::log10(loose)) - 1);
-        const double enough = std::ceil(loose / scale * (1 - 1e-12)) * scale;  // two digits, rounded up
+        const double enough = TooFine::two_digits_up(loose);
         TessellationOptions coarser = options;
         coarser.tolerance = enough;
         try {
