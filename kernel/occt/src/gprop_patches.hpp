@@ -41,6 +41,7 @@ struct PatchGrid {
     // face against itself (BOPAlgo_CheckerSI, part of FreeCAD's "Run BOP check") flags the patches at a
     // sphere's pole on some parameter ranges ([0.25, 0.5] x [0.5, 1] does, [0, 0.25] x [0.5, 1] does not:
     // its boundary test is in parameter units), and none on the unit square, for spheres of radius 0.1 to 1000.
+    // (The handover then moves each column of cells along u to a range of its own: topology.cpp, u_shift_of.)
     std::vector<Handle(Geom_BSplineSurface)> cells;
     bool reached = true;  // every cell met the tolerance
     const Handle(Geom_BSplineSurface)& cell(std::size_t i, std::size_t j) const { return cells[i * (v.size() - 1) + j]; }

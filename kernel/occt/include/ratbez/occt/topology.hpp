@@ -79,7 +79,9 @@ struct ConvertedSolid {
     std::vector<TopoDS_Face> faces;
     std::vector<std::size_t> first_face;
     // face_domains[k]: the rectangle (u0, u1, v0, v1) of our parameters that faces[k] covers. A Bézier patch's
-    // own parameters run over [0, 1]^2 there, affinely; otherwise OCCT's parameters are ours.
+    // own parameters run over [0, 1]^2 there, affinely; otherwise OCCT's parameters are ours. Either may be moved
+    // along OCCT's u on a B-spline face, so that faces beside each other do not share parameters (topology.cpp,
+    // u_shift_of): OCCT's u = ours + a shift, taken off by face_parameters where it maps, else by the affine map.
     std::vector<std::array<double, 4>> face_domains;
     // face_parameters[k]: OCCT's u and v on faces[k] -> ours, where they differ by more than the affine map of
     // face_domains (an arc direction in its one-span form, src/smooth_arcs.hpp); empty where they do not.
