@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike
 Point = Sequence[float]
 Curve = Union[BezierCurve, NurbsCurve]
 Surface = Union[BezierSurface, NurbsSurface]
-Path = Union[str, os.PathLike[str]]
+Path = Union[str, bytes, os.PathLike[str], os.PathLike[bytes]]
 '''
 
 # The type of a parameter pybind11 shows as `object`: by (function, parameter) first, then by name.

@@ -113,6 +113,32 @@ def test_nul_byte_and_folder_targets_are_refused(tmp_path, name, extension, writ
     assert "missing" in str(error) and "does not exist" in str(error)
 
 
+
+class _BytesPath:
+    """An os.PathLike whose __fspath__ gives bytes, as os.fsencode-minded libraries pass paths."""
+
+    def __init__(self, path):
+        self.path = os.fsencode(path)
+
+    def __fspath__(self):
+        return self.path
+
+
+@pytest.mark.parametrize("name,extension,write,valid", WRITERS, ids=IDS)
+def test_bytes_paths_write_as_open_takes_them(tmp_path, name, extension, write, valid):
+    # open() takes bytes and os.PathLike[bytes]; so does every writer, and the reader gets the file back.
+    target = os.fsencode(str(tmp_path / ("bytes é" + extension)))
+    write(target)
+    with open(target, "rb") as written:
+        assert valid(written.read())
+    write(_BytesPath(str(tmp_path / ("pathlike" + extension))))
+    assert valid((tmp_path / ("pathlike" + extension)).read_bytes())
+    if name == "write_step":
+        assert ratbez.read_step(target).name == "bytes é"  # named after the file's stem, as with a str path
+    error = raises_naming("path", write, bytes(tmp_path) + b"/\xff" + extension.encode())
+    assert "UTF-8" in str(error)
+    assert sorted(os.listdir(tmp_path)) == sorted(["bytes é" + extension, "pathlike" + extension])
+
 # ---- As an unprivileged user: root may write anything, so the permission rules are checked as nobody ----
 
 UNPRIVILEGED = r"""

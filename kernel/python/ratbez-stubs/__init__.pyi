@@ -10,7 +10,7 @@ from numpy.typing import ArrayLike
 Point = Sequence[float]
 Curve = Union[BezierCurve, NurbsCurve]
 Surface = Union[BezierSurface, NurbsSurface]
-Path = Union[str, os.PathLike[str]]
+Path = Union[str, bytes, os.PathLike[str], os.PathLike[bytes]]
 
 class BezierCurve(object):
     """A Bézier curve, polynomial or (with weights) rational, on the domain [0, 1]."""

@@ -116,16 +116,24 @@ std::vector<std::vector<double>> to_double_rows(py::handle value, const std::str
 }
 
 std::string to_path(py::handle value, const std::string& argument) {
-    if (!py::isinstance<py::str>(value) && !PyObject_HasAttrString(value.ptr(), "__fspath__"))
-        throw Error(argument, "expected a path (str or os.PathLike)");
+    constexpr const char* kExpected = "expected a path (str, bytes or os.PathLike)";
+    if (!py::isinstance<py::str>(value) && !py::isinstance<py::bytes>(value) &&
+        !PyObject_HasAttrString(value.ptr(), "__fspath__"))
+        throw Error(argument, kExpected);
     PyObject* fspath = PyOS_FSPath(value.ptr());
     if (fspath == nullptr) {
         PyErr_Clear();
-        throw Error(argument, "expected a path (str or os.PathLike)");
+        throw Error(argument, kExpected);
     }
     const auto path = py::reinterpret_steal<py::object>(fspath);
-    if (!py::isinstance<py::str>(path)) throw Error(argument, "expected a str path, not bytes");
-    auto text = path.cast<std::string>();
+    // bytes as open() takes them; UTF-8 only, because the name goes into messages and solids' names as text.
+    std::string text = py::isinstance<py::bytes>(path) ? std::string(path.cast<py::bytes>()) : path.cast<std::string>();
+    if (PyObject* decoded = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "strict"))
+        Py_DECREF(decoded);
+    else {
+        PyErr_Clear();
+        throw Error(argument, "is not UTF-8");
+    }
     if (text.empty()) throw Error(argument, "must not be empty");
     // A NUL ends the name for the system: "a.stl\0.txt" would pass a check of its extension and write "a.stl".
     if (text.find('\0') != std::string::npos) throw Error(argument, "contains a NUL character");
