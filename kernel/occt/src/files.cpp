@@ -47,6 +47,7 @@
 #include <mutex>
 #include <sstream>
 #include <streambuf>
+#include <utility>
 
 #include "child_process.hpp"
 #include "file_prescan.hpp"
@@ -617,11 +618,13 @@ std::vector<Solid> named_after_file(std::vector<Solid> solids, const std::string
 }  // namespace
 
 Solid read_step(const std::string& path, const Progress& progress, std::string* left_out) {
-    return named_after_file({one_solid(read_step_shapes(path, progress), path, progress, "read_step_all", left_out)}, path).front();
+    Solid solid = one_solid(read_step_shapes(path, progress), path, progress, "read_step_all", left_out);
+    return named_after_file({std::move(solid)}, path).front();
 }
 
 Solid read_brep(const std::string& path, const Progress& progress, std::string* left_out) {
-    return named_after_file({one_solid(read_brep_shapes(path, progress), path, progress, "read_brep_all", left_out)}, path).front();
+    Solid solid = one_solid(read_brep_shapes(path, progress), path, progress, "read_brep_all", left_out);
+    return named_after_file({std::move(solid)}, path).front();
 }
 
 std::vector<Solid> read_step_all(const std::string& path, const Progress& progress, std::string* left_out) {

@@ -7,9 +7,10 @@
 // Which point of b a point of a is ruled to: with `align` (the default) the curves are first matched by
 // normalised arc length (section_alignment.hpp in the modelling sources: closed curves oriented alike and
 // started at the points of least twist, open curves end to end, corners and joints of either matched exactly
-// by arc length, each curve on its own parameter between them); without it, by the parameter on [0, 1], as given. A surface whose rulings cross or pinch is
-// refused (Error naming "curve_b" and the place; analysis/self_intersection.hpp), unless a side collapses to
-// a point (curves that share an end), which the certificate does not cover.
+// by arc length, each curve on its own parameter between them); without it, by the parameter on [0, 1], as
+// given. A surface whose rulings cross or pinch is refused (Error naming "curve_b" and the place;
+// analysis/self_intersection.hpp), unless a side collapses to a point (curves that share an end), which the
+// certificate does not cover.
 
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/nurbs_surface.hpp"
