@@ -405,15 +405,22 @@ def check_occt(obj):
     return reports[0][1]
 
 
-def check_occt_all(obj):
+def check_occt_all(obj, progress=None):
     """[(name, report)] of ratbez.occt_check for every solid of the object, in order: the object's Label, or
-    Label_1, Label_2, ... when it holds several (a compound, an imported assembly)."""
+    Label_1, Label_2, ... when it holds several (a compound, an imported assembly). progress: as occt_check's,
+    callable(name, fraction) for each solid in turn."""
     rb = kernel.ratbez()
     if is_solid(obj):
-        return [(obj.Label, dict(rb.occt_check(solid_of(obj))))]
-    if not exportable(obj):
+        named = [(obj.Label, solid_of(obj))]
+    elif not exportable(obj):
         raise TypeError("'{}' holds no solid".format(safe_label(obj.Label)))
-    return [(name, dict(rb.occt_check(solid))) for name, solid, _ in _named_solids(obj, identifiers=False)]
+    else:
+        named = [(name, solid) for name, solid, _ in _named_solids(obj, identifiers=False)]
+    reports = []
+    for name, solid in named:
+        told = None if progress is None else (lambda fraction: progress(name, fraction))
+        reports.append((name, dict(rb.occt_check(solid, progress=told))))
+    return reports
 
 
 _REPORT_ROWS = (

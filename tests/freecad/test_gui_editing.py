@@ -167,6 +167,51 @@ def action(name):
     raise AssertionError("no action " + name)
 
 
+def send_key(widget, key, text="", modifiers=QtCore.Qt.NoModifier):
+    """A real key press on widget and its release, delivered by Qt (QApplication.sendEvent goes through
+    QApplication::notify, which hands a key the widget ignores on to its parents: the task view's Enter and
+    Escape). The release goes where the focus is then, as a real one does: Enter may have closed the panel and
+    deleted widget."""
+    QtGui.QApplication.sendEvent(widget, QtGui.QKeyEvent(QtCore.QEvent.KeyPress, key, modifiers, text))
+    focus = QtGui.QApplication.focusWidget()
+    if focus is not None:
+        QtGui.QApplication.sendEvent(focus, QtGui.QKeyEvent(QtCore.QEvent.KeyRelease, key, modifiers, text))
+
+
+def type_into(widget, text, final_key=QtCore.Qt.Key_Return):
+    """What a user does in a field: focus it, select its text (Ctrl+A), type text and press Enter (or
+    final_key, None for none). Qt's key codes of digits, '.' and '-' are their ASCII codes."""
+    Gui.getMainWindow().activateWindow()
+    widget.setFocus(QtCore.Qt.MouseFocusReason)
+    process_events()
+    send_key(widget, QtCore.Qt.Key_A, "", QtCore.Qt.ControlModifier)
+    for character in text:
+        send_key(widget, ord(character.upper()), character)
+    if final_key is not None:
+        send_key(widget, final_key)
+    process_events()
+
+
+def mouse_click(widget):
+    """A real left click in the middle of widget (press and release: the press takes the focus, as the
+    user's click does)."""
+    position = widget.rect().center()
+    for kind, buttons in ((QtCore.QEvent.MouseButtonPress, QtCore.Qt.LeftButton),
+                          (QtCore.QEvent.MouseButtonRelease, QtCore.Qt.NoButton)):
+        QtGui.QApplication.sendEvent(widget, QtGui.QMouseEvent(kind, position, widget.mapToGlobal(position),
+                                                               QtCore.Qt.LeftButton, buttons, QtCore.Qt.NoModifier))
+    process_events()
+
+
+def task_button(role):
+    """The open task dialog's OK (QDialogButtonBox.AcceptRole) or Cancel (RejectRole) button."""
+    for box in combo_view().findChildren(QtGui.QDialogButtonBox):
+        for button in box.buttons():
+            if box.isVisible() and box.buttonRole(button) == role:
+                return button
+    raise AssertionError("no task dialog button of role {}".format(role))
+
+
 def property_groups(obj):
     """The group rows of the property editor's Data tab for obj, as displayed."""
     select(obj)
@@ -178,6 +223,21 @@ def property_groups(obj):
             if "Base" in rows:
                 return rows
     return []
+
+
+def property_values(obj, group):
+    """{name: text} of the rows of `group` in the property editor's Data tab for obj, as displayed."""
+    select(obj)
+    process_events(0.5)
+    for view in Gui.getMainWindow().findChildren(QtGui.QTreeView):
+        if view.metaObject().className() == "Gui::PropertyEditor::PropertyEditor" and view.isVisible():
+            model = view.model()
+            for r in range(model.rowCount()):
+                parent = model.index(r, 0)
+                if model.data(parent) == group:
+                    return {model.data(model.index(k, 0, parent)): model.data(model.index(k, 1, parent))
+                            for k in range(model.rowCount(parent))}
+    return {}
 
 
 def xz_sketch(name, x0=2.0):
@@ -323,10 +383,114 @@ def test_a_sweep_of_the_profile_alone_lets_the_user_pick_the_path():
     panel.path_row.button.setChecked(False)
     process_events()
     check(sweep.Path and sweep.isValid(), "the picked edge became the path: " + panel.status.text())
-    close(sweep.ExactVolume, PI * 0.25 * PI, 1e-9, "a quarter torus")
+    close(sweep.ExactVolume.Value, PI * 0.25 * PI, 1e-9, "a quarter torus")
     check(panel.accept() is True, "OK refused")
     process_events()
     check("failed" not in report_text()[len(before):], "report view: " + report_text()[len(before):])
+
+
+@suite.test
+def test_enter_in_a_field_accepts_as_ok_does():
+    # User trial: typing a radius and pressing Enter (the task view's default button) left a second, empty undo
+    # step ("Edit Sphere" twice; the first Std_Undo changed nothing): the field's change after the panel had
+    # committed opened a new transaction.
+    new_document("Enter")
+    sphere, panel = run_command("RatBez_Sphere")
+    panel.accept()
+    process_events()
+    tree_double_click(sphere)
+    panel = panel_of(sphere)
+    check(panel is not None, "the double-click opened no panel")
+    type_into(panel.dimensions["Radius"].widget, "4")
+    check(panel_of(sphere) is None and not Gui.Control.activeDialog(), "Enter did not close the panel")
+    check(sphere.Radius.Value == 4, "Radius {}".format(sphere.Radius))
+    check(doc.UndoNames == ["Edit Sphere", "Create Sphere"], "undo after Enter: {}".format(doc.UndoNames))
+    Gui.runCommand("Std_Undo")
+    process_events()
+    check(sphere.Radius.Value == 5, "one Std_Undo gave Radius {}".format(sphere.Radius))
+    new_document("EnterCreate")
+    cylinder, panel = run_command("RatBez_Cylinder")
+    type_into(panel.dimensions["Radius"].widget, "3")
+    check(panel_of(cylinder) is None and not Gui.Control.activeDialog(), "Enter did not close the new cylinder's panel")
+    check(cylinder.Radius.Value == 3, "Radius {}".format(cylinder.Radius))
+    check(doc.UndoNames == ["Create Cylinder"], "undo after Enter: {}".format(doc.UndoNames))
+    # The mouse's OK, for comparison: one step too.
+    tree_double_click(cylinder)
+    type_into(panel_of(cylinder).dimensions["Height"].widget, "7", final_key=None)
+    mouse_click(task_button(QtGui.QDialogButtonBox.AcceptRole))
+    check(cylinder.Height.Value == 7 and doc.UndoNames == ["Edit Cylinder", "Create Cylinder"],
+          "OK: Height {}, undo {}".format(cylinder.Height, doc.UndoNames))
+
+
+@suite.test
+def test_the_revolve_axis_preview_goes_however_the_panel_closes():
+    # User trial: accepted with Enter, the Revolve panel's red axis line stayed in the 3D view (7 children of
+    # the scene graph instead of 6); the mouse's OK removed it.
+    new_document("AxisPreview")
+    sketch = xz_sketch("Sketch")
+    select(sketch)
+    revolve, panel = run_command("RatBez_Revolve")
+    panel.accept()
+    process_events()
+    graph = Gui.ActiveDocument.ActiveView.getSceneGraph()
+    children = graph.getNumChildren()
+
+    def edit():
+        tree_double_click(revolve)
+        panel = panel_of(revolve)
+        check(panel is not None and panel.axis_node is not None, "no panel or no axis drawn")
+        check(graph.getNumChildren() == children + 1, "the axis is not in the scene graph")
+        return panel
+
+    def enter(panel):
+        type_into(panel.angle.widget, "270")
+
+    def escape(panel):
+        type_into(panel.angle.widget, "90", final_key=QtCore.Qt.Key_Escape)
+
+    def ok(panel):
+        type_into(panel.angle.widget, "180", final_key=None)
+        mouse_click(task_button(QtGui.QDialogButtonBox.AcceptRole))
+
+    def cancel(panel):
+        type_into(panel.angle.widget, "45", final_key=None)
+        mouse_click(task_button(QtGui.QDialogButtonBox.RejectRole))
+
+    for way, close_panel, angle in (("Enter", enter, 270), ("Escape", escape, 270), ("OK", ok, 180),
+                                    ("Cancel", cancel, 180)):
+        close_panel(edit())
+        check(panel_of(revolve) is None and not Gui.Control.activeDialog(), way + " did not close the panel")
+        check(revolve.Angle == angle, "{}: Angle {}".format(way, revolve.Angle))
+        check(graph.getNumChildren() == children, "{}: the scene graph has {} children, {} before the panel".format(
+            way, graph.getNumChildren(), children))
+    panel = edit()
+    type_into(panel.angle.widget, "30", final_key=None)
+    App.closeDocument(doc.Name)
+    process_events()
+    check(panel.axis_node is None and not Gui.Control.activeDialog(), "closing the document kept the panel")
+
+
+def text_room(edit):
+    """The width a line edit shows its text in: its contents rectangle as its style lays it out (a style sheet's
+    padding included: FreeCAD's number fields keep 15 px on the right for their expression icon) less its text
+    margins and the 2 px QLineEdit keeps on either side."""
+    option = QtGui.QStyleOptionFrame()
+    option.initFrom(edit)
+    option.rect = edit.contentsRect()
+    option.lineWidth = edit.style().pixelMetric(QtGui.QStyle.PM_DefaultFrameWidth, option, edit) if edit.hasFrame() else 0
+    contents = edit.style().subElementRect(QtGui.QStyle.SE_LineEditContents, option, edit)
+    margins = edit.textMargins()
+    return contents.width() - margins.left() - margins.right() - 2 * 2
+
+
+def widen_numbers(panel):
+    """Every number field of the panel set to a wide value it takes, as typed: -1234.5, else 1234.5, else its
+    maximum (an angle's 360). The user trial's Center (1234.5, -250.25, 10) read "34.50 mm", "50.25 mm"."""
+    for widget in panel.form.findChildren(QtGui.QAbstractSpinBox):
+        if widget.metaObject().className() == "Gui::QuantitySpinBox":
+            low, high = widget.property("minimum"), widget.property("maximum")
+            widget.setProperty("rawValue", next((v for v in (-1234.5, 1234.5) if low <= v <= high), high))
+    process_events(0.2)
 
 
 def clipping(panel):
@@ -361,10 +525,11 @@ def clipping(panel):
             problems.append("{} needs {} px, has {}".format(name, widget.sizeHint().width(), widget.width()))
         if hasattr(widget, "full_text") and widget.text() != widget.full_text:
             problems.append("the name '{}' shows as '{}'".format(widget.full_text, widget.text()))
-        if isinstance(widget, QtGui.QAbstractSpinBox):
-            edit = widget.findChild(QtGui.QLineEdit)
-            if edit is not None and edit.fontMetrics().horizontalAdvance(edit.text()) + 4 > edit.width():
-                problems.append("a field shows '{}' in {} px".format(edit.text(), edit.width()))
+        edit = widget.findChild(QtGui.QLineEdit) if isinstance(widget, QtGui.QAbstractSpinBox) else widget
+        if isinstance(edit, QtGui.QLineEdit) and edit.text():
+            needed, room = QtGui.QFontMetrics(edit.font()).horizontalAdvance(edit.text()), text_room(edit)
+            if needed > room:
+                problems.append("a field shows '{}' ({} px) in {} px".format(edit.text(), needed, room))
         if isinstance(widget, QtGui.QComboBox):
             needed = widget.fontMetrics().horizontalAdvance(widget.currentText()) + 30  # frame and arrow
             if needed > widget.width():
@@ -386,7 +551,9 @@ def clipping(panel):
 @suite.test
 def test_every_panel_fits_the_default_combo_view():
     # Issue 25: at the default Combo View width the panels needed 310 px: Bézier curve and Loft cut their
-    # Cancel button, the torus's message was cut, pole cells showed "3....".
+    # Cancel button, the torus's message was cut, pole cells showed "3....". User trial: Center and other
+    # vector fields side by side cut leading digits ((1234.5, -250.25, 10) read "34.50 mm", "50.25 mm",
+    # "10.00 mm"): every number field holds a wide value once too, and its whole text must show.
     new_document("Fit")
     check(combo_view().width() == DEFAULT_COMBO_WIDTH, "Combo View {} px".format(combo_view().width()))
     circles = []
@@ -402,7 +569,7 @@ def test_every_panel_fits_the_default_combo_view():
                   "RatBez_Loft": circles, "RatBez_Sweep": [circles[0], line]}
     commands = ["RatBez_Cylinder", "RatBez_Cone", "RatBez_Sphere", "RatBez_Torus", "RatBez_BezierCurve",
                 "RatBez_BezierSurface", "RatBez_Revolve", "RatBez_Extrude", "RatBez_Ruled", "RatBez_Loft",
-                "RatBez_Sweep"]
+                "RatBez_Sweep", "RatBez_Interpolate"]
     failures = []
     for name in commands:
         select(*selections.get(name, []))
@@ -426,6 +593,11 @@ def test_every_panel_fits_the_default_combo_view():
         problems = clipping(panel)
         if problems:
             failures.append("{}: {}".format(name, "; ".join(problems)))
+        widen_numbers(panel)
+        combo_shot(name + "_wide_numbers")
+        problems = clipping(panel)
+        if problems:
+            failures.append("{} (wide numbers): {}".format(name, "; ".join(problems)))
         panel.reject()
         process_events()
     check(not failures, "\n".join(failures))
@@ -490,7 +662,7 @@ def test_the_preferences_switch_primitives_between_analytic_and_bspline():
         check(seen == [True], "the page's check box, ticked by default: {}".format(seen))
         check(not preferences.analytic_primitives(), "OK saved the preference")
         check(type(sphere.Shape.Faces[0].Surface).__name__ == "BSplineSurface", "the open sphere rebuilt as B-spline")
-        close(sphere.Shape.Volume, sphere.ExactVolume, 1e-6, "B-spline sphere Shape.Volume")
+        close(sphere.Shape.Volume, sphere.ExactVolume.Value, 1e-6, "B-spline sphere Shape.Volume")
     finally:
         preferences.set_analytic_primitives(True)
         features.rebuild_primitives()
@@ -506,6 +678,22 @@ def test_the_property_group_reads_RatBez():
     groups = property_groups(sphere)
     combo_shot("property_editor")
     check("RatBez" in groups and "Rat Bez" not in groups, "groups: {}".format(groups))
+
+
+@suite.test
+def test_the_exact_volume_and_area_show_their_units():
+    # User trial: the property editor showed Exact Area "150.80" and Exact Volume "125.66", no unit, beside
+    # "10.00 mm".
+    new_document("Units")
+    cylinder, panel = run_command("RatBez_Cylinder")
+    panel.accept()
+    shown = property_values(cylinder, "Kernel")
+    combo_shot("property_editor_kernel")
+    # In the user's unit schema, as FreeCAD shows areas and volumes (the default's 1.51 cm^2, 125.66 mm^3).
+    for name, value, power in (("Exact Area", 48 * PI, "^2"), ("Exact Volume", 40 * PI, "^3")):
+        text = shown.get(name, "")
+        check(text.endswith(power), "{} shows '{}'".format(name, text))
+        close(App.Units.Quantity(text).Value, value, 0.01, name)
 
 
 @suite.test
@@ -567,6 +755,57 @@ def test_export_takes_the_colours_and_every_selected_solid():
     check('name="Cylinder"' in model and 'name="Sphere"' in model, "3MF names")
     check("RatBez: wrote 'Cylinder', 'Sphere' to" in report_text(), "no word in the report view")
 
+
+@suite.test
+def test_the_occt_check_says_what_it_checked_and_shows_it_is_busy():
+    # User trial: on an imported STEP part, "Check against OpenCASCADE" reported the kernel's reading of the
+    # shape, which passed, while Part > Check geometry flagged FreeCAD's own shape; and a large part held the
+    # GUI for 27 s with no sign of life. The check now says what it checked, and shows the wait cursor and its
+    # progress in the status bar while it runs, both gone after it, also when it fails.
+    import RatBez
+    new_document("Check")
+    box = doc.addObject("Part::Box", "Box")
+    doc.recompute()
+    sphere = RatBez.make_sphere(doc)
+    bar = Gui.getMainWindow().statusBar()
+    original = RatBez.check_occt_all
+    seen = []
+
+    def look():
+        cursor = QtGui.QApplication.overrideCursor()
+        seen.append((cursor.shape() if cursor is not None else None, bar.currentMessage()))
+
+    def watched(obj, progress=None):
+        look()
+        if obj is sphere and refuse:
+            raise ValueError("refused for the test")
+        if progress is None:
+            return original(obj)
+        return original(obj, lambda *told: (progress(*told), look()))
+
+    before = report_text()
+    try:
+        RatBez.check_occt_all = watched
+        for refuse in (False, True):
+            select(box, sphere)
+            Gui.runCommand("RatBez_CheckOCCT")
+            process_events()
+            # (FreeCAD shows the report view's last line in the status bar.)
+            check(QtGui.QApplication.overrideCursor() is None and "Checking" not in bar.currentMessage(),
+                  "after the check: cursor {}, status '{}'".format(QtGui.QApplication.overrideCursor(),
+                                                                   bar.currentMessage()))
+    finally:
+        RatBez.check_occt_all = original
+    messages = [message for _, message in seen]
+    check(seen and all(shape == QtCore.Qt.WaitCursor for shape, _ in seen), "cursor while checking: {}".format(seen))
+    check("Checking 'Box' against OpenCASCADE..." in messages and "Checking 'Sphere' against OpenCASCADE..." in messages
+          and "Checking 'Box' against OpenCASCADE... 100%" in messages, "status while checking: {}".format(messages))
+    added = report_text()[len(before):]
+    said = ("Checked: RatBez's reading of 'Box' (the solid RatBez exports and hands back), not FreeCAD's shape "
+            "itself; Part > Check geometry checks that.")
+    check(said in added and added.index(said) < added.index("RatBez OpenCASCADE check of 'Box'"), added)
+    check("reading of 'Sphere'" not in added, "a RatBez solid is checked as FreeCAD has it:\n" + added)
+    check("cannot check 'Sphere': refused for the test" in added, added)
 
 @suite.test
 def test_no_python_exception_in_the_report_view():

@@ -86,7 +86,7 @@ def test_every_solid_renders_in_openscad():
         mesh = Mesh.Mesh(stl)
         check(mesh.isSolid() and not mesh.hasNonManifolds(), obj.Label + ": rendered mesh not a closed manifold")
         # A chordal tolerance t shifts the surface by at most t: |dV| <= t * area (plus rounding).
-        close(mesh.Volume, obj.ExactVolume, 1.5 * TOLERANCE * obj.Shape.Area / obj.ExactVolume + 1e-6,
+        close(mesh.Volume, obj.ExactVolume.Value, 1.5 * TOLERANCE * obj.Shape.Area / obj.ExactVolume.Value + 1e-6,
               obj.Label + " rendered volume")
         centre = mesh.BoundBox.Center
         expected_centre = obj.Shape.optimalBoundingBox().Center

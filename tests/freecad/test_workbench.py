@@ -81,9 +81,9 @@ def assert_good_solid(obj, expected_volume, what, centre=None):
         surfaces = ("BSplineSurface", "Plane") + (("Toroid", "Sphere") if analytic and len(shape.Faces) == 1 else ())
     for face in shape.Faces:
         check(type(face.Surface).__name__ in surfaces, "{}: face on a {}".format(what, type(face.Surface).__name__))
-    close(obj.ExactVolume, expected_volume, 1e-9, what + " kernel volume")
+    close(obj.ExactVolume.Value, expected_volume, 1e-9, what + " kernel volume")
     close(shape.Volume, expected_volume, MEASURE, what + " FreeCAD Shape.Volume")
-    close(shape.Area, obj.ExactArea, MEASURE, what + " FreeCAD Shape.Area")
+    close(shape.Area, obj.ExactArea.Value, MEASURE, what + " FreeCAD Shape.Area")
     if centre is not None:
         check((shape.CenterOfMass - centre).Length <= MEASURE * shape.BoundBox.DiagonalLength,
               "{}: CenterOfMass {} vs {}".format(what, shape.CenterOfMass, centre))
@@ -134,6 +134,13 @@ def test_primitives_measure_exactly_in_freecad():
     # The tooltip of the exact value says which value FreeCAD's tools show.
     tip = cases[0][0].getDocumentationOfProperty("ExactVolume")
     check("Shape.Volume" in tip and "Check geometry" in tip, "ExactVolume tooltip: " + tip)
+    # Quantities, shown with their units in the property editor (user trial: "150.80" beside "10.00 mm").
+    cylinder = cases[0][0]
+    for name, type_name, unit in (("ExactVolume", "App::PropertyVolume", "mm^3"),
+                                  ("ExactArea", "App::PropertyArea", "mm^2")):
+        shown = getattr(cylinder, name).UserString
+        check(cylinder.getTypeIdOfProperty(name) == type_name and shown.endswith(unit),
+              "{}: {} {}".format(name, cylinder.getTypeIdOfProperty(name), shown))
 
 
 @suite.test
@@ -663,7 +670,7 @@ def test_revolve_matches_part_revolution_and_options():
     datum = RatBez.make_revolve(doc, Profile=sketch, AxisReference=(z_axis, []), Angle=90)
     check(datum.isValid() and (datum.AxisDirection - V(0, 0, 1)).Length < 1e-12, "axis from a datum line: " +
           datum.getStatusString())
-    close(datum.ExactVolume, full_volume / 4, 1e-9, "quarter revolution about the datum line")
+    close(datum.ExactVolume.Value, full_volume / 4, 1e-9, "quarter revolution about the datum line")
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -712,12 +719,12 @@ def test_loft_through_circles_matches_closed_forms():
     loft.Ruled = False
     loft.Degree = 1
     doc.recompute()
-    close(loft.ExactVolume, 14 * PI / 3, 1e-9, "Degree 1 is ruled")
+    close(loft.ExactVolume.Value, 14 * PI / 3, 1e-9, "Degree 1 is ruled")
     check(loft.getDocumentationOfProperty("Ruled"), "Ruled tooltip")
     # Against the kernel given the same sections directly: the conversion is exact.
     direct = ratbez.loft([ratbez.circle(r, (0, 0, k)) for k, r in enumerate((1.0, 2.0, 1.0))])
     close(direct.volume(), 86 * PI / 15, 1e-9, "ratbez.loft of ratbez.circle sections")
-    assert_measures(loft.Shape, loft.ExactVolume, loft.ExactArea, (0, 0, 1), "loft, BOP check")
+    assert_measures(loft.Shape, loft.ExactVolume.Value, loft.ExactArea.Value, (0, 0, 1), "loft, BOP check")
 
 
 @suite.test
@@ -735,9 +742,9 @@ def test_ruled_square_to_circle():
     middle = section_area(ruled.Shape, 1.5)
     check(PI < middle < 4, "the mid section lies between the circle and the square: {}".format(middle))
     # The slice is OCCT's approximate intersection curve: agreement to about its tolerance.
-    close(ruled.ExactVolume, 3 / 6 * (4 + 4 * middle + PI), 1e-6, "ruled square to circle: prismatoid rule")
-    assert_good_solid(ruled, ruled.ExactVolume, "ruled square to circle")
-    assert_measures(ruled.Shape, ruled.ExactVolume, ruled.ExactArea, ruled.Shape.CenterOfMass, "ruled, BOP check")
+    close(ruled.ExactVolume.Value, 3 / 6 * (4 + 4 * middle + PI), 1e-6, "ruled square to circle: prismatoid rule")
+    assert_good_solid(ruled, ruled.ExactVolume.Value, "ruled square to circle")
+    assert_measures(ruled.Shape, ruled.ExactVolume.Value, ruled.ExactArea.Value, ruled.Shape.CenterOfMass, "ruled, BOP check")
     # Every lateral face's v isocurves are straight: their midpoint lies on the chord.
     for face in ruled.Shape.Faces:
         if isinstance(face.Surface, Part.Plane):
@@ -748,7 +755,7 @@ def test_ruled_square_to_circle():
             check(((m - a).cross(b - a)).Length <= 1e-9 * (b - a).Length ** 2, "a ruling is not straight")
     # Profiles the other way round give the same solid; the same plane twice gives none.
     swapped = RatBez.make_ruled(doc, Profile1=circle, Profile2=square)
-    close(swapped.ExactVolume, ruled.ExactVolume, 1e-9, "ruled with the profiles swapped")
+    close(swapped.ExactVolume.Value, ruled.ExactVolume.Value, 1e-9, "ruled with the profiles swapped")
     flat = RatBez.make_ruled(doc, Profile1=square, Profile2=circle_object(doc, "Flat", 0.5, V(0, 0, 0)))
     check(flat.getStatusString().startswith("Profile2: must lie entirely in front of the plane of Profile1"),
           flat.getStatusString())
@@ -779,8 +786,8 @@ def test_sweeps_along_a_line_and_arcs_are_exact():
     assert_good_solid(quarter, PI * r * r * PI * R / 2, "sweep along a quarter arc", centre=V(c, c, 0))
     torus = RatBez.make_sweep(doc, Profile=section, Path=ring)
     assert_good_solid(torus, 2 * PI * PI * R * r * r, "sweep along a full circle", centre=V(0, 0, 0))
-    close(torus.ExactVolume, ratbez.torus(R, r).volume(), 1e-10, "swept torus vs ratbez.torus")
-    assert_measures(quarter.Shape, quarter.ExactVolume, quarter.ExactArea, quarter.Shape.CenterOfMass,
+    close(torus.ExactVolume.Value, ratbez.torus(R, r).volume(), 1e-10, "swept torus vs ratbez.torus")
+    assert_measures(quarter.Shape, quarter.ExactVolume.Value, quarter.ExactArea.Value, quarter.Shape.CenterOfMass,
                     "quarter torus, BOP check")
     # A path of several edges (line, tangent arc) works as one; a sketch too.
     path = doc.addObject("Sketcher::SketchObject", "PathSketch")
@@ -791,8 +798,8 @@ def test_sweeps_along_a_line_and_arcs_are_exact():
     bent = RatBez.make_sweep(doc, Profile=disc, Path=path)
     # Neither a line nor an arc as a whole: approximated within Tolerance (1e-6 mm), Pappus to about that.
     check(bent.isValid(), "bent: " + bent.getStatusString())
-    close(bent.ExactVolume, PI * r * r * (2 + PI), 1e-5, "sweep along a line and a tangent arc (Pappus)")
-    close(bent.Shape.Volume, bent.ExactVolume, MEASURE, "bent: FreeCAD's Shape.Volume")
+    close(bent.ExactVolume.Value, PI * r * r * (2 + PI), 1e-5, "sweep along a line and a tangent arc (Pappus)")
+    close(bent.Shape.Volume, bent.ExactVolume.Value, MEASURE, "bent: FreeCAD's Shape.Volume")
 
 
 @suite.test
@@ -861,12 +868,24 @@ def test_save_reopen_recompute_and_old_documents():
     revolve.removeProperty("Angle")
     revolve.addProperty("App::PropertyAngle", "Angle", "RatBez", "old")
     revolve.Angle = 180
+    # Older versions stored the exact volume and area as App::PropertyFloat; they come back as the quantities,
+    # with their values, before any recompute.
+    sphere = made["Sphere"]
+    old_exact = {"ExactVolume": sphere.ExactVolume.Value, "ExactArea": sphere.ExactArea.Value}
+    for name, value in old_exact.items():
+        sphere.removeProperty(name)
+        sphere.addProperty("App::PropertyFloat", name, "Kernel", "old", 1 | 8)
+        setattr(sphere, name, value)
     before = {key: (obj.Name, obj.Shape.Volume if key not in ("BezierCurve", "BezierSurface") else 0,
                     obj.Shape.Length if key == "BezierCurve" else 0) for key, obj in made.items()}
     path = os.path.join(OUT, "ratbez_persist.FCStd")
     doc.saveAs(path)
     App.closeDocument(doc.Name)
     doc = App.openDocument(path)
+    sphere = doc.getObject(before["Sphere"][0])
+    for name, type_name in (("ExactVolume", "App::PropertyVolume"), ("ExactArea", "App::PropertyArea")):
+        check(sphere.getTypeIdOfProperty(name) == type_name and getattr(sphere, name).Value == old_exact[name],
+              "{} migrated: {} {}".format(name, sphere.getTypeIdOfProperty(name), getattr(sphere, name)))
     for key, (name, volume, length) in before.items():
         obj = doc.getObject(name)
         check(obj is not None and type(obj.Proxy).__name__ == key, key + " after reopen")

@@ -9,6 +9,8 @@ While a task panel is open, the creating commands are disabled (as Part's Revolv
 Primitives are): a second command must not replace the open panel and leave its object behind.
 """
 
+import contextlib
+
 import FreeCAD as App
 import FreeCADGui as Gui
 import Part
@@ -322,17 +324,50 @@ class CheckOCCTCommand:
         import RatBez
         for obj in _selected_exportable():
             try:
-                reports = RatBez.check_occt_all(obj)
+                with _busy(translate("Checking '{}' against OpenCASCADE...").format(one_line(obj.Label))) as tell:
+                    def progress(name, fraction):
+                        # The solid's name only where the object holds several (Label_1, Label_2, ...).
+                        tell("{:.0%}".format(fraction) if name == obj.Label else "{} {:.0%}".format(name, fraction))
+                    reports = RatBez.check_occt_all(obj, progress)
             except kernel.error_types() as error:
                 App.Console.PrintError(translate("RatBez: cannot check '{}': {}\n").format(
                     one_line(obj.Label), one_line(error)))
                 continue
+            if not RatBez.is_solid(obj):
+                # Another object's shape is read by the kernel (as for an export) and that solid is checked: it
+                # can pass where FreeCAD's own shape has faults.
+                App.Console.PrintMessage(translate(
+                    "Checked: RatBez's reading of '{}' (the solid RatBez exports and hands back), not FreeCAD's "
+                    "shape itself; Part > Check geometry checks that.\n").format(one_line(obj.Label)))
             for name, report in reports:
                 text = RatBez.format_check_report(obj, report, name)
                 if RatBez.check_passed(report):
                     App.Console.PrintMessage(text)
                 else:
                     App.Console.PrintWarning(text)
+
+
+@contextlib.contextmanager
+def _busy(message):
+    """While a long call runs in the GUI thread (a large part's check takes half a minute): FreeCAD's wait cursor
+    and `message` in the status bar; yields tell(detail), which shows the message with the detail (the
+    progress) at once. Both go when the call ends, however it ends."""
+    from PySide import QtCore, QtGui
+    bar = Gui.getMainWindow().statusBar()
+
+    def tell(detail=""):
+        bar.showMessage("{} {}".format(message, detail).strip())
+        bar.repaint()  # now: the call holds the event loop
+
+    QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+    try:
+        # The cursor shows, and the report view's last lines reach the status bar before the message, not over it.
+        QtGui.QApplication.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
+        tell()
+        yield tell
+    finally:
+        bar.clearMessage()
+        QtGui.QApplication.restoreOverrideCursor()
 
 
 def _selected_exportable():

@@ -57,16 +57,7 @@ class RatBezFeature:
         """Add the properties this version declares (also to objects saved by an older version), and
         change the type of those an older version declared differently (keeping their values)."""
         for type_name, name, tooltip, default in self.PROPERTIES:
-            if name in obj.PropertiesList:
-                if obj.getTypeIdOfProperty(name) == type_name:
-                    continue
-                kept = _plain_value(getattr(obj, name))
-                obj.removeProperty(name)
-                obj.addProperty(type_name, name, self.GROUP, tooltip)
-                setattr(obj, name, kept)
-                continue
-            obj.addProperty(type_name, name, self.GROUP, tooltip)
-            if default is not None:
+            if _ensure_property(obj, type_name, name, self.GROUP, tooltip) and default is not None:
                 setattr(obj, name, default() if callable(default) else default)
 
     # -- recompute --------------------------------------------------------------------------------
@@ -121,6 +112,20 @@ class RatBezFeature:
         self.loads(state)
 
 
+def _ensure_property(obj, type_name, name, group, tooltip, status=0):
+    """Give obj the property `name` of type_name: added when missing (True: it holds its type's default), or
+    retyped, keeping its value, when an older version declared it with another type."""
+    if name not in obj.PropertiesList:
+        obj.addProperty(type_name, name, group, tooltip, status)
+        return True
+    if obj.getTypeIdOfProperty(name) != type_name:
+        kept = _plain_value(getattr(obj, name))
+        obj.removeProperty(name)
+        obj.addProperty(type_name, name, group, tooltip, status)
+        setattr(obj, name, kept)
+    return False
+
+
 def _plain_value(value):
     """A property value as something a property of another type accepts (a Quantity's number)."""
     return getattr(value, "Value", value)
@@ -139,14 +144,16 @@ def _finite_vector(name, vector):
 class SolidFeature(RatBezFeature):
     """A feature whose shape is a closed ratbez solid."""
 
+    # Quantities, shown with their units as the Length properties are; App::PropertyFloat before (a document
+    # saved then gets these types when it loads, ensure_properties).
     KERNEL_PROPERTIES = (
-        ("App::PropertyFloat", "ExactVolume",
+        ("App::PropertyVolume", "ExactVolume",
          _tip("Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the "
               "exact surfaces), in mm^3, Placement not applied. FreeCAD's own Shape.Volume, Part > Check "
               "geometry and Measure read the faces RatBez hands to FreeCAD (a primitive's analytic ones, as "
               "Part's; otherwise B-spline faces, one per face, each arc in an exact form OpenCASCADE's fixed "
               "Gauss rule reads) and agree with this to about 1e-9")),
-        ("App::PropertyFloat", "ExactArea",
+        ("App::PropertyArea", "ExactArea",
          _tip("Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD's Shape.Area "
               "agrees with it to about 1e-9 (see ExactVolume)")),
     )
@@ -154,8 +161,7 @@ class SolidFeature(RatBezFeature):
     def ensure_properties(self, obj):
         super().ensure_properties(obj)
         for type_name, name, tooltip in self.KERNEL_PROPERTIES:
-            if name not in obj.PropertiesList:
-                obj.addProperty(type_name, name, "Kernel", tooltip, _READ_ONLY_OUTPUT)
+            _ensure_property(obj, type_name, name, "Kernel", tooltip, _READ_ONLY_OUTPUT)
 
     def build_solid(self, obj):
         """The ratbez.Solid this feature describes (in the object's local coordinates)."""

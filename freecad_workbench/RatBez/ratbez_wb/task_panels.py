@@ -102,8 +102,8 @@ def panel_of(obj):
 # ---------------------------------------------------------------------------------------------------
 # Fields
 
-# The narrowest a number field or combo box gets: two fields side by side (a Center and an Axis column) and
-# the X / Y / Z labels fit the form FreeCAD's default Combo View leaves (about 230 px).
+# The narrowest a number field or combo box gets, beside its label in the form FreeCAD's default Combo View
+# leaves (about 230 px). A field gets the width its row leaves, so no two fields share a row (VectorGrid).
 FIELD_MINIMUM_WIDTH = 72
 
 
@@ -213,24 +213,24 @@ class VectorColumn:
 
 
 class VectorGrid:
-    """Vectors side by side, one column each, rows X, Y, Z: the layout of Part Revolve's Center and
-    Direction, narrow enough for the task view."""
+    """Vectors one under the other, each its title and rows X, Y, Z whose fields take the whole width. Side by
+    side, as Part Revolve's Center and Direction, the default task view left a field about 60 px for its text:
+    a Center x of 1234.5 showed as "34.50 mm"."""
 
     def __init__(self, titles, units):
         self.widget = QtGui.QWidget()
         grid = QtGui.QGridLayout(self.widget)
         grid.setContentsMargins(0, 0, 0, 0)
         self.columns = []
-        for c, (title, unit) in enumerate(zip(titles, units)):
-            grid.addWidget(QtGui.QLabel(translate(title)), 0, c + 1)
+        for index, (title, unit) in enumerate(zip(titles, units)):
+            row = 4 * index  # the title, X, Y, Z
+            grid.addWidget(QtGui.QLabel(translate(title)), row, 0, 1, 2)
             fields = [NumberField(unit) for _ in range(3)]
-            for r, field in enumerate(fields):
-                grid.addWidget(field.widget, r + 1, c + 1)
+            for r, (axis, field) in enumerate(zip("XYZ", fields)):
+                grid.addWidget(QtGui.QLabel(axis), row + r + 1, 0)
+                grid.addWidget(field.widget, row + r + 1, 1)
             self.columns.append(VectorColumn(fields))
-        for r, axis in enumerate("XYZ"):
-            grid.addWidget(QtGui.QLabel(axis), r + 1, 0)
-        for c in range(len(self.columns)):
-            grid.setColumnStretch(c + 1, 1)  # the vector columns share the width equally
+        grid.setColumnStretch(1, 1)
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -248,6 +248,7 @@ class TaskPanel:
         self.doc = obj.Document
         self.proxy = obj.Proxy
         self.loading = False
+        self.ended = False  # by OK, Cancel or FreeCAD ending the edit (cleanup)
         self.linked_before = features.linked_objects(obj)
         # A creating command's transaction is open now and lasts until OK / Cancel; an edit has none that
         # lasts (the tree's double-click closes its own when the handler returns), so the panel opens one
@@ -316,7 +317,11 @@ class TaskPanel:
         self.changed()
 
     def changed(self, *_):
-        if self.loading:
+        # A field that has the focus when Enter accepts (the task view's default button) or Escape cancels
+        # reports its value once more as the closing dialog takes the focus from it: no change of an ended
+        # panel is the user's, and it would open an undo step of its own or put the old values back after
+        # Cancel, and draw the Revolve's axis again.
+        if self.loading or self.ended:
             return
         self.editing()
         try:
@@ -396,6 +401,7 @@ class TaskPanel:
 
     def cleanup(self):
         """Undo what the panel set up (quiet reports, observers, drawings); safe to call twice."""
+        self.ended = True
         self.proxy.quiet = False
         for name, panel in list(_open.items()):
             if panel is self:
@@ -409,7 +415,7 @@ class TaskPanel:
         return field
 
     def add_vectors(self, titles, units, tooltips):
-        """A VectorGrid row; returns its columns, each connected to the live preview."""
+        """A VectorGrid row; returns its vectors (VectorColumn), each connected to the live preview."""
         grid = VectorGrid(titles, units)
         for column, tooltip in zip(grid.columns, tooltips):
             column.on_change(self.changed)

@@ -608,6 +608,18 @@
         <translation>Mittelpunkt</translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/commands.py"/>
+        <source>Checked: RatBez&apos;s reading of &apos;{}&apos; (the solid RatBez exports and hands back), not FreeCAD&apos;s shape itself; Part &gt; Check geometry checks that.
+</source>
+        <translation>Geprüft: der Körper, als den RatBez &apos;{}&apos; liest (den RatBez exportiert und zurückgibt), nicht FreeCADs Form selbst; die prüft Part &gt; Geometrie überprüfen.
+</translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/commands.py"/>
+        <source>Checking &apos;{}&apos; against OpenCASCADE...</source>
+        <translation>&apos;{}&apos; wird gegen OpenCASCADE geprüft...</translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/dialogs.py"/>
         <source>Chordal tolerance:</source>
         <translation>Sehnentoleranz:</translation>

@@ -608,6 +608,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/commands.py"/>
+        <source>Checked: RatBez&apos;s reading of &apos;{}&apos; (the solid RatBez exports and hands back), not FreeCAD&apos;s shape itself; Part &gt; Check geometry checks that.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/commands.py"/>
+        <source>Checking &apos;{}&apos; against OpenCASCADE...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/dialogs.py"/>
         <source>Chordal tolerance:</source>
         <translation type="unfinished"></translation>
