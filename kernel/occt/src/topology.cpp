@@ -532,8 +532,8 @@ private:
     // How far to move a surface face (or a column of Bézier patches) whose u runs over [u0, u1] along u: not at all
     // when that overlaps no other face's range so far, else to one unit past the furthest of them, so that no two
     // of the solid's B-spline faces beside each other along u share parameters; add() maps them back. Why: OCCT's
-    // Fillet, Chamfer and Offset go wrong where the faces along an edge have the same parameter rectangle, as the
-    // Bézier patches of a face did (every one on [0, 1]^2) and the kernel's faces of a loft or ruled solid do. A
+    // Fillet goes wrong where the faces along an edge have the same parameter rectangle, as the Bézier patches of
+    // a face did (every one on [0, 1]^2) and the kernel's faces of a loft or ruled solid do. A
     // loft through a circle, a square and a circle: Fillet of every sharp edge worked at 14 of 49 radii from 0.02
     // to 0.98 (Part's Loft: 37), at all 49 with the four side faces on [0, 1], [2, 3], [4, 5], [6, 7] (or [0,
     // 0.25], [0.25, 0.5]...: any ranges that differ); a ruled solid from a circle to a triangle: 37 (Part's 43) and
