@@ -536,18 +536,15 @@ private:
     // a face did (every one on [0, 1]^2) and the kernel's faces of a loft or ruled solid do. A
     // loft through a circle, a square and a circle: Fillet of every sharp edge worked at 14 of 49 radii from 0.02
     // to 0.98 (Part's Loft: 37), at all 49 with the four side faces on [0, 1], [2, 3], [4, 5], [6, 7] (or [0,
-    // 0.25], [0.25, 0.5]...: any ranges that differ); a ruled solid from a circle to a triangle: 37 (Part's 43) and
-    // 45. OCCT measures and meshes in whatever parameters a face has. Only along u: the edges between patches of
+    // 0.25], [0.25, 0.5]...: any ranges that differ); a ruled solid from a circle to a triangle: 41 (Part's 43) and
+    // 45 (bench/freecad_edge_tool_sizes.py). OCCT measures and meshes in whatever parameters a face has. Only along u: the edges between patches of
     // one column keep their parameter on both, which the reader of our files asks of a face to stay untrimmed.
     double u_shift_of(double u0, double u1) {
         const bool overlaps = std::any_of(placed_u_.begin(), placed_u_.end(),
                                           [&](const Interval& placed) { return u0 <= placed.max && placed.min <= u1; });
-        double shift = 0;
-        if (overlaps)
-            shift = 1 - u0 + std::max_element(placed_u_.begin(), placed_u_.end(), [](const Interval& a, const Interval& b) {
-                                 return a.max < b.max;
-                             })->max;
+        const double shift = overlaps ? furthest_u_ + 1 - u0 : 0;
         placed_u_.push_back(Interval{u0 + shift, u1 + shift});
+        furthest_u_ = std::max(furthest_u_, u1 + shift);
         return shift;
     }
 
@@ -932,6 +929,7 @@ private:
     double base_tolerance_ = 0;  // of every vertex, edge and face; read faces' edges and vertices measured
     double arc_tolerance_ = 0;                                         // natural: find_arc's fit tolerance
     std::vector<Interval> placed_u_;  // the u ranges of the surface faces made so far (u_shift_of)
+    double furthest_u_ = 0;           // the largest end of them
     double last_u_shift_ = 0;         // how far the face being added was moved along u
     std::map<const Edge*, NurbsCurve> smooth_curves_;                  // natural: edges in the one-span form
     std::set<const Edge*> line_edges_;                                  // natural: edges on OCCT's line (plan_lines)
