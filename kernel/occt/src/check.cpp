@@ -42,6 +42,7 @@
 #include <string>
 
 #include "handout.hpp"
+#include "polled_progress.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/topology.hpp"
@@ -324,7 +325,10 @@ const char* shape_kind(TopAbs_ShapeEnum type) {
 // and as FreeCAD gets it: through the .brep text (brep_string, write_brep), read back, then copied. The text
 // round trip matters: on a trimmed sphere read from a file (corpus sphere_minus_box) the search flags a face of
 // the read-back shape and not of the one in memory.
-void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& handed, CheckReport& report) {
+// `progress` follows the analysis (its self-intersection search takes most of a large part's check), and a
+// callback that throws stops it: the exception comes out once OpenCASCADE has wound down.
+void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& handed, CheckReport& report,
+                  const Progress& progress) {
     std::stringstream text;
     BRepTools::Write(handed.solid, text);
     TopoDS_Shape read;
@@ -350,7 +354,10 @@ void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& han
     analyzer.MergeVertexMode() = true;
     analyzer.CurveOnSurfaceMode() = true;
     analyzer.MergeEdgeMode() = true;
-    analyzer.Perform();
+    detail::CapturedProgress captured(progress);
+    const Handle(detail::PolledIndicator) indicator = new detail::PolledIndicator(captured, 0, 1);
+    analyzer.Perform(indicator->Start());
+    captured.rethrow_if_stopped();
     const auto our_face = [&](const TopoDS_Shape& shape) -> std::optional<std::size_t> {
         for (int k = 1; k <= read_faces.Extent(); ++k) {
             const TopoDS_Shape& piece = handed_faces(k);  // the same place in the text's order
@@ -436,7 +443,7 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
             handed.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::SurfaceProperties(s, p, eps); },
             report.area, options.volume_limit, slack.area);
         report_progress(0.85);
-        if (options.bop_analysis) bop_analysis(converted, handed, report);
+        if (options.bop_analysis) bop_analysis(converted, handed, report, progress_part(options.progress, 0.85, 0.95));
     } catch (const Standard_Failure& failure) {
         const char* message = failure.GetMessageString();
         report.failures.push_back(std::string("OpenCASCADE raised ") + failure.DynamicType()->Name() +

@@ -50,6 +50,7 @@
 #include <utility>
 
 #include "child_process.hpp"
+#include "polled_progress.hpp"
 #include "file_prescan.hpp"
 #include "self_consistency.hpp"
 #include "ratbez/error.hpp"
@@ -59,6 +60,9 @@
 
 namespace ratbez::occt {
 namespace {
+
+using detail::CapturedProgress;
+using detail::PolledIndicator;
 
 // STEPControl_Writer prints statistics through the default messenger's stdout printer. Detach the
 // ostream printers while writing and put them back afterwards, so the caller's own OCCT messages are
@@ -92,32 +96,6 @@ private:
     Message_SequenceOfPrinters removed_;
 };
 
-// The caller's Progress as OpenCASCADE's readers call it, from code our exceptions must not cross: the
-// first exception the callback throws (Ctrl-C in Python) is kept, every call from then on answers
-// "stopped" so the reader winds down, and rethrow_if_stopped() throws it once the reader has returned.
-class CapturedProgress {
-public:
-    explicit CapturedProgress(const Progress& progress) : progress_(progress) {}
-    // Reports `fraction`; false once the callback has thrown (now or before).
-    bool report(double fraction) {
-        if (progress_ && !stopped_) {
-            try {
-                progress_(fraction);
-            } catch (...) {
-                stopped_ = std::current_exception();
-            }
-        }
-        return stopped_ == nullptr;
-    }
-    void rethrow_if_stopped() const {
-        if (stopped_) std::rethrow_exception(stopped_);
-    }
-
-private:
-    const Progress& progress_;
-    std::exception_ptr stopped_;
-};
-
 // The file as OpenCASCADE's STEP parser reads it (XSControl_Reader::ReadStream), kBlock bytes at a time,
 // reporting the share of the file read, times `scale`, at each refill: the parse itself has no progress
 // hook in OCCT 7.6 (a 39 MB file parsed for 9 s unpolled). Once stopped the stream simply ends (the parser
@@ -149,19 +127,6 @@ private:
     double scale_;
     std::array<char, kBlock> block_{};
     double size_ = 1, read_ = 0;
-};
-
-// OpenCASCADE's readers poll their progress indicator's UserBreak(): there the reader's position, mapped
-// to [from, to], is reported, and a stop breaks the reader off.
-class PolledIndicator : public Message_ProgressIndicator {
-public:
-    PolledIndicator(CapturedProgress& progress, double from, double to) : progress_(progress), from_(from), to_(to) {}
-    Standard_Boolean UserBreak() override { return !progress_.report(from_ + (to_ - from_) * GetPosition()); }
-    void Show(const Message_ProgressScope&, const Standard_Boolean) override {}
-
-private:
-    CapturedProgress& progress_;
-    double from_, to_;
 };
 
 void require_readable(const std::string& path) {
