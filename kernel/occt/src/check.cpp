@@ -356,7 +356,12 @@ void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& han
     analyzer.MergeEdgeMode() = true;
     detail::CapturedProgress captured(progress);
     const Handle(detail::PolledIndicator) indicator = new detail::PolledIndicator(captured, 0, 1);
-    analyzer.Perform(indicator->Start());
+    try {
+        analyzer.Perform(indicator->Start());
+    } catch (const Standard_Failure&) {
+        captured.rethrow_if_stopped();  // the caller's stop, not OpenCASCADE's reaction to it
+        throw;
+    }
     captured.rethrow_if_stopped();
     const auto our_face = [&](const TopoDS_Shape& shape) -> std::optional<std::size_t> {
         for (int k = 1; k <= read_faces.Extent(); ++k) {
