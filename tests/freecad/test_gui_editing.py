@@ -252,6 +252,15 @@ def xz_sketch(name, x0=2.0):
     return sketch
 
 
+def revolve_of_a_new_sketch(document_name):
+    """(sketch, revolve, its open panel): RatBez Revolve run on xz_sketch selected in a new document."""
+    new_document(document_name)
+    sketch = xz_sketch("Sketch")
+    select(sketch)
+    revolve, panel = run_command("RatBez_Revolve")
+    return sketch, revolve, panel
+
+
 # ---------------------------------------------------------------------------------------------------
 
 @suite.test
@@ -341,10 +350,7 @@ def test_editing_another_object_asks_to_close_the_open_panel():
 @suite.test
 def test_the_revolve_axis_follows_the_sketch():
     # Issue 25: moving the profile sketch 5 mm gave "Profile: must lie in a plane containing the axis".
-    new_document("Follow")
-    sketch = xz_sketch("Sketch")
-    select(sketch)
-    revolve, panel = run_command("RatBez_Revolve")
+    sketch, revolve, panel = revolve_of_a_new_sketch("Follow")
     check(panel.mode() == "Vertical", "mode " + panel.mode())
     panel.accept()
     process_events()
@@ -426,10 +432,7 @@ def test_enter_in_a_field_accepts_as_ok_does():
 def test_the_revolve_axis_preview_goes_however_the_panel_closes():
     # User trial: accepted with Enter, the Revolve panel's red axis line stayed in the 3D view (7 children of
     # the scene graph instead of 6); the mouse's OK removed it.
-    new_document("AxisPreview")
-    sketch = xz_sketch("Sketch")
-    select(sketch)
-    revolve, panel = run_command("RatBez_Revolve")
+    sketch, revolve, panel = revolve_of_a_new_sketch("AxisPreview")
     panel.accept()
     process_events()
     graph = Gui.ActiveDocument.ActiveView.getSceneGraph()

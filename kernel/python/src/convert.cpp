@@ -126,13 +126,18 @@ std::string to_path(py::handle value, const std::string& argument) {
         throw Error(argument, kExpected);
     }
     const auto path = py::reinterpret_steal<py::object>(fspath);
-    // bytes as open() takes them; UTF-8 only, because the name goes into messages and solids' names as text.
-    std::string text = py::isinstance<py::bytes>(path) ? std::string(path.cast<py::bytes>()) : path.cast<std::string>();
-    if (PyObject* decoded = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "strict"))
+    std::string text;
+    if (py::isinstance<py::bytes>(path)) {
+        // bytes as open() takes them; UTF-8 only, because the name goes into messages and solids' names as text.
+        text = std::string(path.cast<py::bytes>());
+        PyObject* decoded = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "strict");
+        if (decoded == nullptr) {
+            PyErr_Clear();
+            throw Error(argument, "is not UTF-8");
+        }
         Py_DECREF(decoded);
-    else {
-        PyErr_Clear();
-        throw Error(argument, "is not UTF-8");
+    } else {
+        text = path.cast<std::string>();
     }
     if (text.empty()) throw Error(argument, "must not be empty");
     // A NUL ends the name for the system: "a.stl\0.txt" would pass a check of its extension and write "a.stl".
