@@ -407,8 +407,9 @@ def check_occt(obj):
 
 def check_occt_all(obj, progress=None):
     """[(name, report)] of ratbez.occt_check for every solid of the object, in order: the object's Label, or
-    Label_1, Label_2, ... when it holds several (a compound, an imported assembly). progress: as occt_check's,
-    callable(name, fraction) for each solid in turn."""
+    Label_1, Label_2, ... when it holds several (a compound, an imported assembly). progress:
+    callable(name, fraction), the solid being checked and the fraction done of all of them (as occt_check's, it
+    may raise to stop the check)."""
     rb = kernel.ratbez()
     if is_solid(obj):
         named = [(obj.Label, solid_of(obj))]
@@ -417,8 +418,9 @@ def check_occt_all(obj, progress=None):
     else:
         named = [(name, solid) for name, solid, _ in _named_solids(obj, identifiers=False)]
     reports = []
-    for name, solid in named:
-        told = None if progress is None else (lambda fraction: progress(name, fraction))
+    for index, (name, solid) in enumerate(named):
+        told = None if progress is None else (
+            lambda fraction: progress(name, (index + fraction) / len(named)))
         reports.append((name, dict(rb.occt_check(solid, progress=told))))
     return reports
 

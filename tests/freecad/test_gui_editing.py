@@ -801,14 +801,74 @@ def test_the_occt_check_says_what_it_checked_and_shows_it_is_busy():
         RatBez.check_occt_all = original
     messages = [message for _, message in seen]
     check(seen and all(shape == QtCore.Qt.WaitCursor for shape, _ in seen), "cursor while checking: {}".format(seen))
-    check("Checking 'Box' against OpenCASCADE..." in messages and "Checking 'Sphere' against OpenCASCADE..." in messages
-          and "Checking 'Box' against OpenCASCADE... 100%" in messages, "status while checking: {}".format(messages))
+    check("Checking 'Box' against OpenCASCADE... (Esc stops it)" in messages
+          and "Checking 'Sphere' against OpenCASCADE... (Esc stops it)" in messages,
+          "status while checking: {}".format(messages))
     added = report_text()[len(before):]
     said = ("Checked: RatBez's reading of 'Box' (the solid RatBez exports and hands back), not FreeCAD's shape "
             "itself; Part > Check geometry checks that.")
     check(said in added and added.index(said) < added.index("RatBez OpenCASCADE check of 'Box'"), added)
     check("reading of 'Sphere'" not in added, "a RatBez solid is checked as FreeCAD has it:\n" + added)
     check("cannot check 'Sphere': refused for the test" in added, added)
+
+@suite.test
+def test_esc_stops_the_occt_check_as_it_stops_freecads_own_long_operations():
+    # User trial: the check of a large part could not be stopped. It now runs FreeCAD's own progress bar, so Esc
+    # asks FreeCAD's "Do you really want to abort the operation?", as in a STEP import: No goes on, Yes stops
+    # the check and the command (the other selected objects are not checked). The bar shows the check's progress.
+    import RatBez
+    new_document("Stop")
+    drilling = doc.addObject("Part::Feature", "Drilling")  # a FreeCAD part whose check takes ~1.5 s
+    drilling.Shape = Part.read(os.path.join(os.environ["RATBEZ_TEST_DIR"], "..", "corpus", "freecad",
+                                            "cylinder_cut_cylinder.step"))
+    sphere = RatBez.make_sphere(doc)
+    doc.recompute()
+    window = Gui.getMainWindow()
+    original = RatBez.check_occt_all
+    for answer in (QtGui.QMessageBox.No, QtGui.QMessageBox.Yes):
+        asked = []
+
+        def reply():
+            box = QtGui.QApplication.activeModalWidget()
+            if isinstance(box, QtGui.QMessageBox):
+                asked.append(box.text())
+                box.button(answer).click()
+
+        answering = QtCore.QTimer()
+        answering.timeout.connect(reply)
+        answering.start(50)
+        shown = []  # the values of FreeCAD's progress bar in the status bar, as the check reports
+
+        def watched(obj, progress=None):
+            def told(*args):
+                progress(*args)
+                shown.extend(b.value() for b in window.findChildren(QtGui.QProgressBar) if b.value() > 0)
+            return original(obj, told)
+
+        before = report_text()
+        select(drilling, sphere)
+        # The key waits in Qt's queue until the check's progress bar lets events through.
+        QtGui.QApplication.postEvent(window, QtGui.QKeyEvent(QtCore.QEvent.KeyPress, QtCore.Qt.Key_Escape,
+                                                             QtCore.Qt.NoModifier))
+        try:
+            RatBez.check_occt_all = watched
+            Gui.runCommand("RatBez_CheckOCCT")
+        finally:
+            RatBez.check_occt_all = original
+            answering.stop()
+        process_events()
+        added = report_text()[len(before):]
+        check(asked == ["Do you really want to abort the operation?"], "asked {} (answer {})".format(asked, answer))
+        checked = [label for label in ("Drilling", "Sphere") if "RatBez OpenCASCADE check of '{}'".format(label) in added]
+        if answer == QtGui.QMessageBox.No:
+            check(checked == ["Drilling", "Sphere"] and "stopped" not in added, "after No:\n" + added)
+            check(len(set(shown)) >= 2 and shown == sorted(shown), "the progress bar showed {}".format(shown))
+        else:
+            check(not checked and "RatBez: the check of 'Drilling' was stopped" in added, "after Yes:\n" + added)
+        check(QtGui.QApplication.overrideCursor() is None and "Checking" not in window.statusBar().currentMessage(),
+              "after the check: cursor {}, status '{}'".format(QtGui.QApplication.overrideCursor(),
+                                                               window.statusBar().currentMessage()))
+
 
 @suite.test
 def test_no_python_exception_in_the_report_view():

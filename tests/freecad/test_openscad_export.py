@@ -234,6 +234,14 @@ def test_freecads_own_solids_export_and_check():
             close(report["volume"], solid.Volume, 1e-6, name + " volume")
         text = RatBez.format_check_report(obj, reports[-1][1], reports[-1][0])
         check(text.startswith("RatBez OpenCASCADE check of '{}".format(obj.Label)), text)
+    # Progress over all the solids of a compound: each solid's name, and the fraction of the whole (a progress bar).
+    told = []
+    RatBez.check_occt_all(objects[3], lambda name, fraction: told.append((name, fraction)))
+    names = [name for name, _ in told]
+    fractions = [fraction for _, fraction in told]
+    check(names == sorted(names) and set(names) == {"Pair_1", "Pair_2"} and fractions == sorted(fractions)
+          and fractions[-1] == 1 and all(f >= 0.5 for name, f in told if name == "Pair_2")
+          and all(f <= 0.5 for name, f in told if name == "Pair_1"), "progress of a compound: {}".format(told))
     check(RatBez.check_occt(objects[0])["valid"], "check_occt of a Part Cut")
     try:
         RatBez.check_occt(objects[3])

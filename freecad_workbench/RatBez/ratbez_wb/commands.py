@@ -323,22 +323,25 @@ class CheckOCCTCommand:
     def Activated(self):
         import RatBez
         for obj in _selected_exportable():
+            label = one_line(obj.Label)
             try:
-                with _busy(translate("Checking '{}' against OpenCASCADE...").format(one_line(obj.Label))) as tell:
+                with _busy(translate("Checking '{}' against OpenCASCADE...").format(label)) as tell:
                     def progress(name, fraction):
                         # The solid's name only where the object holds several (Label_1, Label_2, ...).
-                        tell("{:.0%}".format(fraction) if name == obj.Label else "{} {:.0%}".format(name, fraction))
+                        tell(fraction, "" if name == obj.Label else one_line(name))
                     reports = RatBez.check_occt_all(obj, progress)
+            except _Stopped:
+                App.Console.PrintWarning(translate("RatBez: the check of '{}' was stopped\n").format(label))
+                return  # the user stops the command, not only this object's check
             except kernel.error_types() as error:
-                App.Console.PrintError(translate("RatBez: cannot check '{}': {}\n").format(
-                    one_line(obj.Label), one_line(error)))
+                App.Console.PrintError(translate("RatBez: cannot check '{}': {}\n").format(label, one_line(error)))
                 continue
             if not RatBez.is_solid(obj):
                 # Another object's shape is read by the kernel (as for an export) and that solid is checked: it
                 # can pass where FreeCAD's own shape has faults.
                 App.Console.PrintMessage(translate(
                     "Checked: RatBez's reading of '{}' (the solid RatBez exports and hands back), not FreeCAD's "
-                    "shape itself; Part > Check geometry checks that.\n").format(one_line(obj.Label)))
+                    "shape itself; Part > Check geometry checks that.\n").format(label))
             for name, report in reports:
                 text = RatBez.format_check_report(obj, report, name)
                 if RatBez.check_passed(report):
@@ -347,27 +350,48 @@ class CheckOCCTCommand:
                     App.Console.PrintWarning(text)
 
 
+class _Stopped(Exception):
+    """The user stopped a long call from its progress bar (Esc, then Yes)."""
+
+
 @contextlib.contextmanager
 def _busy(message):
-    """While a long call runs in the GUI thread (a large part's check takes half a minute): FreeCAD's wait cursor
-    and `message` in the status bar; yields tell(detail), which shows the message with the detail (the
-    progress) at once. Both go when the call ends, however it ends."""
+    """While a long call runs in the GUI thread (a large part's check takes half a minute): FreeCAD's own progress
+    bar, the one its STEP import and mesh tools show, with its wait cursor and its Esc key, which asks "Do you
+    really want to abort the operation?"; and `message` in the status bar. Yields tell(fraction, detail), which
+    shows them and raises _Stopped once the user has stopped the call. All of it goes when the call ends,
+    however it ends."""
     from PySide import QtCore, QtGui
     bar = Gui.getMainWindow().statusBar()
+    indicator = App.Base.ProgressIndicator()
+    steps = 100
+    done = 0
 
-    def tell(detail=""):
-        bar.showMessage("{} {}".format(message, detail).strip())
-        bar.repaint()  # now: the call holds the event loop
+    def tell(fraction=0.0, detail=""):
+        nonlocal done
+        text = translate("{} (Esc stops it)").format(" ".join(part for part in (message, detail) if part))
+        if text != bar.currentMessage():
+            # No repaint here: FreeCAD's bar lets the events through (this one too) every 0.1 s, and a repaint
+            # per report (hundreds in a BOP analysis) tripled the check's time.
+            bar.showMessage(text)
+        try:
+            # Each step lets FreeCAD's bar handle the events (Esc among them) and ask whether to stop.
+            while done < min(steps, int(fraction * steps)):
+                done += 1
+                indicator.next(True)
+        except RuntimeError:  # FreeCAD's "abort progress indicator": the user said Yes
+            raise _Stopped() from None
 
-    QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+    indicator.start(message, steps)
     try:
         # The cursor shows, and the report view's last lines reach the status bar before the message, not over it.
         QtGui.QApplication.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
         tell()
+        bar.repaint()  # once, now: the first report may be seconds away
         yield tell
     finally:
+        indicator.stop()
         bar.clearMessage()
-        QtGui.QApplication.restoreOverrideCursor()
 
 
 def _selected_exportable():

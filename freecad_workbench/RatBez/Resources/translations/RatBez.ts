@@ -1070,6 +1070,12 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
+        <source>RatBez: the check of &apos;{}&apos; was stopped
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/commands.py"/>
         <source>RatBez: wrote {} to {}
 </source>
         <translation type="unfinished"></translation>
@@ -1503,6 +1509,11 @@
     <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>weight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/commands.py"/>
+        <source>{} (Esc stops it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

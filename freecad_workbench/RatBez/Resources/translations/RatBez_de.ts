@@ -1075,6 +1075,13 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/commands.py"/>
+        <source>RatBez: the check of &apos;{}&apos; was stopped
+</source>
+        <translation>RatBez: die Prüfung von &apos;{}&apos; wurde abgebrochen
+</translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/commands.py"/>
         <source>RatBez: wrote {} to {}
 </source>
         <translation>RatBez: {} nach {} geschrieben
@@ -1510,6 +1517,11 @@
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>weight</source>
         <translation>Gewicht</translation>
+    </message>
+    <message>
+        <location filename="../../ratbez_wb/commands.py"/>
+        <source>{} (Esc stops it)</source>
+        <translation>{} (Esc bricht ab)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/curve_tools.py"/>
