@@ -47,9 +47,12 @@ bool cut_on_sides(const Face& face, bool along_u) {
 }
 
 Handle(Geom_BSplineSurface) refined_for_gauss(Handle(Geom_BSplineSurface) surface) {
-    if (surface->UDegree() == 1 || surface->VDegree() == 1)
-        surface->IncreaseDegree(surface->UDegree() == 1 ? 3 : surface->UDegree(),
-                                surface->VDegree() == 1 ? 3 : surface->VDegree());
+    // A straight direction, and a one-span direction below cubic (a 3-section loft's quadratic v), that the
+    // simple knots below go into.
+    const auto raised = [](int degree, bool cut) { return degree == 1 || (cut && degree < 3) ? 3 : degree; };
+    const int u_degree = raised(surface->UDegree(), surface->NbUKnots() == 2);
+    const int v_degree = raised(surface->VDegree(), surface->NbVKnots() == 2);
+    if (u_degree != surface->UDegree() || v_degree != surface->VDegree()) surface->IncreaseDegree(u_degree, v_degree);
     constexpr int kSpans = 4;
     if (surface->NbUKnots() == 2) {
         const double a = surface->UKnot(1), b = surface->UKnot(2);
@@ -66,8 +69,16 @@ void with_v_rule_as_u(Geom_BSplineSurface& surface) {
     const int spans = surface.NbVKnots() - 1;
     const int u_order =
         std::min(math::GaussPointsMax(), gprop_integration_order(surface.UDegree(), surface.NbUKnots() - 1));
-    int parts = 1;
-    while (gprop_integration_order(surface.VDegree(), spans * parts) < u_order) ++parts;
+    const auto parts_needed = [&](int degree) {
+        int parts = 1;
+        while (gprop_integration_order(degree, spans * parts) < u_order) ++parts;
+        return parts;
+    };
+    if (parts_needed(surface.VDegree()) == 1) return;
+    // Cubic before the simple knots go in, as refined_for_gauss: at quadratic they made a 3-section loft's face
+    // formally C1, and Part Offset of it (C0) was flagged by the BOP check, Thickness after a fillet raised.
+    if (surface.VDegree() < 3) surface.IncreaseDegree(surface.UDegree(), 3);
+    const int parts = parts_needed(surface.VDegree());
     if (parts == 1) return;
     TColStd_Array1OfReal knots(1, spans * (parts - 1));
     for (int k = 0; k < spans; ++k)

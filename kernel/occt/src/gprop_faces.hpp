@@ -39,17 +39,19 @@ bool cut_on_sides(const Face& face, bool along_u);
 // The same surface with a richer representation for the rule, which it sizes by degree and spans: a straight
 // direction (a cylinder's or an extrusion's, degree 1, one span) gets 8 points, and reads a cylinder's centre of
 // mass to only 8e-5 of its size. Degree elevation and knot insertion are exact and keep the parameter, so the
-// edges along the direction keep theirs. Elevated to cubic, not quadratic, before the simple knots go in: the
-// face is C2, so OCCT's offset of it (Part Offset, Thickness: an offset surface is one order less continuous) is
-// C1, which FreeCAD's BOP check accepts; at quadratic the offsets of every cylinder, cone, revolution and
-// extrusion were flagged GeomAbs_C0.
+// edges along the direction keep theirs. Elevated to cubic (a straight direction, or a quadratic one of one span:
+// a 3-section loft's v), not left quadratic, before the simple knots go in: the face is C2, so OCCT's offset of
+// it (Part Offset, Thickness: an offset surface is one order less continuous) is C1, which FreeCAD's BOP check
+// accepts; at quadratic the offsets of every cylinder, cone, revolution, extrusion and 3-section loft were
+// flagged GeomAbs_C0.
 Handle(Geom_BSplineSurface) refined_for_gauss(Handle(Geom_BSplineSurface) surface);
 
 // The rule takes as many points across u as along v for the volume (the volume's rule counts v alone, the
 // area's both: gprop_patches.hpp), so a face of few spans in v is read with too few across u: an extruded
 // closed cubic interpolation (C2 knots in u, one span in v) read 1.7e-4 off with 32 points (7e-6 with 61), a
 // full turn of the revolve example's rational profile (its sides cut) 2.8e-7 with 12. Simple knots go into v,
-// each span cut alike, until v's rule is u's (exact: the new knots are C-infinity).
+// each span cut alike, until v's rule is u's (exact: the new knots are C-infinity), v first raised to cubic as
+// in refined_for_gauss, so that the face stays C2 for OCCT.
 void with_v_rule_as_u(Geom_BSplineSurface& surface);
 
 }  // namespace ratbez::occt::detail

@@ -12,7 +12,12 @@
 //    a degree-p rational span makes the polynomial |C^w - c w|^2 - R^2 w^2 of degree 2p vanish identically,
 //    and turning one way): the RMF of a planar curve turns with it, and the sweep is the revolution of the
 //    section about the arc's axis by the arc's angle (revolve.hpp, 004's rotational sweep); a full circle
-//    closes it (a torus from a circle).
+//    closes it (a torus from a circle);
+//  - an open path of lines and arcs end to end (every span one or the other, as a sketch's line and tangent arc
+//    give it): the frame is constant along a line and turns with an arc, so the sweep is piece by piece the
+//    extrusion or the revolution of the section where the pieces before have carried it; one surface per
+//    section, the pieces joined in v with knots of multiplicity p (C0 in parameter, tangent-continuous in shape)
+//    and v spread over them in proportion to their lengths.
 // Otherwise a NURBS approximation. Each control point P_i (weight w_i) of the section moves along a
 // trajectory Q_i(v) = x(v) + M(v) L_i (L_i its coordinates in the start frame); the surface
 // S^w = sum_ij N_i(u) M_j(v) w_i Q~_ij with every trajectory approximated by a piecewise quintic Q~_i
@@ -54,7 +59,7 @@
 
 namespace ratbez {
 
-enum class SweepMethod { extrusion, revolution, approximation };
+enum class SweepMethod { extrusion, revolution, lines_and_arcs, approximation };
 
 // The swept surfaces of one or more section curves (one per curve, all on the same knots in v), how they
 // were built, and the measured bound of their distance to the true sweep (0 for the exact methods).

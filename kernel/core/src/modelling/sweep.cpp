@@ -21,6 +21,7 @@
 #include "modelling/embedding_check.hpp"
 #include "modelling/tube_shell.hpp"
 #include "ratbez/bspline_basis.hpp"
+#include "ratbez/degree_elevation.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/extrude.hpp"
 #include "ratbez/frame.hpp"
@@ -164,6 +165,83 @@ std::optional<Arc> as_arc(const Path& path) {
     }
     if (degrees >= 360.0) return std::nullopt;  // more than a turn: the general method refuses the overlap
     return Arc{centre, axis, radius, degrees};
+}
+
+// ---- a path of lines and arcs, piece by piece
+
+// One piece of a path of lines and arcs (a sketch's line and tangent arc): consecutive spans on one line or one
+// circle, merged.
+struct Piece {
+    std::optional<Line> line;
+    std::optional<Arc> arc;
+};
+
+// The path's spans each a line or an arc, consecutive spans of the same line or circle merged; nullopt when a
+// span is neither (the general method then approximates).
+std::optional<std::vector<Piece>> as_lines_and_arcs(const Path& path) {
+    const double tol = 1e3 * kExactRelative * path.size();
+    std::vector<Piece> pieces;
+    for (const BezierCurve& span : path.curve().bezier_segments()) {
+        const Path one(NurbsCurve::from_bezier(span));
+        if (const std::optional<Line> line = as_line(one)) {
+            if (!pieces.empty() && pieces.back().line &&
+                angle_between(pieces.back().line->displacement, line->displacement) <= kCornerAngle)
+                pieces.back().line->displacement = pieces.back().line->displacement + line->displacement;
+            else
+                pieces.push_back({line, std::nullopt});
+        } else if (const std::optional<Arc> arc = as_arc(one)) {
+            Piece* last = pieces.empty() ? nullptr : &pieces.back();
+            if (last && last->arc && distance(last->arc->centre, arc->centre) <= tol &&
+                distance(last->arc->axis, arc->axis) <= kCornerAngle && last->arc->angle_deg + arc->angle_deg < 360.0)
+                last->arc->angle_deg += arc->angle_deg;
+            else
+                pieces.push_back({std::nullopt, arc});
+        } else {
+            return std::nullopt;
+        }
+    }
+    return pieces;
+}
+
+// The curve moved rigidly: translated by `shift`, or turned about the axis through `centre` by (c, s).
+NurbsCurve moved(const NurbsCurve& curve, const Vec3& shift) {
+    std::vector<Vec4> net = curve.homogeneous_points();
+    for (Vec4& pw : net) pw = homogenize(project(pw) + shift, pw.w);
+    return NurbsCurve::from_homogeneous(curve.degree(), curve.knots(), std::move(net), curve.is_rational());
+}
+NurbsCurve turned(const NurbsCurve& curve, const Arc& arc, double c, double s) {
+    std::vector<Vec4> net = curve.homogeneous_points();
+    for (Vec4& pw : net) pw = homogenize(arc.centre + rotated(project(pw) - arc.centre, arc.axis, c, s), pw.w);
+    return NurbsCurve::from_homogeneous(curve.degree(), curve.knots(), std::move(net), curve.is_rational());
+}
+
+// Surfaces of one section, one per piece (v on [0, 1] each), end to end in v: raised to one degree p, v of
+// piece k on [start[k], start[k + 1]], the joints knots of multiplicity p (C0: the speed along the path may
+// jump there; the surface itself is tangent-continuous as the path is) and each shared column kept once.
+NurbsSurface joined_along_v(std::vector<NurbsSurface> pieces, const std::vector<double>& start) {
+    int p = 0;
+    for (const NurbsSurface& s : pieces) p = std::max(p, s.degree_v());
+    for (NurbsSurface& s : pieces)
+        if (s.degree_v() < p) s = elevate_degree_v(s, p - s.degree_v());
+    const NurbsSurface& first = pieces.front();
+    const int rows = first.rows();
+    std::vector<std::vector<Vec4>> columns_of_row(static_cast<std::size_t>(rows));
+    std::vector<double> knots(static_cast<std::size_t>(p + 1), start.front());
+    bool rational = false;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const NurbsSurface& s = pieces[k];
+        rational = rational || s.is_rational();
+        const Interval d = s.domain_v();
+        const auto mapped = [&](double v) { return start[k] + (start[k + 1] - start[k]) * (v - d.min) / d.width(); };
+        for (double v : s.knots_v())
+            if (v > d.min && v < d.max) knots.push_back(mapped(v));
+        knots.insert(knots.end(), static_cast<std::size_t>(k + 1 < pieces.size() ? p : p + 1), start[k + 1]);
+        for (int i = 0; i < rows; ++i)
+            for (int j = k == 0 ? 0 : 1; j < s.columns(); ++j) columns_of_row[static_cast<std::size_t>(i)].push_back(s.homogeneous_point(i, j));
+    }
+    std::vector<Vec4> net;
+    for (const std::vector<Vec4>& row : columns_of_row) net.insert(net.end(), row.begin(), row.end());
+    return NurbsSurface::from_homogeneous(first.degree_u(), p, first.knots_u(), std::move(knots), std::move(net), rational);
 }
 
 // ---- the rotation-minimising frame along a general path
@@ -613,6 +691,53 @@ Sweep sweep_surfaces_unchecked(const std::vector<NurbsCurve>& sections, const Nu
                                  rotated(start_frame.x_axis, arc->axis, c, s), rotated(start_frame.y_axis, arc->axis, c, s),
                                  rotated(start_frame.z_axis, arc->axis, c, s)};
         result.construction = Construction::Revolution{arc->centre, arc->axis, arc->angle_deg};
+        return result;
+    }
+
+    if (const std::optional<std::vector<Piece>> pieces = closed ? std::nullopt : as_lines_and_arcs(path)) {
+        // Lines and arcs end to end (a sketch's line and tangent arc): the RMF is constant along a line and turns
+        // with an arc (about its axis, whichever way the section faces), so the sweep is piece by piece the
+        // extrusion or the revolution of the section where the pieces before have carried it, exact.
+        std::vector<std::vector<NurbsSurface>> per_section(sections.size());
+        std::vector<NurbsCurve> carried = sections;
+        Frame frame = start_frame;
+        std::vector<double> lengths;
+        for (const Piece& piece : *pieces) {
+            if (piece.line) {
+                const Vec3 d = piece.line->displacement;
+                for (std::size_t i = 0; i < carried.size(); ++i) {
+                    per_section[i].push_back(extrude_surface(carried[i], d));
+                    carried[i] = moved(carried[i], d);
+                }
+                frame.origin = frame.origin + d;
+                lengths.push_back(norm(d));
+                continue;
+            }
+            const Arc& arc = *piece.arc;
+            FrameData f{};  // the bend check at the arc's start, as for a whole arc above
+            f.x1 = frame.z_axis;
+            f.t1 = unit(arc.centre - frame.origin) / arc.radius;
+            f.r = frame.x_axis;
+            f.s = frame.y_axis;
+            check_bend(f, locals, path.start(0), argument);
+            const double c = detail::cos_deg(arc.angle_deg), sn = detail::sin_deg(arc.angle_deg);
+            for (std::size_t i = 0; i < carried.size(); ++i) {
+                per_section[i].push_back(transposed(revolve_surface(carried[i], arc.centre, arc.axis, arc.angle_deg)));
+                carried[i] = turned(carried[i], arc, c, sn);
+            }
+            frame = Frame{arc.centre + rotated(frame.origin - arc.centre, arc.axis, c, sn), rotated(frame.x_axis, arc.axis, c, sn),
+                          rotated(frame.y_axis, arc.axis, c, sn), rotated(frame.z_axis, arc.axis, c, sn)};
+            lengths.push_back(arc.radius * arc.angle_deg * kPi / 180);
+        }
+        // v over [0, 1] in proportion to the pieces' lengths.
+        double total = 0;
+        for (double length : lengths) total += length;
+        std::vector<double> starts{0.0};
+        for (double length : lengths) starts.push_back(starts.back() + length / total);
+        starts.back() = 1.0;
+        result.method = SweepMethod::lines_and_arcs;
+        for (std::vector<NurbsSurface>& surfaces : per_section) result.surfaces.push_back(joined_along_v(std::move(surfaces), starts));
+        result.end_frame = frame;
         return result;
     }
 
