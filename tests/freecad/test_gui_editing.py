@@ -700,6 +700,41 @@ def test_the_exact_volume_and_area_show_their_units():
 
 
 @suite.test
+def test_the_sweep_tolerance_shows_and_takes_small_numbers():
+    # User trial: the Sweep's Tolerance (1e-6) showed "0.00" in the property editor, and Enter in its field stored 0
+    # ("Tolerance: must be a length > 0 (mm), got 0", the sweep red).
+    new_document("Tolerance")
+    profile = doc.addObject("Part::Circle", "SweepProfile")
+    profile.Radius = 0.5
+    profile.Placement = App.Placement(V(2, 0, 0), App.Rotation(V(1, 0, 0), 90))
+    path = doc.addObject("Part::Feature", "Arc")
+    path.Shape = Part.ArcOfCircle(Part.Circle(V(0, 0, 0), V(0, 0, 1), 2), 0, PI / 2).toShape()
+    doc.recompute()
+    import RatBez
+    sweep = RatBez.make_sweep(doc, Profile=profile, Path=path)
+    doc.recompute()
+    shown = property_values(sweep, "RatBez").get("Tolerance", "")
+    check(shown and abs(float(shown) - 1e-6) <= 1e-12, "Tolerance shows '{}'".format(shown))
+    view = next(v for v in Gui.getMainWindow().findChildren(QtGui.QTreeView)
+                if v.metaObject().className() == "Gui::PropertyEditor::PropertyEditor" and v.isVisible())
+    model = view.model()
+    group = next(model.index(r, 0) for r in range(model.rowCount()) if model.data(model.index(r, 0)) == "RatBez")
+    row = next(model.index(k, 1, group) for k in range(model.rowCount(group))
+               if model.data(model.index(k, 0, group)) == "Tolerance")
+    view.setCurrentIndex(row)
+    view.edit(row)
+    process_events(0.3)
+    editor = QtGui.QApplication.focusWidget()
+    for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+        QtGui.QApplication.sendEvent(editor, QtGui.QKeyEvent(kind, QtCore.Qt.Key_Return, QtCore.Qt.NoModifier))
+    process_events(0.3)
+    combo_shot("sweep_tolerance")
+    doc.recompute()
+    check(sweep.Tolerance == 1e-6 and sweep.isValid(), "after Enter in the field: Tolerance {}, {}".format(
+        sweep.Tolerance, sweep.getStatusString()))
+
+
+@suite.test
 def test_german_translation():
     new_document("German")
     try:

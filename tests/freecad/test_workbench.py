@@ -876,6 +876,11 @@ def test_save_reopen_recompute_and_old_documents():
         sphere.removeProperty(name)
         sphere.addProperty("App::PropertyFloat", name, "Kernel", "old", 1 | 8)
         setattr(sphere, name, value)
+    # Older versions stored the sweep's Tolerance as App::PropertyFloat (shown "0.00"); it comes back a precision.
+    sweep = made["Sweep"]
+    sweep.removeProperty("Tolerance")
+    sweep.addProperty("App::PropertyFloat", "Tolerance", "RatBez", "old")
+    sweep.Tolerance = 2e-6
     before = {key: (obj.Name, obj.Shape.Volume if key not in ("BezierCurve", "BezierSurface") else 0,
                     obj.Shape.Length if key == "BezierCurve" else 0) for key, obj in made.items()}
     path = os.path.join(OUT, "ratbez_persist.FCStd")
@@ -905,6 +910,9 @@ def test_save_reopen_recompute_and_old_documents():
     check(revolve.getTypeIdOfProperty("Angle") == "App::PropertyFloat" and revolve.Angle == 180,
           "Angle migrated: {} {}".format(revolve.getTypeIdOfProperty("Angle"), revolve.Angle))
     assert_good_solid(revolve, full_volume / 2, "revolve after reopen")
+    sweep = doc.getObject(before["Sweep"][0])
+    check(sweep.getTypeIdOfProperty("Tolerance") == "App::PropertyPrecision" and sweep.Tolerance == 2e-6,
+          "Tolerance migrated: {} {}".format(sweep.getTypeIdOfProperty("Tolerance"), sweep.Tolerance))
     App.closeDocument(doc.Name)
 
 

@@ -577,9 +577,11 @@ class Sweep(ProfileFeature):
         ("App::PropertyLinkSub", "Path",
          _tip("Path to sweep along: a sketch, a wire or edges making one tangent-continuous chain. The profile "
               "is carried with a rotation-minimising frame; a closed path closes the solid on itself"), None),
-        ("App::PropertyFloat", "Tolerance",
-         _tip("Largest distance in mm from the true sweep where it is not rational (straight and circular "
-              "paths give the exact solid); > 0"), 1e-6),
+        # PropertyPrecision, as Part's own tolerances: the property editor shows and takes small numbers (a Float
+        # showed 1e-6 as "0.00", and Enter in its field stored 0).
+        ("App::PropertyPrecision", "Tolerance",
+         _tip("Largest distance in mm from the true sweep where it is not rational (paths of lines and circular "
+              "arcs give the exact solid); > 0"), 1e-6),
     )
 
     def build_solid(self, obj):
