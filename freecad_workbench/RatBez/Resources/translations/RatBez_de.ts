@@ -266,8 +266,8 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Largest distance in mm from the true sweep where it is not rational (straight and circular paths give the exact solid); &gt; 0</source>
-        <translation>Größter Abstand in mm vom wahren Sweep, wo dieser nicht rational ist (gerade und kreisförmige Pfade ergeben den exakten Körper); &gt; 0</translation>
+        <source>Largest distance in mm from the true sweep where it is not rational (paths of lines and circular arcs give the exact solid); &gt; 0</source>
+        <translation>Größter Abstand in mm vom wahren Sweep, wo dieser nicht rational ist (Pfade aus Geraden und Kreisbögen ergeben den exakten Körper); &gt; 0</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>

@@ -266,7 +266,7 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Largest distance in mm from the true sweep where it is not rational (straight and circular paths give the exact solid); &gt; 0</source>
+        <source>Largest distance in mm from the true sweep where it is not rational (paths of lines and circular arcs give the exact solid); &gt; 0</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
