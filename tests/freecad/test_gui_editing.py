@@ -240,6 +240,17 @@ def property_values(obj, group):
     return {}
 
 
+def sweep_inputs():
+    """A circle r = 0.5 at (2, 0, 0) across the XY plane, and a quarter arc r = 2 about the Z axis from it."""
+    profile = doc.addObject("Part::Circle", "Profile")
+    profile.Radius = 0.5
+    profile.Placement = App.Placement(V(2, 0, 0), App.Rotation(V(1, 0, 0), 90))
+    arc = doc.addObject("Part::Feature", "Arc")
+    arc.Shape = Part.ArcOfCircle(Part.Circle(V(0, 0, 0), V(0, 0, 1), 2), 0, PI / 2).toShape()
+    doc.recompute()
+    return profile, arc
+
+
 def xz_sketch(name, x0=2.0):
     """A closed rectangular sketch in the XZ plane, x in [x0, x0 + 2], z in [0, 3]."""
     sketch = doc.addObject("Sketcher::SketchObject", name)
@@ -369,12 +380,7 @@ def test_the_revolve_axis_follows_the_sketch():
 def test_a_sweep_of_the_profile_alone_lets_the_user_pick_the_path():
     # Issue 25: "Sweep: Path: nothing is linked" and "Recompute failed!" before the user could pick the path.
     new_document("SweepPick")
-    profile = doc.addObject("Part::Circle", "Profile")
-    profile.Radius = 0.5
-    profile.Placement = App.Placement(V(2, 0, 0), App.Rotation(V(1, 0, 0), 90))
-    arc = doc.addObject("Part::Feature", "Arc")
-    arc.Shape = Part.ArcOfCircle(Part.Circle(V(0, 0, 0), V(0, 0, 1), 2), 0, PI / 2).toShape()
-    doc.recompute()
+    profile, arc = sweep_inputs()
     before = report_text()
     select(profile)
     sweep, panel = run_command("RatBez_Sweep")
@@ -704,12 +710,7 @@ def test_the_sweep_tolerance_shows_and_takes_small_numbers():
     # User trial: the Sweep's Tolerance (1e-6) showed "0.00" in the property editor, and Enter in its field stored 0
     # ("Tolerance: must be a length > 0 (mm), got 0", the sweep red).
     new_document("Tolerance")
-    profile = doc.addObject("Part::Circle", "SweepProfile")
-    profile.Radius = 0.5
-    profile.Placement = App.Placement(V(2, 0, 0), App.Rotation(V(1, 0, 0), 90))
-    path = doc.addObject("Part::Feature", "Arc")
-    path.Shape = Part.ArcOfCircle(Part.Circle(V(0, 0, 0), V(0, 0, 1), 2), 0, PI / 2).toShape()
-    doc.recompute()
+    profile, path = sweep_inputs()
     import RatBez
     sweep = RatBez.make_sweep(doc, Profile=profile, Path=path)
     doc.recompute()
