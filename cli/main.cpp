@@ -411,15 +411,9 @@ int export_one(const ShapeSpec& spec, bool model_file, const ExportRequest& requ
 // OpenSCAD module names for the parts of a library: each name made an identifier, repeats numbered, none equal
 // to the module that places them all.
 std::vector<std::string> part_module_names(const std::vector<ShapeSpec>& shapes, const std::string& placing) {
-    std::set<std::string> taken{placing};
-    std::vector<std::string> names;
-    for (const ShapeSpec& shape : shapes) {
-        const std::string base = derived_module_name(shape.name, "the solid's name");
-        std::string name = base;
-        for (int k = 2; !taken.insert(name).second; ++k) name = base + "_" + std::to_string(k);
-        names.push_back(name);
-    }
-    return names;
+    std::vector<std::string> derived;  // (each with its note where a built-in got the suffix)
+    for (const ShapeSpec& shape : shapes) derived.push_back(derived_module_name(shape.name, "the solid's name"));
+    return ratbez::exporter::library_module_names(derived, placing);
 }
 
 // Several solids of a model file into one library (.scad: one module each and one placing them all; .3mf: one

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <set>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -163,6 +164,18 @@ std::string openscad_identifier(std::string_view text) {
     // `module for() {}` does not parse, and `module sphere()` shadows OpenSCAD's sphere() for the user.
     if (is_openscad_builtin(name)) name += builtin_suffix;
     return name;
+}
+
+std::vector<std::string> library_module_names(const std::vector<std::string>& names, std::string_view placing) {
+    std::set<std::string> taken{std::string(placing)};
+    std::vector<std::string> modules;
+    for (const std::string& text : names) {
+        const std::string base = openscad_identifier(text);
+        std::string name = base;
+        for (int k = 2; !taken.insert(name).second; ++k) name = base + "_" + std::to_string(k);
+        modules.push_back(name);
+    }
+    return modules;
 }
 
 std::string module_name_problem(std::string_view name) {

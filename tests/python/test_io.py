@@ -68,6 +68,22 @@ def test_export_openscad_writes_a_library_named_by_module_or_stem(tmp_path):
     assert not (tmp_path / "c.scad").exists()
 
 
+def test_export_openscad_of_a_list_names_each_module_after_its_solid(tmp_path):
+    # The README's assembly line: read_step_all's solids carry STEP product names ("Center Frame Camera Mount v2",
+    # "cube", the same part twice); a dict keyed by them was refused as not identifiers. A list makes each name an
+    # identifier, as the CLI does, numbers repeats and keeps clear of built-ins and the placing module.
+    solids = [ratbez.sphere(1.0), ratbez.sphere(1.0, center=(3, 0, 0)), ratbez.cylinder(1.0, 2.0), ratbez.sphere(0.5)]
+    for solid, name in zip(solids, ["Center Frame Camera Mount v2", "cube", "cube", "parts"]):
+        solid.name = name
+    ratbez.export_openscad(solids, tmp_path / "parts.scad", 0.01)
+    text = (tmp_path / "parts.scad").read_text()
+    modules = [line.split("(")[0][len("module "):] for line in text.splitlines() if line.startswith("module ")]
+    assert modules == ["Center_Frame_Camera_Mount_v2", "cube_solid", "cube_solid_2", "parts_2", "parts"], modules
+    assert text.endswith("}\nparts();\n")
+    raises_naming("color", ratbez.export_openscad, solids, tmp_path / "c.scad", color="#ff0000")
+    raises_naming("solid[1]", ratbez.export_openscad, [solids[0], "x"], tmp_path / "c.scad")
+
+
 def read_off(path):
     words = path.read_text().split()
     assert words[0] == "OFF"

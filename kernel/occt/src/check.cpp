@@ -41,6 +41,7 @@
 #include <sstream>
 #include <string>
 
+#include "child_process.hpp"
 #include "handout.hpp"
 #include "polled_progress.hpp"
 #include "ratbez/error.hpp"
@@ -51,6 +52,8 @@
 namespace ratbez::occt {
 namespace {
 
+// The BOP analysis's memory (bop_analysis; its time is CheckOptions::bop_seconds).
+constexpr std::size_t kBopMemoryBytes = std::size_t{4} << 30;
 constexpr double kPropertiesEps = 1e-9;  // BRepGProp's default is 4e-4 relative on B-spline faces (SETUP-NOTES)
 
 std::string number(double value) {
@@ -238,6 +241,8 @@ void validate(const CheckOptions& options) {
             "must be a finite number greater than 0");
     require(std::isfinite(options.volume_limit) && options.volume_limit > 0, "options.volume_limit",
             "must be a finite number greater than 0");
+    require(std::isfinite(options.bop_seconds) && options.bop_seconds > 0, "options.bop_seconds",
+            "must be a finite number greater than 0");
 }
 
 double relative_difference(double a, double b) { return std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
@@ -327,8 +332,15 @@ const char* shape_kind(TopAbs_ShapeEnum type) {
 // the read-back shape and not of the one in memory.
 // `progress` follows the analysis (its self-intersection search takes most of a large part's check), and a
 // callback that throws stops it: the exception comes out once OpenCASCADE has wound down.
-void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& handed, CheckReport& report,
-                  const Progress& progress) {
+// The BOP analysis in this process: its findings in order, each "<status>[: kinds][ (face ...)]", and the counts.
+struct BopFindings {
+    std::vector<std::string> findings;
+    int self_intersections = 0, small_edges = 0;
+    bool faulty = false;
+};
+
+BopFindings analyse_here(const ConvertedSolid& converted, const detail::SplitSolid& handed, const Progress& progress) {
+    BopFindings found;
     std::stringstream text;
     BRepTools::Write(handed.solid, text);
     TopoDS_Shape read;
@@ -338,9 +350,8 @@ void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& han
     TopExp::MapShapes(handed.solid, TopAbs_FACE, handed_faces);
     TopExp::MapShapes(read, TopAbs_FACE, read_faces);
     if (read.IsNull() || read_faces.Extent() != handed_faces.Extent()) {
-        report.bop_findings.push_back("the .brep text of the solid does not read back");
-        report.bop_clean = false;
-        return;
+        found.findings.push_back("the .brep text of the solid does not read back");
+        return found;
     }
     BRepBuilderAPI_Copy copier(read);
     BOPAlgo_ArgumentAnalyzer analyzer;
@@ -378,18 +389,66 @@ void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& han
     };
     for (const BOPAlgo_CheckResult& result : analyzer.GetCheckResult()) {
         const BOPAlgo_CheckStatus status = result.GetCheckStatus();
-        if (status == BOPAlgo_SelfIntersect) ++report.self_intersections;
-        if (status == BOPAlgo_TooSmallEdge) ++report.small_edges;
+        if (status == BOPAlgo_SelfIntersect) ++found.self_intersections;
+        if (status == BOPAlgo_TooSmallEdge) ++found.small_edges;
         std::string kinds, faces;
         for (const TopoDS_Shape& shape : result.GetFaultyShapes1()) {
             kinds += (kinds.empty() ? "" : ", ") + std::string(shape_kind(shape.ShapeType()));
             if (shape.ShapeType() == TopAbs_FACE)
                 if (const auto f = our_face(shape)) faces += (faces.empty() ? "" : ", ") + std::to_string(*f);
         }
-        report.bop_findings.push_back(std::string(status_name(status)) + (kinds.empty() ? "" : ": " + kinds) +
-                                      (faces.empty() ? "" : " (face " + faces + ")"));
+        found.findings.push_back(std::string(status_name(status)) + (kinds.empty() ? "" : ": " + kinds) +
+                                 (faces.empty() ? "" : " (face " + faces + ")"));
     }
-    report.bop_clean = !analyzer.HasFaulty() && report.bop_findings.empty();
+    found.faulty = analyzer.HasFaulty();
+    return found;
+}
+
+// The BOP analysis of the solid as handed out, in a child process (child_process.hpp) under a limit of time and
+// memory: OpenCASCADE's face self-intersection search can run on for minutes and gigabytes on a real part (a
+// 480 kB STEP bracket: 14 GB after 8 minutes, its loops deaf to Ctrl-C), where FreeCAD's own check of the same
+// part takes seconds. Then the check says so (not completed), and the caller's Progress (Ctrl-C) kills the
+// child within a poll interval.
+void bop_analysis(const ConvertedSolid& converted, const detail::SplitSolid& handed, CheckReport& report,
+                  double seconds, const Progress& progress) {
+    detail::ChildWords words;
+    words.argument = "solid";
+    words.doing = "the BOP analysis";
+    words.limit = "the check's limit";
+    words.seconds_setting = words.memory_setting = "";
+    words.crashed = "OpenCASCADE's BOP analysis crashed on it";
+    words.crash_reason = "the solid is handed out all the same";
+    const detail::ChildLimits limits{seconds, kBopMemoryBytes};
+    std::string packed;
+    try {
+        packed = detail::run_in_child("the solid", limits, progress, [&](const detail::ChildProgress& report_fraction) {
+            BopFindings found;
+            try {
+                found = analyse_here(converted, handed, [&](double f) { report_fraction(f); });
+            } catch (const Standard_Failure& failure) {
+                const char* message = failure.GetMessageString();
+                throw Error("solid", std::string("OpenCASCADE raised ") + failure.DynamicType()->Name() +
+                                         (message && *message ? std::string(": ") + message : std::string()));
+            }
+            // Lines: the counts and whether OCCT saw a fault, then one finding per line (none holds a newline).
+            std::string bytes = std::to_string(found.self_intersections) + " " + std::to_string(found.small_edges) + " " +
+                                (found.faulty ? "1" : "0") + "\n";
+            for (const std::string& finding : found.findings) bytes += finding + "\n";
+            return bytes;
+        }, words);
+    } catch (const Error& error) {
+        if (error.argument() != "solid") throw;  // a stop's exception, or the child's own refusal
+        report.bop_findings.push_back("not completed: " + std::string(error.reason()));
+        report.bop_clean = false;
+        return;
+    }
+    std::istringstream lines(packed);
+    int faulty = 0;
+    lines >> report.self_intersections >> report.small_edges >> faulty;
+    std::string line;
+    std::getline(lines, line);
+    while (std::getline(lines, line)) report.bop_findings.push_back(line);
+    report.bop_clean = faulty == 0 && report.bop_findings.empty();
 }
 
 }  // namespace
@@ -448,7 +507,8 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
             handed.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::SurfaceProperties(s, p, eps); },
             report.area, options.volume_limit, slack.area);
         report_progress(0.85);
-        if (options.bop_analysis) bop_analysis(converted, handed, report, progress_part(options.progress, 0.85, 0.95));
+        if (options.bop_analysis)
+            bop_analysis(converted, handed, report, options.bop_seconds, progress_part(options.progress, 0.85, 0.95));
     } catch (const Standard_Failure& failure) {
         const char* message = failure.GetMessageString();
         report.failures.push_back(std::string("OpenCASCADE raised ") + failure.DynamicType()->Name() +

@@ -236,13 +236,14 @@ ChildLimits reader_limits(std::size_t file_bytes) {
 }
 
 std::string run_in_child(const std::string& what, const ChildLimits& limits, const Progress& progress,
-                         const std::function<std::string(const ChildProgress&)>& work) {
+                         const std::function<std::string(const ChildProgress&)>& work, const ChildWords& words) {
+    const char* argument_name = words.argument.c_str();
     int fds[2];
-    require(::pipe2(fds, O_CLOEXEC) == 0, "path", what + ": cannot start the reader (" + std::strerror(errno) + ")");
+    require(::pipe2(fds, O_CLOEXEC) == 0, argument_name, what + ": cannot start a child process (" + std::strerror(errno) + ")");
     FileDescriptor read_end(fds[0]), write_end(fds[1]);
     const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
-    require(pid >= 0, "path", what + ": cannot start the reader (" + std::strerror(errno) + ")");
+    require(pid >= 0, argument_name, what + ": cannot start a child process (" + std::strerror(errno) + ")");
     if (pid == 0) {
         ::close(fds[0]);
         child_main(fds[1], parent, limits, work);
@@ -260,8 +261,8 @@ std::string run_in_child(const std::string& what, const ChildLimits& limits, con
             for (double fraction : records.take_fractions()) progress(fraction);  // may throw: the guard kills the child
         if (std::chrono::steady_clock::now() > deadline) {
             child.kill();
-            fail("path", what + ": reading it took longer than the reader's limit of " + seconds_text(limits.seconds) +
-                             " (RATBEZ_READ_SECONDS sets it)");
+            fail(argument_name, what + ": " + words.doing + " took longer than " + words.limit + " of " +
+                                    seconds_text(limits.seconds) + words.seconds_setting);
         }
         pollfd poll_fd{read_end.get(), POLLIN, 0};
         const int ready = ::poll(&poll_fd, 1, static_cast<int>(kPollInterval.count()));
@@ -276,20 +277,20 @@ std::string run_in_child(const std::string& what, const ChildLimits& limits, con
     if (status && WIFSIGNALED(*status)) {
         const int signal = WTERMSIG(*status);
         if (signal == SIGXCPU || signal == SIGKILL)
-            fail("path", what + ": reading it took longer than the reader's limit of " + seconds_text(limits.seconds) +
-                             " of CPU time (RATBEZ_READ_SECONDS sets it)");
-        fail("path", what + ": OpenCASCADE's reader crashed on it (signal " + std::to_string(signal) + ", " +
-                         ::strsignal(signal) + "); the file is damaged or hostile");
+            fail(argument_name, what + ": " + words.doing + " took longer than " + words.limit + " of " +
+                                    seconds_text(limits.seconds) + " of CPU time" + words.seconds_setting);
+        fail(argument_name, what + ": " + words.crashed + " (signal " + std::to_string(signal) + ", " +
+                                ::strsignal(signal) + "); " + words.crash_reason);
     }
-    require(records.answer().has_value(), "path", what + ": the reader ended without an answer (exit status " +
+    require(records.answer().has_value(), argument_name, what + ": the child process ended without an answer (exit status " +
                                                       std::to_string(status ? WEXITSTATUS(*status) : -1) + ")");
     if (records.failed()) {
         const std::string& text = *records.answer();
         const std::size_t split = text.find('\0');
         const std::string argument = text.substr(0, split);
         if (argument == "memory")
-            fail("path", what + ": reading it needs more memory than the reader's limit of " +
-                             std::to_string(limits.memory_bytes / 1000000) + " MB (RATBEZ_READ_MEGABYTES sets it)");
+            fail(argument_name, what + ": " + words.doing + " needs more memory than " + words.limit + " of " +
+                                    std::to_string(limits.memory_bytes / 1000000) + " MB" + words.memory_setting);
         throw Error(argument, split == std::string::npos ? std::string() : text.substr(split + 1));
     }
     return *records.answer();

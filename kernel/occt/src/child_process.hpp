@@ -23,16 +23,28 @@ struct ChildLimits {
 // file. RATBEZ_READ_SECONDS / RATBEZ_READ_MEGABYTES in the environment override them (README "Input limits").
 ChildLimits reader_limits(std::size_t file_bytes);
 
+// How the parent words its refusals, a reader's by default: Error(argument, what + ": " + doing + " took longer than
+// " + limit + ...). The check's BOP analysis runs in a child too, in its own words.
+struct ChildWords {
+    std::string argument = "path";
+    std::string doing = "reading it";
+    std::string limit = "the reader's limit";
+    std::string seconds_setting = " (RATBEZ_READ_SECONDS sets it)";
+    std::string memory_setting = " (RATBEZ_READ_MEGABYTES sets it)";
+    std::string crashed = "OpenCASCADE's reader crashed on it";
+    std::string crash_reason = "the file is damaged or hostile";
+};
+
 // What the child's work may call to report its fraction done (forwarded to the parent's Progress).
 using ChildProgress = std::function<void(double fraction)>;
 
 // Runs `work` in a forked child under `limits` and returns the bytes it returned. In the child, a ratbez::Error
 // is handed back and rethrown here as it was; any other exception becomes Error("path", what + ": " + text).
-// The parent throws Error("path", ...) naming `what` (e.g. "'a.step'") when the child crashes (the signal),
+// The parent throws Error(words.argument, ...) naming `what` (e.g. "'a.step'") when the child crashes (the signal),
 // runs past the time limit, or runs out of its memory; whatever `progress` throws is rethrown after the child
 // is killed (within one poll interval, 20 ms). `work` must not touch the parent's threads or interpreter: it
 // runs in a copy of the process with one thread.
 std::string run_in_child(const std::string& what, const ChildLimits& limits, const Progress& progress,
-                         const std::function<std::string(const ChildProgress&)>& work);
+                         const std::function<std::string(const ChildProgress&)>& work, const ChildWords& words = {});
 
 }  // namespace ratbez::occt::detail

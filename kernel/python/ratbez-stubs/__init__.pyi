@@ -643,7 +643,8 @@ def export_openscad(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Op
     checked as written) and the module is `import("NAME.stl")`, which OpenSCAD loads several times
     faster for large meshes.
     A dict {name: Solid} writes one module per name (each a safe module name) and the module NAME placing
-    them all; the header lists each module with its triangles, deviation and volumes.
+    them all; the header lists each module with its triangles, deviation and volumes. A list of solids
+    (read_step_all's) does the same, each module named after solid.name made an identifier (repeats _2, ...).
     color: "#rrggbb" or "#rrggbbaa" (for a dict: a dict of them by name) wraps the module's body in
     color([r, g, b, a]).
     

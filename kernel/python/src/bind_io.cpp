@@ -243,6 +243,20 @@ void bind_io(py::module_& m) {
             exporter::ExportOptions options;
             options.openscad.module_name = module_for(module, file);
             options.import_stl = import_stl;
+            if (py::isinstance<py::list>(solid_or_mesh) || py::isinstance<py::tuple>(solid_or_mesh)) {
+                // Solids (read_step_all's): a module each, named after solid.name made an identifier, as the CLI's.
+                const std::vector<Solid> solids = solids_of(solid_or_mesh);
+                std::vector<std::string> names;
+                for (const Solid& solid : solids) names.push_back(solid.name());
+                const std::vector<std::string> modules =
+                    exporter::library_module_names(names, options.openscad.module_name);
+                py::dict named;
+                for (std::size_t i = 0; i < solids.size(); ++i) named[py::str(modules[i])] = py::cast(solids[i]);
+                if (!color.is_none()) throw Error("color", "for a list of solids is not taken: pass a dict {name: Solid}");
+                if (!max_triangles.is_none()) throw Error("max_triangles", "applies to one solid, not a list of solids");
+                options.progress = python_progress(progress);
+                return export_library(named, file, tolerance, color, options);
+            }
             if (py::isinstance<py::dict>(solid_or_mesh)) {
                 if (!max_triangles.is_none()) throw Error("max_triangles", "applies to one solid, not a dict of solids");
                 options.progress = python_progress(progress);
@@ -263,7 +277,8 @@ void bind_io(py::module_& m) {
             "checked as written) and the module is `import(\"NAME.stl\")`, which OpenSCAD loads several times\n"
             "faster for large meshes.\n"
             "A dict {name: Solid} writes one module per name (each a safe module name) and the module NAME placing\n"
-            "them all; the header lists each module with its triangles, deviation and volumes.\n"
+            "them all; the header lists each module with its triangles, deviation and volumes. A list of solids\n"
+            "(read_step_all's) does the same, each module named after solid.name made an identifier (repeats _2, ...).\n"
             "color: \"#rrggbb\" or \"#rrggbbaa\" (for a dict: a dict of them by name) wraps the module's body in\n"
             "color([r, g, b, a]).") +
          "\n\n" + progress_doc).c_str());

@@ -62,6 +62,26 @@ TEST(ArcLength, AShortEdgeFarFromTheOriginIsMeasuredAtOnce) {
     }
 }
 
+TEST(ArcLength, HugeCoordinatesAndWeightsGiveTheLengthOrAnError) {
+    // Past 1e154 the speed's squares overflowed, the rule compared infinities and halved for ever (a user's
+    // length() of a line to 1e155 never returned): the speed is held divided by a power of two of the extent.
+    for (const double far : {1e155, 1e300}) {
+        EXPECT_NEAR(length(line_segment({0, 0, 0}, {far, 0, 0})), far, 1e-15 * far) << far;
+        EXPECT_NEAR(length(circle(far)), 2 * pi * far, 1e-13 * far) << far;
+        EXPECT_NEAR(parameter_at_length(line_segment({0, 0, 0}, {far, 0, 0}), 0.25 * far), 0.25, 1e-14) << far;
+    }
+    // The quadratic (0,0), (1,1), (2,0) with the middle weight w runs nearly all its length within 1/w of its
+    // ends: against 50-digit quadrature (mpmath) it read 1.19 for w = 1e12 and 0 from 1e20 (silently wrong).
+    // The span is cut while its piece's weights spread more than 4; past 1e10 the length is an Error.
+    const auto quadratic = [](double w) {
+        return NurbsCurve::from_bezier(BezierCurve({{0, 0, 0}, {1, 1, 0}, {2, 0, 0}}, {1, w, 1}));
+    };
+    EXPECT_NEAR(length(quadratic(1e3)), 2.8272303971725455135, 1e-13);
+    EXPECT_NEAR(length(quadratic(1e6)), 2.828425926607369574, 1e-13);
+    EXPECT_NEAR(length(quadratic(1e9)), 2.8284271235480498643, 1e-12);
+    for (const double w : {1e12, 1e20, 1e300}) EXPECT_ERROR_NAMING(length(quadratic(w)), "curve");
+}
+
 TEST(ArcLength, ParameterAtLengthInvertsIt) {
     test::Rng rng(2605);
     for (int trial = 0; trial < 40; ++trial) {

@@ -20,7 +20,7 @@ public:
     explicit ArcLength(const NurbsCurve& curve);
 
     const NurbsCurve& curve() const { return curve_; }
-    double total() const { return cumulative_.back(); }
+    double total() const { return cumulative_.back() * scale_; }
     // The length from the domain's start to u (u in the domain; Error naming "u" otherwise).
     double at(double u) const;
     // The length from u0 to u1 (both in the domain; negative when u1 < u0), summed span by span so that a
@@ -33,12 +33,14 @@ public:
     class Speed;  // |C'(u)| from the curve's Bézier segments (arc_length.cpp)
 
 private:
-    // The length over [a, b] inside span k.
+    // The length over [a, b] inside span k, and between u0 and u1, in the speed's scale (divided by scale_).
     double integral(double a, double b) const;
+    double scaled_between(double u0, double u1) const;
     NurbsCurve curve_;
     std::vector<double> breaks_;      // the span ends (breakpoints of the domain)
     std::vector<double> cumulative_;  // cumulative_[k]: the length up to breaks_[k]
-    double tolerance_ = 0;            // absolute, for one span's integral
+    double tolerance_ = 0;            // absolute, for one span's integral (in the speed's scale)
+    double scale_ = 1;                // a power of two near the curve's extent: lengths are held divided by it
     std::shared_ptr<const Speed> speed_;
 };
 

@@ -45,6 +45,9 @@ inline constexpr std::string_view builtin_suffix = "_solid";
 // `text` made an OpenSCAD identifier: characters other than letters, digits and _ become _, a leading
 // digit gets a _ in front, a built-in or keyword gets builtin_suffix behind; empty text gives "shape".
 std::string openscad_identifier(std::string_view text);
+// Module names for the solids of a library from their own names (Solid::name): each made an identifier, repeats
+// numbered (_2, _3, ...), none equal to `placing`, the module placing them all. The CLI's and Python's libraries.
+std::vector<std::string> library_module_names(const std::vector<std::string>& names, std::string_view placing);
 // True when `name` is already an identifier openscad_identifier leaves as it is.
 bool is_openscad_identifier(std::string_view name);
 // Why `name` cannot be an explicitly chosen module name (not an identifier, or a built-in it would

@@ -22,6 +22,9 @@ struct CheckOptions {
     // OpenCASCADE's BOP argument analysis (below). Off only for callers that assert validity and deviation
     // alone on many random solids: its face self-intersection search can take minutes on extreme weights.
     bool bop_analysis = true;
+    // The analysis runs in a child process and is stopped past this wall-clock time (or 4 GiB): it can run on for
+    // minutes and gigabytes on real parts. The report then says "BOP check: not completed: ..." (not passed).
+    double bop_seconds = 60;
     Progress progress;                // optional: called between the steps and faces; may throw to cancel
 };
 
