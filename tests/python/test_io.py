@@ -82,6 +82,9 @@ def test_export_openscad_of_a_list_names_each_module_after_its_solid(tmp_path):
     assert text.endswith("}\nparts();\n")
     raises_naming("color", ratbez.export_openscad, solids, tmp_path / "c.scad", color="#ff0000")
     raises_naming("solid[1]", ratbez.export_openscad, [solids[0], "x"], tmp_path / "c.scad")
+    # A dict key that is the placing module's name is refused naming module= (it said "module_name").
+    with pytest.raises(ratbez.Error, match=r"^module: 'parts' is also the name of a solid"):
+        ratbez.export_openscad({"parts": solids[0]}, tmp_path / "parts.scad", 0.01)
 
 
 def read_off(path):

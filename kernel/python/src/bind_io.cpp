@@ -137,6 +137,10 @@ std::optional<exporter::Color> color_for(const py::object& color, const std::str
 void export_library(const py::dict& solids, const std::string& file, const py::object& tolerance, const py::object& color,
                     exporter::ExportOptions options, bool module_names = true) {
     if (solids.empty()) throw Error("solids", "is empty");
+    if (module_names && solids.contains(py::str(options.openscad.module_name)))
+        throw Error("module", "'" + options.openscad.module_name +
+                                  "' is also the name of a solid: the module placing them all needs its own (module= "
+                                  "names it; by default the file's stem)");
     if (!color.is_none() && !py::isinstance<py::dict>(color))
         throw Error("color", "for a dict of solids must be a dict {name: \"#rrggbb\"}");
     const py::dict colors = color.is_none() ? py::dict() : color.cast<py::dict>();
