@@ -5,7 +5,11 @@
 // the 16-point rule on it and on its halves agree to 1e-14 of the control polygon's length, which bounds
 // the curve's), so a length is good to about 1e-14 relative; a circle of radius r reads 2 pi r to a few
 // ulps. The parameter at a length is found by Newton's method on L(u0, u) - s (its derivative is the
-// speed), kept in a bracket by bisection, to the same accuracy.
+// speed), kept in a bracket by bisection, to the same accuracy. A span whose weights spread far (a rational
+// quadratic with a middle weight 1e9 runs nearly all its length within 1e-9 of its ends' parameters) is first cut
+// until each piece's weights are within 4 of each other; a span whose weights are more than 1e10 apart has no
+// length in double precision and is an Error naming "curve". Coordinates of any size (the speed is held divided by
+// a power of two of the curve's extent).
 
 #include <memory>
 #include <vector>
