@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 
+#include <BOPAlgo_ArgumentAnalyzer.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -207,6 +208,26 @@ TEST(Check, ABopAnalysisPastItsTimeIsStoppedAndSaysSo) {
     } catch (const Error& e) {
         EXPECT_EQ(e.argument(), "options.bop_seconds") << e.what();
     }
+}
+
+// The analysis runs in a forked child. FreeCAD runs its booleans and BOP check in parallel, which starts OCCT's
+// thread pool; the child, holding none of its threads, waited for them until the time limit (the CI's FreeCAD
+// check of a cylinder failed "not completed"). It runs on one thread now.
+TEST(Check, TheBopAnalysisRunsAfterAParallelBoolean) {
+    BOPAlgo_Options::SetParallelMode(true);
+    BRepAlgoAPI_Cut parallel(BRepPrimAPI_MakeSphere(3).Shape(), BRepPrimAPI_MakeBox(2, 2, 2).Shape());
+    parallel.SetRunParallel(true);
+    parallel.Build();
+    BOPAlgo_ArgumentAnalyzer analyzer;  // as FreeCAD's Check geometry runs it
+    analyzer.SetShape1(parallel.Shape());
+    analyzer.SetRunParallel(true);
+    analyzer.Perform();
+    const auto start = std::chrono::steady_clock::now();
+    const CheckReport report = check(cylinder(2, 5), with_grid(5));  // parallel mode still on, as in FreeCAD
+    BOPAlgo_Options::SetParallelMode(false);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+    EXPECT_TRUE(report.bop_clean);
+    EXPECT_TRUE(report.passed) << format_report(report);
 }
 
 TEST(Check, TheBopAnalysisIsPartOfTheCheck) {

@@ -355,6 +355,11 @@ BopFindings analyse_here(const ConvertedSolid& converted, const detail::SplitSol
     }
     BRepBuilderAPI_Copy copier(read);
     BOPAlgo_ArgumentAnalyzer analyzer;
+    // One thread: this runs in a forked child (bop_analysis), which has none of the parent's threads, and OCCT's
+    // thread pool, started in the parent by an earlier parallel boolean (FreeCAD runs its BOP check so), waited
+    // there for workers that do not exist: the check of a cylinder stopped at the time limit.
+    BOPAlgo_Options::SetParallelMode(false);
+    analyzer.SetRunParallel(false);
     analyzer.SetShape1(copier.Shape());
     analyzer.ArgumentTypeMode() = true;
     analyzer.SelfInterMode() = true;
