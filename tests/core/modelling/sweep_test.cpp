@@ -133,6 +133,15 @@ TEST(SweepExact, LinesAndTangentArcsAreSweptPieceByPiece) {
         EXPECT_NEAR(enclosed_volume(tube), pi * r * r * length, 1e-12 * length);
         EXPECT_EQ(tube.faces().size(), 3u);  // the tube and its caps
     }
+    // A bend tighter than the section's reach is refused where the arc starts (path parameter 1), not at 0.
+    const NurbsCurve tight = join({line_segment({0, 0, 0}, {4, 0, 0}), arc(0.5, -90, 0, {4, 0.5, 0})});
+    try {
+        (void)sweep(section_circle(tight, 1.0), tight);
+        ADD_FAILURE() << "a bend of radius 0.5 under a section of radius 1 was swept";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.argument(), "profile");
+        EXPECT_NE(std::string(e.what()).find("(at path parameter 1)"), std::string::npos) << e.what();
+    }
 }
 
 TEST(SweepApproximate, TubeAlongAHelixIsWithinToleranceAndMatchesPappus) {

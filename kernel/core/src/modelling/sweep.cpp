@@ -174,6 +174,7 @@ std::optional<Arc> as_arc(const Path& path) {
 struct Piece {
     std::optional<Line> line;
     std::optional<Arc> arc;
+    double start = 0;  // the path parameter where it starts (for messages)
 };
 
 // The path's spans each a line or an arc, consecutive spans of the same line or circle merged; nullopt when a
@@ -181,21 +182,22 @@ struct Piece {
 std::optional<std::vector<Piece>> as_lines_and_arcs(const Path& path) {
     const double tol = 1e3 * kExactRelative * path.size();
     std::vector<Piece> pieces;
-    for (const BezierCurve& span : path.curve().bezier_segments()) {
-        const Path one(NurbsCurve::from_bezier(span));
+    const std::vector<BezierCurve> spans = path.curve().bezier_segments();
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        const Path one(NurbsCurve::from_bezier(spans[k]));
         if (const std::optional<Line> line = as_line(one)) {
             if (!pieces.empty() && pieces.back().line &&
                 angle_between(pieces.back().line->displacement, line->displacement) <= kCornerAngle)
                 pieces.back().line->displacement = pieces.back().line->displacement + line->displacement;
             else
-                pieces.push_back({line, std::nullopt});
+                pieces.push_back({line, std::nullopt, path.start(k)});
         } else if (const std::optional<Arc> arc = as_arc(one)) {
             Piece* last = pieces.empty() ? nullptr : &pieces.back();
             if (last && last->arc && distance(last->arc->centre, arc->centre) <= tol &&
                 distance(last->arc->axis, arc->axis) <= kCornerAngle && last->arc->angle_deg + arc->angle_deg < 360.0)
                 last->arc->angle_deg += arc->angle_deg;
             else
-                pieces.push_back({std::nullopt, arc});
+                pieces.push_back({std::nullopt, arc, path.start(k)});
         } else {
             return std::nullopt;
         }
@@ -719,7 +721,7 @@ Sweep sweep_surfaces_unchecked(const std::vector<NurbsCurve>& sections, const Nu
             f.t1 = unit(arc.centre - frame.origin) / arc.radius;
             f.r = frame.x_axis;
             f.s = frame.y_axis;
-            check_bend(f, locals, path.start(0), argument);
+            check_bend(f, locals, piece.start, argument);
             const double c = detail::cos_deg(arc.angle_deg), sn = detail::sin_deg(arc.angle_deg);
             for (std::size_t i = 0; i < carried.size(); ++i) {
                 per_section[i].push_back(transposed(revolve_surface(carried[i], arc.centre, arc.axis, arc.angle_deg)));
