@@ -20,6 +20,7 @@
 #include "modelling/planar_profile.hpp"
 #include "modelling/embedding_check.hpp"
 #include "modelling/tube_shell.hpp"
+#include "ratbez/affine_map.hpp"
 #include "ratbez/bspline_basis.hpp"
 #include "ratbez/degree_elevation.hpp"
 #include "ratbez/error.hpp"
@@ -203,18 +204,6 @@ std::optional<std::vector<Piece>> as_lines_and_arcs(const Path& path) {
         }
     }
     return pieces;
-}
-
-// The curve moved rigidly: translated by `shift`, or turned about the axis through `centre` by (c, s).
-NurbsCurve moved(const NurbsCurve& curve, const Vec3& shift) {
-    std::vector<Vec4> net = curve.homogeneous_points();
-    for (Vec4& pw : net) pw = homogenize(project(pw) + shift, pw.w);
-    return NurbsCurve::from_homogeneous(curve.degree(), curve.knots(), std::move(net), curve.is_rational());
-}
-NurbsCurve turned(const NurbsCurve& curve, const Arc& arc, double c, double s) {
-    std::vector<Vec4> net = curve.homogeneous_points();
-    for (Vec4& pw : net) pw = homogenize(arc.centre + rotated(project(pw) - arc.centre, arc.axis, c, s), pw.w);
-    return NurbsCurve::from_homogeneous(curve.degree(), curve.knots(), std::move(net), curve.is_rational());
 }
 
 // Surfaces of one section, one per piece (v on [0, 1] each), end to end in v: raised to one degree p, v of
@@ -709,7 +698,7 @@ Sweep sweep_surfaces_unchecked(const std::vector<NurbsCurve>& sections, const Nu
                 const Vec3 d = piece.line->displacement;
                 for (std::size_t i = 0; i < carried.size(); ++i) {
                     per_section[i].push_back(extrude_surface(carried[i], d));
-                    carried[i] = moved(carried[i], d);
+                    carried[i] = transformed(carried[i], AffineMap::translation(d));
                 }
                 frame.origin = frame.origin + d;
                 lengths.push_back(norm(d));
@@ -723,9 +712,10 @@ Sweep sweep_surfaces_unchecked(const std::vector<NurbsCurve>& sections, const Nu
             f.s = frame.y_axis;
             check_bend(f, locals, piece.start, argument);
             const double c = detail::cos_deg(arc.angle_deg), sn = detail::sin_deg(arc.angle_deg);
+            const AffineMap turn = AffineMap::rotation(arc.centre, arc.axis, arc.angle_deg);
             for (std::size_t i = 0; i < carried.size(); ++i) {
                 per_section[i].push_back(transposed(revolve_surface(carried[i], arc.centre, arc.axis, arc.angle_deg)));
-                carried[i] = turned(carried[i], arc, c, sn);
+                carried[i] = transformed(carried[i], turn);
             }
             frame = Frame{arc.centre + rotated(frame.origin - arc.centre, arc.axis, c, sn), rotated(frame.x_axis, arc.axis, c, sn),
                           rotated(frame.y_axis, arc.axis, c, sn), rotated(frame.z_axis, arc.axis, c, sn)};
