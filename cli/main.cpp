@@ -123,6 +123,8 @@ Arguments parse_arguments(const std::string& command, const std::vector<std::str
     Arguments parsed;
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string arg = args[i];
+        // Errors name the option as the user spelled it.
+        const std::string spelled = arg;
         if (arg == "-o") arg = "--output";
         if (arg.size() < 2 || arg.rfind("--", 0) != 0) {
             if (!arg.empty() && arg[0] == '-' && arg != "-")
@@ -139,16 +141,16 @@ Arguments parse_arguments(const std::string& command, const std::vector<std::str
         }
         if (value_options.count(name)) {
             if (!has_value) {
-                if (i + 1 >= args.size()) throw UsageError(name, "needs a value");
+                if (i + 1 >= args.size()) throw UsageError(spelled, "needs a value");
                 value = args[++i];
             }
-            if (parsed.values.count(name)) throw UsageError(name, "given more than once");
+            if (parsed.values.count(name)) throw UsageError(spelled == "-o" ? "-o" : name, "given more than once");
             parsed.values[name] = value;
         } else if (flag_options.count(name)) {
             if (has_value) throw UsageError(name, "takes no value");
             parsed.flags.insert(name);
         } else {
-            throw UsageError(name, "unknown option for '" + command + "'");
+            throw UsageError(spelled == "-o" ? "-o" : name, "unknown option for '" + command + "'");
         }
     }
     return parsed;

@@ -166,7 +166,10 @@ def property_stub(name, prop, indent):
     first = (prop.fget.__doc__ or "").strip().splitlines()[:1]
     m = re.match(r"^\w*\((.*)\) -> (.+)$", first[0]) if first else None
     result = python_type(m.group(2)) if m else "Any"
-    return [f"{indent}@property", f"{indent}def {name}(self) -> {result}:", docstring_of(prop.__doc__, indent + "    ")]
+    lines = [f"{indent}@property", f"{indent}def {name}(self) -> {result}:", docstring_of(prop.__doc__, indent + "    ")]
+    if prop.fset is not None:  # settable (Solid.name): a type checker must not call the assignment an error
+        lines += [f"{indent}@{name}.setter", f"{indent}def {name}(self, value: {result}) -> None: ..."]
+    return lines
 
 
 KEPT_DUNDERS = ("__init__", "__eq__", "__hash__", "__getstate__", "__setstate__", "__reduce__", "__copy__",

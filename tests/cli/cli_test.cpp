@@ -276,6 +276,11 @@ TEST_F(Cli, UsageErrors) {
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--module", "polyhedron"}),
                      "usage error: --module: 'polyhedron' is an OpenSCAD built-in or keyword: a module of that name would "
                      "shadow OpenSCAD's own in every file that uses the library (try 'polyhedron_solid')");
+    // "-o" is named as typed, not as the "--output" it stands for.
+    expect_bad_input(ratbez({"export", sphere, "-o"}), "usage error: -o: needs a value");
+    expect_bad_input(ratbez({"info", sphere, "-o", path("a.scad")}), "usage error: -o: unknown option for 'info'");
+    expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "-o", path("b.scad")}),
+                     "usage error: -o: given more than once");
     expect_bad_input(ratbez({"info"}), "usage error: SPEC.json: missing (usage: ratbez info SPEC.json|MODEL.step|MODEL.brep ...)");
     expect_bad_input(ratbez({"info", sphere, "other.json"}), "usage error: other.json: unexpected argument for 'info'");
     EXPECT_FALSE(fs::exists(path("a.scad")));
@@ -393,6 +398,12 @@ TEST_F(Cli, TooFineNamesTheOptionPassedAndEstimatesTheCount) {
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.err.rfind("usage error: --tolerance: too fine: the mesh would need about ", 0), 0u) << run.err;
     EXPECT_NE(run.err.find("more than --max-triangles 5000 allows; --tolerance "), std::string::npos) << run.err;
+    // Absurdly fine: the estimate in powers of ten, and still a tolerance that fits (none was named below 3e-16).
+    run = ratbez({"export", sphere, "-o", path("a.scad"), "--tolerance", "1e-30"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err.rfind("usage error: --tolerance: too fine: the mesh would need about ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find("e+"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(" or coarser fits\n"), std::string::npos) << run.err;
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.scad"), "--max-triangles", "0"}),
                      "usage error: --max-triangles: must be a positive whole number, not '0'");
     expect_bad_input(ratbez({"export", sphere, "-o", path("a.step"), "--max-triangles", "10"}),

@@ -49,6 +49,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -420,10 +421,39 @@ TEST_F(Import, BadFilesAreRefusedNamingThePath) {
     expect_path_error([&] { read_step(garbage); }, "not a readable STEP file");
     expect_path_error([&] { read_brep(garbage); }, "not a readable .brep file");
     expect_path_error([&] { read_step(directory_.string()); }, "is not a file");
+    // A path the system cannot look up says why, not that it does not exist.
+    std::filesystem::create_symlink("loop.step", path("loop.step"));
+    expect_path_error([&] { read_step(path("loop.step")); }, "loop.step': Too many levels of symbolic links");
     // A .brep of two solids names the file and the count.
     const TopoDS_Compound two = two_boxes();
     ASSERT_TRUE(BRepTools::Write(two, path("two.brep").c_str()));
     expect_path_error([&] { read_brep(path("two.brep")); }, "two.brep' holds 2 solids; read them all with read_brep_all");
+}
+
+// The reader's limits from the environment: a value that is not a limit is an Error naming the variable, never
+// the default kept silently (RATBEZ_READ_SECONDS=1e10 overflowed the deadline and failed every read at once).
+TEST_F(Import, ReadLimitsFromTheEnvironmentAreCheckedAndNamed) {
+    write_brep(sphere(1), path("sphere.brep"));
+    const auto read_with = [&](const char* name, const char* value) {
+        ::setenv(name, value, 1);
+        try {
+            read_brep(path("sphere.brep"));
+            ::unsetenv(name);
+            return std::string("read");
+        } catch (const Error& e) {
+            ::unsetenv(name);
+            return std::string(e.what());
+        }
+    };
+    for (const char* value : {"abc", "10s", "0", "-1", "1e10", "nan"})
+        EXPECT_EQ(read_with("RATBEZ_READ_SECONDS", value).find("RATBEZ_READ_SECONDS: must be a number of seconds from "),
+                  0u) << value;
+    EXPECT_EQ(read_with("RATBEZ_READ_SECONDS", "1e10"),
+              "RATBEZ_READ_SECONDS: must be a number of seconds from 0.01 to 1e+07, got '1e10'");
+    EXPECT_EQ(read_with("RATBEZ_READ_MEGABYTES", "1").find("RATBEZ_READ_MEGABYTES: must be a number of megabytes from"),
+              0u);
+    for (const char* value : {"1e7", "30", ""}) EXPECT_EQ(read_with("RATBEZ_READ_SECONDS", value), "read") << value;
+    EXPECT_EQ(read_with("RATBEZ_READ_MEGABYTES", "2000"), "read");
 }
 
 TEST_F(Import, ProgressReachesOneAndCancels) {

@@ -57,6 +57,7 @@
 #include "ratbez/profile.hpp"
 #include "ratbez/revolve.hpp"
 #include "ratbez/solid_transform.hpp"
+#include "ratbez/sweep.hpp"
 
 namespace ratbez::occt {
 namespace {
@@ -510,6 +511,25 @@ TEST(Topology, LoftsGoOverWithPartsFaces) {
     const TopoDS_Solid loft_solid = convert(loft({thirds, Profile(sides), top})).solid;
     for (TopExp_Explorer it(loft_solid, TopAbs_FACE); it.More(); it.Next())
         EXPECT_EQ(BRep_Tool::Surface(TopoDS::Face(it.Current()))->Continuity(), GeomAbs_CN);
+}
+
+// A sweep along a line and a tangent arc goes over with Part's Sweep's faces: one per path piece and profile edge,
+// and the caps. The circle's tube was one face with a C0 joint (the speed along the path jumps where the pieces
+// meet), which went over as patches: 3 x 2 side faces, 2 on a half-turn arc, where Part's Sweep has 2.
+TEST(Topology, SweepsAlongLinesAndArcsGoOverWithAFacePerPathPiece) {
+    for (const double turn : {90.0, 180.0}) {
+        SCOPED_TRACE(turn);
+        const NurbsCurve path = join({line_segment({0, 0, 0}, {6, 0, 0}), arc(5.0, -90, -90 + turn, {6, 5, 0})});
+        const double length = 6 + 5 * turn * kPi / 180;
+        const Solid tube = sweep(Profile({circle(1.0, {0, 0, 0}, {1, 0, 0})}), path);
+        const ConvertedSolid converted = convert(tube);
+        EXPECT_TRUE(BRepCheck_Analyzer(converted.solid).IsValid());
+        EXPECT_EQ(count(converted.solid, TopAbs_FACE), 4);
+        const FixedRule read = fixed_rule(converted.solid);
+        EXPECT_NEAR(read.volume, kPi * length, 1e-9 * kPi * length);
+        expect_no_c0_geometry(converted.solid);
+        EXPECT_FALSE(bop_check_finds_faults(converted.solid));
+    }
 }
 
 // OCCT's Thickness hollows a ruled solid through its top cap, as it hollows Part's ruled Loft. Before the seam of

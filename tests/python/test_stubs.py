@@ -85,3 +85,16 @@ def test_every_public_name_has_a_docstring():
         if not prose(doc):
             undocumented.append(name)
     assert not undocumented, undocumented
+
+
+@pytest.mark.skipif(not (ratbez.has_occt and ratbez.has_cgal),
+                    reason="the stubs describe the full module (with OCCT and CGAL)")
+def test_settable_properties_are_settable_in_the_stubs():
+    # Solid.name is free to set; its stub was a read-only property, so a type checker called `s.name = ...` an error.
+    tree = ast.parse(STUBS.read_text())
+    setters = {f"{node.name}.{item.name}" for node in tree.body if isinstance(node, ast.ClassDef)
+               for item in node.body if isinstance(item, ast.FunctionDef)
+               and any(isinstance(d, ast.Attribute) and d.attr == "setter" for d in item.decorator_list)}
+    settable = {name for name, value in public_members() if isinstance(value, property) and value.fset is not None}
+    assert "Solid.name" in settable
+    assert setters == settable

@@ -175,3 +175,17 @@ def test_bad_maps_name_the_argument():
     raises_naming("factor", c.scaled, 0)
     raises_naming("plane_normal", ratbez.sphere(1).mirrored, (0, 0, 0), (0, 0, 0))
     raises_naming("v", c.translated, (1, 2, 3, 4))
+
+
+def test_a_solid_moved_too_far_for_its_size_names_the_map():
+    # sphere(2) moved to 1e15 was refused naming "sides" ("side u_max collapses to a point"), at 1e10 "faces".
+    for distance in (1e10, 1e15):
+        with pytest.raises(ratbez.Error) as caught:
+            ratbez.sphere(2).translated((distance, 0, 0))
+        assert caught.value.argument == "v", str(caught.value)
+        assert "from the origin, where neighbouring doubles are" in str(caught.value)
+    raises_naming("factor", ratbez.sphere(1).scaled, 1e120)
+    raises_naming("axis_point", ratbez.sphere(1, center=(1, 0, 0)).rotated, (1e15, 0, 0), (0, 0, 1), 180)
+    raises_naming("matrix", ratbez.sphere(1).transformed, [[1, 0, 0, 1e15], [0, 1, 0, 0], [0, 0, 1, 0]])
+    # Near enough it is still moved, exactly.
+    assert ratbez.sphere(2).translated((1e8, 0, 0)).bounding_box()[0][0] == pytest.approx(1e8 - 2)

@@ -36,6 +36,10 @@ namespace {
 // The pipe from child to parent carries records: a tag byte, a 64-bit size, that many bytes.
 constexpr char kProgress = 'P', kResult = 'R', kError = 'E';
 constexpr auto kPollInterval = std::chrono::milliseconds(20);
+// The least memory a reader may be given (RATBEZ_READ_MEGABYTES): at 1 MB OpenCASCADE's STEP reader failed
+// inside its own error handling and a 16 KB file was called "not a readable STEP file"; at 16 MB a 2.5 MB file
+// was refused in the right words, and at 64 MB it was read.
+constexpr double kLeastMegabytes = 64;
 
 bool write_all(int fd, const char* data, std::size_t size) {
     while (size > 0) {
@@ -56,12 +60,18 @@ void write_record(int fd, char tag, const std::string& bytes) {
     if (!write_all(fd, header, sizeof header) || !write_all(fd, bytes.data(), bytes.size())) ::_exit(3);
 }
 
-std::optional<double> environment_number(const char* name) {
+// A limit set in the environment: unset or empty keeps the default. Anything else but a number in [least,
+// most] is an Error naming the variable, not the default kept silently (a mistyped limit the user relies on);
+// `most` keeps the deadline within the clock's range (1e10 s overflowed it and failed every read at once).
+std::optional<double> environment_limit(const char* name, double least, double most, const char* unit) {
     const char* text = std::getenv(name);
     if (text == nullptr || *text == '\0') return std::nullopt;
     char* end = nullptr;
     const double value = std::strtod(text, &end);
-    if (*end != '\0' || !std::isfinite(value) || value <= 0) return std::nullopt;
+    require(end != text && *end == '\0' && value >= least && value <= most, name, [&] {
+        return std::string("must be a number of ") + unit + " from " + exact_number(least) + " to " +
+               exact_number(most) + ", got '" + printable(text) + "'";
+    });
     return value;
 }
 
@@ -229,9 +239,9 @@ std::string seconds_text(double seconds) {
 ChildLimits reader_limits(std::size_t file_bytes) {
     const double megabytes = static_cast<double>(file_bytes) / 1e6;
     ChildLimits limits{10 + 5 * megabytes, (std::size_t{1} << 30) + 64 * file_bytes};
-    if (const auto seconds = environment_number("RATBEZ_READ_SECONDS")) limits.seconds = *seconds;
-    if (const auto megabytes_limit = environment_number("RATBEZ_READ_MEGABYTES"))
-        limits.memory_bytes = static_cast<std::size_t>(std::min(*megabytes_limit, 1e12) * 1e6);
+    if (const auto seconds = environment_limit("RATBEZ_READ_SECONDS", 0.01, 1e7, "seconds")) limits.seconds = *seconds;
+    if (const auto megabytes_limit = environment_limit("RATBEZ_READ_MEGABYTES", kLeastMegabytes, 1e9, "megabytes"))
+        limits.memory_bytes = static_cast<std::size_t>(*megabytes_limit * 1e6);
     return limits;
 }
 

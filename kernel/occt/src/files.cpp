@@ -38,6 +38,8 @@
 #include <Standard_Failure.hxx>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <span>
 #include <array>
 #include <exception>
@@ -130,10 +132,15 @@ private:
 };
 
 void require_readable(const std::string& path) {
+    // The system's reason where it has one: a path it may not look into is not a path that does not exist.
     std::error_code error;
-    require(std::filesystem::exists(path, error), "path", "'" + path + "' does not exist");
+    const bool exists = std::filesystem::exists(path, error);
+    require(!error, "path", [&] { return "cannot read '" + path + "': " + error.message(); });
+    require(exists, "path", "'" + path + "' does not exist");
     require(std::filesystem::is_regular_file(path, error), "path", "'" + path + "' is not a file");
-    require(std::ifstream(path).good(), "path", "cannot read '" + path + "'");
+    errno = 0;
+    require(std::ifstream(path).good(), "path",
+            [&] { return "cannot read '" + path + "'" + (errno != 0 ? std::string(": ") + std::strerror(errno) : ""); });
 }
 
 // A solid of a file with the name the file gives it.

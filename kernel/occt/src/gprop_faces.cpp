@@ -52,15 +52,18 @@ Handle(Geom_BSplineSurface) refined_for_gauss(Handle(Geom_BSplineSurface) surfac
     const auto raised = [](int degree, bool cut) { return degree == 1 || (cut && degree < 3) ? 3 : degree; };
     const int u_degree = raised(surface->UDegree(), surface->NbUKnots() == 2);
     const int v_degree = raised(surface->VDegree(), surface->NbVKnots() == 2);
+    // Four spans, except for a quadratic raised to cubic: three keep the Gauss order it had at quadratic with four
+    // (24 points, gprop_integration_order), so the reading is the same and OCCT's later work no dearer.
+    const auto spans = [](int degree, int was) { return was == 2 && degree == 3 ? 3 : 4; };
+    const int u_spans = spans(u_degree, surface->UDegree()), v_spans = spans(v_degree, surface->VDegree());
     if (u_degree != surface->UDegree() || v_degree != surface->VDegree()) surface->IncreaseDegree(u_degree, v_degree);
-    constexpr int kSpans = 4;
     if (surface->NbUKnots() == 2) {
         const double a = surface->UKnot(1), b = surface->UKnot(2);
-        for (int k = 1; k < kSpans; ++k) surface->InsertUKnot(a + (b - a) * k / kSpans, 1, 0.0);
+        for (int k = 1; k < u_spans; ++k) surface->InsertUKnot(a + (b - a) * k / u_spans, 1, 0.0);
     }
     if (surface->NbVKnots() == 2) {
         const double a = surface->VKnot(1), b = surface->VKnot(2);
-        for (int k = 1; k < kSpans; ++k) surface->InsertVKnot(a + (b - a) * k / kSpans, 1, 0.0);
+        for (int k = 1; k < v_spans; ++k) surface->InsertVKnot(a + (b - a) * k / v_spans, 1, 0.0);
     }
     return surface;
 }

@@ -466,10 +466,10 @@ private:
             require((nurbs->IsUPeriodic() || (r[0] >= a - tol_u && r[1] <= b + tol_u)) &&
                         (nurbs->IsVPeriodic() || (r[2] >= c - tol_v && r[3] <= d + tol_v)),
                     "shape", [&] {
-                        return "its parameter rectangle [" + std::to_string(r[0]) + ", " + std::to_string(r[1]) + "] x [" +
-                               std::to_string(r[2]) + ", " + std::to_string(r[3]) + "] leaves its " + type_name(basis) +
-                               "'s exact form's domain [" + std::to_string(a) + ", " + std::to_string(b) + "] x [" +
-                               std::to_string(c) + ", " + std::to_string(d) + "]";
+                        return "its parameter rectangle [" + exact_number(r[0]) + ", " + exact_number(r[1]) + "] x [" +
+                               exact_number(r[2]) + ", " + exact_number(r[3]) + "] leaves its " + type_name(basis) +
+                               "'s exact form's domain [" + exact_number(a) + ", " + exact_number(b) + "] x [" +
+                               exact_number(c) + ", " + exact_number(d) + "]";
                     });
             const auto clamp = [](double x, double lo, double hi, bool periodic) { return periodic ? x : std::clamp(x, lo, hi); };
             nurbs->Segment(u_fits ? a : clamp(r[0], a, b, nurbs->IsUPeriodic()), u_fits ? b : clamp(r[1], a, b, nurbs->IsUPeriodic()),
@@ -767,8 +767,8 @@ private:
     double plausible_tolerance(const TopoDS_Face& face) const {
         const double tolerance = file_tolerance(face);
         require(tolerance <= 1e-2 * size_, "tolerance", [&] {
-            return "the file lets the face's boundary keep " + std::to_string(tolerance) + " from its surface, more than 1% of "
-                   "the model's size " + std::to_string(size_) + ": its geometry does not agree with itself";
+            return "the file lets the face's boundary keep " + exact_number(tolerance) + " from its surface, more than 1% of "
+                   "the model's size " + exact_number(size_) + ": its geometry does not agree with itself";
         });
         return tolerance;
     }

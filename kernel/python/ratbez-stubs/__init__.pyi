@@ -488,6 +488,8 @@ class Solid(object):
     @property
     def name(self) -> str:
         """What the file it was read from calls it (a STEP product's name), or ''; free to set."""
+    @name.setter
+    def name(self, value: str) -> None: ...
     @property
     def kind(self) -> str:
         """What the solid was built as: 'cylinder', 'cone', 'sphere', 'torus', 'revolution', 'extrusion', or 'none' (assembled from faces)."""

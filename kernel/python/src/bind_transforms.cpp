@@ -21,21 +21,27 @@ AffineMap matrix_map(const py::object& matrix) {
 // The five methods on class T; `what` names the object in the docstrings.
 template <class T>
 void def_transforms(const char* what) {
-    const auto apply = [](const T& x, const AffineMap& map) {
+    // `argument`: the method's name for what the kernel calls the map ("v" of translated, "matrix" of transformed).
+    const auto apply = [](const T& x, const AffineMap& map, const char* argument) {
         py::gil_scoped_release release;  // a Solid's faces are mapped and revalidated
-        return transformed(x, map);
+        try {
+            return transformed(x, map);
+        } catch (const Error& e) {
+            throw e.renamed("map", argument);
+        }
     };
     const std::string noun(what);
     reopen<T>()
         .def(
             "translated",
-            [apply](const T& x, const py::object& v) { return apply(x, AffineMap::translation(to_vec3(v, "v"))); },
+            [apply](const T& x, const py::object& v) { return apply(x, AffineMap::translation(to_vec3(v, "v")), "v"); },
             py::arg("v"), ("The " + noun + " moved by the vector v (2 or 3 numbers).").c_str())
         .def(
             "rotated",
             [apply](const T& x, const py::object& axis_point, const py::object& axis_dir, double angle_deg) {
                 return apply(x, AffineMap::rotation(to_vec3(axis_point, "axis_point"), to_vec3(axis_dir, "axis_dir"),
-                                                    angle_deg));
+                                                    angle_deg),
+                             "axis_point");
             },
             py::arg("axis_point"), py::arg("axis_dir"), py::arg("angle_deg"),
             ("The " + noun + " rotated by angle_deg degrees (right-handed) about the line through axis_point\n"
@@ -43,7 +49,7 @@ void def_transforms(const char* what) {
         .def(
             "scaled",
             [apply](const T& x, double factor, const py::object& center) {
-                return apply(x, AffineMap::scaling(factor, to_vec3(center, "center")));
+                return apply(x, AffineMap::scaling(factor, to_vec3(center, "center")), "factor");
             },
             py::arg("factor"), py::arg("center") = py::make_tuple(0.0, 0.0, 0.0),
             ("The " + noun + " scaled by factor (finite, not 0; negative: a point reflection) about center.").c_str())
@@ -51,12 +57,13 @@ void def_transforms(const char* what) {
             "mirrored",
             [apply](const T& x, const py::object& plane_point, const py::object& plane_normal) {
                 return apply(x, AffineMap::mirror(to_vec3(plane_point, "plane_point"),
-                                                  to_vec3(plane_normal, "plane_normal")));
+                                                  to_vec3(plane_normal, "plane_normal")),
+                             "plane_point");
             },
             py::arg("plane_point"), py::arg("plane_normal"),
             ("The mirror image of the " + noun + " in the plane through plane_point with normal plane_normal.").c_str())
         .def(
-            "transformed", [apply](const T& x, const py::object& matrix) { return apply(x, matrix_map(matrix)); },
+            "transformed", [apply](const T& x, const py::object& matrix) { return apply(x, matrix_map(matrix), "matrix"); },
             py::arg("matrix"),
             ("The " + noun + " under the affine map x -> L x + t given as a 3 x 4 matrix [L | t] or a 4 x 4 one\n"
              "with last row (0, 0, 0, 1) (nested sequences or a numpy array). Projective rows and singular L\n"

@@ -105,14 +105,19 @@ TEST(SweepExact, LinesAndTangentArcsAreSweptPieceByPiece) {
     // rounding, the volume Pappus's pi r^2 L, the end section the start one carried rigidly. It was
     // approximated (degree 5 trajectories, a face per refined interval in FreeCAD, volume 7e-9 off).
     const double r = 0.5;
-    const std::vector<std::pair<NurbsCurve, double>> paths = {
+    struct Case {
+        NurbsCurve path;
+        double length;
+        std::size_t pieces;
+    };
+    const std::vector<Case> paths = {
         {join({line_segment({0, 0, 0}, {4, 0, 0}), arc(3.0, -90, 0, {4, 3, 0}), arc(3.0, 90, 180, {10, 3, 0}).reversed(),
                line_segment({10, 6, 0}, {14, 6, 0})}),
-         4 + 3 * pi + 4},
+         4 + 3 * pi + 4, 4},
         {join({line_segment({0, 0, 0}, {0, 0, 5}), arc(4.0, 180, 360, {4, 0, 5}, {0, 1, 0}), line_segment({8, 0, 5}, {8, 0, 0})}),
-         5 + 4 * pi + 5},
+         5 + 4 * pi + 5, 3},
     };
-    for (const auto& [path, length] : paths) {
+    for (const auto& [path, length, pieces] : paths) {
         const Profile section = section_circle(path, r);
         const Sweep swept = sweep_surfaces(section.pieces(), path);
         EXPECT_EQ(swept.method, SweepMethod::lines_and_arcs);
@@ -131,7 +136,20 @@ TEST(SweepExact, LinesAndTangentArcsAreSweptPieceByPiece) {
                   1e-12);
         const Solid tube = sweep(section, path);
         EXPECT_NEAR(enclosed_volume(tube), pi * r * r * length, 1e-12 * length);
-        EXPECT_EQ(tube.faces().size(), 3u);  // the tube and its caps
+        // A face per piece of the path, as Part's Sweep makes one per path edge, each the swept surface over its
+        // piece (the joints are where the pieces meet), and the caps.
+        ASSERT_EQ(swept.joints.size(), pieces - 1);
+        ASSERT_EQ(tube.faces().size(), pieces + 2);
+        for (std::size_t b = 0; b < pieces; ++b) {
+            const NurbsSurface& part = tube.faces()[b].surface();
+            EXPECT_EQ(part.domain_v().min, b == 0 ? 0.0 : swept.joints[b - 1]);
+            EXPECT_EQ(part.domain_v().max, b + 1 == pieces ? 1.0 : swept.joints[b]);
+            for (int j = 0; j <= 4; ++j) {
+                const double v = part.domain_v().min + part.domain_v().width() * j / 4;
+                for (const double u : {s.domain_u().min, s.domain_u().min + 0.3 * s.domain_u().width(), s.domain_u().max})
+                    EXPECT_LE(distance(part.point(u, v), s.point(u, v)), 1e-14 * length);
+            }
+        }
     }
     // A bend tighter than the section's reach is refused where the arc starts (path parameter 1), not at 0.
     const NurbsCurve tight = join({line_segment({0, 0, 0}, {4, 0, 0}), arc(0.5, -90, 0, {4, 0.5, 0})});

@@ -2,6 +2,7 @@
 // The one exception type of the kernel: every constructor and function that takes user input
 // validates it and throws ratbez::Error naming the offending argument and the reason.
 
+#include <charconv>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
@@ -67,6 +68,13 @@ private:
     std::size_t reason_start_ = 0;
 };
 
+// A double in an error message: the shortest text that reads back as the same double, so 1e-7 does not read
+// "0.000000" and 1.0000000000000002 does not read "1" beside a domain that ends at 1.
+inline std::string exact_number(double value) {
+    char text[32];  // the longest shortest form of a double is 24 characters
+    return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+}
+
 [[noreturn]] inline void fail(std::string_view argument, std::string_view reason) { throw Error(argument, reason); }
 
 // Throws Error(argument, reason) unless `condition` holds.
@@ -95,8 +103,7 @@ inline void require_finite(std::span<const double> values, std::string_view argu
 inline void require_in_domain(double t, double a, double b, std::string_view argument) {
     require(std::isfinite(t), argument, "must be a finite number");
     require(t >= a && t <= b, argument, [&] {
-        return "parameter " + std::to_string(t) + " is outside the domain [" + std::to_string(a) + ", " +
-               std::to_string(b) + "]";
+        return "parameter " + exact_number(t) + " is outside the domain [" + exact_number(a) + ", " + exact_number(b) + "]";
     });
 }
 

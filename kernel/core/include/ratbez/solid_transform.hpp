@@ -9,6 +9,9 @@
 // The construction record follows the map where the kind survives it: similarities (rigid motions,
 // mirrors, uniform scalings) keep cylinders, cones, spheres, tori and revolutions, scaling their sizes;
 // every affine map keeps an extrusion (a prism's image is a prism). Anything else becomes kind none.
+//
+// An image the limits of limits.hpp refuse (moved too far from the origin for its size, scaled past the
+// coordinate limit) is an Error naming "map".
 
 #include "ratbez/affine_map.hpp"
 #include "ratbez/brep.hpp"

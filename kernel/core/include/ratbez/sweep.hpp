@@ -69,6 +69,10 @@ struct Sweep {
     SweepMethod method = SweepMethod::approximation;
     double max_error = 0;
     bool closed = false;  // the path is closed: v = 1 is v = 0
+    // Along lines and arcs (SweepMethod::lines_and_arcs), the v where one piece of the path meets the next, in
+    // order: knots of full multiplicity, where the surfaces are only C0 (the speed along the path may jump).
+    // sweep() makes a face of each piece, as Part's Sweep does of each path edge.
+    std::vector<double> joints;
     // The frame (origin x, axes r, s, t) at the path's start and where the sweep carries it at the end:
     // a section's point p at the start is at end_frame.to_world(local) at the end, local being p's
     // coordinates in start_frame.
@@ -85,7 +89,8 @@ inline NurbsSurface sweep_surface(const NurbsCurve& curve, const NurbsCurve& pat
     return sweep_surfaces({curve}, path, tolerance).surfaces.front();
 }
 
-// A closed planar profile swept along the path: one lateral face per piece, capped by the profile at the
+// A closed planar profile swept along the path: one lateral face per piece (and per piece of a path of lines and
+// arcs, which meet at the surfaces' joints: Sweep::joints), capped by the profile at the
 // start and its rigid image at the end (planar faces), or closed on itself along a closed path. The profile
 // must not lie in a plane containing the path's starting tangent; it is turned to run counterclockwise about
 // it, so that the faces point out. Along a straight path the solid is the extrusion (recorded as one); along an

@@ -65,7 +65,10 @@ public:
 private:
     static std::string about(double count) {
         const double rounded = count < 100 ? std::ceil(count) : two_digits_up(count);
-        return std::to_string(static_cast<long long>(std::min(rounded, 9e18)));
+        if (rounded < 1e15) return std::to_string(static_cast<long long>(rounded));
+        char text[32];  // "1.2e+25", not a wall of digits (nor 9e18 for everything past it)
+        std::snprintf(text, sizeof text, "%.2g", rounded);
+        return text;
     }
     static std::string message(double estimated, std::size_t max_triangles, double fitting_tolerance,
                                const std::string& budget, const std::string& tolerance_words) {

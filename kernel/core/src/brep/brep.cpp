@@ -58,7 +58,7 @@ Face Face::from_surface(NurbsSurface surface, std::array<Coedge, 4> sides) {
         require(std::abs(edge_domain.min - domain.min) <= 1e-12 * width &&
                     std::abs(edge_domain.max - domain.max) <= 1e-12 * width,
                 "sides", where + "'s edge must be parameterised over the surface's domain [" +
-                             std::to_string(domain.min) + ", " + std::to_string(domain.max) + "]");
+                             exact_number(domain.min) + ", " + exact_number(domain.max) + "]");
         double side_length = 0;
         Vec3 previous{};
         for (int k = 0; k < kSideSamples; ++k) {
@@ -67,8 +67,8 @@ Face Face::from_surface(NurbsSurface surface, std::array<Coedge, 4> sides) {
             const double edge_t = edge_with_parameter ? t : edge_domain.min + edge_domain.max - t;
             const Vec3 on_edge = curve.point(std::clamp(edge_t, edge_domain.min, edge_domain.max));
             require(distance(on_surface, on_edge) <= tolerance, "sides", [&] {
-                return where + "'s edge is " + std::to_string(distance(on_surface, on_edge)) +
-                       " away from the surface's boundary at parameter " + std::to_string(t);
+                return where + "'s edge is " + exact_number(distance(on_surface, on_edge)) +
+                       " away from the surface's boundary at parameter " + exact_number(t);
             });
             if (k > 0) side_length += distance(previous, on_surface);
             previous = on_surface;

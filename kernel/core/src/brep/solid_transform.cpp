@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "brep/brep_build.hpp"
+#include "math/solid_scale.hpp"
+#include "ratbez/error.hpp"
 
 namespace ratbez {
 namespace {
@@ -137,13 +139,27 @@ Vec3 unit(const Vec3& v) { return v / norm(v); }
 Face transformed(const Face& face, const AffineMap& map) { return BrepMapper(map).face(face); }
 
 Solid transformed(const Solid& solid, const AffineMap& map) {
-    BrepMapper mapper(map);
-    std::vector<Face> faces;
-    faces.reserve(solid.faces().size());
-    for (const Face& face : solid.faces()) faces.push_back(mapper.face(face));
-    Solid image(std::move(faces), transformed(solid.construction(), map));
-    image.set_name(solid.name());
-    return image;
+    try {
+        BrepMapper mapper(map);
+        std::vector<Face> faces;
+        faces.reserve(solid.faces().size());
+        for (const Face& face : solid.faces()) faces.push_back(mapper.face(face));
+        Solid image(std::move(faces), transformed(solid.construction(), map));
+        image.set_name(solid.name());
+        return image;
+    } catch (const Error&) {
+        // A map that takes the solid too far from the origin for its size (sphere(2) moved to 1e15) breaks its
+        // faces first, in their words ("side u_max collapses to a point"): the scale rule, on the box the map
+        // makes of the solid's (which holds the image), names the map instead. Only after a failure: that box
+        // can be larger than the image's own, and must not refuse an image that is fine.
+        Box image;
+        const Box box = solid.bounding_box();
+        for (int corner = 0; corner < 8; ++corner)
+            image.add(map({corner & 1 ? box.max.x : box.min.x, corner & 2 ? box.max.y : box.min.y,
+                           corner & 4 ? box.max.z : box.min.z}));
+        detail::require_solid_scale(image.diagonal(), detail::reach_of(image), "map", "map", detail::largest_box_diagonal);
+        throw;
+    }
 }
 
 Construction transformed(const Construction& construction, const AffineMap& map) {

@@ -78,9 +78,9 @@ AffineMap AffineMap::from_matrix(std::span<const double> entries, std::size_t ro
         require(std::abs(entries[12]) <= tolerance && std::abs(entries[13]) <= tolerance &&
                     std::abs(entries[14]) <= tolerance && std::abs(entries[15] - 1) <= tolerance,
                 argument, [&] {
-                    return "the last row must be (0, 0, 0, 1) for an affine map; (" + std::to_string(entries[12]) +
-                           ", " + std::to_string(entries[13]) + ", " + std::to_string(entries[14]) + ", " +
-                           std::to_string(entries[15]) + ") is projective, which would change the weights";
+                    return "the last row must be (0, 0, 0, 1) for an affine map; (" + exact_number(entries[12]) +
+                           ", " + exact_number(entries[13]) + ", " + exact_number(entries[14]) + ", " +
+                           exact_number(entries[15]) + ") is projective, which would change the weights";
                 });
     }
     AffineMap map;

@@ -31,7 +31,7 @@ void validate_points(const std::vector<Vec3>& points) {
 void validate_weight(double weight, std::size_t index, const std::string& argument) {
     require(std::isfinite(weight), argument, [&] { return "weight " + std::to_string(index) + " is not a finite number"; });
     require(weight > 0.0, argument,
-            [&] { return "weight " + std::to_string(index) + " is " + std::to_string(weight) + " but must be > 0"; });
+            [&] { return "weight " + std::to_string(index) + " is " + exact_number(weight) + " but must be > 0"; });
 }
 
 // P^w_i = (2^k w_i P_i, 2^k w_i): the weights scaled first, so that w P cannot overflow (weights_internal.hpp).
@@ -147,7 +147,7 @@ Vec3 BezierCurve::derivative(double u, int order) const { return derivatives(u, 
 
 std::pair<BezierCurve, BezierCurve> BezierCurve::split(double u) const {
     require(std::isfinite(u) && u > 0.0 && u < 1.0, "u",
-            [&] { return "the split parameter must lie strictly inside (0, 1), got " + std::to_string(u); });
+            [&] { return "the split parameter must lie strictly inside (0, 1), got " + exact_number(u); });
     // deCasteljau subdivision: the left half's control points run down the top edge of the triangle
     // (P^w_{k,0}), the right half's up its bottom edge (P^w_{n-k,k}).
     const auto table = de_casteljau_table(u);

@@ -43,7 +43,7 @@ Vec4 de_casteljau(const std::vector<Vec4>& points, double t) {
 template <class Where>
 void validate_weight(double weight, const std::string& argument, Where&& where) {
     require(std::isfinite(weight), argument, [&] { return "weight " + where() + " is not a finite number"; });
-    require(weight > 0.0, argument, [&] { return "weight " + where() + " is " + std::to_string(weight) + " but must be > 0"; });
+    require(weight > 0.0, argument, [&] { return "weight " + where() + " is " + exact_number(weight) + " but must be > 0"; });
 }
 
 // "[i][j]", built by appending (GCC 12 reports a false -Wrestrict for "[" + std::to_string(i) at -O3).
@@ -312,7 +312,7 @@ Vec3 BezierSurface::normal(double u, double v) const {
     std::array<double, stride> floors{};
     std::fill(floors.begin() + 1, floors.end(), std::ldexp(size, exponent));
     if (const auto n = detail::limit_normal(skl, a, b, floors, 1.0)) return *n;
-    detail::throw_no_tangent_plane(std::to_string(u), std::to_string(v));
+    detail::throw_no_tangent_plane(exact_number(u), exact_number(v));
 }
 
 }  // namespace ratbez

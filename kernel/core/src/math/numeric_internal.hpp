@@ -3,7 +3,6 @@
 // compensated summation, number and point formatting for error messages. Not installed, not part of the public API.
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -11,9 +10,9 @@
 #include <span>
 #include <sstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
+#include "ratbez/error.hpp"
 #include "ratbez/vec.hpp"
 
 namespace ratbez::detail {
@@ -71,13 +70,8 @@ inline std::string format_point(const Vec3& p) {
     return out.str();
 }
 
-// A double in an error message about a parameter, where the last digit matters (1.0000000000000002 is
-// outside [0, 1]): the shortest text that reads back as the same double.
-inline std::string exact_number(double value) {
-    char buffer[32];
-    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return error == std::errc{} ? std::string(buffer, end) : number(value);
-}
+// A double in an error message about a parameter, where the last digit matters (error.hpp).
+using ratbez::exact_number;
 
 // Work space of `size` T on the stack when size <= N, on the heap beyond: evaluation (basis functions,
 // partials) is the tessellator's hot path and must not allocate for practical degrees. The stack entries are

@@ -1006,7 +1006,9 @@ Estimate estimate_triangles(std::span<const Face> faces, detail::TessellationSet
         if (caller != nullptr && *caller) (*caller)(reached);
     };
     settings.progress = &poll_only;
-    for (int step = 0; step < 24; ++step) {
+    // Up to 4^64 coarser: a tolerance of 1e-30 still gets the one that fits (24 steps stopped at 3e-16 and named
+    // none). A step that does not fit stops at the coarse budget, so the finest ones cost little.
+    for (int step = 0; step < 64; ++step) {
         settings.tolerance *= 4;
         try {
             const double count = static_cast<double>(Tessellator(faces, settings).run().triangles.size());

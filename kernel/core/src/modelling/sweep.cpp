@@ -235,6 +235,34 @@ NurbsSurface joined_along_v(std::vector<NurbsSurface> pieces, const std::vector<
     return NurbsSurface::from_homogeneous(first.degree_u(), p, first.knots_u(), std::move(knots), std::move(net), rational);
 }
 
+// The parts of a surface between its joints: v knots of full multiplicity p (joined_along_v's), where the
+// surface is its parts end to end, so a part is a run of its columns (the joint's column shared with the next)
+// on its knots between the joints, clamped there. Exact: no control point is computed.
+std::vector<NurbsSurface> split_at_joints_v(const NurbsSurface& surface, const std::vector<double>& joints) {
+    const int p = surface.degree_v();
+    const std::vector<double>& knots = surface.knots_v();
+    std::vector<double> ends = joints;
+    ends.push_back(knots.back());
+    std::vector<NurbsSurface> parts;
+    double start = knots.front();
+    std::size_t first_column = 0;
+    for (const double end : ends) {
+        std::vector<double> part_knots(static_cast<std::size_t>(p + 1), start);
+        for (double knot : knots)
+            if (knot > start && knot < end) part_knots.push_back(knot);
+        part_knots.insert(part_knots.end(), static_cast<std::size_t>(p + 1), end);
+        const std::size_t columns = part_knots.size() - static_cast<std::size_t>(p) - 1;
+        std::vector<Vec4> net;
+        for (int i = 0; i < surface.rows(); ++i)
+            for (std::size_t c = 0; c < columns; ++c) net.push_back(surface.homogeneous_point(i, static_cast<int>(first_column + c)));
+        parts.push_back(NurbsSurface::from_homogeneous(surface.degree_u(), p, surface.knots_u(), std::move(part_knots),
+                                                       std::move(net), surface.is_rational()));
+        first_column += columns - 1;
+        start = end;
+    }
+    return parts;
+}
+
 // ---- the rotation-minimising frame along a general path
 
 // The frame at a path parameter with its first two derivatives in that parameter (the trajectories' Hermite
@@ -729,6 +757,7 @@ Sweep sweep_surfaces_unchecked(const std::vector<NurbsCurve>& sections, const Nu
         starts.back() = 1.0;
         result.method = SweepMethod::lines_and_arcs;
         for (std::vector<NurbsSurface>& surfaces : per_section) result.surfaces.push_back(joined_along_v(std::move(surfaces), starts));
+        result.joints.assign(starts.begin() + 1, starts.end() - 1);
         result.end_frame = frame;
         return result;
     }
@@ -851,8 +880,19 @@ Solid sweep(const Profile& profile, const NurbsCurve& path, double tolerance) {
     const Frame& a = swept.start_frame;
     const Vec3 local{dot(normal, a.x_axis), dot(normal, a.y_axis), dot(normal, a.z_axis)};
     const Vec3 end_normal = swept.end_frame.direction_to_world(local);
+    const detail::CapNormals caps{-normal, end_normal / norm(end_normal)};
+    if (!swept.joints.empty()) {
+        // A face per piece of the path (a line, an arc), as Part's Sweep makes one per path edge: the joints are
+        // creases in the surfaces' parameter, which OpenCASCADE would otherwise get as patches.
+        detail::TubeBands bands(swept.joints.size() + 1);
+        for (const NurbsSurface& surface : swept.surfaces) {
+            std::vector<NurbsSurface> parts = split_at_joints_v(surface, swept.joints);
+            for (std::size_t b = 0; b < parts.size(); ++b) bands[b].push_back(std::move(parts[b]));
+        }
+        return detail::tube_solid_in_bands({bands}, caps);
+    }
     const Construction record = swept.construction.get<Construction::Extrusion>() ? swept.construction : Construction{};
-    return detail::tube_solid({swept.surfaces}, detail::CapNormals{-normal, end_normal / norm(end_normal)}, record);
+    return detail::tube_solid({swept.surfaces}, caps, record);
 }
 
 }  // namespace ratbez

@@ -15,30 +15,48 @@ struct TubeLoop {
     VertexPtr first_start, first_end;
 };
 
-TubeLoop tube_loop(const std::vector<NurbsSurface>& lateral, bool capped) {
-    const std::size_t m = lateral.size();
-    // Corner vertices: start[k] = lateral[k]'s (u_min, v_min) corner, end[k] its (u_min, v_max) corner.
-    std::vector<VertexPtr> start, end;
-    for (const NurbsSurface& s : lateral) {
-        start.push_back(make_vertex(project(s.homogeneous_point(0, 0))));
-        end.push_back(capped ? make_vertex(project(s.homogeneous_point(0, s.columns() - 1))) : start.back());
-    }
+// bands[b][k]: band b along the tube, piece k around it. Rows of corner vertices and ring edges between the
+// bands (row b is band b's v_min boundary, the last row the last band's v_max, or row 0 again on a closed
+// tube), and in each band the joint edges between its pieces.
+TubeLoop tube_loop(const std::vector<std::vector<NurbsSurface>>& bands, bool capped) {
+    const std::size_t m = bands.front().size(), rows = bands.size() + 1;
+    // corner[r][k]: piece k's (u_min, v_min) corner in band r; the last row the last band's (u_min, v_max) corners.
+    std::vector<std::vector<VertexPtr>> corner(rows);
+    for (std::size_t r = 0; r + 1 < rows; ++r)
+        for (const NurbsSurface& s : bands[r]) corner[r].push_back(make_vertex(project(s.homogeneous_point(0, 0))));
+    for (const NurbsSurface& s : bands.back())
+        corner.back().push_back(capped ? make_vertex(project(s.homogeneous_point(0, s.columns() - 1)))
+                                       : corner.front()[corner.back().size()]);
+    // ring[r][k]: along piece k at row r, from the v_min side of band r's piece (the last row: v_max of the last).
+    std::vector<std::vector<EdgePtr>> ring(rows);
+    for (std::size_t r = 0; r < rows; ++r)
+        for (std::size_t k = 0; k < m; ++k) {
+            const std::size_t next = (k + 1) % m;
+            if (r + 1 < rows) {
+                const NurbsSurface& s = bands[r][k];
+                ring[r].push_back(make_edge(s.isocurve_v(s.domain_v().min), corner[r][k], corner[r][next]));
+            } else {
+                const NurbsSurface& s = bands.back()[k];
+                ring[r].push_back(capped ? make_edge(s.isocurve_v(s.domain_v().max), corner[r][k], corner[r][next])
+                                         : ring.front()[k]);
+            }
+        }
     TubeLoop loop;
-    std::vector<EdgePtr> joint_edges;
-    for (std::size_t k = 0; k < m; ++k) {
-        const NurbsSurface& s = lateral[k];
-        const std::size_t next = (k + 1) % m;
-        loop.start_edges.push_back(make_edge(s.isocurve_v(s.domain_v().min), start[k], start[next]));
-        loop.end_edges.push_back(capped ? make_edge(s.isocurve_v(s.domain_v().max), end[k], end[next])
-                                        : loop.start_edges.back());
-        joint_edges.push_back(make_edge(s.isocurve_u(s.domain_u().min), start[k], end[k]));
+    for (std::size_t b = 0; b < bands.size(); ++b) {
+        std::vector<EdgePtr> joints;
+        for (std::size_t k = 0; k < m; ++k) {
+            const NurbsSurface& s = bands[b][k];
+            joints.push_back(make_edge(s.isocurve_u(s.domain_u().min), corner[b][k], corner[b + 1][k]));
+        }
+        for (std::size_t k = 0; k < m; ++k)
+            loop.faces.push_back(Face::from_surface(
+                bands[b][k], {Coedge{ring[b][k], false}, Coedge{joints[(k + 1) % m], false},
+                              Coedge{ring[b + 1][k], true}, Coedge{joints[k], true}}));
     }
-    for (std::size_t k = 0; k < m; ++k)
-        loop.faces.push_back(Face::from_surface(
-            lateral[k], {Coedge{loop.start_edges[k], false}, Coedge{joint_edges[(k + 1) % m], false},
-                         Coedge{loop.end_edges[k], true}, Coedge{joint_edges[k], true}}));
-    loop.first_start = start.front();
-    loop.first_end = end.front();
+    loop.start_edges = ring.front();
+    loop.end_edges = ring.back();
+    loop.first_start = corner.front().front();
+    loop.first_end = corner.back().front();
     return loop;
 }
 
@@ -46,11 +64,17 @@ TubeLoop tube_loop(const std::vector<NurbsSurface>& lateral, bool capped) {
 
 Solid tube_solid(const std::vector<std::vector<NurbsSurface>>& loops, const std::optional<CapNormals>& caps,
                  Construction construction) {
+    std::vector<TubeBands> banded;
+    for (const std::vector<NurbsSurface>& lateral : loops) banded.push_back({lateral});
+    return tube_solid_in_bands(banded, caps, std::move(construction));
+}
+
+Solid tube_solid_in_bands(const std::vector<TubeBands>& loops, const std::optional<CapNormals>& caps, Construction construction) {
     std::vector<Face> faces;
     std::vector<std::vector<Coedge>> start_loops, end_loops;
     Vec3 start_origin{}, end_origin{};
-    for (const std::vector<NurbsSurface>& lateral : loops) {
-        TubeLoop loop = tube_loop(lateral, caps.has_value());
+    for (const TubeBands& bands : loops) {
+        TubeLoop loop = tube_loop(bands, caps.has_value());
         for (Face& face : loop.faces) faces.push_back(std::move(face));
         if (start_loops.empty()) {
             start_origin = loop.first_start->point;

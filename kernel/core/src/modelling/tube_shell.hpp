@@ -29,4 +29,10 @@ struct CapNormals {
 Solid tube_solid(const std::vector<std::vector<NurbsSurface>>& loops, const std::optional<CapNormals>& caps,
                  Construction construction = {});
 
+// The same tube in bands along it, one face per surface: bands[b][k] is piece k of the loop over band b (a
+// sweep's piece of path, where the surfaces are only C0), band b's v_max side band b + 1's v_min side; each band
+// shares its ring of edges with the next, built from the later band's v_min side.
+using TubeBands = std::vector<std::vector<NurbsSurface>>;
+Solid tube_solid_in_bands(const std::vector<TubeBands>& loops, const std::optional<CapNormals>& caps, Construction construction = {});
+
 }  // namespace ratbez::detail
