@@ -23,6 +23,7 @@
 #include <TopoDS_Face.hxx>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace ratbez::occt::detail {
@@ -79,14 +80,20 @@ bool honest_tolerance(const TopoDS_Edge& edge, const TopoDS_Face& face, double l
     return true;
 }
 
-bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit) {
+bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit, const Progress& progress) {
+    // Polled edge by edge: one face of a large part (a plate with its holes) held 5 s of the measures.
+    std::vector<std::pair<TopoDS_Edge, const TopoDS_Face*>> uses;
     for (const TopoDS_Face& face : faces)
         for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next())
-            if (!honest_tolerance(TopoDS::Edge(edges.Current()), face, limit)) return false;
+            uses.emplace_back(TopoDS::Edge(edges.Current()), &face);
+    for (std::size_t k = 0; k < uses.size(); ++k) {
+        if (progress) progress(static_cast<double>(k) / static_cast<double>(uses.size()));
+        if (!honest_tolerance(uses[k].first, *uses[k].second, limit)) return false;
+    }
     return true;
 }
 
-SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach) {
+SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach, const Progress& progress) {
     SplitSolid unchanged{solid, {}};
     for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next())
         unchanged.original_face.Bind(faces.Current(), faces.Current());
@@ -123,7 +130,7 @@ SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach) {
             }
         }
         if (BRep_Tool::MaxTolerance(result, TopAbs_EDGE) > kToleranceGrowth * tolerance ||
-            !honest_tolerances(faces, kToleranceGrowth * tolerance))
+            !honest_tolerances(faces, kToleranceGrowth * tolerance, progress))
             return unchanged;
         BRepLib::UpdateTolerances(split.solid, Standard_True);  // vertices and faces cover their raised edges
         // Valid only now: SameParameter's sampled tolerances can be short of BRepCheck's too until measured.

@@ -18,12 +18,15 @@
 
 #include <vector>
 
+#include "ratbez/progress.hpp"
+
 namespace ratbez::occt::detail {
 
 // The edges of `faces` whose p-curve there lies further from the 3D curve than the edge's tolerance (the measure
 // of BOPAlgo_ArgumentAnalyzer's CurveOnSurfaceMode, FreeCAD's BOP check) given that distance as tolerance, if
 // it is at most `limit`; false when one is further. For p-curves made by OpenCASCADE (SameParameter, projection).
-bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit);
+// `progress` (optional) is polled before each face and may throw to stop.
+bool honest_tolerances(const std::vector<TopoDS_Face>& faces, double limit, const Progress& progress = {});
 // The same for one edge on one face.
 bool honest_tolerance(const TopoDS_Edge& edge, const TopoDS_Face& face, double limit);
 
@@ -40,6 +43,7 @@ struct SplitSolid {
 // the rule), and also when OpenCASCADE fails or leaves an invalid shape or other than one solid, or raises an
 // edge's tolerance more than kToleranceGrowth times above `reach` (the largest tolerance a face of the solid may
 // need, ConvertedSolid::tolerance) or its largest edge tolerance.
-SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach);
+// `progress` is polled while the split faces' edges are measured (most of the time on a large part) and may throw.
+SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach, const Progress& progress = {});
 
 }  // namespace ratbez::occt::detail

@@ -10,6 +10,10 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepCheck_Shell.hxx>
 #include <BRepGProp.hxx>
+#include <BRepGProp_Domain.hxx>
+#include <BRepGProp_Face.hxx>
+#include <BRepGProp_Sinert.hxx>
+#include <BRepGProp_Vinert.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -36,10 +40,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "child_process.hpp"
 #include "handout.hpp"
@@ -47,6 +53,7 @@
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "ratbez/occt/topology.hpp"
+#include "ratbez/properties.hpp"
 #include "swept_solids.hpp"
 
 namespace ratbez::occt {
@@ -275,17 +282,46 @@ bool agree(double ours, double occt, double relative_limit, double slack) {
     return std::abs(ours - occt) <= std::max(relative_limit * std::max(std::abs(ours), std::abs(occt)), slack);
 }
 
-// OpenCASCADE's volume or area of the converted solid (BRepGProp::VolumeProperties / SurfaceProperties). Its
-// adaptive Gauss integration converges slowly on rational B-spline faces: a torus face converted exactly is
-// 2e-6 off at eps 1e-9 and 2e-7 at 1e-11, where the analytic torus is exact at 1e-15. Where the first answer
-// disagrees with ours it is asked again at 1e-11 and 1e-13 before the disagreement is reported.
-template <class Measure>
-double occt_measure(const TopoDS_Shape& shape, Measure&& measure, double ours, double relative_limit, double slack) {
+// OCCT's volume or area of the shape (Inertia: BRepGProp_Vinert or BRepGProp_Sinert) to the relative `eps`, as
+// BRepGProp::VolumeProperties and SurfaceProperties compute it (BRepGProp.cxx: the same faces, about the same point,
+// the mean of the vertices), face by face here so that `progress` is polled between faces: on a large part the
+// adaptive rule ran 14 s with no poll, and a Ctrl-C waited that long. (BRepGProp on each face alone takes the volume
+// about that face's own vertices, and the sum is no volume.)
+template <class Inertia>
+double occt_mass(const TopoDS_Shape& shape, double eps, const Progress& progress) {
+    gp_XYZ mean(0, 0, 0);
+    int vertices = 0;
+    for (TopExp_Explorer it(shape, TopAbs_VERTEX); it.More(); it.Next(), ++vertices)
+        mean += BRep_Tool::Pnt(TopoDS::Vertex(it.Current())).XYZ();
+    if (vertices > 0) mean /= vertices;
+    std::vector<TopoDS_Face> faces;
+    for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) faces.push_back(TopoDS::Face(it.Current()));
+    Inertia inertia;
+    inertia.SetLocation(gp_Pnt(mean));
+    GProp_GProps sum(gp_Pnt(0, 0, 0).Transformed(shape.Location().Transformation()));
+    BRepGProp_Face face;
+    BRepGProp_Domain domain;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        if (progress) progress(static_cast<double>(f) / static_cast<double>(faces.size()));
+        face.Load(faces[f]);
+        domain.Init(faces[f]);
+        inertia.Perform(face, domain, eps);
+        sum.Add(inertia);
+    }
+    return sum.Mass();
+}
+
+// OpenCASCADE's volume or area of the converted solid (occt_mass). Its adaptive Gauss integration converges slowly
+// on rational B-spline faces: a torus face converted exactly is 2e-6 off at eps 1e-9 and 2e-7 at 1e-11, where the
+// analytic torus is exact at 1e-15. Where the first answer disagrees with ours it is asked again at 1e-11 and 1e-13
+// before the disagreement is reported.
+template <class Inertia>
+double occt_measure(const TopoDS_Shape& shape, double ours, double relative_limit, double slack, const Progress& progress) {
+    constexpr double kEps[] = {kPropertiesEps, 1e-11, 1e-13};
+    constexpr double kPasses = static_cast<double>(std::size(kEps));
     double value = 0;
-    for (const double eps : {kPropertiesEps, 1e-11, 1e-13}) {
-        GProp_GProps properties;
-        measure(shape, properties, eps);
-        value = properties.Mass();
+    for (std::size_t pass = 0; pass < std::size(kEps); ++pass) {
+        value = occt_mass<Inertia>(shape, kEps[pass], progress_part(progress, pass / kPasses, (pass + 1) / kPasses));
         if (agree(ours, value, relative_limit, slack)) break;
     }
     return value;
@@ -466,15 +502,17 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
     const auto report_progress = [&](double fraction) {
         if (options.progress) options.progress(fraction);
     };
-    const ConvertedSolid converted = convert(solid, options.convert);
+    // Polled face by face from here on (a Ctrl-C on a large part waited 14 s for the conversion and the split).
+    const ConvertedSolid converted = convert(solid, options.convert, progress_part(options.progress, 0, 0.04));
     // Validity, closure, OCCT's measures and the BOP analysis are of the solid as files and brep_string hand it
     // out (handout.hpp: faces still C0 inside split, or OCCT's own primitive); the evaluation deviation goes
     // through convert's maps (the split only segments surfaces, exactly; a primitive's analytic surface is
     // measured against ours by the analytic row).
-    const detail::SplitSolid handed = detail::handed_out(solid, converted, options.convert);
+    const detail::SplitSolid handed =
+        detail::handed_out(solid, converted, options.convert, progress_part(options.progress, 0.04, 0.08));
     // Our own measures (the slack depends on the area), taken once, before OpenCASCADE may raise.
-    report.volume = solid.volume();
-    report.area = solid.area();
+    report.volume = enclosed_volume(solid, progress_part(options.progress, 0.08, 0.09));
+    report.area = surface_area(solid, progress_part(options.progress, 0.09, 0.1));
     const Slack slack = tolerance_slack(solid, report.area);
     report_progress(0.1);
 
@@ -505,12 +543,10 @@ CheckReport check(const Solid& solid, const CheckOptions& options) {
         }
 
         report_progress(0.8);
-        report.occt_volume = occt_measure(
-            handed.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::VolumeProperties(s, p, eps); },
-            report.volume, options.volume_limit, slack.volume);
-        report.occt_area = occt_measure(
-            handed.solid, [](const TopoDS_Shape& s, GProp_GProps& p, double eps) { BRepGProp::SurfaceProperties(s, p, eps); },
-            report.area, options.volume_limit, slack.area);
+        report.occt_volume = occt_measure<BRepGProp_Vinert>(handed.solid, report.volume, options.volume_limit, slack.volume,
+                                                            progress_part(options.progress, 0.8, 0.825));
+        report.occt_area = occt_measure<BRepGProp_Sinert>(handed.solid, report.area, options.volume_limit, slack.area,
+                                                          progress_part(options.progress, 0.825, 0.85));
         report_progress(0.85);
         if (options.bop_analysis)
             bop_analysis(converted, handed, report, options.bop_seconds, progress_part(options.progress, 0.85, 0.95));

@@ -7,12 +7,15 @@
 
 #include "c0_split.hpp"
 #include "ratbez/brep.hpp"
+#include "ratbez/progress.hpp"
 #include "ratbez/occt/convert_options.hpp"
 #include "ratbez/occt/topology.hpp"
 
 namespace ratbez::occt::detail {
 
 // Every face of the result traced to the face of `converted` it is (a piece of), so check() can name ours.
-SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const ConvertOptions& options);
+// `progress` is polled while faces are split (c0_split.hpp) and may throw to stop.
+SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const ConvertOptions& options,
+                      const Progress& progress = {});
 
 }  // namespace ratbez::occt::detail

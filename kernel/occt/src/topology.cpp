@@ -113,8 +113,8 @@ Handle(Geom2d_Curve) linear_pcurve(const gp_Pnt2d& a, const gp_Pnt2d& b, double 
 class Converter {
 public:
     // patch_rough: natural conversion hands rough faces over as Bézier patches (plan_arcs).
-    Converter(const Solid& solid, const ConvertOptions& options, bool patch_rough)
-        : solid_(solid), options_(options), patch_rough_(patch_rough) {
+    Converter(const Solid& solid, const ConvertOptions& options, bool patch_rough, const Progress& progress)
+        : solid_(solid), options_(options), patch_rough_(patch_rough), progress_(progress) {
         const Box box = solid.bounding_box();
         // Our geometry is exact to rounding, but OCCT evaluates an edge's 3D curve and the face
         // surface through its pcurve by different routes, and with rational weights 10^+-3 these
@@ -142,6 +142,8 @@ public:
             if (!patched_.empty()) plan_patches([this](std::size_t i) { return patched_.count(i) > 0; });
         }
         for (std::size_t i = 0; i < faces.size(); ++i) {
+            // The faces are the first half of the work, the read faces' measures the second; may throw: a stop.
+            if (progress_) progress_(0.5 * static_cast<double>(i) / static_cast<double>(faces.size()));
             out_.first_face.push_back(out_.faces.size());
             current_shell_ = shell_of_face_[i];
             try {
@@ -173,7 +175,7 @@ public:
             builder_.SameRange(occt_edge, Standard_True);
             builder_.SameParameter(occt_edge, Standard_True);
         }
-        measure_read_tolerances();
+        measure_read_tolerances(progress_part(progress_, 0.5, 1));
         builder_.MakeSolid(out_.solid);
         for (TopoDS_Shell& shell : out_.shells) {
             shell.Closed(Standard_True);
@@ -191,7 +193,8 @@ private:
     // OpenCASCADE reads at 1e-7 went out with every tolerance at its worst face's 5.8e-3 before, and the BOP check
     // found short edges elsewhere "TooSmallEdge" and near vertices "SelfIntersect". Faces of exact constructions
     // (tolerance 0) keep the base tolerance.
-    void measure_read_tolerances() {
+    // `progress` is polled face by face (the measures took 6 s on a large read part).
+    void measure_read_tolerances(const Progress& progress) {
         for_each_read_face([&](const TopoDS_Face& face, double tolerance) {
             for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
                 const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
@@ -199,7 +202,7 @@ private:
                     builder_.UpdateEdge(edge, tolerance);
                 cover_ends(edge, face);
             }
-        });
+        }, progress);
         // Validity first: a face the measured tolerances leave invalid (BRepCheck: a wire whose p-curves cross
         // near a vertex further from it than the vertex's measured tolerance, as on a 3D printer part from the
         // public campaign) gives its edges and vertices its own tolerance, as the file did.
@@ -215,9 +218,11 @@ private:
     // visit(OCCT face, its read face's tolerance) for every OCCT face made from a face read with more than the base
     // tolerance.
     template <class Visitor>
-    void for_each_read_face(Visitor&& visit) const {
+    // `progress` (optional) is polled before each face.
+    void for_each_read_face(Visitor&& visit, const Progress& progress = {}) const {
         const auto& faces = solid_.faces();
         for (std::size_t i = 0; i < faces.size(); ++i) {
+            if (progress) progress(static_cast<double>(i) / static_cast<double>(faces.size()));
             if (!(faces[i].tolerance() > base_tolerance_)) continue;
             for (std::size_t k = out_.first_face[i]; k < out_.first_face[i + 1]; ++k)
                 visit(out_.faces[k], faces[i].tolerance());
@@ -914,6 +919,7 @@ private:
     const Solid& solid_;
     const ConvertOptions& options_;
     const bool patch_rough_;
+    const Progress& progress_;  // polled before each face
     BRep_Builder builder_;
     ConvertedSolid out_;
     std::vector<std::pair<TopoDS_Edge, Interval>> ranges_;             // every non-degenerate edge made
@@ -939,21 +945,22 @@ private:
 
 }  // namespace
 
-ConvertedSolid convert(const Solid& solid, const ConvertOptions& options) {
-    if (options.bezier_faces) return Converter(solid, options, true).run();
+ConvertedSolid convert(const Solid& solid, const ConvertOptions& options, const Progress& progress) {
+    if (options.bezier_faces) return Converter(solid, options, true, progress).run();
     // The rough faces' patches (plan_arcs) go through the Bézier-patch construction, which OpenCASCADE still
     // refuses on some faces read back from files (a patch edge with knots too close): then every face goes over
     // whole, as it did before rough faces were patched, rather than not at all.
     try {
-        return Converter(solid, options, true).run();
+        return Converter(solid, options, true, progress).run();
     } catch (const Error&) {
-        return Converter(solid, options, false).run();
+        return Converter(solid, options, false, progress).run();
     }
 }
 
 namespace detail {
 
-SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const ConvertOptions& options) {
+SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const ConvertOptions& options,
+                      const Progress& progress) {
     if (options.analytic_primitives && !options.bezier_faces)
         if (const std::optional<TopoDS_Solid> primitive = analytic_primitive(solid)) {
             SplitSolid handed{*primitive, {}};
@@ -969,13 +976,13 @@ SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const
         std::optional<SplitSolid> rebuilt = with_sphere_faces(solid, converted);
         if (!rebuilt) rebuilt = with_circle_edges(solid, converted);
         if (rebuilt) {
-            SplitSolid split = split_at_c0_knots(rebuilt->solid, converted.tolerance);
+            SplitSolid split = split_at_c0_knots(rebuilt->solid, converted.tolerance, progress);
             for (TopTools_DataMapIteratorOfDataMapOfShapeShape it(split.original_face); it.More(); it.Next())
                 split.original_face.ChangeFind(it.Key()) = rebuilt->original_face.Find(it.Value());
             return split;
         }
     }
-    return split_at_c0_knots(converted.solid, converted.tolerance);
+    return split_at_c0_knots(converted.solid, converted.tolerance, progress);
 }
 
 }  // namespace detail

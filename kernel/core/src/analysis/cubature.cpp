@@ -139,7 +139,7 @@ using Problem = Cubature::Problem;
 constexpr std::size_t kCellsPerPiece = 16;
 
 struct Budget {
-    static constexpr std::size_t kCellsPerPoll = 4096;
+    static constexpr std::size_t kCellsPerPoll = 256;
     std::string_view argument;
     bool quick = false;
     const Progress* progress = nullptr;

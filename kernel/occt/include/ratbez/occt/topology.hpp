@@ -65,6 +65,7 @@
 #include <vector>
 
 #include "ratbez/brep.hpp"
+#include "ratbez/progress.hpp"
 #include "ratbez/occt/convert_options.hpp"
 
 namespace ratbez::occt {
@@ -101,7 +102,8 @@ struct ConvertedSolid {
     bool gprop_tolerance_reached = true;              // bezier_faces: every patch met kGPropTolerance
 };
 
-ConvertedSolid convert(const Solid& solid, const ConvertOptions& options = {});
+// `progress` is polled before each face (the fraction of faces done) and may throw to stop the conversion.
+ConvertedSolid convert(const Solid& solid, const ConvertOptions& options = {}, const Progress& progress = {});
 // The solid as handed out (files, brep_string): convert's, with any face still C0 inside (a face trimmed on a
 // cylinder, cone or sphere read from a file) split at those knots for OpenCASCADE's fixed Gauss rule
 // (src/c0_split.hpp); convert's maps then no longer name its faces one to one.
