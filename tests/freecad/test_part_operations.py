@@ -57,7 +57,7 @@ LOFT_CHANGE = 2e-2  # relative, change of volume of a loft against Part's loft
 suite = Suite()
 
 # (kind, operation): the problem RatBez shows where Part works (measured with FreeCAD 0.20.2). The primitives, and
-# extrusions and revolutions of lines and arcs, go to FreeCAD as OpenCASCADE builds them by default (planes,
+# extrusions, revolutions and sweeps of lines and arcs, go to FreeCAD as OpenCASCADE builds them by default (planes,
 # cylinders, cones, spheres, tori) and behave as Part's; the primitives' " B-spline" kinds are the kernel's faces.
 # "BOPAlgo GeomAbs_C0": the result is valid and of the right volume, but FreeCAD's BOP check flags a face: OCCT
 # offsets a B-spline face by an offset surface one order less continuous. Straight directions go over as cubics
@@ -71,18 +71,13 @@ KNOWN_FAILURES = (
     ("sphere B-spline", "offset+", "BOPAlgo SelfIntersect"),
     ("cylinder B-spline", "thickness", "BOPAlgo GeomAbs_C0"),
     ("cone B-spline", "thickness", "BOPAlgo GeomAbs_C0"),
-    ("sweep along a line and an arc", "thickness", "BOPAlgo GeomAbs_C0"),
 )
 
 # (kind, operation, problems): where RatBez is short of Part and of Part's own B-spline form (toNurbs) too, not yet
-# mended; each problem shown must contain one of the "|"-separated texts. Strict as KNOWN_FAILURES. The line-and-arc
-# sweep's Fillet: Part's own B-spline form (toNurbs) gives 54 faces as RatBez does, where Part's analytic cones give
-# 50, and one corner blend at a joint of the path is flagged SelfIntersect or not as the arc faces' B-spline form
-# changes (measured: flagged with their one-span quintic refined for OCCT's rule, clean with either alone). OCCT's own
-# prism and revolution of each path piece, analytic as Part's, would mend both.
-OPEN_GAPS = (
-    ("sweep along a line and an arc", "fillet", "BOPAlgo SelfIntersect|54 faces, Part's 50"),
-)
+# mended; each problem shown must contain one of the "|"-separated texts. Strict as KNOWN_FAILURES. (Empty since the
+# line-and-arc sweep goes over as OCCT's pipe, on Part's planes and cones: its Fillet had 54 faces against Part's 50
+# and a corner blend flagged SelfIntersect, its Thickness GeomAbs_C0.)
+OPEN_GAPS = ()
 
 # (kind, operation) where Part itself gives no valid solid of the right volume: RatBez is not required to work.
 PART_FAILS = (

@@ -396,7 +396,7 @@ double conic_segment_fraction(double w) {
 // lateral area times angle / 360 plus its two planar caps of area A: surface and planar (Green) faces
 // checked against each other. BRepGProp at its default accuracy agrees at w = 1e3 only (6e-9 measured,
 // 1e-7 asserted); it measured 9e-4 off at 1e6 and 17% at 1e12, where the converted B-rep is not valid
-// either: beyond 1e3 its disagreement is printed, not asserted.
+// either: beyond 1e3 it is not run (it was printed, and took most of the test's time).
 TEST(HostileWeights, ExtremeWeightsGiveExactVolume) {
     for (double w : {1e3, 1e6, 1e12}) {
         const double profile_area = 4 + conic_segment_fraction(w) + conic_segment_fraction(1 / w);
@@ -406,19 +406,18 @@ TEST(HostileWeights, ExtremeWeightsGiveExactVolume) {
             const Solid solid = revolve(Profile(extreme_weight_ring(w, {1, 1 / w, 1})), {}, {0, 0, 1}, angle);
             const double pappus = 2 * std::numbers::pi * 3 * profile_area * angle / 360;
             const double area = full_area * angle / 360 + (angle < 360 ? 2 * profile_area : 0.0);
+            EXPECT_NEAR(solid.volume(), pappus, 1e-10 * pappus) << what;
+            EXPECT_NEAR(solid.area(), area, 1e-10 * area) << what;
+            // OpenCASCADE's side up to 1e3 only: beyond (where the B-rep is not valid either) its measures, asked
+            // again at 1e-11 and 1e-13 as they disagree, and its BOP analysis walking the crowded conic took most of
+            // this test's time, and nothing of them is asserted there.
+            if (w > 1e3) continue;
             occt::CheckOptions options;
             options.grid = 15;
-            // The BOP analysis reads nothing this test asserts, and beyond 1e3 (where the B-rep is not valid either)
-            // its face self-intersection search walks the crowded conic for a minute.
-            options.bop_analysis = w <= 1e3;
             const occt::CheckReport report = occt::check(solid, options);
-            EXPECT_NEAR(report.volume, pappus, 1e-10 * pappus) << what;
-            EXPECT_NEAR(report.area, area, 1e-10 * area) << what;
-            if (w <= 1e3) {
-                EXPECT_TRUE(report.valid) << what << "\n" << occt::format_report(report);
-                EXPECT_NEAR(report.occt_volume, report.volume, 1e-7 * pappus) << what << "\n" << occt::format_report(report);
-                EXPECT_NEAR(report.occt_area, report.area, 1e-7 * area) << what << "\n" << occt::format_report(report);
-            }
+            EXPECT_TRUE(report.valid) << what << "\n" << occt::format_report(report);
+            EXPECT_NEAR(report.occt_volume, report.volume, 1e-7 * pappus) << what << "\n" << occt::format_report(report);
+            EXPECT_NEAR(report.occt_area, report.area, 1e-7 * area) << what << "\n" << occt::format_report(report);
             std::cout << "[ measured ] " << what << ": relative to Pappus, volume " << report.volume / pappus - 1
                       << ", OCCT volume " << report.occt_volume / pappus - 1 << "; OCCT area relative to ours "
                       << report.occt_area / report.area - 1 << "\n";

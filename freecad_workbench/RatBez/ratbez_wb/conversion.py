@@ -399,8 +399,8 @@ def shape_from_solid(solid, analytic=None):
     """The solid as a valid Part.Solid, through the kernel's one conversion to OpenCASCADE (ratbez.brep_string,
     as STEP and BREP files get it): when `analytic` (None: the workbench preference,
     preferences.analytic_primitives), a cylinder, cone, sphere or torus as OpenCASCADE's own primitive on its
-    analytic surfaces and an extrusion or revolution as its prism or revolution of the profile, as Part makes
-    them; else, and for every other solid, the exact B-spline B-rep, one face per face of the kernel.
+    analytic surfaces, an extrusion or revolution as its prism or revolution of the profile and a sweep along
+    lines and arcs as its pipe, as Part makes them; else, and for every other solid, the exact B-spline B-rep, one face per face of the kernel.
 
     Why analytic by default: OpenCASCADE exempts its analytic surfaces from the BOP check's face
     self-intersection search, which flags a B-spline sphere (OpenCASCADE's own toNurbs() sphere too) at some

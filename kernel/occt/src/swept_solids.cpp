@@ -5,6 +5,8 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepOffsetAPI_MakePipe.hxx>
 #include <BRepGProp.hxx>
 #include <BRepLib.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
@@ -31,6 +33,7 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <set>
 
 #include "ratbez/construction.hpp"
 #include "ratbez/occt/convert_options.hpp"
@@ -58,6 +61,11 @@ public:
     // The segment of the axis between two vertices of ours that lie on it (closes a profile that ends there).
     TopoDS_Edge axis_segment(const Vertex& from, const Vertex& to) {
         return BRepBuilderAPI_MakeEdge(vertex(from), vertex(to)).Edge();
+    }
+    // The coedge as an OCCT line or circle, or nullopt when its edge is neither (a path piece of a pipe).
+    std::optional<TopoDS_Edge> line_or_arc(const Coedge& c) {
+        if (!is_segment(*c.edge, tolerance_) && !edge_circle(*c.edge, tolerance_)) return std::nullopt;
+        return coedge(c);
     }
     // The edge built for ours, if it was.
     std::optional<TopoDS_Edge> built(const Edge& e) const {
@@ -311,6 +319,125 @@ std::optional<FacesInOrder> revolution(const Solid& solid, const Construction::R
     }, edges, swept_from, start);
 }
 
+// The edges of `solid` at each vertex.
+std::map<const Vertex*, std::vector<const Edge*>> edges_at(const Solid& solid) {
+    std::map<const Vertex*, std::vector<const Edge*>> at;
+    for (const EdgePtr& edge : solid.edges()) {
+        if (edge->degenerate) continue;
+        at[edge->start.get()].push_back(edge.get());
+        if (edge->end != edge->start) at[edge->end.get()].push_back(edge.get());
+    }
+    return at;
+}
+
+// The unit tangent of the edge leaving (or, `arriving`, reaching) the vertex it starts or ends at, along the travel.
+Vec3 travel_tangent(const Edge& e, const Vertex& v, bool arriving) {
+    const Interval d = e.curve.domain();
+    const bool at_start = e.start.get() == &v;
+    const Vec3 t = e.curve.derivative(at_start ? d.min : d.max);
+    // Leaving from the start, or arriving at the end, runs with the curve.
+    return (at_start != arriving ? t : -t) / norm(t);
+}
+
+// A tube swept along lines and arcs (sweep.hpp's SweepMethod::lines_and_arcs, built as tube_solid_in_bands lays it
+// out: the lateral faces band by band along the path, piece by piece round the profile, then the start and the end
+// cap): OCCT's pipe of the start cap along the path of one profile vertex, its edges OCCT's lines and circles, as
+// Part's Sweep of a sketch's line and arc makes it (planes, cylinders, cones, tori). The vertex's path gives the same
+// rigid motion as the sweep's own (constant along a line, a turn about the arc's axis), and OCCT's pipe (corrected
+// Frenet frame) the same: the rotation-minimising frame of lines and arcs. On B-spline faces a Part Fillet of the
+// hexagon's sweep had 54 faces and a corner blend flagged SelfIntersect; on these, Part's 50 and clean.
+std::optional<FacesInOrder> pipe(const Solid& solid, ProfileEdges& edges) {
+    const auto& faces = solid.faces();
+    std::vector<std::size_t> planar;
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        if (faces[i].kind() == Face::Kind::planar) planar.push_back(i);
+        else if (faces[i].kind() != Face::Kind::surface) return std::nullopt;
+    if (planar.size() != 2 || planar[0] != faces.size() - 2 || planar[1] != faces.size() - 1) return std::nullopt;
+    const Face& start_cap = faces[planar[0]];
+    const Face& end_cap = faces[planar[1]];
+    if (start_cap.loops().size() != 1 || end_cap.loops().size() != 1) return std::nullopt;
+    const std::vector<Coedge>& profile = start_cap.loops().front();
+    const std::size_t m = profile.size();
+    if (m == 0 || (faces.size() - 2) % m != 0) return std::nullopt;
+    const std::size_t bands = (faces.size() - 2) / m;
+
+    // The path of the profile's first vertex: from the start cap to the end cap, each step the edge that runs on
+    // tangentially (the path is G1; the ring edges between bands cross it).
+    std::set<const Edge*> on_caps;
+    for (const Face* cap : {&start_cap, &end_cap})
+        for (const Coedge& c : cap->loops().front()) on_caps.insert(c.edge.get());
+    std::set<const Vertex*> end_vertices;
+    for (const Coedge& c : end_cap.loops().front()) end_vertices.insert({c.edge->start.get(), c.edge->end.get()});
+    const auto at = edges_at(solid);
+    const Vertex* vertex = profile.front().reversed ? profile.front().edge->end.get() : profile.front().edge->start.get();
+    std::vector<Coedge> path;
+    while (!end_vertices.count(vertex)) {
+        if (path.size() == bands) return std::nullopt;
+        const Edge* next = nullptr;
+        for (const Edge* e : at.at(vertex)) {
+            if (on_caps.count(e) || (!path.empty() && e == path.back().edge.get())) continue;
+            if (!path.empty() && dot(travel_tangent(*e, *vertex, false), travel_tangent(*path.back().edge, *vertex, true)) < 1 - 1e-9)
+                continue;
+            if (next) return std::nullopt;  // two ways on
+            next = e;
+        }
+        if (!next) return std::nullopt;
+        const bool reversed = next->start.get() != vertex;
+        // The solid's own shared pointer to the edge, for the Coedge.
+        EdgePtr shared;
+        for (const EdgePtr& e : solid.edges())
+            if (e.get() == next) shared = e;
+        path.push_back(Coedge{shared, reversed});
+        vertex = reversed ? next->start.get() : next->end.get();
+    }
+    if (path.size() != bands) return std::nullopt;
+
+    BRepBuilderAPI_MakeWire spine;
+    std::vector<TopoDS_Edge> spine_edges;
+    for (const Coedge& c : path) {
+        const std::optional<TopoDS_Edge> e = edges.line_or_arc(c);
+        if (!e) return std::nullopt;
+        spine.Add(*e);
+        if (!spine.IsDone()) return std::nullopt;
+        spine_edges.push_back(*e);
+    }
+    const std::optional<TopoDS_Face> base = planar_face(edges, start_cap);
+    if (!base) return std::nullopt;
+    BRepOffsetAPI_MakePipe made(spine.Wire(), *base);
+    if (!made.IsDone()) return std::nullopt;
+    const TopoDS_Solid occt = oriented(made.Shape());
+    if (occt.IsNull()) return std::nullopt;
+
+    // Face (band b, piece k) is what the pipe made of spine edge b and the profile edge piece k shares with the start
+    // cap; the caps are the pipe's first and last shapes. (Checked on ours by analytic_primitive.)
+    FacesInOrder result{occt, std::vector<TopoDS_Face>(faces.size())};
+    for (std::size_t k = 0; k < m; ++k) {
+        const Face& first = faces[k];
+        const Coedge* shared = nullptr;
+        for (const Coedge& c : profile)
+            for (const Coedge& side : first.sides())
+                if (side.edge == c.edge) shared = &c;
+        if (!shared) return std::nullopt;
+        const std::optional<TopoDS_Edge> profile_edge = edges.built(*shared->edge);
+        if (!profile_edge) return std::nullopt;
+        for (std::size_t b = 0; b < bands; ++b) {
+            const TopoDS_Shape generated = made.Generated(spine_edges[b], *profile_edge);
+            if (generated.IsNull() || generated.ShapeType() != TopAbs_FACE) return std::nullopt;
+            const std::optional<TopoDS_Face> face = in_solid(occt, generated);
+            if (!face) return std::nullopt;
+            result.faces[b * m + k] = *face;
+        }
+    }
+    const std::optional<TopoDS_Face> first = in_solid(occt, made.FirstShape()), last = in_solid(occt, made.LastShape());
+    if (!first || !last) return std::nullopt;
+    result.faces[planar[0]] = *first;
+    result.faces[planar[1]] = *last;
+    int count = 0;
+    for (TopExp_Explorer it(occt, TopAbs_FACE); it.More(); it.Next()) ++count;
+    if (count != static_cast<int>(faces.size())) return std::nullopt;
+    return result;
+}
+
 // Whether OCCT's fixed rule (FreeCAD's Shape.Volume and Area) reads the sweep's volume and area as the kernel
 // measures the solid, to kGPropTolerance. Planes, cylinders, cones, spheres and tori it reads to rounding; its swept
 // surfaces (a revolved B-spline, an oblique extrusion of an arc) sometimes far worse (an oblique extrusion of a
@@ -362,6 +489,9 @@ std::optional<FacesInOrder> swept_solid(const Solid& solid) {
         } else if (const auto* r = solid.construction().get<Construction::Revolution>()) {
             ProfileEdges edges(tolerance, solid.construction());
             swept = revolution(solid, *r, edges);
+        } else if (solid.construction().kind() == "none") {
+            ProfileEdges edges(tolerance, solid.construction());
+            swept = pipe(solid, edges);
         }
         if (swept && reads_right(swept->solid, solid)) return swept;
     } catch (const Standard_Failure&) {
