@@ -2,6 +2,7 @@
 
 #include "swept_solids.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
@@ -64,8 +65,10 @@ public:
     }
     // The coedge as an OCCT line or circle, or nullopt when its edge is neither (a path piece of a pipe).
     std::optional<TopoDS_Edge> line_or_arc(const Coedge& c) {
-        if (!is_segment(*c.edge, tolerance_) && !edge_circle(*c.edge, tolerance_)) return std::nullopt;
-        return coedge(c);
+        const std::optional<TopoDS_Edge> e = coedge(c);
+        if (!e) return std::nullopt;
+        const GeomAbs_CurveType type = BRepAdaptor_Curve(*e).GetType();
+        return type == GeomAbs_Line || type == GeomAbs_Circle ? e : std::nullopt;
     }
     // The edge built for ours, if it was.
     std::optional<TopoDS_Edge> built(const Edge& e) const {
@@ -320,12 +323,12 @@ std::optional<FacesInOrder> revolution(const Solid& solid, const Construction::R
 }
 
 // The edges of `solid` at each vertex.
-std::map<const Vertex*, std::vector<const Edge*>> edges_at(const Solid& solid) {
-    std::map<const Vertex*, std::vector<const Edge*>> at;
+std::map<const Vertex*, std::vector<EdgePtr>> edges_at(const Solid& solid) {
+    std::map<const Vertex*, std::vector<EdgePtr>> at;
     for (const EdgePtr& edge : solid.edges()) {
         if (edge->degenerate) continue;
-        at[edge->start.get()].push_back(edge.get());
-        if (edge->end != edge->start) at[edge->end.get()].push_back(edge.get());
+        at[edge->start.get()].push_back(edge);
+        if (edge->end != edge->start) at[edge->end.get()].push_back(edge);
     }
     return at;
 }
@@ -373,9 +376,9 @@ std::optional<FacesInOrder> pipe(const Solid& solid, ProfileEdges& edges) {
     std::vector<Coedge> path;
     while (!end_vertices.count(vertex)) {
         if (path.size() == bands) return std::nullopt;
-        const Edge* next = nullptr;
-        for (const Edge* e : at.at(vertex)) {
-            if (on_caps.count(e) || (!path.empty() && e == path.back().edge.get())) continue;
+        EdgePtr next;
+        for (const EdgePtr& e : at.at(vertex)) {
+            if (on_caps.count(e.get()) || (!path.empty() && e == path.back().edge)) continue;
             if (!path.empty() && dot(travel_tangent(*e, *vertex, false), travel_tangent(*path.back().edge, *vertex, true)) < 1 - 1e-9)
                 continue;
             if (next) return std::nullopt;  // two ways on
@@ -383,11 +386,7 @@ std::optional<FacesInOrder> pipe(const Solid& solid, ProfileEdges& edges) {
         }
         if (!next) return std::nullopt;
         const bool reversed = next->start.get() != vertex;
-        // The solid's own shared pointer to the edge, for the Coedge.
-        EdgePtr shared;
-        for (const EdgePtr& e : solid.edges())
-            if (e.get() == next) shared = e;
-        path.push_back(Coedge{shared, reversed});
+        path.push_back(Coedge{next, reversed});
         vertex = reversed ? next->start.get() : next->end.get();
     }
     if (path.size() != bands) return std::nullopt;
