@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepCheck_Analyzer.hxx>
@@ -41,10 +42,12 @@
 #include <cctype>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "build_paths.hpp"
+#include "occt_test_support.hpp"
 #include "ratbez/deviation.hpp"
 #include "ratbez/export/export.hpp"
 #include "ratbez/export/mesh_checks.hpp"
@@ -161,7 +164,7 @@ TEST_P(CorpusModel, ReadsWithOpenCascadesVolumeAndPassesItsCheck) {
     // (the check runs on the solid as handed out, faces still C0 inside split there; issue 25: it checked the
     // unsplit one and flagged 12 models), no self-intersection, no small edge.
     // sphere_minus_box's face trimmed on a sphere with a pole drew "BOPAlgo SelfIntersect" as a B-spline; it goes
-    // over on OCCT's sphere now (sphere_faces.hpp), as the whole sphere part_sphere goes over as OCCT's own.
+    // over on OCCT's sphere now (elementary_faces.hpp), as the whole sphere part_sphere goes over as OCCT's own.
     occt::CheckOptions options;
     options.bop_analysis = !is_brep(GetParam());
     for (const Solid& solid : solids) {
@@ -248,9 +251,25 @@ TEST_P(CorpusModel, RoundTripsThroughStep) {
 
 // What the files hold (occt::to_occt) is read right by OpenCASCADE's fixed Gauss rule, what FreeCAD's Shape.Volume
 // and Area use: no face left C0 inside (a face trimmed on a cylinder, cone or sphere is split at its surface's
-// C0 knots, kernel/occt/src/c0_split.hpp; whole, FreeCAD's sphere_minus_box read 2.5e-3 off in area).
+// C0 knots, kernel/occt/src/c0_split.hpp; whole, FreeCAD's sphere_minus_box read 2.5e-3 off in area), to 1e-6; a
+// solid whose faces go back on the file's own cylinders, cones and tori (elementary_faces.hpp) to within 4 times
+// the rule's error on OpenCASCADE's reading of the file itself (18 points across such a face: cylinder_cut_cylinder
+// 3.5e-6 ours, 1.6e-6 its own), and to issue 25's 1e-4 in any case.
 TEST_P(CorpusModel, WrittenSolidsAreReadRightByTheFixedRule) {
-    for (const Solid& solid : read_all(GetParam())) {
+    const std::vector<Solid> solids = read_all(GetParam());
+    // The rule's relative error on OpenCASCADE's own reading of the file, over all its solids.
+    double exact_volume = 0, exact_area = 0;
+    for (const Solid& solid : solids) exact_volume += solid.volume(), exact_area += solid.area();
+    GProp_GProps own_volume, own_area;
+    const TopoDS_Shape own = occt_shape(reference_file(GetParam()));
+    for (TopExp_Explorer it(own, TopAbs_SOLID); it.More(); it.Next()) {
+        BRepGProp::VolumeProperties(it.Current(), own_volume);
+        BRepGProp::SurfaceProperties(it.Current(), own_area);
+    }
+    const bool own_solids = TopExp_Explorer(own, TopAbs_SOLID).More();
+    const double own_volume_error = own_solids ? std::abs(own_volume.Mass() - exact_volume) / exact_volume : 0;
+    const double own_area_error = own_solids ? std::abs(own_area.Mass() - exact_area) / exact_area : 0;
+    for (const Solid& solid : solids) {
         SCOPED_TRACE(solid.name());
         const TopoDS_Solid shape = occt::to_occt(solid);
         EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
@@ -259,12 +278,40 @@ TEST_P(CorpusModel, WrittenSolidsAreReadRightByTheFixedRule) {
         GProp_GProps volume, area;
         BRepGProp::VolumeProperties(shape, volume);
         BRepGProp::SurfaceProperties(shape, area);
-        // Exact files to 1e-6; as against OpenCASCADE's reading of the file above, a face trimmed by p-curves a file
-        // tolerance t off its edges may move its boundary by t: the volume by up to area x t, the area by up to its
-        // boundary's length x t, bounded here by area / size x t.
+        // Exact files as above; as against OpenCASCADE's reading of the file above, a face trimmed by p-curves a
+        // file tolerance t off its edges may move its boundary by t: the volume by up to area x t, the area by up
+        // to its boundary's length x t, bounded here by area / size x t.
         const double t = max_face_tolerance(solid), size = solid.bounding_box().diagonal();
-        EXPECT_NEAR(volume.Mass(), solid.volume(), std::max(1e-6 * solid.volume(), solid.area() * t));
-        EXPECT_NEAR(area.Mass(), solid.area(), std::max(1e-6 * solid.area(), solid.area() / size * t));
+        const double volume_rule = std::max(1e-6, 4 * own_volume_error), area_rule = std::max(1e-6, 4 * own_area_error);
+        EXPECT_NEAR(volume.Mass(), solid.volume(), std::max(volume_rule * solid.volume(), solid.area() * t));
+        EXPECT_NEAR(area.Mass(), solid.area(), std::max(area_rule * solid.area(), solid.area() / size * t));
+        EXPECT_LT(std::abs(volume.Mass() - solid.volume()), std::max(1e-4 * solid.volume(), solid.area() * t));
+        EXPECT_LT(std::abs(area.Mass() - solid.area()), std::max(1e-4 * solid.area(), solid.area() / size * t));
+    }
+}
+
+// The surface kinds of the file's faces, as OpenCASCADE reads them (planes, cylinders, cones, spheres, tori...).
+std::multiset<GeomAbs_SurfaceType> surface_kinds(const TopoDS_Shape& shape) {
+    std::multiset<GeomAbs_SurfaceType> kinds;
+    for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next())
+        kinds.insert(BRepAdaptor_Surface(TopoDS::Face(it.Current())).GetType());
+    return kinds;
+}
+
+// A read solid goes back to OpenCASCADE (files, FreeCAD) with its faces on the file's own cylinders, cones,
+// spheres and tori (elementary_faces.hpp), not as the B-splines the kernel holds them as: OCCT's BOP check and
+// booleans of B-spline faces are far slower (a real bracket, 030_bmg_astrosyn_mount.step: FreeCAD's BOP check
+// 166 s, 4.2 s with its faces on cylinders, cones and tori; OpenCASCADE's own reading, 1.8 s).
+TEST(CorpusModels, ReadFacesGoBackOnTheFilesElementarySurfaces) {
+    for (const char* name : {"cylinder_cut_cylinder", "fused_cylinders", "cone_fillet", "filleted_box", "box_with_hole"}) {
+        SCOPED_TRACE(name);
+        const fs::path file = fs::path(ratbez::build_paths::corpus_dir) / (std::string(name) + ".step");
+        const std::vector<Solid> solids = read_all(file);
+        ASSERT_EQ(solids.size(), 1u);
+        const TopoDS_Solid handed = occt::to_occt(solids.front());
+        EXPECT_TRUE(BRepCheck_Analyzer(handed).IsValid());
+        EXPECT_EQ(surface_kinds(handed), surface_kinds(occt_shape(file)));
+        EXPECT_FALSE(occt::testing::bop_check_finds_faults(handed));
     }
 }
 

@@ -123,7 +123,7 @@ TEST_F(Files, StepRoundTripGivesTheSameValidSolid) {
 // A face trimmed on a sphere (FreeCAD's sphere minus a box, from OCCT's own Cut) written to STEP and read back
 // as FreeCAD reads it: the reader projects each edge onto the sphere itself. With the kernel's rational arcs as the
 // edges and a fitted seam it left p-curves 4.4e-6 off (BOPAlgo InvalidCurveOnSurface); on OCCT's circles
-// (exact_edges.hpp, sphere_faces.hpp) its projections are the sphere's iso lines, exact, and the check is clean.
+// (exact_edges.hpp, elementary_faces.hpp) its projections are the sphere's iso lines, exact, and the check is clean.
 TEST_F(Files, FaceTrimmedOnASphereReadsBackCleanFromStep) {
     for (const gp_Pnt& centre : {gp_Pnt(0, 0, 0), gp_Pnt(0, -40, 0), gp_Pnt(100, 0, 0)}) {
         SCOPED_TRACE(centre.X() + centre.Y());

@@ -671,7 +671,7 @@ TEST(Topology, ExtrusionsAndRevolutionsGoOverAsOcctSweepsThem) {
     }
 }
 
-// A face trimmed on a sphere goes over on OCCT's spherical surface (sphere_faces.hpp): FreeCAD's sphere minus a
+// A face trimmed on a sphere goes over on OCCT's spherical surface (elementary_faces.hpp): FreeCAD's sphere minus a
 // box, read from a file (the kernel holds its face as a NURBS sphere in the NURBS Book's circle form), went over as
 // six B-spline pieces (split at the circle form's C0 knots) that the BOP check's face self-intersection search
 // flagged; on OCCT's sphere it is one face again, as in FreeCAD, and clean at every placement. Analytic primitives
@@ -882,7 +882,7 @@ TEST(Topology, ArcsOnOcctsCirclesStartWhereTheCircleStarts) {
 // The other side of the same cut: the octant of the sphere inside the box (OCCT's Common; what OCCT's STEP reader,
 // FreeCAD's too, makes of FreeCAD's own STEP file of the sphere minus a box at (0, -40, 0)). Its face's rims lie on
 // the sphere's seam, where ShapeFix_Face projected OCCT's circles onto the wrong side and took the face for the
-// other seven octants; the rebuild then goes with the kernel's arcs (sphere_faces.cpp), still one spherical face.
+// other seven octants; the rebuild then goes with the kernel's arcs (elementary_faces.cpp), still one spherical face.
 TEST(Topology, AnOctantOfASphereGoesOverOnOcctsSphere) {
     for (const gp_Pnt& centre : {gp_Pnt(0, 0, 0), gp_Pnt(0, -40, 0), gp_Pnt(3, -40, 0), gp_Pnt(100, 0, 0)}) {
         SCOPED_TRACE(centre.X() + centre.Y() + centre.Z());

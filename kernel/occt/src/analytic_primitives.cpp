@@ -9,7 +9,11 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_ConicalSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
 #include <Geom_Plane.hxx>
+#include <Geom_SphericalSurface.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <gp_Ax3.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
@@ -38,16 +42,33 @@ gp_Ax2 axes(const Vec3& origin, const Vec3& axis, const Vec3& x) {
     return gp_Ax2(to_occt_point(origin), to_occt_direction(axis), to_occt_direction(x));
 }
 
-// A sphere (minor radius 0 means none: major is its radius) or torus: centre, axis, the direction its parameter
-// starts from, radii.
+// A surface of revolution OCCT has a surface of its own for: centre (on the axis; a cylinder's and a cone's at
+// their first row), axis, the direction its parameter starts from, radii (a cone's at the centre) and a cone's
+// semi-angle (its radius grows by tan(semi_angle) per unit along the axis).
 struct Round {
+    enum class Kind { sphere, torus, cylinder, cone };
     Vec3 centre, axis, x;
-    double major = 0, minor = 0;
-    bool sphere = false;
+    double major = 0, minor = 0, semi_angle = 0;
+    Kind kind = Kind::sphere;
 };
 
+// The meridian (height along the axis, radius) of a surface's rows as a straight line, not square to the axis:
+// a cylinder or a cone. Control points within `tolerance` of the line through the first and last (the curve
+// then lies on it: the convex hull).
+std::optional<Round> straight_meridian(const std::vector<Vec3>& meridian, const Vec3& base, const Vec3& axis,
+                                       const Vec3& x, double tolerance) {
+    const Vec3 a = meridian.front(), d = meridian.back() - a;
+    const double length = norm(d);
+    if (!(std::abs(d.x) > tolerance)) return std::nullopt;  // square to the axis: a plane
+    for (const Vec3& p : meridian)
+        if (norm(cross(p - a, d)) > tolerance * length) return std::nullopt;
+    Round round{base + a.x * axis, axis, x, a.y, 0, std::atan(d.y / d.x), Round::Kind::cone};
+    if (std::abs(d.y) <= tolerance) round.kind = Round::Kind::cylinder, round.semi_angle = 0;
+    return round;
+}
+
 // The surface as a revolution about one axis of a meridian arc: a sphere when the arc's centre is on the
-// axis, a torus when it is further from it than its radius.
+// axis, a torus when it is further from it than its radius; or of a meridian line: a cylinder or a cone.
 std::optional<Round> round_surface(const NurbsSurface& surface, double tolerance) {
     for (const bool along_u : {true, false}) {
         const std::optional<ArcDirection> arc = find_arc(surface, along_u, tolerance);
@@ -75,6 +96,7 @@ std::optional<Round> round_surface(const NurbsSurface& surface, double tolerance
             meridian.push_back({h, r, 0});
         }
         if (!revolution) continue;
+        if (const std::optional<Round> straight = straight_meridian(meridian, base, axis, x, tolerance)) return straight;
         const int degree = along_u ? surface.degree_v() : surface.degree_u();
         const std::vector<double>& knots = along_u ? surface.knots_v() : surface.knots_u();
         const std::optional<ArcDirection> bend = find_arc(NurbsCurve(degree, knots, meridian, arc->omega), tolerance);
@@ -82,8 +104,8 @@ std::optional<Round> round_surface(const NurbsSurface& surface, double tolerance
         const Vec3 centre = bend->origin.front();
         const double radius = norm(bend->u_axis.front());
         if (std::abs(norm(bend->v_axis.front()) - radius) > tolerance) continue;  // an ellipse
-        if (std::abs(centre.y) <= tolerance) return Round{base + centre.x * axis, axis, x, radius, 0, true};
-        if (centre.y > radius + tolerance) return Round{base + centre.x * axis, axis, x, centre.y, radius, false};
+        if (std::abs(centre.y) <= tolerance) return Round{base + centre.x * axis, axis, x, radius, 0, 0, Round::Kind::sphere};
+        if (centre.y > radius + tolerance) return Round{base + centre.x * axis, axis, x, centre.y, radius, 0, Round::Kind::torus};
     }
     return std::nullopt;
 }
@@ -91,10 +113,16 @@ std::optional<Round> round_surface(const NurbsSurface& surface, double tolerance
 double distance_from(const Round& round, const Vec3& p) {
     const Vec3 d = p - round.centre;
     const double h = dot(d, round.axis), r = norm(d - h * round.axis);
-    return round.sphere ? std::abs(norm(d) - round.major) : std::abs(std::hypot(h, r - round.major) - round.minor);
+    switch (round.kind) {
+        case Round::Kind::sphere: return std::abs(norm(d) - round.major);
+        case Round::Kind::torus: return std::abs(std::hypot(h, r - round.major) - round.minor);
+        case Round::Kind::cylinder: return std::abs(r - round.major);
+        case Round::Kind::cone: return std::abs(r - round.major - h * std::tan(round.semi_angle)) * std::cos(round.semi_angle);
+    }
+    return HUGE_VAL;
 }
 
-// The sphere or torus the surface is, recognised on its control net and checked at 9 x 9 points.
+// The sphere, torus, cylinder or cone the surface is, recognised on its control net and checked at 9 x 9 points.
 std::optional<Round> exact_round(const NurbsSurface& surface, double size) {
     const std::optional<Round> round = round_surface(surface, kFit * size);
     if (!round) return std::nullopt;
@@ -110,7 +138,9 @@ std::optional<Round> exact_round(const NurbsSurface& surface, double size) {
 // A solid of one face that is a whole sphere or torus.
 std::optional<Round> one_round_face(const Solid& solid) {
     if (solid.faces().size() != 1 || solid.faces().front().kind() != Face::Kind::surface) return std::nullopt;
-    return exact_round(solid.faces().front().surface(), std::max(1.0, solid.bounding_box().diagonal()));
+    const std::optional<Round> round = exact_round(solid.faces().front().surface(), std::max(1.0, solid.bounding_box().diagonal()));
+    if (!round || (round->kind != Round::Kind::sphere && round->kind != Round::Kind::torus)) return std::nullopt;
+    return round;
 }
 
 std::optional<TopoDS_Solid> made(const Solid& solid) {
@@ -125,7 +155,7 @@ std::optional<TopoDS_Solid> made(const Solid& solid) {
         return BRepPrimAPI_MakeTorus(axes(t->center, t->axis), t->major_radius, t->minor_radius).Solid();
     if (const std::optional<Round> round = one_round_face(solid)) {
         const gp_Ax2 frame = axes(round->centre, round->axis, round->x);
-        return round->sphere ? BRepPrimAPI_MakeSphere(frame, round->major).Solid()
+        return round->kind == Round::Kind::sphere ? BRepPrimAPI_MakeSphere(frame, round->major).Solid()
                              : BRepPrimAPI_MakeTorus(frame, round->major, round->minor).Solid();
     }
     return std::nullopt;
@@ -210,10 +240,17 @@ std::optional<TopoDS_Solid> analytic_primitive(const Solid& solid) {
     }
 }
 
-Handle(Geom_SphericalSurface) exact_sphere(const NurbsSurface& surface, double size) {
+Handle(Geom_ElementarySurface) exact_elementary(const NurbsSurface& surface, double size) {
     const std::optional<Round> round = exact_round(surface, size);
-    if (!round || !round->sphere) return {};
-    return new Geom_SphericalSurface(gp_Ax3(axes(round->centre, round->axis, round->x)), round->major);
+    if (!round) return {};
+    const gp_Ax3 frame(axes(round->centre, round->axis, round->x));
+    switch (round->kind) {
+        case Round::Kind::sphere: return new Geom_SphericalSurface(frame, round->major);
+        case Round::Kind::torus: return new Geom_ToroidalSurface(frame, round->major, round->minor);
+        case Round::Kind::cylinder: return new Geom_CylindricalSurface(frame, round->major);
+        case Round::Kind::cone: return new Geom_ConicalSurface(frame, round->semi_angle, round->major);
+    }
+    return {};
 }
 
 }  // namespace ratbez::occt::detail

@@ -18,7 +18,7 @@
 // ConvertOptions::analytic_primitives (default true) turns it on; the FreeCAD workbench's preference for
 // B-spline primitives turns it off.
 
-#include <Geom_SphericalSurface.hxx>
+#include <Geom_ElementarySurface.hxx>
 #include <TopoDS_Solid.hxx>
 
 #include <optional>
@@ -31,9 +31,9 @@ namespace ratbez::occt::detail {
 // checked to lie on ours (a record that does not describe the faces gives nullopt, as does any other solid).
 std::optional<TopoDS_Solid> analytic_primitive(const Solid& solid);
 
-// The sphere the surface is, exactly (recognised as above, checked to 1e-10 of `size`), on OCCT's spherical
-// surface with the kernel's axis and start direction; null for any other surface (sphere_faces.hpp uses it for
-// faces trimmed on a sphere).
-Handle(Geom_SphericalSurface) exact_sphere(const NurbsSurface& surface, double size);
+// The sphere, torus, cylinder or cone the surface is, exactly (recognised as above, a cylinder's and a cone's
+// meridian a line; checked to 1e-10 of `size`), on OCCT's surface of that kind with the kernel's axis and start
+// direction; null for any other surface (elementary_faces.hpp uses it for faces trimmed on one).
+Handle(Geom_ElementarySurface) exact_elementary(const NurbsSurface& surface, double size);
 
 }  // namespace ratbez::occt::detail

@@ -6,7 +6,7 @@
 // rational B-spline: its sweeps make planes, cylinders, spheres and tori of them (swept_solids.hpp), and it
 // projects a circle onto a sphere exactly (ProjLib) where the B-spline's projection is a fit: a sphere minus a box
 // written to STEP with B-spline edges came back from FreeCAD's reader with p-curves 4.4e-6 off their edges,
-// "BOPAlgo InvalidCurveOnSurface" (sphere_faces.hpp). Found on the kernel's control points (smooth_arcs.hpp for
+// "BOPAlgo InvalidCurveOnSurface" (elementary_faces.hpp). Found on the kernel's control points (smooth_arcs.hpp for
 // arcs), each to a tolerance in model units.
 
 #include <gp_Circ.hxx>

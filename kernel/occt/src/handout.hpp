@@ -1,9 +1,9 @@
 #pragma once
 // The solid as files, brep_string and check() hand it out, one place for both: convert's (topology.hpp), with
 // faces still C0 inside split (c0_split.hpp), or OpenCASCADE's own primitive or sweep where ours is one
-// (analytic_primitives.hpp, ConvertOptions::analytic_primitives), faces trimmed on a sphere on OCCT's sphere
-// (sphere_faces.hpp) and arcs on OCCT's circles (circle_edges.hpp), both under the same option. Internal to
-// kernel/occt; defined in topology.cpp beside to_occt.
+// (analytic_primitives.hpp, ConvertOptions::analytic_primitives), faces trimmed on a sphere, cylinder, cone or
+// torus on OCCT's (elementary_faces.hpp) and arcs on OCCT's circles (circle_edges.hpp), both under the same
+// option. Internal to kernel/occt; defined in topology.cpp beside to_occt.
 
 #include "c0_split.hpp"
 #include "ratbez/brep.hpp"

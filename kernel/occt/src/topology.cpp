@@ -48,7 +48,7 @@
 #include "circle_edges.hpp"
 #include "exact_edges.hpp"
 #include "handout.hpp"
-#include "sphere_faces.hpp"
+#include "elementary_faces.hpp"
 #include "face_sides.hpp"
 #include "gprop_faces.hpp"
 #include "gprop_patches.hpp"
@@ -969,14 +969,15 @@ SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const
                 handed.original_face.Bind(faces.Current(), converted.faces[converted.first_face[i]]);
             return handed;
         }
-    // Faces on a sphere first, whole (a face trimmed on a sphere read from a file is C0 inside in the NURBS Book's
-    // circle form; on OCCT's sphere it need not be split; its rims on OCCT's circles), else arcs on OCCT's circles;
+    // Faces on a sphere, cylinder, cone or torus first, whole (such a face trimmed and read from a file is C0 inside
+    // in the NURBS Book's circle form; on OCCT's surface it need not be split; its rims on OCCT's circles), else arcs
+    // on OCCT's circles;
     // then the rest split; traced through both to convert's.
     if (options.analytic_primitives && !options.bezier_faces) {
-        std::optional<SplitSolid> rebuilt = with_sphere_faces(solid, converted);
+        std::optional<SplitSolid> rebuilt = with_elementary_faces(solid, converted, progress_part(progress, 0, 0.5));
         if (!rebuilt) rebuilt = with_circle_edges(solid, converted);
         if (rebuilt) {
-            SplitSolid split = split_at_c0_knots(rebuilt->solid, converted.tolerance, progress);
+            SplitSolid split = split_at_c0_knots(rebuilt->solid, converted.tolerance, progress_part(progress, 0.5, 1));
             for (TopTools_DataMapIteratorOfDataMapOfShapeShape it(split.original_face); it.More(); it.Next())
                 split.original_face.ChangeFind(it.Key()) = rebuilt->original_face.Find(it.Value());
             return split;
