@@ -4,7 +4,7 @@
 #  2. release:   ctest on build/: every suite (C++ core/occt/openscad/cli/reliability, Python, FreeCAD headless
 #                and GUI, the OpenSCAD binary, the bench table), with 1,000 randomized round trips (10 shards of 100; scripts/soak.sh runs 10,000);
 #  3. sanitizers: the C++ suites again in build-asan/ under AddressSanitizer + UndefinedBehaviorSanitizer
-#                (-O2: ASan asks for -O1 or higher, and the suites ran in 374 s at -O1, 282 s at -O2; Python and
+#                (-O2: ASan asks for -O1 or higher; on one tree the suites ran in 374 s at -O1, 282 s at -O2; Python and
 #                FreeCAD stay out: ASan cannot be preloaded into them),
 #                with 150 round trips (15 of each shard) plus every seed that ever failed;
 #  4. fuzzing:   every libFuzzer target for a bounded time (scripts/fuzz.sh).
