@@ -1,4 +1,4 @@
-// Faces trimmed on a sphere, cylinder, cone or torus, on OCCT's surface of that kind (see elementary_faces.hpp).
+// Faces on a sphere, cylinder, cone or torus, on OCCT's surface of that kind (see elementary_faces.hpp).
 
 #include "elementary_faces.hpp"
 
@@ -143,8 +143,8 @@ TopoDS_Face on_surface(const TopoDS_Face& face, const Handle(Geom_Surface)& surf
 // by the same arc on OCCT's circle between the copy's vertices: ShapeFix_Face projects a circle that is a meridian
 // or a parallel onto the sphere exactly (a line; a rim of a cylinder, cone or torus alike), and so does a STEP
 // reader that gets the file's edges as circles (with the kernel's rational arcs FreeCAD's reader left p-curves
-// 4.4e-6 off: InvalidCurveOnSurface). Only where
-// every face of the edge is rebuilt or a plane, whose p-curves are exact too (a B-spline neighbour keeps the edge).
+// 4.4e-6 off: InvalidCurveOnSurface). Only where every face of the edge is rebuilt or a plane, whose p-curves are
+// exact too (a B-spline neighbour keeps the edge).
 // The edges replaced, in the copy's orientation.
 std::vector<TopoDS_Edge> circle_edges(const Solid& solid, const ConvertedSolid& converted,
                                       const TopTools_DataMapOfShapeInteger& on_elementary, const BRepBuilderAPI_Copy& copier,
@@ -291,17 +291,21 @@ std::optional<SplitSolid> with_elementary_faces(const Solid& solid, const Conver
     const bool read = std::any_of(solid.faces().begin(), solid.faces().end(), [](const Face& face) {
         return face.kind() == Face::Kind::trimmed || face.tolerance() > 0;
     });
-    for (std::size_t i = 0; i < solid.faces().size(); ++i) {
-        const Face& face = solid.faces()[i];
-        if (face.kind() == Face::Kind::planar || converted.first_face[i + 1] - converted.first_face[i] != 1) continue;
-        Handle(Geom_ElementarySurface) elementary = exact_elementary(face.surface(), size);
-        // A sphere's face in any solid; a cylinder's, cone's or torus's in a solid read from a file, told by its
-        // trimmed faces or a face's tolerance (the kernel's own builders make neither). The kernel's own solids go
-        // over as they did: a cone ruled between two circles came out of OCCT's Thickness invalid on OCCT's cone,
-        // and a revolved profile's cylinder was flagged by the BOP check.
-        if (!elementary.IsNull() && !elementary->IsKind(STANDARD_TYPE(Geom_SphericalSurface)) && !read)
-            elementary.Nullify();
-        surfaces[i] = elementary;
+    try {  // OCCT's surface constructors check their arguments
+        for (std::size_t i = 0; i < solid.faces().size(); ++i) {
+            const Face& face = solid.faces()[i];
+            if (face.kind() == Face::Kind::planar || converted.first_face[i + 1] - converted.first_face[i] != 1) continue;
+            Handle(Geom_ElementarySurface) elementary = exact_elementary(face.surface(), size);
+            // A sphere's face in any solid; a cylinder's, cone's or torus's in a solid read from a file, told by its
+            // trimmed faces or a face's tolerance (the kernel's own builders make neither). The kernel's own solids go
+            // over as they did: a cone ruled between two circles came out of OCCT's Thickness invalid on OCCT's cone,
+            // and a revolved profile's cylinder was flagged by the BOP check.
+            if (!elementary.IsNull() && !elementary->IsKind(STANDARD_TYPE(Geom_SphericalSurface)) && !read)
+                elementary.Nullify();
+            surfaces[i] = elementary;
+        }
+    } catch (const Standard_Failure&) {
+        return std::nullopt;
     }
     // Faces whose p-curves OpenCASCADE cannot project close enough stay B-splines; the rest is tried again. First
     // with the circles as OCCT's, then with the kernel's arcs: ShapeFix_Face projects a circle that runs along the
