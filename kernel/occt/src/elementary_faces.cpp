@@ -187,6 +187,13 @@ std::vector<TopoDS_Edge> circle_edges(const Solid& solid, const ConvertedSolid& 
     return replaced;
 }
 
+// The largest tolerance a face of the solid was given (a file's; 0 for the kernel's own constructions).
+double largest_face_tolerance(const Solid& solid) {
+    double tolerance = 0;
+    for (const Face& face : solid.faces()) tolerance = std::max(tolerance, face.tolerance());
+    return tolerance;
+}
+
 int count_faces(const TopoDS_Shape& shape) {
     int n = 0;
     for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) ++n;
@@ -248,23 +255,23 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
                 if (edges.Current().IsSame(circle)) BRepLib::BuildPCurveForEdgeOnPlane(TopoDS::Edge(edges.Current()), face);
     }
     BRepLib::SameParameter(result, converted.tolerance, Standard_True);
-    SplitSolid on_elementarys{TopoDS::Solid(result), {}};
+    SplitSolid handed{TopoDS::Solid(result), {}};
     const std::size_t refused_before = refused.size();
     for (std::size_t k = 0; k < traced.size(); ++k) {
         const Traced& t = traced[k];
         if (measuring) measuring(static_cast<double>(k) / static_cast<double>(traced.size()));
         std::vector<TopoDS_Face> finals;
         for (TopExp_Explorer final_faces(context->Apply(t.face), TopAbs_FACE); final_faces.More(); final_faces.Next()) {
-            on_elementarys.original_face.Bind(final_faces.Current(), t.original);
+            handed.original_face.Bind(final_faces.Current(), t.original);
             finals.push_back(TopoDS::Face(final_faces.Current()));
         }
+        if (t.ours == solid.faces().size()) continue;  // not rebuilt
         // A read face's edges may lie their file's tolerance off its surface (so far OCCT's p-curves on the B-spline
         // were the file's own): its projections then lie as far from them.
-        double read_tolerance = 0;
+        double face_tolerance = solid.faces()[t.ours].tolerance();
         for (TopExp_Explorer edges(t.original, TopAbs_EDGE); edges.More(); edges.Next())
-            read_tolerance = std::max(read_tolerance, BRep_Tool::Tolerance(TopoDS::Edge(edges.Current())));
-        if (t.ours < solid.faces().size()) read_tolerance = std::max(read_tolerance, solid.faces()[t.ours].tolerance());
-        if (t.ours < solid.faces().size() && !honest_tolerances(finals, std::max(kProjection * size, kReadSlack * read_tolerance))) refused.push_back(t.ours);
+            face_tolerance = std::max(face_tolerance, BRep_Tool::Tolerance(TopoDS::Edge(edges.Current())));
+        if (!honest_tolerances(finals, std::max(kProjection * size, kReadSlack * face_tolerance))) refused.push_back(t.ours);
     }
     if (refused.size() > refused_before) return std::nullopt;
     BRepLib::UpdateTolerances(result, Standard_True);
@@ -274,12 +281,11 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
     BRepGProp::VolumeProperties(result, properties, 1e-9);
     // A face trimmed by p-curves a file tolerance t off its edges may move its boundary by t: the volume by up to
     // area x t (as OpenCASCADE's reading of the file itself, tests/corpus).
-    double read_tolerance = 0;
-    for (const Face& face : solid.faces()) read_tolerance = std::max(read_tolerance, face.tolerance());
+    const double read_tolerance = largest_face_tolerance(solid);
     const double volume = solid.volume();
     const double slack = std::max(kVolume * std::abs(volume), read_tolerance > 0 ? solid.area() * read_tolerance : 0.0);
     if (!(std::abs(properties.Mass() - volume) <= slack)) return std::nullopt;
-    return on_elementarys;
+    return handed;
 }
 
 }  // namespace
@@ -288,8 +294,8 @@ std::optional<SplitSolid> with_elementary_faces(const Solid& solid, const Conver
     const double size = std::max(1.0, solid.bounding_box().diagonal());
     // The sphere, cylinder, cone or torus of each face of ours handed over whole (not as Bézier patches), trimmed or not.
     std::vector<Handle(Geom_Surface)> surfaces(solid.faces().size());
-    const bool read = std::any_of(solid.faces().begin(), solid.faces().end(), [](const Face& face) {
-        return face.kind() == Face::Kind::trimmed || face.tolerance() > 0;
+    const bool read = largest_face_tolerance(solid) > 0 || std::any_of(solid.faces().begin(), solid.faces().end(), [](const Face& face) {
+        return face.kind() == Face::Kind::trimmed;
     });
     try {  // OCCT's surface constructors check their arguments
         for (std::size_t i = 0; i < solid.faces().size(); ++i) {
