@@ -62,7 +62,10 @@ std::optional<Round> straight_meridian(const std::vector<Vec3>& meridian, const 
     if (!(std::abs(d.x) > tolerance)) return std::nullopt;  // square to the axis: a plane
     for (const Vec3& p : meridian)
         if (norm(cross(p - a, d)) > tolerance * length) return std::nullopt;
-    Round round{base + a.x * axis, axis, x, a.y, 0, std::atan(d.y / d.x), Round::Kind::cone};
+    // Centred at an end of positive radius (OCCT's cone is both nappes, its reference radius not negative).
+    const Vec3 centre = a.y >= 0 ? a : meridian.back();
+    if (!(centre.y >= 0)) return std::nullopt;
+    Round round{base + centre.x * axis, axis, x, centre.y, 0, std::atan(d.y / d.x), Round::Kind::cone};
     if (std::abs(d.y) <= tolerance) round.kind = Round::Kind::cylinder, round.semi_angle = 0;
     return round;
 }
@@ -82,7 +85,9 @@ std::optional<Round> round_surface(const NurbsSurface& surface, double tolerance
         Vec3 axis = cross(arc->u_axis[widest], arc->v_axis[widest]);
         axis = axis / norm(axis);
         const Vec3 base = arc->origin[widest];
-        // Every row a circle about the axis, starting towards x: its height along the axis and its radius.
+        // Every row a circle about the axis, starting towards x or, turning the same way, away from it (a row beyond
+        // a cone's apex: a drill point's cone in a file runs a little past it): its height along the axis and its
+        // signed radius.
         std::vector<Vec3> meridian;
         bool revolution = true;
         for (std::size_t j = 0; j < arc->origin.size() && revolution; ++j) {
@@ -90,10 +95,11 @@ std::optional<Round> round_surface(const NurbsSurface& surface, double tolerance
             const double r = norm(u);
             const Vec3 offset = arc->origin[j] - base;
             const double h = dot(offset, axis);
+            const bool towards = norm(u - r * x) <= tolerance, away = norm(u + r * x) <= tolerance;
             revolution = std::abs(norm(v) - r) <= tolerance && std::abs(dot(u, v)) <= tolerance * std::max(r, 1.0) &&
                          norm(offset - h * axis) <= tolerance &&
-                         (r <= tolerance || (norm(u - r * x) <= tolerance && norm(cross(u, v) / r - r * axis) <= tolerance));
-            meridian.push_back({h, r, 0});
+                         (r <= tolerance || ((towards || away) && norm(cross(u, v) / r - r * axis) <= tolerance));
+            meridian.push_back({h, towards || r <= tolerance ? r : -r, 0});
         }
         if (!revolution) continue;
         if (const std::optional<Round> straight = straight_meridian(meridian, base, axis, x, tolerance)) return straight;
@@ -117,7 +123,8 @@ double distance_from(const Round& round, const Vec3& p) {
         case Round::Kind::sphere: return std::abs(norm(d) - round.major);
         case Round::Kind::torus: return std::abs(std::hypot(h, r - round.major) - round.minor);
         case Round::Kind::cylinder: return std::abs(r - round.major);
-        case Round::Kind::cone: return std::abs(r - round.major - h * std::tan(round.semi_angle)) * std::cos(round.semi_angle);
+        case Round::Kind::cone:  // both nappes: beyond the apex the signed radius is negative
+            return std::abs(r - std::abs(round.major + h * std::tan(round.semi_angle))) * std::cos(round.semi_angle);
     }
     return HUGE_VAL;
 }

@@ -2,6 +2,7 @@
 
 #include "c0_split.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRep_Builder.hxx>
@@ -35,10 +36,19 @@ namespace {
 // such an edge gets the distance as its tolerance; beyond this the split costs more than it gains.
 constexpr double kToleranceGrowth = 10;
 
-bool has_c0_face(const TopoDS_Solid& solid) {
+// Whether a face's surface is C0 inside, or an edge's curve over its range (as BOPAlgo's analysis reads it). A read
+// solid whose faces all go back on the file's cylinders and planes has none of the first, and may still hold an
+// arc the kernel keeps in its rational form, C0 at its knots by multiplicity, beside a face that stays a B-spline
+// (FreeCAD's drilled plate: "BOPAlgo GeomAbs_C0" on the ellipses beside its extrusions).
+bool has_c0_geometry(const TopoDS_Solid& solid) {
     for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next()) {
         const Handle(Geom_Surface) surface = BRep_Tool::Surface(TopoDS::Face(faces.Current()));
         if (!surface.IsNull() && surface->Continuity() == GeomAbs_C0) return true;
+    }
+    for (TopExp_Explorer edges(solid, TopAbs_EDGE); edges.More(); edges.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
+        if (!BRep_Tool::Degenerated(edge) && BRep_Tool::IsGeometric(edge) && BRepAdaptor_Curve(edge).Continuity() == GeomAbs_C0)
+            return true;
     }
     return false;
 }
@@ -97,7 +107,7 @@ SplitSolid split_at_c0_knots(const TopoDS_Solid& solid, double reach, const Prog
     SplitSolid unchanged{solid, {}};
     for (TopExp_Explorer faces(solid, TopAbs_FACE); faces.More(); faces.Next())
         unchanged.original_face.Bind(faces.Current(), faces.Current());
-    if (!has_c0_face(solid)) return unchanged;
+    if (!has_c0_geometry(solid)) return unchanged;
     try {
         // On a copy: the division keeps the uncut faces' edges, and SameParameter and honest_tolerances below change
         // them in place, so a split given up would hand back `solid` altered (a read solid's measured tolerances

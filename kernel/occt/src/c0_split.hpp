@@ -37,10 +37,10 @@ struct SplitSolid {
     TopTools_DataMapOfShapeShape original_face;
 };
 
-// When a face's surface is C0 inside: `solid` with those faces, and the edges whose curves are C0, split at
-// their C0 knots, where a knot line passing within the solid's largest edge tolerance of a vertex cuts no sliver
-// edge (the piece is dropped and its ends merged). Otherwise `solid` itself (an edge alone does not matter to
-// the rule), and also when OpenCASCADE fails or leaves an invalid shape or other than one solid, or raises an
+// When a face's surface is C0 inside, or an edge's curve: `solid` with those faces and edges split at their C0
+// knots, where a knot line passing within the solid's largest edge tolerance of a vertex cuts no sliver edge (the
+// piece is dropped and its ends merged). An edge alone does not matter to the fixed rule, but BOPAlgo's analysis
+// (FreeCAD's Check geometry) flags it. Otherwise `solid` itself, and also when OpenCASCADE fails or leaves an invalid shape or other than one solid, or raises an
 // edge's tolerance more than kToleranceGrowth times above `reach` (the largest tolerance a face of the solid may
 // need, ConvertedSolid::tolerance) or its largest edge tolerance.
 // `progress` is polled while the split faces' edges are measured (most of the time on a large part) and may throw.

@@ -1,4 +1,4 @@
-// Segments and circular arcs among the kernel's edges (see exact_edges.hpp).
+// Segments, circular and elliptic arcs among the kernel's edges (see exact_edges.hpp).
 
 #include "exact_edges.hpp"
 
@@ -32,27 +32,62 @@ std::optional<EdgeCircle> edge_circle(const Edge& e, double tolerance) {
     return EdgeCircle{found->origin.front(), cross(u, v) / (r * r), u, r, found->sweep};
 }
 
-std::optional<std::pair<double, double>> arc_range(const gp_Circ& circle, const gp_Pnt& start, const gp_Pnt& middle, const gp_Pnt& end,
-                                    bool closed) {
+std::optional<EdgeEllipse> edge_ellipse(const Edge& e, double tolerance) {
+    const std::optional<ArcDirection> found = find_arc(e.curve, tolerance);
+    if (!found) return std::nullopt;
+    const Vec3 &u = found->u_axis.front(), &v = found->v_axis.front();
+    // |U cos t + V sin t|^2 = mean + half_difference cos 2t + product sin 2t: largest at 2 t0 = atan2(product,
+    // half_difference), the major axis, and smallest a quarter turn on.
+    const double mean = (dot(u, u) + dot(v, v)) / 2, half_difference = (dot(u, u) - dot(v, v)) / 2, product = dot(u, v);
+    const double spread = std::hypot(half_difference, product);
+    const double major = std::sqrt(mean + spread), minor = std::sqrt(std::max(0.0, mean - spread));
+    const Vec3 normal = cross(u, v);
+    if (!(minor > tolerance) || !(major - minor > tolerance) || !(norm(normal) > 0)) return std::nullopt;  // a circle or a line
+    const double t0 = std::atan2(product, half_difference) / 2;
+    return EdgeEllipse{found->origin.front(), normal / norm(normal), (u * std::cos(t0) + v * std::sin(t0)) / major, major, minor,
+                       found->sweep};
+}
+
+namespace {
+
+template <class Conic>
+std::optional<std::pair<double, double>> conic_range(const Conic& conic, const gp_Pnt& start, const gp_Pnt& middle, const gp_Pnt& end,
+                                                     bool closed) {
     constexpr double kTurn = 2 * std::numbers::pi;
-    // A start on the circle's own start rounds to either end of [0, 2 pi): at 0, as OCCT's own arcs start there.
-    double first = ElCLib::Parameter(circle, start);
+    // A start on the conic's own start rounds to either end of [0, 2 pi): at 0, as OCCT's own arcs start there.
+    double first = ElCLib::Parameter(conic, start);
     if (kTurn - first <= 1e-12 * kTurn) first = 0;
-    double last = closed ? first + kTurn : ElCLib::Parameter(circle, end);
+    double last = closed ? first + kTurn : ElCLib::Parameter(conic, end);
     while (last <= first) last += kTurn;
-    double through = ElCLib::Parameter(circle, middle);
+    double through = ElCLib::Parameter(conic, middle);
     while (through < first) through += kTurn;
     if (through > last) return std::nullopt;
     return std::pair{first, last};
 }
 
-std::optional<std::pair<double, double>> arc_parameters(const gp_Circ& circle, const Edge& e, double sweep) {
+template <class Conic>
+std::optional<std::pair<double, double>> conic_parameters(const Conic& conic, const Edge& e, double sweep) {
     const Interval domain = e.curve.domain();
     const std::optional<std::pair<double, double>> range =
-        arc_range(circle, to_occt_point(e.start->point), to_occt_point(e.curve.point(domain.min + domain.width() / 2)),
-                  to_occt_point(e.end->point), e.start == e.end);
+        conic_range(conic, to_occt_point(e.start->point), to_occt_point(e.curve.point(domain.min + domain.width() / 2)),
+                    to_occt_point(e.end->point), e.start == e.end);
     if (!range || std::abs(range->second - range->first - sweep) > 1e-9 * 2 * std::numbers::pi) return std::nullopt;
     return range;
+}
+
+}  // namespace
+
+std::optional<std::pair<double, double>> arc_range(const gp_Circ& circle, const gp_Pnt& start, const gp_Pnt& middle, const gp_Pnt& end,
+                                    bool closed) {
+    return conic_range(circle, start, middle, end, closed);
+}
+
+std::optional<std::pair<double, double>> arc_parameters(const gp_Circ& circle, const Edge& e, double sweep) {
+    return conic_parameters(circle, e, sweep);
+}
+
+std::optional<std::pair<double, double>> arc_parameters(const gp_Elips& ellipse, const Edge& e, double sweep) {
+    return conic_parameters(ellipse, e, sweep);
 }
 
 bool is_segment(const Edge& e, double tolerance) {

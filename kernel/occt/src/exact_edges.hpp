@@ -1,6 +1,6 @@
 #pragma once
-// Edges of ours that are, exactly, a segment or an arc of a circle, found as such for OpenCASCADE's own line and
-// circle. Internal to kernel/occt.
+// Edges of ours that are, exactly, a segment or an arc of a circle or an ellipse, found as such for OpenCASCADE's own
+// line, circle and ellipse. Internal to kernel/occt.
 //
 // Why: Part's edges are lines and circles, and OCCT treats its analytic curves better than the same curve as a
 // rational B-spline: its sweeps make planes, cylinders, spheres and tori of them (swept_solids.hpp), and it
@@ -10,6 +10,7 @@
 // arcs), each to a tolerance in model units.
 
 #include <gp_Circ.hxx>
+#include <gp_Elips.hxx>
 
 #include <optional>
 #include <utility>
@@ -36,14 +37,26 @@ struct EdgeCircle {
 };
 std::optional<EdgeCircle> edge_circle(const Edge& e, double tolerance);
 
+// The ellipse an edge runs on: the kernel's rational quadratic arc of an ellipse that is not a circle (a slanted
+// hole's rim on a plane, read from a file), in its principal frame (x along the major axis, normal so that the arc
+// turns counterclockwise). The kernel's arc is the ellipse's conjugate diameters U cos t + V sin t about the centre;
+// OCCT's parameter is the same eccentric angle, measured from the major axis.
+struct EdgeEllipse {
+    Vec3 centre, normal, x;
+    double major = 0, minor = 0;
+    double sweep = 0;  // radians, at most 2 pi
+};
+std::optional<EdgeEllipse> edge_ellipse(const Edge& e, double tolerance);
+
 // The parameters (first, last) on `circle` (OCCT's angle) of an arc of it turning counterclockwise from `start`
 // through `middle` to `end` (all the way round when `closed`); nullopt when the middle is not on that turn.
 std::optional<std::pair<double, double>> arc_range(const gp_Circ& circle, const gp_Pnt& start, const gp_Pnt& middle, const gp_Pnt& end,
                                     bool closed);
 
-// The edge's ends as parameters on `circle` (arc_range, through the edge's middle point); nullopt unless that turn is
-// `sweep` (the two arcs through the ends of a half circle are told apart by the middle).
+// The edge's ends as parameters on `circle` or `ellipse` (as arc_range, through the edge's middle point; on an
+// ellipse OCCT's eccentric angle); nullopt unless that turn is `sweep` (the two arcs through the ends of a half circle are told apart by the middle).
 std::optional<std::pair<double, double>> arc_parameters(const gp_Circ& circle, const Edge& e, double sweep);
+std::optional<std::pair<double, double>> arc_parameters(const gp_Elips& ellipse, const Edge& e, double sweep);
 
 // Whether every control point of a non-closed edge lies within `tolerance` of the segment between its ends (its
 // image is then that segment: the convex hull; its parameter may run at any pace).
