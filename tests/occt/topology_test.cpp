@@ -715,6 +715,34 @@ TEST(Topology, FacesTrimmedOnASphereGoOverOnOcctsSphere) {
     }
 }
 
+// Read faces on a short arc of a cylinder far from the origin (a 15 degree fillet 225 units out: the plain fit of the
+// arc's centre was 5e-9 off, find_arc's refined fit is not) and on a spindle torus (minor radius above the major: a
+// fillet OpenCASCADE reads as its torus) go back on OCCT's cylinder and torus (analytic_primitives.cpp), as
+// OpenCASCADE reads them, valid and BOP-clean; both went over as B-splines.
+TEST(Topology, ReadShortArcsAndSpindleToriGoBackOnOcctsSurfaces) {
+    const std::vector<std::pair<TopoDS_Shape, GeomAbs_SurfaceType>> cases = {
+        {BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(200, 0, -225), gp_Dir(0, 0, 1)), 3, 50, 0.27).Shape(), GeomAbs_Cylinder},
+        {BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(10, 20, 30), gp_Dir(0, 0, 1)), 1.5, 2.5, -std::numbers::pi / 3, std::numbers::pi / 3,
+                               std::numbers::pi / 2).Shape(),
+         GeomAbs_Torus}};
+    for (const auto& [shape, kind] : cases) {
+        SCOPED_TRACE(kind);
+        const Solid read = from_occt(shape);
+        const TopoDS_Solid handed = to_occt(read);
+        int found = 0, bspline = 0;
+        for (TopExp_Explorer it(handed, TopAbs_FACE); it.More(); it.Next()) {
+            const GeomAbs_SurfaceType type = BRepAdaptor_Surface(TopoDS::Face(it.Current())).GetType();
+            found += type == kind;
+            bspline += type == GeomAbs_BSplineSurface;
+        }
+        EXPECT_EQ(found, 1);
+        EXPECT_EQ(bspline, 0);
+        EXPECT_TRUE(BRepCheck_Analyzer(handed).IsValid());
+        EXPECT_FALSE(bop_check_finds_faults(handed));
+        EXPECT_LT(std::abs(fixed_rule(handed).volume - read.volume()) / read.volume(), 1e-6);
+    }
+}
+
 // An edge between planes that runs at constant speed goes over on OCCT's line (exact_edges.hpp), as Part's edges
 // are, its parameter scaled by its speed (check() maps it back); at any other pace it stays the kernel's B-spline.
 TEST(Topology, EdgesBetweenPlanesGoOverOnOcctsLines) {

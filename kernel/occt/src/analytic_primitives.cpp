@@ -71,10 +71,10 @@ std::optional<Round> straight_meridian(const std::vector<Vec3>& meridian, const 
 }
 
 // The surface as a revolution about one axis of a meridian arc: a sphere when the arc's centre is on the
-// axis, a torus when it is further from it than its radius; or of a meridian line: a cylinder or a cone.
+// axis, a torus when it is off it; or of a meridian line: a cylinder or a cone.
 std::optional<Round> round_surface(const NurbsSurface& surface, double tolerance) {
     for (const bool along_u : {true, false}) {
-        const std::optional<ArcDirection> arc = find_arc(surface, along_u, tolerance);
+        const std::optional<ArcDirection> arc = find_arc(surface, along_u, tolerance, true);
         if (!arc || arc->origin.empty()) continue;
         std::size_t widest = 0;
         for (std::size_t j = 0; j < arc->origin.size(); ++j)
@@ -105,13 +105,15 @@ std::optional<Round> round_surface(const NurbsSurface& surface, double tolerance
         if (const std::optional<Round> straight = straight_meridian(meridian, base, axis, x, tolerance)) return straight;
         const int degree = along_u ? surface.degree_v() : surface.degree_u();
         const std::vector<double>& knots = along_u ? surface.knots_v() : surface.knots_u();
-        const std::optional<ArcDirection> bend = find_arc(NurbsCurve(degree, knots, meridian, arc->omega), tolerance);
+        const std::optional<ArcDirection> bend = find_arc(NurbsCurve(degree, knots, meridian, arc->omega), tolerance, true);
         if (!bend) continue;
         const Vec3 centre = bend->origin.front();
         const double radius = norm(bend->u_axis.front());
         if (std::abs(norm(bend->v_axis.front()) - radius) > tolerance) continue;  // an ellipse
         if (std::abs(centre.y) <= tolerance) return Round{base + centre.x * axis, axis, x, radius, 0, 0, Round::Kind::sphere};
-        if (centre.y > radius + tolerance) return Round{base + centre.x * axis, axis, x, centre.y, radius, 0, Round::Kind::torus};
+        // Off the axis: a torus, a spindle one too (the meridian circle crosses the axis: a fillet in a file read by
+        // OpenCASCADE as its torus of minor radius above the major; distance_from then holds the face to the outer part).
+        if (centre.y > tolerance) return Round{base + centre.x * axis, axis, x, centre.y, radius, 0, Round::Kind::torus};
     }
     return std::nullopt;
 }
@@ -142,11 +144,12 @@ std::optional<Round> exact_round(const NurbsSurface& surface, double size) {
     return round;
 }
 
-// A solid of one face that is a whole sphere or torus.
+// A solid of one face that is a whole sphere or ring torus.
 std::optional<Round> one_round_face(const Solid& solid) {
     if (solid.faces().size() != 1 || solid.faces().front().kind() != Face::Kind::surface) return std::nullopt;
     const std::optional<Round> round = exact_round(solid.faces().front().surface(), std::max(1.0, solid.bounding_box().diagonal()));
     if (!round || (round->kind != Round::Kind::sphere && round->kind != Round::Kind::torus)) return std::nullopt;
+    if (round->kind == Round::Kind::torus && !(round->major > round->minor)) return std::nullopt;
     return round;
 }
 

@@ -57,13 +57,16 @@ struct ArcDirection {
 
 // rows[j][i]: the i-th homogeneous control point along the direction of the j-th row across it (a curve has
 // one row). nullopt unless the direction is a kernel-style arc (degree 2, clamped, interior knots double) that
-// every row follows to `tolerance` (absolute, in model units).
+// every row follows to `tolerance` (absolute, in model units). `refined`: each row's centre and axes fitted to the
+// last bits (relative to its first point, refined on the residual), for recognising a surface: a short arc far
+// from the origin is otherwise fitted only to ~1e-10 of its distance (the plain fit, which the conversion's
+// one-span forms keep, is the refined one where that one alone meets `tolerance`).
 std::optional<ArcDirection> find_arc(int degree, const std::vector<double>& knots,
-                                     const std::vector<std::vector<Vec4>>& rows, double tolerance);
+                                     const std::vector<std::vector<Vec4>>& rows, double tolerance, bool refined = false);
 
 // The direction (u when along_u) of a surface, and the curve.
-std::optional<ArcDirection> find_arc(const NurbsSurface& surface, bool along_u, double tolerance);
-std::optional<ArcDirection> find_arc(const NurbsCurve& curve, double tolerance);
+std::optional<ArcDirection> find_arc(const NurbsSurface& surface, bool along_u, double tolerance, bool refined = false);
+std::optional<ArcDirection> find_arc(const NurbsCurve& curve, double tolerance, bool refined = false);
 
 // The same surface / curve with the arc direction in its one-span form (exact).
 NurbsSurface smooth(const NurbsSurface& surface, bool along_u, const ArcDirection& arc);
