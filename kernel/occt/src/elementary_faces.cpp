@@ -177,10 +177,11 @@ std::optional<gp_Pnt2d> parameters_on(const GeomAdaptor_Surface& surface, const 
 // The edge's p-curve on the elementary surface: its points at n + 1 even steps of its parameter, put on the
 // surface in closed form (parameters_on, each within half a period of the one before, the first of `start`) and
 // interpolated by a cubic B-spline in the edge's own parameter (Geom2dAPI_Interpolate, The NURBS Book A9.1); n
-// doubled until the surface along it lies within `limit` / 10 of the edge halfway between the points too. Null
+// doubled until, halfway between the points too, the surface along it lies within `accuracy` of the surface at the
+// edge's points put on it so (the fit's own error: a read edge may lie its file's tolerance off the surface). Null
 // when it does not get there (an edge through a sphere's pole or a cone's apex, where u is not defined).
 Handle(Geom2d_Curve) fitted_pcurve(const Handle(Geom_Curve)& curve, double first, double last,
-                                   const Handle(Geom_Surface)& surface, const gp_Pnt2d& start, double limit) {
+                                   const Handle(Geom_Surface)& surface, const gp_Pnt2d& start, double accuracy) {
     const GeomAdaptor_Surface adaptor(surface);
     for (int n = 32; n <= 2048; n *= 2) {
         const Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, n + 1);
@@ -199,20 +200,30 @@ Handle(Geom2d_Curve) fitted_pcurve(const Handle(Geom_Curve)& curve, double first
         if (!interpolation.IsDone()) return {};
         const Handle(Geom2d_BSplineCurve) fitted = interpolation.Curve();
         double worst = 0;
-        for (int k = 0; k < n; ++k) worst = std::max(worst, apart_at(curve, fitted, surface, first + (last - first) * (k + 0.5) / n));
-        if (worst <= 0.1 * limit) return Handle(Geom2d_Curve)(fitted);
+        for (int k = 0; k < n && worst <= accuracy; ++k) {
+            const double t = first + (last - first) * (k + 0.5) / n;
+            const gp_Pnt2d uv = fitted->Value(t);
+            const std::optional<gp_Pnt2d> on = parameters_on(adaptor, curve->Value(t), uv);
+            if (!on) return {};
+            worst = std::max(worst, surface->Value(uv.X(), uv.Y()).Distance(surface->Value(on->X(), on->Y())));
+        }
+        if (worst <= accuracy) return Handle(Geom2d_Curve)(fitted);
     }
     return {};
 }
 
-// The p-curves of `face` (just made by on_surface) that ShapeFix_Face projected further than a tenth of `limit` from
-// their edges at 33 points (BRepLib_CheckCurveOnSurface's search finds more between them), fitted again (fitted_pcurve) and kept where they start and end where ShapeFix's did (its wire stays
-// closed in the parameters). ShapeFix projects a B-spline edge by interpolating a few of its points
-// (ShapeConstruct_ProjectCurveOnSurface): the curves where FreeCAD's drilled holes meet a cylinder came out 0.003
-// to 0.015 off it (tests/corpus/freecad/shipped_drilling_1.step, whose edges the kernel reads within 1.5e-7 of the
-// cylinder), and those faces stayed B-splines; ProjLib's approximation (GeomProjLib::Curve2d) still left two of
-// them 0.001 off. Seams are ShapeFix's own, and stay as they are.
-void refit_loose_pcurves(const TopoDS_Face& face, double limit) {
+// The p-curves of `face` (just made by on_surface) that ShapeFix_Face projected further from their edges than a tenth
+// of the edge's tolerance as converted (the file's gap the kernel measured; `floor` at least) at 33 points (the
+// search of BRepLib_CheckCurveOnSurface finds more between them), fitted again
+// (fitted_pcurve, to a tenth of that) and kept where they come closer, and start and end where ShapeFix's did, to
+// `limit` (its wire stays closed in the parameters). ShapeFix projects a B-spline edge by interpolating a few of its
+// points (ShapeConstruct_ProjectCurveOnSurface): the curves where FreeCAD's drilled holes meet a cylinder came out
+// 0.003 to 0.015 off it (tests/corpus/freecad/shipped_drilling_1.step, whose edges the kernel reads within 1.5e-7 of
+// the cylinder), and those faces stayed B-splines; ProjLib's approximation (GeomProjLib::Curve2d) still left two of
+// them 0.001 off. Held to the face's limit alone (1.5 times its loosest edge's file tolerance), a Fusion 360 part's
+// edges took 9e-3 tolerances from one loose edge each, and FreeCAD's BOP check flagged their vertices and short edges
+// (Voron-0's Manta_M4P_Din_Mount_2pc.step: a tenth of its edges). Seams are ShapeFix's own, and stay as they are.
+void refit_loose_pcurves(const TopoDS_Face& face, double floor, double limit) {
     const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
     const GeomAdaptor_Surface adaptor(surface);
     for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More(); edges.Next()) {
@@ -222,11 +233,16 @@ void refit_loose_pcurves(const TopoDS_Face& face, double limit) {
         const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
         const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, from, to);
         if (curve.IsNull() || pcurve.IsNull() || from != first || to != last) continue;
-        double before = 0;
-        for (int k = 0; k <= 32; ++k) before = std::max(before, apart_at(curve, pcurve, surface, first + (last - first) * k / 32));
-        if (before <= 0.1 * limit) continue;  // sampled: the true distance may be larger
-        const Handle(Geom2d_Curve) fitted = fitted_pcurve(curve, first, last, surface, pcurve->Value(first), limit);
-        if (fitted.IsNull()) continue;
+        const double own = std::max(floor, BRep_Tool::Tolerance(edge));
+        const auto sampled = [&](const Handle(Geom2d_Curve)& on_face) {
+            double worst = 0;
+            for (int k = 0; k <= 32; ++k) worst = std::max(worst, apart_at(curve, on_face, surface, first + (last - first) * k / 32));
+            return worst;
+        };
+        const double before = sampled(pcurve);
+        if (before <= 0.1 * own) continue;  // sampled: the true distance may be larger
+        const Handle(Geom2d_Curve) fitted = fitted_pcurve(curve, first, last, surface, pcurve->Value(first), 0.1 * own);
+        if (fitted.IsNull() || !(sampled(fitted) < before)) continue;
         const auto ends_agree = [&](double t) {
             const gp_Vec2d gap(pcurve->Value(t), fitted->Value(t));
             return std::abs(gap.X()) <= adaptor.UResolution(limit) && std::abs(gap.Y()) <= adaptor.VResolution(limit);
@@ -336,7 +352,12 @@ std::vector<TopoDS_Edge> analytic_edges(const Solid& solid, const ConvertedSolid
             continue;
         BRepBuilderAPI_MakeEdge made(curve, first, last, range->first, range->second);
         if (!made.IsDone()) continue;
-        BRep_Builder().UpdateEdge(made.Edge(), converted.tolerance);
+        // The pieces' own tolerance (a read edge's measured gap), not the solid's largest: converted.tolerance on every
+        // rebuilt edge gave a Fusion 360 part's lines and circles 9e-3, one face's file tolerance, and FreeCAD's BOP
+        // check flagged their vertices and short edges.
+        double tolerance = 0;
+        for (const TopoDS_Edge& piece : pieces) tolerance = std::max(tolerance, BRep_Tool::Tolerance(piece));
+        BRep_Builder().UpdateEdge(made.Edge(), tolerance);
         context->Replace(head, made.Edge());
         for (std::size_t k = 1; k < pieces.size(); ++k) context->Remove(copier.ModifiedShape(pieces[k]));
         replaced.push_back(made.Edge());
@@ -405,13 +426,15 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
         TopoDS_Face made;
         const std::size_t first = converted.first_face[ours], end = converted.first_face[ours + 1];
         if (end - first == 1) {
-            made = on_surface(TopoDS::Face(context->Apply(piece)), surfaces[ours], converted.tolerance, context, piece);
+            made = on_surface(TopoDS::Face(context->Apply(piece)), surfaces[ours], BRep_Tool::Tolerance(piece), context, piece);
         } else if (original.IsSame(converted.faces[first])) {  // the first piece stands for them all
             std::vector<TopoDS_Face> pieces;
             for (std::size_t k = first; k < end; ++k)
                 pieces.push_back(TopoDS::Face(context->Apply(copier.ModifiedShape(converted.faces[k]))));
+            double tolerance = 0;
+            for (const TopoDS_Face& each : pieces) tolerance = std::max(tolerance, BRep_Tool::Tolerance(each));
             if (const TopoDS_Face whole = pieces_as_one(pieces); !whole.IsNull())
-                made = on_surface(whole, surfaces[ours], converted.tolerance, context, pieces.front());
+                made = on_surface(whole, surfaces[ours], tolerance, context, pieces.front());
         } else {
             merged.push_back(piece);  // removed once every face is made: the first piece's whole takes its edges
             continue;
@@ -420,7 +443,7 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
             refused.push_back(ours);
             return std::nullopt;
         }
-        refit_loose_pcurves(made, projection_limit(ours, original));
+        refit_loose_pcurves(made, kProjection * size, projection_limit(ours, original));
         context->Replace(piece.Oriented(TopAbs_FORWARD), made);
         traced.push_back({made, original, ours});
     }
@@ -439,8 +462,21 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
             for (const TopoDS_Edge& made : analytic)
                 if (edges.Current().IsSame(made)) BRepLib::BuildPCurveForEdgeOnPlane(TopoDS::Edge(edges.Current()), face);
     }
-    BRepLib::SameParameter(result, converted.tolerance, Standard_True);
+    // Only the rebuilt faces' edges (forced over the whole solid, it refitted untouched B-spline faces' p-curves too:
+    // a ventilator's blades drew BOPAlgo_InvalidCurveOnSurface).
+    for (const Traced& t : traced)
+        if (t.ours != solid.faces().size())
+            for (TopExp_Explorer edges(context->Apply(t.face), TopAbs_EDGE); edges.More(); edges.Next()) {
+                const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
+                BRep_Builder().SameParameter(edge, Standard_False);
+                BRepLib::SameParameter(edge, converted.tolerance);
+            }
     SplitSolid handed{TopoDS::Solid(result), {}};
+    // Each rebuilt face's edges measured on it and on the faces beside it: the forced SameParameter above recomputes
+    // the neighbours' p-curves of the edges it touches too (a ventilator's B-spline blades beside rebuilt cones drew
+    // BOPAlgo_InvalidCurveOnSurface with the rebuilt faces alone measured).
+    TopTools_IndexedDataMapOfShapeListOfShape faces_of;
+    TopExp::MapShapesAndUniqueAncestors(result, TopAbs_EDGE, TopAbs_FACE, faces_of);
     const std::size_t refused_before = refused.size();
     for (std::size_t k = 0; k < traced.size(); ++k) {
         const Traced& t = traced[k];
@@ -451,7 +487,14 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
             finals.push_back(TopoDS::Face(final_faces.Current()));
         }
         if (t.ours == solid.faces().size()) continue;  // not rebuilt
-        if (!honest_tolerances(finals, projection_limit(t.ours, t.original))) refused.push_back(t.ours);
+        const double limit = projection_limit(t.ours, t.original);
+        bool honest = honest_tolerances(finals, limit);
+        for (const TopoDS_Face& face : finals)
+            for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More() && honest; edges.Next())
+                if (const int index = faces_of.FindIndex(edges.Current()); index > 0)
+                    for (const TopoDS_Shape& beside : faces_of(index))
+                        honest = honest && (beside.IsSame(face) || honest_tolerance(TopoDS::Edge(edges.Current()), TopoDS::Face(beside), limit));
+        if (!honest) refused.push_back(t.ours);
     }
     if (refused.size() > refused_before) return std::nullopt;
     BRepLib::UpdateTolerances(result, Standard_True);
