@@ -16,9 +16,11 @@
 // ruled between two circles came out of OCCT's Thickness invalid on OCCT's cone). OCCT's fixed rule takes 18
 // points across such a face (BRepGProp_Face), so FreeCAD's Shape.Volume of it is as close as of OCCT's own reading
 // of the file (cylinder_cut_cylinder: 3.5e-6, its own 1.6e-6), not the 1e-8 the B-spline faces are refined to.
-// Recognised on the kernel's control net and checked (exact_elementary); each such OCCT face is rebuilt on OCCT's
-// surface from its own edges (their 3D curves stay the kernel's exact ones): ShapeFix_Face projects the p-curves
-// onto it (seams and poles included) and the face keeps the side of its material. A face is taken only when every
+// Recognised on the kernel's control net and checked (exact_elementary); each such OCCT face (or the Bézier patches
+// a rough face went over in, taken as one) is rebuilt on OCCT's surface from its own edges (their 3D curves stay the
+// kernel's exact ones, its segments, circles and ellipses OCCT's lines, circles and ellipses): ShapeFix_Face projects
+// the p-curves onto it (seams and poles included; those it projects loosely are fitted again in closed form) and the
+// face keeps the side of its material, its edges their own tolerances. A face is taken only when every
 // projected p-curve lies within 1e-6 of the size of its edge, or 1.5 times the largest tolerance of its edges and
 // its own as read from a file (edges a file tolerance off the surface project that far from it; the B-spline's
 // p-curves were the file's own); the others stay B-splines and the rest is tried again. The rebuilt solid is used
