@@ -472,11 +472,6 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
                 BRepLib::SameParameter(edge, converted.tolerance);
             }
     SplitSolid handed{TopoDS::Solid(result), {}};
-    // Each rebuilt face's edges measured on it and on the faces beside it: the forced SameParameter above recomputes
-    // the neighbours' p-curves of the edges it touches too (a ventilator's B-spline blades beside rebuilt cones drew
-    // BOPAlgo_InvalidCurveOnSurface with the rebuilt faces alone measured).
-    TopTools_IndexedDataMapOfShapeListOfShape faces_of;
-    TopExp::MapShapesAndUniqueAncestors(result, TopAbs_EDGE, TopAbs_FACE, faces_of);
     const std::size_t refused_before = refused.size();
     for (std::size_t k = 0; k < traced.size(); ++k) {
         const Traced& t = traced[k];
@@ -487,14 +482,7 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
             finals.push_back(TopoDS::Face(final_faces.Current()));
         }
         if (t.ours == solid.faces().size()) continue;  // not rebuilt
-        const double limit = projection_limit(t.ours, t.original);
-        bool honest = honest_tolerances(finals, limit);
-        for (const TopoDS_Face& face : finals)
-            for (TopExp_Explorer edges(face, TopAbs_EDGE); edges.More() && honest; edges.Next())
-                if (const int index = faces_of.FindIndex(edges.Current()); index > 0)
-                    for (const TopoDS_Shape& beside : faces_of(index))
-                        honest = honest && (beside.IsSame(face) || honest_tolerance(TopoDS::Edge(edges.Current()), TopoDS::Face(beside), limit));
-        if (!honest) refused.push_back(t.ours);
+        if (!honest_tolerances(finals, projection_limit(t.ours, t.original))) refused.push_back(t.ours);
     }
     if (refused.size() > refused_before) return std::nullopt;
     BRepLib::UpdateTolerances(result, Standard_True);
