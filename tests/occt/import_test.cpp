@@ -9,6 +9,13 @@
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom_BezierSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <GeomConvert.hxx>
+#include <gp.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_OffsetSurface.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -58,6 +65,7 @@
 
 #include "temp_directory_test_support.hpp"
 #include "occt_test_support.hpp"
+#include "pcurve_fit.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/closest_point.hpp"
 #include "ratbez/error.hpp"
@@ -374,6 +382,97 @@ TEST(ImportShapes, PCurvesJustOutsideABSplineDomainComeBackInside) {
     EXPECT_NEAR(from_occt(with_pcurve_outside(3e-9)).volume(), 1000, 1e-9 * 1000);
     const std::string refused = refusal(with_pcurve_outside(1e-6));
     EXPECT_NE(refused.find("leaves its"), std::string::npos) << refused;
+}
+
+// A Voron blower duct (Autodesk's translator) has a natural B-spline face whose sides end 7e-10 inside its v range
+// of 0.3: more than 1e-9 of it, less than OpenCASCADE's Segment can cut (it snaps to the knot within
+// Precision::PConfusion), and the face was refused ("not parameterised over the face's rectangle"). A natural
+// face's rectangle goes out to the surface's bounds from as far as its tolerance reaches.
+TEST(ImportShapes, NaturalFacesEndingJustInsideTheirSurfaceSpanIt) {
+    // A box whose first face is a B-spline (its plane over the face's rectangle), a natural face beside planes,
+    // its v range moved to start where the duct's does (-1.29855751220281).
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(0.3, 0.3, 0.3).Shape();
+    const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current());
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    const Handle(Geom_BSplineSurface) surface =
+        GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(BRep_Tool::Surface(face), u0, u1, v0, v1));
+    ASSERT_NEAR(v1 - v0, 0.3, 1e-12);
+    const double start = -1.29855751220281;
+    TColStd_Array1OfReal v_knots(1, surface->NbVKnots());
+    surface->VKnots(v_knots);
+    for (int k = v_knots.Lower(); k <= v_knots.Upper(); ++k) v_knots(k) += start - v0;
+    v_knots(v_knots.Lower()) -= 7e-10;  // the surface reaches 7e-10 further than the face (2e-10 in space)
+    surface->SetVKnots(v_knots);
+    std::vector<std::pair<TopoDS_Edge, Handle(Geom2d_Curve)>> pcurves;  // moved with the knots
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge edge = TopoDS::Edge(it.Current());
+        double first = 0, last = 0;
+        const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+        pcurves.emplace_back(edge, Handle(Geom2d_Curve)::DownCast(pcurve->Translated(gp_Vec2d(0, start - v0))));
+    }
+    BRep_Builder builder;
+    builder.UpdateFace(face, surface, TopLoc_Location(), BRep_Tool::Tolerance(face));
+    for (const auto& [edge, pcurve] : pcurves) builder.UpdateEdge(edge, pcurve, face, BRep_Tool::Tolerance(edge));
+    ASSERT_TRUE(BRepCheck_Analyzer(box).IsValid());
+    const Solid solid = from_occt(box);
+    EXPECT_NEAR(solid.volume(), 0.027, 1e-9 * 0.027);
+    EXPECT_EQ(solid.faces()[0].kind(), Face::Kind::surface);
+    EXPECT_TRUE(BRepCheck_Analyzer(to_occt(solid)).IsValid());
+}
+
+// A Voron LED mount's sliver face (0.4 mm) has a circle 0.36 off its B-spline surface, beyond the surface's corner,
+// at tolerance 0.56: the projections of its points onto the surface land on that corner together, there is no
+// curve through them, and the face was refused ("its projection is not smooth"). The file's own p-curve is then
+// taken, fitted as it is, where it keeps within the face's tolerance of the edge; further off, still refused.
+TEST(ImportShapes, EdgesWhoseProjectionFoldsKeepTheFilesPCurveWithinItsTolerance) {
+    const NurbsSurface square(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, {{Vec3{0, 0, 0}, Vec3{0, 1, 0}}, {Vec3{1, 0, 0}, Vec3{1, 1, 0}}});
+    // From the corner (0, 1) out beyond it and back to (1, 1); the file's p-curve runs straight along v = 1.
+    const NurbsCurve edge(2, {0, 0, 0, 1, 1, 1}, {Vec3{0, 1, 0}, Vec3{-0.6, 1.6, 0.3}, Vec3{1, 1, 0}});
+    const auto along_the_side = [](double t) { return gp_Pnt2d(t, 1); };
+    detail::PcurveFitter fitter(square, 1.5);
+    const detail::FittedPcurve fitted = fitter.fit(edge, along_the_side, nullptr, 1.0);
+    EXPECT_GT(fitted.deviation, 0.3);
+    EXPECT_LE(fitted.deviation, 1.0);
+    EXPECT_NEAR(distance(fitted.curve.point(0.5), Vec3{0.5, 1, 0}), 0, 1e-9);
+    try {
+        fitter.fit(edge, along_the_side, nullptr, 0.1);
+        ADD_FAILURE() << "a p-curve 0.3 off its edge was taken at tolerance 0.1";
+    } catch (const Error& error) {
+        EXPECT_NE(std::string(error.what()).find("could not be fitted"), std::string::npos) << error.what();
+    }
+}
+
+// A mains plug panel (Voron, 116 across) has loops 8e-7 off their planes at tolerance 2e-7, between the points
+// where OpenCASCADE's BRepCheck (23 an edge) and the self-consistency check (9) look, and Face::planar (8 a span)
+// refused it. Such a gap within the file's slack (self_consistency.hpp) raises the face's tolerance; beyond, refused.
+// Here a unit square's side is a cubic B-spline of 120 spans bulging out of its plane between those points only.
+TEST(ImportShapes, LoopsOffTheirPlaneWithinTheFilesSlackAreKept) {
+    const auto prism = [](double bulge) {
+        TColgp_Array1OfPnt poles(1, 123);
+        for (int i = 0; i < 123; ++i) poles(i + 1) = gp_Pnt(std::clamp((i - 1) / 120.0, 0.0, 1.0), 0, i == 14 ? bulge : 0);
+        poles(2) = gp_Pnt(1 / 360.0, 0, 0), poles(122) = gp_Pnt(1 - 1 / 360.0, 0, 0);
+        TColStd_Array1OfReal knots(1, 121);
+        TColStd_Array1OfInteger multiplicities(1, 121);
+        for (int j = 0; j <= 120; ++j) knots(j + 1) = j / 120.0, multiplicities(j + 1) = j == 0 || j == 120 ? 4 : 1;
+        // Pole 14 moves the curve over [11/120, 15/120] only: between BRepCheck's 2/22 and 3/22, and up to 1/8.
+        const Handle(Geom_BSplineCurve) side = new Geom_BSplineCurve(poles, knots, multiplicities, 3);
+        BRepBuilderAPI_MakeWire wire(BRepBuilderAPI_MakeEdge(side).Edge());
+        wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(1, 0, 0), gp_Pnt(1, 1, 0)).Edge());
+        wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(1, 1, 0), gp_Pnt(0, 1, 0)).Edge());
+        wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 1, 0), gp_Pnt(0, 0, 0)).Edge());
+        const TopoDS_Face square = BRepBuilderAPI_MakeFace(gp_Pln(gp::XOY()), wire.Wire()).Face();
+        return BRepPrimAPI_MakePrism(square, gp_Vec(0, 0, 1)).Shape();
+    };
+    EXPECT_TRUE(BRepCheck_Analyzer(prism(1e-6)).IsValid());
+    const Solid kept = from_occt(prism(1e-6));
+    EXPECT_NEAR(kept.volume(), 1, 1e-6);
+    double tolerance = 0;
+    for (const Face& face : kept.faces()) tolerance = std::max(tolerance, face.tolerance());
+    EXPECT_GT(tolerance, 5e-7);
+    EXPECT_LT(tolerance, 1e-6);
+    const std::string refused = refusal(prism(1e-3));
+    EXPECT_NE(refused.find("leaves the plane"), std::string::npos) << refused;
 }
 
 TEST(ImportShapes, SurfacesWithoutAnExactFormAreRefusedNamingTheFace) {

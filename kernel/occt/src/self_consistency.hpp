@@ -4,7 +4,7 @@
 // that does not close or a shell that does not close or is not oriented would otherwise become a Solid whose
 // exact measures and mesh describe different shapes. Everything is held to the file's own tolerances (an edge's
 // tolerance bounds its curves' distance, a vertex's its distance from its edges); a gap beyond them by no more
-// than 1e-9 of the coordinates is the file's rounding, and raises the edge's or vertex's tolerance to it.
+// than the file's slack (file_slack) raises the edge's or vertex's tolerance to it.
 
 #include <TopoDS_Shape.hxx>
 
@@ -15,5 +15,10 @@ namespace ratbez::occt::detail {
 // then BRepCheck's verdict on each solid. Shapes without solids (surface models, sewn later) are checked face
 // by face only. Raises the tolerances of the shape's edges and vertices where it keeps a gap (above).
 void check_self_consistency(const TopoDS_Shape& shape);
+
+// How far beyond its stated tolerances a file may hold two things it puts together and still be read, the
+// tolerance raised to the gap: its rounding (1e-9 of `coordinate_scale`, the largest coordinate there, at least 1)
+// or a ten-thousandth of the solid's `size`.
+double file_slack(double size, double coordinate_scale);
 
 }  // namespace ratbez::occt::detail

@@ -67,8 +67,10 @@
 
 #include "face_sides.hpp"
 #include "pcurve_fit.hpp"
+#include "ratbez/bspline_basis.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
+#include "self_consistency.hpp"
 
 namespace ratbez::occt {
 namespace {
@@ -171,20 +173,23 @@ double file_tolerance(const TopoDS_Face& face) {
 // OpenCASCADE's own conversions then refuse (Standard_DomainError). A bounded direction also comes back inside
 // from as far as the face's `tolerance` reaches in its parameter (GeomAdaptor_Surface's resolution): p-curves
 // fitted by an exporter overshoot a B-spline's domain (Ventilator.stp, pythonocc-demos: by 2.3e-9 of a v range
-// of 0.5, its edges' tolerance 2e-4), and a full turn by as much. A rectangle wider than the period by more than
-// 1e-9 of it and that reach is left alone (the conversion reports it).
-std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<double, 4> r, double tolerance) {
+// of 0.5, its edges' tolerance 2e-4), and a full turn by as much. A `natural` face's rectangle, whose sides are
+// the surface's bounds, may fall short of them by as much, too (a Voron blower duct's ends 7e-10 inside a v range
+// of 0.3, where OpenCASCADE's Segment cannot cut: it snaps to a knot within Precision::PConfusion): it goes out
+// to them. A rectangle wider than the period by more than 1e-9 of it and that reach is left alone (the
+// conversion reports it).
+std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<double, 4> r, double tolerance, bool natural = false) {
     double a = 0, b = 0, c = 0, d = 0;
     basis->Bounds(a, b, c, d);
     const GeomAdaptor_Surface adaptor(basis);
-    const auto snap = [](double& lo, double& hi, bool periodic, double period, double min, double max, double reach) {
+    const auto snap = [natural](double& lo, double& hi, bool periodic, double period, double min, double max, double reach) {
         if (periodic) {
             if (hi - lo > period && hi - lo <= period + std::max(1e-9 * period, reach)) hi = full_turn_end(lo, period);
             return;
         }
         const double slack = std::max(1e-9 * std::max(1.0, max - min), reach);
-        if (!Precision::IsInfinite(min) && lo < min && min - lo <= slack) lo = min;
-        if (!Precision::IsInfinite(max) && hi > max && hi - max <= slack) hi = max;
+        if (!Precision::IsInfinite(min) && (lo < min || natural) && std::abs(lo - min) <= slack) lo = min;
+        if (!Precision::IsInfinite(max) && (hi > max || natural) && std::abs(hi - max) <= slack) hi = max;
     };
     snap(r[0], r[1], basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b, adaptor.UResolution(tolerance));
     snap(r[2], r[3], basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d, adaptor.VResolution(tolerance));
@@ -411,7 +416,7 @@ private:
             uses.emplace_back(e, samples);
         }
         if (!(u1 > u0 && v1 > v0)) return std::nullopt;
-        NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}, file_tolerance(face)), {}};
+        NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}, file_tolerance(face), /*natural=*/true), {}};
         // Pcurves made by projection (STEP files without them) sit on the sides to about 1e-7 of the rectangle.
         const double tol_u = 1e-6 * (u1 - u0), tol_v = 1e-6 * (v1 - v0);
         for (const auto& use : uses) {
@@ -644,7 +649,13 @@ private:
         // Our parameters are OCCT's exactly for a B-spline face (Segment keeps them) not run backwards.
         const bool same_surface_parameters = spline && !reversed;
 
-        double tolerance = plausible_tolerance(face);
+        const double stated = plausible_tolerance(face);
+        double tolerance = stated;
+        // What a fit may carry: the file's own gap between an edge and the surface, which the self-consistency
+        // check held to the file's tolerances and slack at 9 points an edge (between them a Voron carriage's edge
+        // strays twice as far: 1.1e-4 there, 2.0e-4 at the fit's points). A fit further off lost its edge (a nut's
+        // thread, a strip 15 turns round a cylinder: 3.5 off), and is refused rather than carried as a tolerance.
+        const double carried = 4 * stated + detail::file_slack(size_, 1);
         detail::PcurveFitter fitter(nurbs, size_);
         std::vector<std::vector<Coedge>> loops;
         const TopoDS_Wire outer = BRepTools::OuterWire(face);
@@ -685,6 +696,10 @@ private:
                     }
                 }
                 detail::FittedPcurve fitted = fitter.fit(curve, guess, exact ? &*exact : nullptr, tolerance);
+                require(fitted.deviation <= carried, "shape", [&] {
+                    return "an edge's curve on its face could not be fitted (the fit keeps " + exact_number(fitted.deviation) +
+                           " from the edge, more than the file's tolerance " + exact_number(stated) + " allows)";
+                });
                 tolerance = std::max(tolerance, fitted.deviation);
                 loop.push_back(Coedge{entry.edge, coedge_reversed, std::make_shared<const NurbsCurve>(std::move(fitted.curve))});
             }
@@ -757,7 +772,29 @@ private:
                 loop.push_back(Coedge{entry.edge, (e.Orientation() == TopAbs_REVERSED) != entry.flipped});
             }
         }
-        return Face::planar(plane, std::move(loops), plausible_tolerance(face));
+        const double tolerance = plausible_tolerance(face);
+        return Face::planar(plane, std::move(loops), std::max(tolerance, kept_off_plane(loops, plane, tolerance)));
+    }
+
+    // How far the loops' curves stray from their plane, where that is beyond the file's `tolerance` by no more than
+    // its slack (self_consistency.hpp, file_slack): the face's tolerance is raised to it, as the edges' are for gaps
+    // of that size. 0 otherwise (then Face::planar refuses the loops, naming the distance). Sampled at 16 points a
+    // span, the 8 of Face::planar's own check and the points between, with a margin for their rounding.
+    double kept_off_plane(const std::vector<std::vector<Coedge>>& loops, const Plane& plane, double tolerance) const {
+        double farthest = 0, coordinates = 1;
+        for (const auto& loop : loops)
+            for (const Coedge& c : loop) {
+                const NurbsCurve& curve = c.edge->curve;
+                const std::vector<double> breaks = breakpoints(curve.degree(), curve.knots());
+                for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
+                    for (int j = 0; j <= 16; ++j) {
+                        const Vec3 p = curve.point(j == 16 ? breaks[k + 1] : breaks[k] + (breaks[k + 1] - breaks[k]) * j / 16.0);
+                        farthest = std::max(farthest, std::abs(dot(p - plane.origin, plane.normal)));
+                        coordinates = std::max({coordinates, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+                    }
+            }
+        const bool kept = farthest > tolerance && farthest <= tolerance + detail::file_slack(size_, coordinates);
+        return kept ? farthest * (1 + 1e-9) : 0;
     }
 
     // The file's tolerance of the face (file_tolerance), refused past 1% of the model's size: a boundary that
