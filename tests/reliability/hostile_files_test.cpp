@@ -4,8 +4,13 @@
 // hang of the fix cannot take the test binary down (completes_in_child), with a time limit.
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_Curve.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
 #include <GProp_GProps.hxx>
@@ -38,6 +43,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -46,6 +52,7 @@
 #include "child_test_support.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/occt/files.hpp"
+#include "ratbez/occt/topology.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/progress.hpp"
 #include "ratbez/tessellate.hpp"
@@ -305,6 +312,50 @@ TEST_F(HostileFiles, AVertexOffItsEdgesByTheFilesSlackIsKeptItsToleranceRaised) 
     EXPECT_NE(far_off.find("is 0.001 from the end of its edge's curve"), std::string::npos) << far_off;
     const std::string small = error_of([&] { read_brep(moved_box("small.brep", "1e-02", 0, 1e-3)); });
     EXPECT_NE(small.find("is 1e-05 from the end of its edge's curve"), std::string::npos) << small;
+}
+
+// Tolerances the conversion sets to a distance it measures (SameParameter, BRepLib::UpdateTolerances) hold with no
+// room, and BRepTools writes vertices and edge ranges to 15 digits: a read nut's vertex kept 1.77e-5 off its edge's
+// end came back from its .brep InvalidPointOnCurve (Voron's modular bed support carriage). Here a drilled block whose
+// hole's rim vertex sits 1e-4 off its edges (the file's slack, kept), at placements whose last digits get rounded:
+// handed back to OpenCASCADE, written out and read again, still valid.
+TEST_F(HostileFiles, SolidsHandedOutStayValidWrittenToBrep) {
+    int invalid = 0;
+    for (int k = 0; k < 12; ++k) {
+        const double x = 123.456789012345678 * (k + 1) * (k % 2 ? -1 : 1), y = 0.1 * std::sqrt(k + 2.0);
+        TopoDS_Shape drilled = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(x, y, 0.3), 10, 10, 10).Shape(),
+                                               BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x + 5, y + 5, -1), gp_Dir(0, 0.1, 1)), 3, 12).Shape())
+                                   .Shape();
+        TopExp_Explorer rim(drilled, TopAbs_FACE);
+        for (; rim.More(); rim.Next())
+            if (BRep_Tool::Surface(TopoDS::Face(rim.Current()))->IsKind(STANDARD_TYPE(Geom_CylindricalSurface))) break;
+        ASSERT_TRUE(rim.More());
+        const TopoDS_Vertex vertex = TopoDS::Vertex(TopExp_Explorer(rim.Current(), TopAbs_VERTEX).Current());
+        BRep_Builder builder;
+        builder.UpdateVertex(vertex, BRep_Tool::Pnt(vertex).Translated(gp_Vec(1e-4, 0, 0)), 1e-7);
+        const std::string name = "drilled_" + std::to_string(k) + ".brep";
+        ASSERT_TRUE(BRepTools::Write(drilled, path(name).c_str()));
+        const TopoDS_Solid handed = occt::to_occt(read_brep(path(name)));
+        ASSERT_TRUE(BRepCheck_Analyzer(handed).IsValid()) << k;
+        std::stringstream text;
+        BRepTools::Write(handed, text);
+        TopoDS_Shape back;
+        BRepTools::Read(back, text, builder);
+        invalid += !BRepCheck_Analyzer(back).IsValid();
+        // Every vertex's tolerance above the distances it covers by more than the digits written lose.
+        for (TopExp_Explorer edges(handed, TopAbs_EDGE); edges.More(); edges.Next()) {
+            const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
+            double first = 0, last = 0;
+            const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+            if (curve.IsNull()) continue;
+            for (TopExp_Explorer ends(edge, TopAbs_VERTEX); ends.More(); ends.Next()) {
+                const TopoDS_Vertex& end = TopoDS::Vertex(ends.Current());
+                const double gap = curve->Value(BRep_Tool::Parameter(end, edge)).Distance(BRep_Tool::Pnt(end));
+                if (gap > 1e-9) EXPECT_GT(BRep_Tool::Tolerance(end), gap * (1 + 1e-7)) << k;
+            }
+        }
+    }
+    EXPECT_EQ(invalid, 0);
 }
 
 // STEP files mostly carry no p-curves, and OpenCASCADE's reader fits its own that stray between the points it fits

@@ -24,6 +24,7 @@
 
 #include <cmath>
 
+#include "ratbez/bspline_basis.hpp"
 #include "ratbez/construction.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "smooth_arcs.hpp"
@@ -131,16 +132,23 @@ double distance_from(const Round& round, const Vec3& p) {
     return HUGE_VAL;
 }
 
-// The sphere, torus, cylinder or cone the surface is, recognised on its control net and checked at 9 x 9 points.
+// The sphere, torus, cylinder or cone the surface is, recognised on its control net and checked at 8 points a span
+// each way. A surface running several turns round its axis (a face read from a file round a cylinder 15 times:
+// elementary_bspline in shape_import.cpp) is recognised on its first patch, which turns less than half a turn.
 std::optional<Round> exact_round(const NurbsSurface& surface, double size) {
-    const std::optional<Round> round = round_surface(surface, kFit * size);
+    const std::vector<double> us = breakpoints(surface.degree_u(), surface.knots_u()), vs = breakpoints(surface.degree_v(), surface.knots_v());
+    std::optional<Round> round = round_surface(surface, kFit * size);
+    if (!round && us.size() + vs.size() > 4)
+        round = round_surface(NurbsSurface::from_bezier(surface.bezier_patches().front().front()), kFit * size);
     if (!round) return std::nullopt;
-    const Interval du = surface.domain_u(), dv = surface.domain_v();
-    for (int i = 0; i <= 8; ++i)
-        for (int j = 0; j <= 8; ++j) {
-            const Vec3 p = surface.point(std::min(du.max, du.min + du.width() * i / 8), std::min(dv.max, dv.min + dv.width() * j / 8));
-            if (distance_from(*round, p) > kOnSurface * size) return std::nullopt;
-        }
+    for (std::size_t a = 0; a + 1 < us.size(); ++a)
+        for (int i = 0; i <= 8; ++i)
+            for (std::size_t b = 0; b + 1 < vs.size(); ++b)
+                for (int j = 0; j <= 8; ++j) {
+                    const Vec3 p = surface.point(i == 8 ? us[a + 1] : us[a] + (us[a + 1] - us[a]) * i / 8,
+                                                 j == 8 ? vs[b + 1] : vs[b] + (vs[b + 1] - vs[b]) * j / 8);
+                    if (distance_from(*round, p) > kOnSurface * size) return std::nullopt;
+                }
     return round;
 }
 

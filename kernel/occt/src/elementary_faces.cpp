@@ -27,6 +27,7 @@
 #include <Precision.hxx>
 #include <ShapeBuild_ReShape.hxx>
 #include <ShapeFix_Face.hxx>
+#include <ShapeUpgrade_ShapeDivideAngle.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_HArray1OfReal.hxx>
 #include <TColgp_HArray1OfPnt2d.hxx>
@@ -378,6 +379,25 @@ int count_faces(const TopoDS_Shape& shape) {
     return n;
 }
 
+// `shape`, or a copy with every face that runs more than a turn round its surface cut at each half turn
+// (ShapeUpgrade_ShapeDivideAngle): BRepGProp's adaptive rule misreads such a face (a cylinder's side cut open
+// along a helix of 3 turns: 2.4e-4 of the volume), and reads its half turns to rounding.
+TopoDS_Shape turns_apart(const TopoDS_Shape& shape) {
+    bool turns = false;
+    for (TopExp_Explorer faces(shape, TopAbs_FACE); faces.More() && !turns; faces.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(faces.Current());
+        const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+        double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+        turns = (surface->IsUPeriodic() && u1 - u0 > surface->UPeriod() * (1 + 1e-9)) ||
+                (surface->IsVPeriodic() && v1 - v0 > surface->VPeriod() * (1 + 1e-9));
+    }
+    if (!turns) return shape;
+    ShapeUpgrade_ShapeDivideAngle halves(M_PI, shape);
+    halves.Perform();
+    return halves.Result();
+}
+
 // One attempt with the faces of ours that have a surface in `surfaces`: the rebuilt solid, or nullopt with the
 // faces whose projected p-curves came out too far from their edges added to `refused` (or none, when the solid
 // as a whole is not valid or not of the kernel's volume).
@@ -489,7 +509,7 @@ std::optional<SplitSolid> rebuilt(const Solid& solid, const ConvertedSolid& conv
     BRepTools::RemoveUnusedPCurves(result);
     if (!BRepCheck_Analyzer(result).IsValid()) return std::nullopt;
     GProp_GProps properties;
-    BRepGProp::VolumeProperties(result, properties, 1e-9);
+    BRepGProp::VolumeProperties(turns_apart(result), properties, 1e-9);
     // A face trimmed by p-curves a file tolerance t off its edges may move its boundary by t: the volume by up to
     // area x t (as OpenCASCADE's reading of the file itself, tests/corpus).
     const double read_tolerance = largest_face_tolerance(solid);

@@ -28,6 +28,7 @@
 #include <Geom_Conic.hxx>
 #include <Geom_ConicalSurface.hxx>
 #include <Geom_CylindricalSurface.hxx>
+#include <Geom_ElementarySurface.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_Plane.hxx>
 #include <GeomAdaptor_Surface.hxx>
@@ -125,10 +126,75 @@ Handle(Geom_BSplineSurface) bspline_of(const Convert_ElementarySurfaceToBSplineS
                                    c.VDegree(), c.IsUPeriodic(), c.IsVPeriodic());
 }
 
+// The end of a full turn from `lo`: lo + period, less an ulp where the rounded sum leaves a difference above the
+// period (from 5 pi / 4 it does by 9e-16, where OpenCASCADE seams a sphere it read), which OpenCASCADE's
+// conversions refuse (Standard_DomainError).
+double full_turn_end(double lo, double period) {
+    double hi = lo + period;
+    while (hi - lo > period) hi = std::nextafter(hi, lo);
+    return hi;
+}
+
+// B-splines one after the other in u (or v): each piece's knots as they are (each starts where the one before ends,
+// at the pole they share, a knot of multiplicity `degree` there, as the arcs inside a turn meet); the same degree
+// and the same knots across.
+Handle(Geom_BSplineSurface) joined(const std::vector<Handle(Geom_BSplineSurface)>& pieces, bool in_u) {
+    std::vector<Handle(Geom_BSplineSurface)> s;
+    for (const auto& piece : pieces) {
+        s.push_back(Handle(Geom_BSplineSurface)::DownCast(piece->Copy()));
+        if (!in_u) s.back()->ExchangeUV();
+    }
+    const int m = s[0]->NbVPoles(), degree = s[0]->UDegree();
+    int poles_count = 1, knots_count = 1;
+    for (const auto& piece : s) poles_count += piece->NbUPoles() - 1, knots_count += piece->NbUKnots() - 1;
+    TColgp_Array2OfPnt poles(1, poles_count, 1, m);
+    TColStd_Array2OfReal weights(1, poles_count, 1, m);
+    TColStd_Array1OfReal knots(1, knots_count);
+    TColStd_Array1OfInteger multiplicities(1, knots_count);
+    int i0 = 0, k0 = 0;
+    for (std::size_t p = 0; p < s.size(); ++p) {
+        const Handle(Geom_BSplineSurface)& piece = s[p];
+        for (int i = 1; i <= piece->NbUPoles(); ++i)
+            for (int j = 1; j <= m; ++j) poles(i0 + i, j) = piece->Pole(i, j), weights(i0 + i, j) = piece->Weight(i, j);
+        for (int k = 1; k <= piece->NbUKnots(); ++k) {
+            const bool junction = (k == 1 && p > 0) || (k == piece->NbUKnots() && p + 1 < s.size());
+            knots(k0 + k) = piece->UKnot(k);
+            multiplicities(k0 + k) = junction ? degree : piece->UMultiplicity(k);
+        }
+        i0 += piece->NbUPoles() - 1, k0 += piece->NbUKnots() - 1;
+    }
+    TColStd_Array1OfReal v_knots(1, s[0]->NbVKnots());
+    TColStd_Array1OfInteger v_multiplicities(1, s[0]->NbVKnots());
+    s[0]->VKnots(v_knots);
+    s[0]->VMultiplicities(v_multiplicities);
+    Handle(Geom_BSplineSurface) whole = new Geom_BSplineSurface(poles, weights, knots, v_knots, multiplicities, v_multiplicities, degree, s[0]->VDegree());
+    if (!in_u) whole->ExchangeUV();
+    return whole;
+}
+
 // A cylinder, cone, sphere or torus over exactly the rectangle r: knots at its bounds, so the corners keep their
 // parameters wherever a full turn starts (GeomConvert turns a full turn from angle 0 and segments it, which
-// leaves the corner of a seam at angle 1 at 0.995); null for other surfaces.
+// leaves the corner of a seam at angle 1 at 0.995); null for other surfaces. A periodic direction may run
+// several turns (the crest of a nut's thread, a strip 15 turns round its cylinder): a turn at a time from r's
+// start, the last one to r's end, joined (each turn's rational form meets the surface's parameter at its knots
+// only, so the end of r must be the end of a conversion).
 Handle(Geom_BSplineSurface) elementary_bspline(const Handle(Geom_Surface)& basis, const std::array<double, 4>& r) {
+    for (const bool in_u : {true, false}) {
+        const bool periodic = in_u ? basis->IsUPeriodic() : basis->IsVPeriodic();
+        const double period = periodic ? (in_u ? basis->UPeriod() : basis->VPeriod()) : 0;
+        const double lo = in_u ? r[0] : r[2], hi = in_u ? r[1] : r[3];
+        if (!periodic || !(hi - lo > period)) continue;
+        std::vector<Handle(Geom_BSplineSurface)> turns;
+        for (double start = lo; start < hi;) {
+            const double end = hi - start > period ? full_turn_end(start, period) : hi;
+            const Handle(Geom_BSplineSurface) turn =
+                elementary_bspline(basis, in_u ? std::array<double, 4>{start, end, r[2], r[3]} : std::array<double, 4>{r[0], r[1], start, end});
+            if (turn.IsNull()) return turn;
+            turns.push_back(turn);
+            start = end;
+        }
+        return joined(turns, in_u);
+    }
     if (const auto s = Handle(Geom_CylindricalSurface)::DownCast(basis); !s.IsNull())
         return bspline_of(Convert_CylinderToBSplineSurface(s->Cylinder(), r[0], r[1], r[2], r[3]));
     if (const auto s = Handle(Geom_ConicalSurface)::DownCast(basis); !s.IsNull())
@@ -145,15 +211,6 @@ struct NaturalRectangle {
     std::array<double, 4> bounds{};
     std::array<std::optional<TopoDS_Edge>, 4> sides;  // oriented as the face uses them; OCCT's parameters
 };
-
-// The end of a full turn from `lo`: lo + period, less an ulp where the rounded sum leaves a difference above the
-// period (from 5 pi / 4 it does by 9e-16, where OpenCASCADE seams a sphere it read), which OpenCASCADE's
-// conversions refuse (Standard_DomainError).
-double full_turn_end(double lo, double period) {
-    double hi = lo + period;
-    while (hi - lo > period) hi = std::nextafter(hi, lo);
-    return hi;
-}
 
 // The largest tolerance OpenCASCADE gives the face, its edges and its vertices: how far the file lets its
 // boundary curves keep from the surface and from each other.
@@ -198,7 +255,8 @@ std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<doub
 
 // The rectangle of OCCT parameters a trimmed face's NURBS spans: the box of its p-curves (sampled), widened
 // by 1 % where the surface allows (a box from samples can miss a bulge of the curve between them) and fitted
-// to the surface (snapped). A face that goes all the way round a periodic direction spans exactly the period.
+// to the surface (snapped). A face that goes all the way round a periodic direction spans exactly the period, or
+// its turns round a cylinder, cone, sphere or torus.
 std::array<double, 4> trimmed_rectangle(const TopoDS_Face& face, const Handle(Geom_Surface)& basis) {
     double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
     for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
@@ -213,9 +271,17 @@ std::array<double, 4> trimmed_rectangle(const TopoDS_Face& face, const Handle(Ge
     require(u1 > u0 && v1 > v0, "shape", "the face's curves on its surface span no area");
     double a = 0, b = 0, c = 0, d = 0;
     basis->Bounds(a, b, c, d);
-    const auto widen = [](double& lo, double& hi, bool periodic, double period, double min, double max) {
+    // A face may run more than a turn round an elementary surface (elementary_bspline): p-curves a twentieth of a
+    // turn beyond one, far beyond a seam's rounding or OpenCASCADE's loose fits, keep their turns (the chamfer of
+    // a nut's thread runs 1.15 turns round its cone).
+    const bool turns_allowed = basis->IsKind(STANDARD_TYPE(Geom_ElementarySurface)) && !basis->IsKind(STANDARD_TYPE(Geom_Plane));
+    const auto widen = [turns_allowed](double& lo, double& hi, bool periodic, double period, double min, double max) {
         const double margin = 0.01 * (hi - lo);
         if (periodic) {
+            if (turns_allowed && hi - lo >= 1.05 * period) {
+                lo -= margin, hi += margin;
+                return;
+            }
             if (hi - lo >= period * (1 - 1e-9)) {
                 hi = full_turn_end(lo, period);
                 return;

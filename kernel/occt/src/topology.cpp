@@ -24,6 +24,8 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_DataMapIteratorOfDataMapOfShapeShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Ax3.hxx>
@@ -958,9 +960,32 @@ ConvertedSolid convert(const Solid& solid, const ConvertOptions& options, const 
 }
 
 namespace detail {
+namespace {
 
-SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const ConvertOptions& options,
-                      const Progress& progress) {
+// Tolerances set to a distance just measured (SameParameter, BRepLib::UpdateTolerances, a file's gap kept) hold
+// with no room, and writing the solid moves its vertices and edge ranges by their last digits (BRepTools writes
+// them to 15): a read nut's vertex, 1.77e-5 off its edge's end at tolerance 1.77e-5, came back from its .brep
+// InvalidPointOnCurve. Tolerances above OpenCASCADE's least get a millionth more (the vertices two, so that they
+// still cover their edges), far below anything they measure and far above the digits lost.
+SplitSolid with_room_for_rounding(SplitSolid handed) {
+    BRep_Builder builder;
+    for (TopExp_Explorer edges(handed.solid, TopAbs_EDGE); edges.More(); edges.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
+        if (const double tolerance = BRep_Tool::Tolerance(edge); tolerance > Precision::Confusion())
+            builder.UpdateEdge(edge, tolerance * (1 + 1e-6));
+    }
+    TopTools_IndexedMapOfShape vertices;
+    TopExp::MapShapes(handed.solid, TopAbs_VERTEX, vertices);
+    for (int v = 1; v <= vertices.Extent(); ++v) {
+        const TopoDS_Vertex& vertex = TopoDS::Vertex(vertices(v));
+        if (const double tolerance = BRep_Tool::Tolerance(vertex); tolerance > Precision::Confusion())
+            builder.UpdateVertex(vertex, tolerance * (1 + 2e-6));
+    }
+    return handed;
+}
+
+SplitSolid handed_out_as_built(const Solid& solid, const ConvertedSolid& converted, const ConvertOptions& options,
+                               const Progress& progress) {
     if (options.analytic_primitives && !options.bezier_faces)
         if (const std::optional<TopoDS_Solid> primitive = analytic_primitive(solid)) {
             SplitSolid handed{*primitive, {}};
@@ -984,6 +1009,13 @@ SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const
         }
     }
     return split_at_c0_knots(converted.solid, converted.tolerance, progress);
+}
+
+}  // namespace
+
+SplitSolid handed_out(const Solid& solid, const ConvertedSolid& converted, const ConvertOptions& options,
+                      const Progress& progress) {
+    return with_room_for_rounding(handed_out_as_built(solid, converted, options, progress));
 }
 
 }  // namespace detail
