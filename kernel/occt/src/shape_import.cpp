@@ -175,23 +175,25 @@ Handle(Geom_BSplineSurface) joined(const std::vector<Handle(Geom_BSplineSurface)
 // A cylinder, cone, sphere or torus over exactly the rectangle r: knots at its bounds, so the corners keep their
 // parameters wherever a full turn starts (GeomConvert turns a full turn from angle 0 and segments it, which
 // leaves the corner of a seam at angle 1 at 0.995); null for other surfaces. A periodic direction may run
-// several turns (the crest of a nut's thread, a strip 15 turns round its cylinder): a turn at a time from r's
-// start, the last one to r's end, joined (each turn's rational form meets the surface's parameter at its knots
-// only, so the end of r must be the end of a conversion).
+// several turns (the crest of a nut's thread, a strip 15 turns round its cylinder): converted in pieces of less
+// than a turn, joined (each piece's rational form meets the surface's parameter at its knots only, so r's ends
+// must be the ends of conversions).
 Handle(Geom_BSplineSurface) elementary_bspline(const Handle(Geom_Surface)& basis, const std::array<double, 4>& r) {
     for (const bool in_u : {true, false}) {
         const bool periodic = in_u ? basis->IsUPeriodic() : basis->IsVPeriodic();
         const double period = periodic ? (in_u ? basis->UPeriod() : basis->VPeriod()) : 0;
         const double lo = in_u ? r[0] : r[2], hi = in_u ? r[1] : r[3];
-        if (!periodic || !(hi - lo > period)) continue;
+        if (!periodic || !(hi - lo > period * (1 + 1e-9))) continue;
+        // n equal pieces, each short of a turn by at least 1e-12 of it (rounding cannot carry one past a turn,
+        // which the conversions refuse), none a sliver where r runs a hair past whole turns.
+        const int n = static_cast<int>(std::ceil((hi - lo) / period * (1 + 1e-12)));
         std::vector<Handle(Geom_BSplineSurface)> turns;
-        for (double start = lo; start < hi;) {
-            const double end = hi - start > period ? full_turn_end(start, period) : hi;
+        for (int k = 0; k < n; ++k) {
+            const double start = lo + (hi - lo) * k / n, end = k + 1 == n ? hi : lo + (hi - lo) * (k + 1) / n;
             const Handle(Geom_BSplineSurface) turn =
                 elementary_bspline(basis, in_u ? std::array<double, 4>{start, end, r[2], r[3]} : std::array<double, 4>{r[0], r[1], start, end});
             if (turn.IsNull()) return turn;
             turns.push_back(turn);
-            start = end;
         }
         return joined(turns, in_u);
     }
