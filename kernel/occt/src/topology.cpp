@@ -969,12 +969,13 @@ namespace {
 // still cover their edges), far below anything they measure and far above the digits lost.
 SplitSolid with_room_for_rounding(SplitSolid handed) {
     BRep_Builder builder;
-    for (TopExp_Explorer edges(handed.solid, TopAbs_EDGE); edges.More(); edges.Next()) {
-        const TopoDS_Edge& edge = TopoDS::Edge(edges.Current());
+    TopTools_IndexedMapOfShape edges, vertices;  // each once (an explorer meets an edge once per face using it)
+    TopExp::MapShapes(handed.solid, TopAbs_EDGE, edges);
+    for (int e = 1; e <= edges.Extent(); ++e) {
+        const TopoDS_Edge& edge = TopoDS::Edge(edges(e));
         if (const double tolerance = BRep_Tool::Tolerance(edge); tolerance > Precision::Confusion())
             builder.UpdateEdge(edge, tolerance * (1 + 1e-6));
     }
-    TopTools_IndexedMapOfShape vertices;
     TopExp::MapShapes(handed.solid, TopAbs_VERTEX, vertices);
     for (int v = 1; v <= vertices.Extent(); ++v) {
         const TopoDS_Vertex& vertex = TopoDS::Vertex(vertices(v));
