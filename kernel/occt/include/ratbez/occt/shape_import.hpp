@@ -23,7 +23,9 @@
 // A REVERSED face has its u direction reversed so that S_u x S_v points out.
 // Files are read as they are written: parameter ranges that overshoot a period or a bound by rounding are
 // snapped onto it, knots that dip by rounding are levelled (geometry.hpp), loops off their plane and p-curves
-// off their edges are accepted within the file's own tolerances (recorded as Face::tolerance).
+// off their edges are accepted within the file's own tolerances and its slack (a ten-thousandth of the solid's
+// size; recorded as Face::tolerance). A face may run several turns round a cylinder, cone, sphere or torus (a
+// thread's crest): its NURBS runs as many turns.
 // Refused with ratbez::Error naming "shape" and the face: offset and other surfaces without an exact NURBS form,
 // an edge whose curve misses its vertices by more than the file's tolerances, faces that do not close into
 // valid shells (Face and Solid validation, brep.hpp). `progress` is called with the fraction of faces done, and
