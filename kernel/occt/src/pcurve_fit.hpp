@@ -11,8 +11,10 @@
 // the surface (Newton from where OpenCASCADE's p-curve says the point is, so a seam
 // is approached from the right side; a local Newton, no global search) and interpolated by a cubic B-spline in t (The NURBS Book A9.1), refined
 // where the curve between the samples strays from the projection, until the fit agrees with the projections
-// to 1e-3 of the face's tolerance. What the fit then carries is recorded: the distance between the surface
-// along it and the edge (which includes the file's own gap between its 3D curve and its surface).
+// to 1e-3 of the face's tolerance. Where the projections fold (two land on one place: an edge far off its face,
+// beyond the surface's corner), the file's own p-curve is fitted instead, if it keeps within the face's
+// tolerance of the edge. What the fit then carries is recorded: the distance between the surface along it and
+// the edge (which includes the file's own gap between its 3D curve and its surface).
 // Exposes OCCT types: kernel/occt's translation units only.
 
 #include <Geom2d_Curve.hxx>
