@@ -534,12 +534,12 @@ TEST(ImportShapes, EdgesWhoseProjectionFoldsKeepTheFilesPCurveWithinItsTolerance
     const NurbsCurve edge(2, {0, 0, 0, 1, 1, 1}, {Vec3{0, 1, 0}, Vec3{-0.6, 1.6, 0.3}, Vec3{1, 1, 0}});
     const auto along_the_side = [](double t) { return gp_Pnt2d(t, 1); };
     detail::PcurveFitter fitter(square, 1.5);
-    const detail::FittedPcurve fitted = fitter.fit(edge, along_the_side, nullptr, 1.0);
+    const detail::FittedPcurve fitted = fitter.fit(edge, along_the_side, nullptr, 1.0, /*guess_exact=*/true);
     EXPECT_GT(fitted.deviation, 0.3);
     EXPECT_LE(fitted.deviation, 1.0);
     EXPECT_NEAR(distance(fitted.curve.point(0.5), Vec3{0.5, 1, 0}), 0, 1e-9);
     try {
-        fitter.fit(edge, along_the_side, nullptr, 0.1);
+        fitter.fit(edge, along_the_side, nullptr, 0.1, /*guess_exact=*/true);
         ADD_FAILURE() << "a p-curve 0.3 off its edge was taken at tolerance 0.1";
     } catch (const Error& error) {
         EXPECT_NE(std::string(error.what()).find("could not be fitted"), std::string::npos) << error.what();

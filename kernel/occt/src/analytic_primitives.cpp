@@ -138,7 +138,7 @@ double distance_from(const Round& round, const Vec3& p) {
 std::optional<Round> exact_round(const NurbsSurface& surface, double size) {
     const std::vector<double> us = breakpoints(surface.degree_u(), surface.knots_u()), vs = breakpoints(surface.degree_v(), surface.knots_v());
     std::optional<Round> round = round_surface(surface, kFit * size);
-    if (!round && us.size() + vs.size() > 4)
+    if (!round && surface.is_rational() && us.size() + vs.size() > 4)  // (the many turns are rational arcs)
         round = round_surface(NurbsSurface::from_bezier(surface.bezier_patches().front().front()), kFit * size);
     if (!round) return std::nullopt;
     for (std::size_t a = 0; a + 1 < us.size(); ++a)

@@ -379,9 +379,10 @@ int count_faces(const TopoDS_Shape& shape) {
     return n;
 }
 
-// `shape`, or a copy with every face that runs more than a turn round its surface cut at each half turn
-// (ShapeUpgrade_ShapeDivideAngle): BRepGProp's adaptive rule misreads such a face (a cylinder's side cut open
-// along a helix of 3 turns: 2.4e-4 of the volume), and reads its half turns to rounding.
+// `shape`, or a copy with every face that runs more than a turn round its surface cut at each half turn in u
+// (ShapeUpgrade_ShapeDivideAngle, which cuts u only): BRepGProp's adaptive rule misreads such a face (a cylinder's
+// side cut open along a helix of 3 turns: 2.4e-4 of the volume), and reads its half turns to rounding. A face of
+// several turns in v (round a torus's tube) stays whole; its rebuild is then refused unless BRepGProp reads it.
 TopoDS_Shape turns_apart(const TopoDS_Shape& shape) {
     bool turns = false;
     for (TopExp_Explorer faces(shape, TopAbs_FACE); faces.More() && !turns; faces.Next()) {
@@ -389,8 +390,7 @@ TopoDS_Shape turns_apart(const TopoDS_Shape& shape) {
         const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
         double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
         BRepTools::UVBounds(face, u0, u1, v0, v1);
-        turns = (surface->IsUPeriodic() && u1 - u0 > surface->UPeriod() * (1 + 1e-9)) ||
-                (surface->IsVPeriodic() && v1 - v0 > surface->VPeriod() * (1 + 1e-9));
+        turns = surface->IsUPeriodic() && u1 - u0 > surface->UPeriod() * (1 + 1e-9);
     }
     if (!turns) return shape;
     ShapeUpgrade_ShapeDivideAngle halves(M_PI, shape);

@@ -113,7 +113,7 @@ double PcurveFitter::deviation(const NurbsCurve& candidate, const NurbsCurve& ed
 }
 
 FittedPcurve PcurveFitter::fit(const NurbsCurve& edge, const std::function<gp_Pnt2d(double)>& guess,
-                               const NurbsCurve* exact_candidate, double tolerance) {
+                               const NurbsCurve* exact_candidate, double tolerance, bool guess_exact) {
     const Interval d = edge.domain();
     if (exact_candidate != nullptr) {
         const Interval c = exact_candidate->domain();
@@ -188,7 +188,7 @@ FittedPcurve PcurveFitter::fit(const NurbsCurve& edge, const std::function<gp_Pn
         }
         ts = std::move(merged_t), uvs = std::move(merged_uv);
     }
-    if (!best) {
+    if (!best && guess_exact) {
         // The edge's projection folds (two samples land on one place): its 3D curve keeps far from the surface, as
         // far as the file's tolerance for it (a Voron LED mount's 0.4 mm sliver face, its circle 0.36 off it at
         // tolerance 0.56). The file's own p-curve, then, fitted as it is, where it keeps within the face's tolerance

@@ -12,8 +12,8 @@
 // is approached from the right side; a local Newton, no global search) and interpolated by a cubic B-spline in t (The NURBS Book A9.1), refined
 // where the curve between the samples strays from the projection, until the fit agrees with the projections
 // to 1e-3 of the face's tolerance. Where the projections fold (two land on one place: an edge far off its face,
-// beyond the surface's corner), the file's own p-curve is fitted instead, if it keeps within the face's
-// tolerance of the edge. What the fit then carries is recorded: the distance between the surface along it and
+// beyond the surface's corner), the file's own p-curve is fitted instead where it is in our parameters (a
+// B-spline face), if it keeps within the face's tolerance of the edge. What the fit then carries is recorded: the distance between the surface along it and
 // the edge (which includes the file's own gap between its 3D curve and its surface).
 // Exposes OCCT types: kernel/occt's translation units only.
 
@@ -42,10 +42,11 @@ public:
     PcurveFitter(const NurbsSurface& surface, double size);
 
     // The p-curve of `edge` on the surface. `guess(t)` says roughly where the edge's point at t is in (u, v)
-    // (OpenCASCADE's p-curve, mapped to our parameters); `exact_candidate`, when not null, is a 2D curve the
-    // file gives with the edge's own parameter. `tolerance` is the face's (the file's edge tolerance).
+    // (OpenCASCADE's p-curve, mapped to our parameters; `guess_exact` when the mapping is exact, as on a B-spline
+    // face, not a rational form of an analytic one); `exact_candidate`, when not null, is a 2D curve the file
+    // gives with the edge's own parameter. `tolerance` is the face's (the file's edge tolerance).
     FittedPcurve fit(const NurbsCurve& edge, const std::function<gp_Pnt2d(double)>& guess,
-                     const NurbsCurve* exact_candidate, double tolerance);
+                     const NurbsCurve* exact_candidate, double tolerance, bool guess_exact = false);
 
 private:
     // The (u, v) nearest to p, by Newton from `guess`; along a pole the free parameter keeps the guess's value.

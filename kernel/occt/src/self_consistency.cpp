@@ -15,6 +15,7 @@
 #include <ShapeAnalysis_Surface.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapOfShapeReal.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
@@ -303,9 +304,16 @@ void check_self_consistency(const TopoDS_Shape& shape) {
         }
     }
     if (any_solid) return;
-    const double size = size_of(shape);
+    // Faces without a solid: each held to the size of its shell (a pin of a surface-model part, not the whole
+    // part: the slack is a ten-thousandth of it), or of itself outside every shell.
+    TopTools_DataMapOfShapeReal shell_size;
+    for (TopExp_Explorer shells(shape, TopAbs_SHELL); shells.More(); shells.Next()) {
+        const double size = size_of(shells.Current());
+        for (TopExp_Explorer it(shells.Current(), TopAbs_FACE); it.More(); it.Next()) shell_size.Bind(it.Current(), size);
+    }
     int f = 0;
     for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next(), ++f) {
+        const double size = shell_size.IsBound(it.Current()) ? shell_size.Find(it.Current()) : size_of(it.Current());
         try {
             check_face(TopoDS::Face(it.Current()), size);
         } catch (const Error& error) {

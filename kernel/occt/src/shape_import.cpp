@@ -233,10 +233,10 @@ double file_tolerance(const TopoDS_Face& face) {
 // from as far as the face's `tolerance` reaches in its parameter (GeomAdaptor_Surface's resolution): p-curves
 // fitted by an exporter overshoot a B-spline's domain (Ventilator.stp, pythonocc-demos: by 2.3e-9 of a v range
 // of 0.5, its edges' tolerance 2e-4), and a full turn by as much. A `natural` face's rectangle, whose sides are
-// the surface's bounds, may fall short of them by as much, too (a Voron blower duct's ends 7e-10 inside a v range
-// of 0.3, where OpenCASCADE's Segment cannot cut: it snaps to a knot within Precision::PConfusion): it goes out
-// to them. A rectangle wider than the period by more than 1e-9 of it and that reach is left alone (the
-// conversion reports it).
+// the surface's bounds, may fall short of them by rounding (a Voron blower duct's ends 7e-10 inside a v range of
+// 0.3), where OpenCASCADE's Segment cannot cut (it snaps to a knot within Precision::PConfusion): from that near,
+// it goes out to them. A rectangle wider than the period by more than 1e-9 of it and that reach is left alone
+// (the conversion reports it).
 std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<double, 4> r, double tolerance, bool natural = false) {
     double a = 0, b = 0, c = 0, d = 0;
     basis->Bounds(a, b, c, d);
@@ -247,8 +247,9 @@ std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<doub
             return;
         }
         const double slack = std::max(1e-9 * std::max(1.0, max - min), reach);
-        if (!Precision::IsInfinite(min) && (lo < min || natural) && std::abs(lo - min) <= slack) lo = min;
-        if (!Precision::IsInfinite(max) && (hi > max || natural) && std::abs(hi - max) <= slack) hi = max;
+        const double short_by = std::max(1e-9 * (max - min), Precision::PConfusion());  // what Segment cannot cut
+        if (!Precision::IsInfinite(min) && ((lo < min && min - lo <= slack) || (natural && lo >= min && lo - min <= short_by))) lo = min;
+        if (!Precision::IsInfinite(max) && ((hi > max && hi - max <= slack) || (natural && hi <= max && max - hi <= short_by))) hi = max;
     };
     snap(r[0], r[1], basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b, adaptor.UResolution(tolerance));
     snap(r[2], r[3], basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d, adaptor.VResolution(tolerance));
@@ -763,7 +764,7 @@ private:
                     } catch (const Standard_Failure&) {
                     }
                 }
-                detail::FittedPcurve fitted = fitter.fit(curve, guess, exact ? &*exact : nullptr, tolerance);
+                detail::FittedPcurve fitted = fitter.fit(curve, guess, exact ? &*exact : nullptr, tolerance, same_surface_parameters);
                 require(fitted.deviation <= carried, "shape", [&] {
                     return "an edge's curve on its face could not be fitted (the fit keeps " + exact_number(fitted.deviation) +
                            " from the edge, more than the file's tolerance " + exact_number(stated) + " allows)";

@@ -2,7 +2,9 @@
 
 #include "ratbez/occt/topology.hpp"
 
+#include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <Bnd_Box.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2d_BSplineCurve.hxx>
@@ -965,22 +967,32 @@ namespace {
 // Tolerances set to a distance just measured (SameParameter, BRepLib::UpdateTolerances, a file's gap kept) hold
 // with no room, and writing the solid moves its vertices and edge ranges by their last digits (BRepTools writes
 // them to 15): a read nut's vertex, 1.77e-5 off its edge's end at tolerance 1.77e-5, came back from its .brep
-// InvalidPointOnCurve. Tolerances above OpenCASCADE's least get a millionth more (the vertices two, so that they
-// still cover their edges), far below anything they measure and far above the digits lost.
+// InvalidPointOnCurve. Tolerances above OpenCASCADE's least get a millionth more, and at least 1e-12 of the
+// coordinates (15 digits lose up to 5e-16 of them); the vertices twice that, so that they still cover their
+// edges. Far below anything they measure. In place: convert's own solid, where it goes out as it is, too.
 SplitSolid with_room_for_rounding(SplitSolid handed) {
+    Bnd_Box box;
+    BRepBndLib::Add(handed.solid, box);
+    double scale = 1;
+    if (!box.IsVoid()) {
+        double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+        box.Get(x0, y0, z0, x1, y1, z1);
+        scale = std::max({1.0, std::abs(x0), std::abs(y0), std::abs(z0), std::abs(x1), std::abs(y1), std::abs(z1)});
+    }
+    const auto room = [scale](double tolerance) { return std::max(1e-6 * tolerance, 1e-12 * scale); };
     BRep_Builder builder;
     TopTools_IndexedMapOfShape edges, vertices;  // each once (an explorer meets an edge once per face using it)
     TopExp::MapShapes(handed.solid, TopAbs_EDGE, edges);
     for (int e = 1; e <= edges.Extent(); ++e) {
         const TopoDS_Edge& edge = TopoDS::Edge(edges(e));
         if (const double tolerance = BRep_Tool::Tolerance(edge); tolerance > Precision::Confusion())
-            builder.UpdateEdge(edge, tolerance * (1 + 1e-6));
+            builder.UpdateEdge(edge, tolerance + room(tolerance));
     }
     TopExp::MapShapes(handed.solid, TopAbs_VERTEX, vertices);
     for (int v = 1; v <= vertices.Extent(); ++v) {
         const TopoDS_Vertex& vertex = TopoDS::Vertex(vertices(v));
         if (const double tolerance = BRep_Tool::Tolerance(vertex); tolerance > Precision::Confusion())
-            builder.UpdateVertex(vertex, tolerance * (1 + 2e-6));
+            builder.UpdateVertex(vertex, tolerance + 2 * room(tolerance));
     }
     return handed;
 }
