@@ -2,9 +2,7 @@
 
 #include "ratbez/occt/topology.hpp"
 
-#include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
-#include <Bnd_Box.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2d_BSplineCurve.hxx>
@@ -971,24 +969,21 @@ namespace {
 // coordinates (15 digits lose up to 5e-16 of them); the vertices twice that, so that they still cover their
 // edges. Far below anything they measure. In place: convert's own solid, where it goes out as it is, too.
 SplitSolid with_room_for_rounding(SplitSolid handed) {
-    Bnd_Box box;
-    BRepBndLib::Add(handed.solid, box);
-    double scale = 1;
-    if (!box.IsVoid()) {
-        double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
-        box.Get(x0, y0, z0, x1, y1, z1);
-        scale = std::max({1.0, std::abs(x0), std::abs(y0), std::abs(z0), std::abs(x1), std::abs(y1), std::abs(z1)});
+    TopTools_IndexedMapOfShape edges, vertices;  // each once (an explorer meets an edge once per face using it)
+    TopExp::MapShapes(handed.solid, TopAbs_EDGE, edges);
+    TopExp::MapShapes(handed.solid, TopAbs_VERTEX, vertices);
+    double scale = 1;  // the largest coordinate written (the vertices'; the curves' ends are at them)
+    for (int v = 1; v <= vertices.Extent(); ++v) {
+        const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertices(v)));
+        scale = std::max({scale, std::abs(p.X()), std::abs(p.Y()), std::abs(p.Z())});
     }
     const auto room = [scale](double tolerance) { return std::max(1e-6 * tolerance, 1e-12 * scale); };
     BRep_Builder builder;
-    TopTools_IndexedMapOfShape edges, vertices;  // each once (an explorer meets an edge once per face using it)
-    TopExp::MapShapes(handed.solid, TopAbs_EDGE, edges);
     for (int e = 1; e <= edges.Extent(); ++e) {
         const TopoDS_Edge& edge = TopoDS::Edge(edges(e));
         if (const double tolerance = BRep_Tool::Tolerance(edge); tolerance > Precision::Confusion())
             builder.UpdateEdge(edge, tolerance + room(tolerance));
     }
-    TopExp::MapShapes(handed.solid, TopAbs_VERTEX, vertices);
     for (int v = 1; v <= vertices.Extent(); ++v) {
         const TopoDS_Vertex& vertex = TopoDS::Vertex(vertices(v));
         if (const double tolerance = BRep_Tool::Tolerance(vertex); tolerance > Precision::Confusion())
