@@ -44,6 +44,8 @@
 #include <TColgp_HArray1OfPnt.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_CylindricalSurface.hxx>
+#include <Geom_Line.hxx>
+#include <Geom_SurfaceOfRevolution.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -299,9 +301,10 @@ TEST(ImportShapes, FullTurnsKeepTheirOwnSeam) {
 
 // A cylinder's side cut open along a helix of `turns` turns: one face whose parameters run turns + 1 turns, the
 // helix its seam, between two caps. Its 3D curves: the rims' circles, and the helix interpolated at its p-curves'
-// parameter (to 1e-9).
-TopoDS_Solid cut_open_along_a_helix(double radius, double height, double turns) {
-    const Handle(Geom_CylindricalSurface) surface = new Geom_CylindricalSurface(gp_Ax3(), radius);
+// parameter (to 1e-9). `surface` is OCCT's cylinder, or another surface with the cylinder's parameters.
+TopoDS_Solid cut_open_along_a_helix(double radius, double height, double turns,
+                                    Handle(Geom_Surface) surface = Handle(Geom_Surface)()) {
+    if (surface.IsNull()) surface = new Geom_CylindricalSurface(gp_Ax3(), radius);
     BRep_Builder builder;
     TopoDS_Face side;
     builder.MakeFace(side, surface, 1e-7);
@@ -392,6 +395,19 @@ TEST(ImportShapes, FacesRunningSeveralTurnsRoundTheirSurfaceReadExactly) {
         BRepGProp::VolumeProperties(out, properties);
         EXPECT_NEAR(properties.Mass(), volume, 1e-4 * volume) << turns;
     }
+}
+
+// The turns are repeated for OCCT's cylinders, cones, spheres and tori only. The same face on a surface of
+// revolution (the cylinder's parameters, converted to one turn of rational patches) is refused, since its fits keep
+// far from its edges, not read on one turn: without the refusal, an invalid solid would go to FreeCAD.
+TEST(ImportShapes, FacesRunningSeveralTurnsRoundOtherSurfacesAreRefused) {
+    const double radius = 1.5;
+    const Handle(Geom_Surface) revolution =
+        new Geom_SurfaceOfRevolution(new Geom_Line(gp_Pnt(radius, 0, 0), gp::DZ()), gp_Ax1(gp::Origin(), gp::DZ()));
+    const TopoDS_Solid solid = cut_open_along_a_helix(radius, 1.2, 3.0, revolution);
+    ASSERT_TRUE(BRepCheck_Analyzer(solid).IsValid());
+    const std::string reason = refusal(solid);
+    EXPECT_NE(reason.find("could not be fitted (the fit keeps"), std::string::npos) << reason;
 }
 
 TEST(ImportShapes, SeveralSolidsAreRefused) {
