@@ -263,16 +263,48 @@ std::string status_name(BRepCheck_Status status) {
     return index < std::size(kNames) ? kNames[index] : "status " + std::to_string(index);
 }
 
-// BRepCheck's verdict on a solid: the first face with a fault and the fault's name.
+// What a BRepCheck status means for a face, in the words of someone who drew it; empty where the name says enough.
+std::string in_words(BRepCheck_Status status) {
+    switch (status) {
+        case BRepCheck_SelfIntersectingWire: return "a loop of its boundary touches or crosses itself";
+        case BRepCheck_NotClosed: return "a loop of its boundary does not close on its surface";
+        case BRepCheck_IntersectingWires: return "two loops of its boundary cross";
+        case BRepCheck_InvalidImbricationOfWires: return "its loops do not nest as outer boundary and holes";
+        case BRepCheck_UnorientableShape: return "its loops do not bound a region";
+        default: return {};
+    }
+}
+
+// The first fault BRepCheck reports for `face`. A loop's fault in the face (a loop touching itself, one that does
+// not close on the surface) comes before the face's own: the face's UnorientableShape only follows from it.
+std::optional<BRepCheck_Status> first_fault(const BRepCheck_Analyzer& analyzer, const TopoDS_Face& face) {
+    const auto first_of = [](const BRepCheck_ListOfStatus& statuses) -> std::optional<BRepCheck_Status> {
+        for (BRepCheck_ListIteratorOfListOfStatus it(statuses); it.More(); it.Next())
+            if (it.Value() != BRepCheck_NoError) return it.Value();
+        return std::nullopt;
+    };
+    for (TopExp_Explorer wires(face, TopAbs_WIRE); wires.More(); wires.Next()) {
+        const Handle(BRepCheck_Result)& result = analyzer.Result(wires.Current());
+        if (result.IsNull()) continue;
+        if (const auto own = first_of(result->Status())) return own;
+        for (result->InitContextIterator(); result->MoreShapeInContext(); result->NextShapeInContext())
+            if (result->ContextualShape().IsSame(face))
+                if (const auto in_face = first_of(result->StatusOnShape())) return in_face;
+    }
+    const Handle(BRepCheck_Result)& result = analyzer.Result(face);
+    return result.IsNull() ? std::nullopt : first_of(result->Status());
+}
+
+// BRepCheck's verdict on a solid: the first face with a fault, the fault in words and by BRepCheck's name.
 void check_with_brepcheck(const TopoDS_Shape& solid, const TopTools_IndexedMapOfShape& faces) {
     BRepCheck_Analyzer analyzer(solid);
     if (analyzer.IsValid()) return;
     for (int f = 1; f <= faces.Extent(); ++f) {
-        const Handle(BRepCheck_Result)& result = analyzer.Result(faces(f));
-        if (result.IsNull()) continue;
-        for (BRepCheck_ListIteratorOfListOfStatus it(result->Status()); it.More(); it.Next())
-            if (it.Value() != BRepCheck_NoError)
-                fail("shape", "face " + std::to_string(f - 1) + ": OpenCASCADE's BRepCheck finds it invalid (" + status_name(it.Value()) + ")");
+        const std::optional<BRepCheck_Status> fault = first_fault(analyzer, TopoDS::Face(faces(f)));
+        if (!fault) continue;
+        const std::string words = in_words(*fault);
+        fail("shape", "face " + std::to_string(f - 1) + ": " + (words.empty() ? "" : words + ": ") +
+                          "OpenCASCADE's BRepCheck finds it invalid (" + status_name(*fault) + ")");
     }
     fail("shape", "OpenCASCADE's BRepCheck finds the solid invalid");
 }
