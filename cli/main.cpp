@@ -187,6 +187,7 @@ struct MeshRequest {
     std::optional<std::size_t> max_triangles;
     bool tolerance_from_option = false;  // --tolerance, else the spec's `tolerance` or the default
     ratbez::Progress progress;           // optional
+    bool check_self_intersections = true;  // and mesh finer where the mesh intersects itself (tessellate_for_export)
 };
 
 ratbez::Mesh tessellate_for(const ShapeSpec& spec, const MeshRequest& request) {
@@ -198,7 +199,9 @@ ratbez::Mesh tessellate_for(const ShapeSpec& spec, const MeshRequest& request) {
     try {
         // Refused from the plan, before the mesh is built, when it would exceed what the export's mesh checks
         // (or the memory limit) take, as well as the budget (issue 29).
-        return ratbez::exporter::tessellate_for_export(spec.solid, options);
+        ratbez::exporter::MeshCheckOptions checks;
+        checks.check_self_intersections = request.check_self_intersections;
+        return ratbez::exporter::tessellate_for_export(spec.solid, options, checks);
     } catch (const ratbez::TooFine& e) {
         // The limit as the user knows it: their --max-triangles, the default budget, or the checks' limit
         // (already worded by tessellate_for_export); the tolerance that fits as the option that sets it.
@@ -345,7 +348,8 @@ double tolerance_for(const ShapeSpec& spec, const ExportRequest& request) {
 
 ratbez::Mesh tessellate_for(const ShapeSpec& spec, const ExportRequest& request, const ratbez::Progress& progress) {
     return tessellate_for(spec, MeshRequest{tolerance_for(spec, request), request.angle ? request.angle : spec.tessellation_angle,
-                                            request.max_triangles, request.tolerance.has_value(), progress});
+                                            request.max_triangles, request.tolerance.has_value(), progress,
+                                            !request.skip_self_intersection_check});
 }
 
 std::optional<ratbez::exporter::Color> color_of(const ShapeSpec& spec) {

@@ -198,12 +198,31 @@ Mesh tessellate_for_export(const Solid& solid, TessellationOptions options, cons
     const TriangleLimit limit = checked_triangle_limit(checks);
     const bool checks_bind = limit.triangles < options.max_triangles;
     if (checks_bind) options.max_triangles = std::max<std::size_t>(limit.triangles, 1);
+    Mesh mesh;
     try {
-        return tessellate(solid, options);
+        mesh = tessellate(solid, options);
     } catch (const TooFine& e) {
         if (!checks_bind) throw;
         throw e.reworded(limit.limit, "a tolerance of");
     }
+    if (!checks.check_self_intersections) return mesh;
+    // A coarse mesh of a face that meets another at a shallow angle can poke through it: a Voron bed carriage's
+    // bore, meshed at the body's default tolerance 0.145, put a vertex 0.027 beyond the plane it ends in. Such a
+    // solid is meshed again at half the tolerance, up to three times: finer, so still within the tolerance asked
+    // (the budget permitting; else the export's checks refuse the first mesh and say why).
+    MeshCheckOptions intersections;
+    intersections.max_triangles = checks.max_triangles;
+    for (int halving = 0; halving < 3; ++halving) {
+        const MeshReport report = check_mesh(mesh, intersections);
+        if (!report.manifold || report.self_intersection_free != false) break;
+        options.tolerance *= 0.5;
+        try {
+            mesh = tessellate(solid, options);
+        } catch (const TooFine&) {
+            break;
+        }
+    }
+    return mesh;
 }
 
 Mesh rounded_mesh(const Mesh& mesh, int decimals) {

@@ -184,6 +184,23 @@ TEST_F(ExportTessellation, ImportStlWritesTheMeshBesideAndAModuleThatImportsIt) 
         for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(triangles[t][k], written.mesh.vertices[mesh.triangles[t][k]]);
 }
 
+// STL has no vertex table: its readers join corners by their float32 coordinates. A vertex 1e-7 from another at
+// 100 (a file's tiny edge) is the same vertex to them; the triangles between the two collapse and the mesh they
+// read is closed. It is written so, not refused for "duplicate vertices".
+TEST_F(ExportTessellation, BinaryStlWeldsTheVerticesFloat32BringsTogether) {
+    Mesh mesh;
+    const Vec3 at{100, 100, 100};
+    mesh.vertices = {at, at + Vec3{1, 0, 0}, at + Vec3{0, 1, 0}, at + Vec3{0, 0, 1}, at + Vec3{1 - 1e-7, 0, 0}};
+    mesh.triangles = {{0, 2, 4}, {4, 2, 1}, {0, 4, 3}, {4, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    ASSERT_EQ(static_cast<float>(mesh.vertices[4].x), static_cast<float>(mesh.vertices[1].x));
+    export_mesh(mesh, path("tiny_edge.stl"));
+    const auto triangles = read_binary_stl(read(path("tiny_edge.stl")));
+    ASSERT_EQ(triangles.size(), 4u);  // the tetrahedron's: each corner one of its own four
+    for (const auto& corners : triangles)
+        for (const Vec3& p : corners)
+            EXPECT_TRUE(p == mesh.vertices[0] || p == mesh.vertices[1] || p == mesh.vertices[2] || p == mesh.vertices[3]) << p.x;
+}
+
 TEST_F(ExportTessellation, BinaryStlRefusesAMeshItsFloat32CoordinatesMoveBeyondTheTolerance) {
     // Far from the origin float32 coordinates are 1/16 apart: the unit sphere's vertices move up to 0.03.
     const Solid far = sphere(1, {1e6, 0, 0});

@@ -49,6 +49,7 @@
 #include "ratbez/convex_hull.hpp"
 #include "ratbez/convexity.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/mesh_welding.hpp"
 #include "ratbez/solid_transform.hpp"
 #include "ratbez/surface_grid.hpp"
 
@@ -1136,6 +1137,11 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
     const auto whole_mesh = [&](const TessellationOptions& asked) {
         return at_unit_scale(solid, solid.bounding_box(), asked, [](const Solid& s, const TessellationOptions& o) {
             Mesh mesh = run_within_budget(s.faces(), settings_of(o));
+            // Two faces that meet where their edges run tangent may both take the same sliver along the edge they
+            // share (a Voron LED mount's fillet ends in a cusp between a plane and a cylinder, its edges 2.6e-3
+            // apart there, their tolerance): the plane and the fillet each fanned the edge's samples from the cusp,
+            // the same triangles once each way round. Welding drops such pairs (mesh_welding.hpp).
+            if (!mesh.is_closed()) mesh = welded(mesh);
             // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
             // solid whose faces fold onto each other — a profile that runs back over itself, found by
             // fuzz_geometry; parts of users' files that touch themselves (065_umbilical_mount) — from handing out

@@ -33,7 +33,9 @@ struct ExportOptions {
 // checked_triangle_limit(checks) (the checks' limit, or the triangles the process's memory limit holds), so
 // that a mesh the checks would refuse is refused from the tessellation's plan, before it is built, with the
 // estimate and a tolerance that fits (TooFine, naming the checks' or the memory's limit when that is the
-// lower one).
+// lower one). Where the mesh intersects itself (a face's coarse mesh poking through a neighbour it meets at a
+// shallow angle), the solid is meshed again at half the tolerance, up to three times, unless `checks` skip the
+// self-intersection test.
 Mesh tessellate_for_export(const Solid& solid, TessellationOptions options, const MeshCheckOptions& checks = {});
 
 // Writes `mesh` as it is (a .scad header states its counts, bounding box and volume).

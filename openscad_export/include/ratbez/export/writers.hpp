@@ -67,7 +67,8 @@ void write_openscad_library(const std::vector<LibraryModule>& modules, std::ostr
 // `NAME();` (OpenSCAD resolves the name against the folder of the .scad file, also through `use`, and
 // loads a large mesh from binary STL several times faster than from polyhedron() text).
 void write_openscad_import(const std::string& stl_file, std::ostream& out, const OpenScadOptions& options = {});
-// `mesh` as binary STL stores it: every coordinate rounded to float32 (what a reader of the file gets).
+// `mesh` as a reader of binary STL gets it: every coordinate rounded to float32, and the vertices that rounding
+// brings together welded into one (mesh_welding.hpp), as readers join the corners of an STL file by coordinates.
 Mesh float32_mesh(const Mesh& mesh);
 void write_stl_binary(const Mesh& mesh, std::ostream& out);
 void write_stl_ascii(const Mesh& mesh, std::ostream& out, const std::string& solid_name = "ratbez");
