@@ -20,7 +20,10 @@
 #include "ratbez/deviation.hpp"
 #include "temp_directory_test_support.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/curves.hpp"
 #include "ratbez/primitives.hpp"
+#include "ratbez/profile.hpp"
+#include "ratbez/revolve.hpp"
 #include "ratbez/tessellate.hpp"
 
 namespace ratbez::exporter {
@@ -146,6 +149,30 @@ TEST_F(ExportTessellation, BadModuleNameIsRefusedBeforeAnyWork) {
         EXPECT_EQ(std::string(e.what()).rfind("module_name: 'cylinder' is an OpenSCAD built-in or keyword", 0), 0u) << e.what();
     }
     EXPECT_FALSE(fs::exists(path("x.scad")));
+}
+
+// A tube whose wall (0.02) is thinner than the tolerance (0.08): the inner and outer faces' meshes cross each
+// other. The export's tessellation meshes it again at half the tolerance, where they do not: within the
+// tolerance still, and an export instead of a refusal (a Voron carriage's bore poked through a plane so).
+TEST_F(ExportTessellation, AMeshThatIntersectsItselfIsMadeAgainFiner) {
+    const std::vector<Vec3> corners = {{1, 0, 0}, {1.02, 0, 0}, {1.02, 0, 1}, {1, 0, 1}};
+    std::vector<NurbsCurve> sides;
+    for (std::size_t k = 0; k < corners.size(); ++k) sides.push_back(line_segment(corners[k], corners[(k + 1) % corners.size()]));
+    const Solid tube = revolve(Profile(sides));
+    const double tolerance = 0.08;
+    ASSERT_EQ(check_mesh(tessellate(tube, tolerance)).self_intersection_free, false);
+    TessellationOptions options;
+    options.tolerance = tolerance;
+    const Mesh mesh = tessellate_for_export(tube, options);
+    EXPECT_EQ(check_mesh(mesh).self_intersection_free, true);
+    EXPECT_LE(max_deviation(tube, mesh), tolerance);
+    ExportOptions exported;
+    exported.checks = tessellation_checks(tube, mesh, tolerance);
+    EXPECT_LE(export_tessellation(tube, mesh, tolerance, path("tube.scad"), exported).max_deviation, tolerance);
+    // Asked not to test for self-intersection (--skip-self-intersection-check), it is not made again.
+    MeshCheckOptions skip;
+    skip.check_self_intersections = false;
+    EXPECT_EQ(tessellate_for_export(tube, options, skip).triangles.size(), tessellate(tube, tolerance).triangles.size());
 }
 
 // A binary STL as a reader gets it: three float32 vertices per triangle, widened to double.
