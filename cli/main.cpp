@@ -523,7 +523,7 @@ int command_check(const std::vector<std::string>& raw) {
             continue;
         }
         if (&spec != &input.shapes.front()) std::cout << '\n';
-        std::cout << spec.name << " (" << spec.type << ")\n" << ratbez::occt::format_report(report);
+        std::cout << ratbez::exporter::comment_text(spec.name) << " (" << spec.type << ")\n" << ratbez::occt::format_report(report);
         if (!report.passed) std::cout << "FAILED\n";
     }
     if (args.flag("--json")) print_json(reports, input.model_file);
@@ -581,7 +581,7 @@ int command_info(const std::vector<std::string>& raw) {
             return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
         };
         if (&spec != &input.shapes.front()) std::cout << '\n';
-        std::cout << "name:                 " << spec.name << '\n'
+        std::cout << "name:                 " << ratbez::exporter::comment_text(spec.name) << '\n'
                   << "type:                 " << spec.type << '\n'
                   << "faces:                " << f.faces << '\n'
                   << "edges:                " << f.edges << " (+" << f.degenerate_edges << " degenerate)\n"
@@ -810,6 +810,12 @@ int run(int argc, char** argv) {
     const std::string command = args.front();
     args.erase(args.begin());
     if (command == "--help" || command == "-h" || command == "help") {
+        std::cout << usage_text;
+        return 0;
+    }
+    // `ratbez export --help` (or -h anywhere among a command's arguments): the usage, not an unknown option.
+    const bool known = command == "export" || command == "check" || command == "info" || command == "demo";
+    if (known && std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; })) {
         std::cout << usage_text;
         return 0;
     }

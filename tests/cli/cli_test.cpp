@@ -598,6 +598,37 @@ TEST_F(Cli, DerivedModuleNamesThatAreBuiltinsGetASuffixAndSaySo) {
     EXPECT_EQ(scad.find("module cylinder()"), std::string::npos);
 }
 
+// A name from a model file goes to the terminal escaped: an ESC in a STEP product's name would otherwise recolour it.
+TEST_F(Cli, NamesFromFilesArePrintedWithControlCharactersEscaped) {
+    ASSERT_EQ(ratbez({"export", example("sphere.json"), "-o", path("ball.step")}).exit_code, 0);
+    std::string step = read_file(path("ball.step"));
+    const std::string translator = "'Open CASCADE STEP translator 7.6 1'";  // the product's id and name
+    for (int field = 0; field < 2; ++field) {
+        const std::size_t at = step.find(translator);
+        ASSERT_NE(at, std::string::npos) << step.substr(0, 2000);
+        step.replace(at, translator.size(), "'\x1b[31mred'");
+    }
+    std::ofstream(path("ball_red.step"), std::ios::binary) << step;
+    for (const char* command : {"info", "check"}) {
+        const CommandResult run = ratbez({command, path("ball_red.step")});
+        EXPECT_EQ(run.out.find('\x1b'), std::string::npos) << command;
+        EXPECT_NE(run.out.find("\\x1b[31mred"), std::string::npos) << command << ": " << run.out;
+    }
+}
+
+TEST_F(Cli, HelpAfterACommandPrintsTheUsage) {
+    for (const char* command : {"export", "check", "info", "demo"})
+        for (const char* help : {"--help", "-h"}) {
+            const CommandResult run = ratbez({command, help});
+            EXPECT_EQ(run.exit_code, 0) << command << " " << help;
+            EXPECT_NE(run.out.find(std::string("  ratbez ") + command), std::string::npos) << run.out;
+            EXPECT_EQ(run.err, "");
+        }
+    const CommandResult after = ratbez({"export", example("sphere.json"), "-o", path("a.scad"), "--help"});
+    EXPECT_EQ(after.exit_code, 0);
+    EXPECT_FALSE(std::filesystem::exists(path("a.scad")));
+}
+
 TEST_F(Cli, Version) {
     const CommandResult run = ratbez({"--version"});
     EXPECT_EQ(run.exit_code, 0);
