@@ -274,6 +274,13 @@ def test_interpolate_from_vertices_a_draft_wire_and_its_points():
         check(edge.distToShape(Part.Vertex(p + V(0, 0, 5)))[0] <= 1e-9, "through the wire's point {}".format(p))
     tangent = edge.tangentAt(edge.FirstParameter)
     check(abs(tangent.x) <= 1e-9 and tangent.y > 0.999, "starts along +Y: {}".format(tangent))
+    # Two or three picked points (the command is offered for two): a line and a parabola, not a degree-3 error.
+    for picked in (["Vertex1", "Vertex3"], ["Vertex1", "Vertex3", "Vertex2"]):
+        few = RatBez.make_interpolate(doc, Source=[(sketch, picked)])
+        doc.recompute()
+        check(few.isValid() and few.Degree == len(picked) - 1, "{} points: {}".format(len(picked), few.getStatusString()))
+        for name in picked:
+            check(few.Shape.Edges[0].distToShape(Part.Vertex(sketch.Shape.getElement(name).Point))[0] <= 1e-9, "through " + name)
     # Bad input marks the object invalid with the property's name.
     through.Degree = 7  # 4 points and 2 tangents: 6 conditions, not the 8 a degree 7 needs
     doc.recompute()
