@@ -460,9 +460,19 @@ def test_bad_input_is_one_line_in_property_words():
                     "Weights: weight 2 of 4 is 0 but must be > 0", "zero weight")
     _expect_failure(doc, curve, lambda o: setattr(o, "Weights", [1, 1, 1]), "Weights: got 3 weights for 4 poles",
                     "wrong weight count")
+    curve.Weights = []
+    # Poles counted as the table shows them (P1, P2, ...), as the weights are.
+    _expect_failure(doc, curve, lambda o: setattr(o, "Poles", [V(0, 0, 0), V(1, float("nan"), 0), V(2, 0, 0), V(3, 1, 0)]),
+                    "Poles: pole 2 of 4 has a non-finite coordinate", "NaN pole")
+    # A pole far beyond the kernel's coordinates (OpenCASCADE's display looped on its infinite length).
+    _expect_failure(doc, curve, lambda o: setattr(o, "Poles", [V(0, 0, 0), V(1, -1e300, 0), V(2, 0, 0), V(3, 1, 0)]),
+                    "Poles: pole 2 of 4 has a coordinate beyond 1e+100", "huge pole")
     surface = RatBez.make_bezier_surface(doc)
     _expect_failure(doc, surface, lambda o: setattr(o, "Weights", [1.0] * 15 + [-1.0]),
                     "Weights: weight 16 of 16 (row 4, column 4) is -1", "negative surface weight")
+    surface.Weights = []
+    _expect_failure(doc, surface, lambda o: setattr(o, "Poles", list(o.Poles)[:15] + [V(0, 0, 1e300)]),
+                    "Poles: pole 16 of 16 has a coordinate beyond 1e+100", "huge surface pole")
 
     sketch, full_volume = xz_profile_sketch(doc)
     revolve = RatBez.make_revolve(doc, Profile=sketch)

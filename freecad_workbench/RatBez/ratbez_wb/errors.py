@@ -92,6 +92,15 @@ def _readable_number(match):
 
 def _reason_in_property_words(reason, context):
     text = _NAMES_IN_REASONS.sub(lambda m: _PROPERTY_OF[m.group(1)], reason)
+    def pole(match):  # the kernel counts control points from 0, the pole table from 1 (P1, P2, ...)
+        if match.group(1) is not None:
+            i, j = int(match.group(1)), int(match.group(2))
+            if context.net_columns:
+                return "pole {} (row {}, column {})".format(context.of("Poles", i * context.net_columns + j), i + 1, j + 1)
+            return "pole (row {}, column {})".format(i + 1, j + 1)
+        return "pole " + context.of("Poles", int(match.group(3)))
+
+    text = re.sub(r"\bcontrol point (?:\[(\d+)\]\[(\d+)\]|(\d+)\b)", pole, text)
     text = text.replace("control points", "poles").replace("control point", "pole")
 
     def flat_weight(match):

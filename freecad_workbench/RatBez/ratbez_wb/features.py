@@ -645,6 +645,19 @@ def _check_against_kernel(kernel_point, occt_point, parameters, size, what):
         raise Failure(what, translate("OpenCASCADE's geometry departs from the kernel's by {:.3g}").format(worst))
 
 
+# The kernel's bound on a solid's coordinates (limits.hpp: max_solid_coordinate), held for the curve and surface
+# features too: OpenCASCADE's display measures the curve's length, which overflows to infinity near 1e300 and
+# froze FreeCAD's GUI in a loop (a pole typed as -1e300).
+MAX_COORDINATE = 1e100
+
+
+def _require_coordinates_within_limit(points, what="Poles"):
+    for index, point in enumerate(points):
+        if any(abs(c) > MAX_COORDINATE for c in point):
+            raise Failure(what, translate("pole {} of {} has a coordinate beyond {:g}").format(
+                index + 1, len(points), MAX_COORDINATE))
+
+
 class BezierCurve(RatBezFeature):
     TYPE = "RatBez::BezierCurve"
     PROPERTIES = (
@@ -661,6 +674,7 @@ class BezierCurve(RatBezFeature):
         points = [conversion.vector_tuple(p) for p in obj.Poles]
         weights = _weights_or_none(obj)
         curve = kernel.ratbez().BezierCurve(points, weights)
+        _require_coordinates_within_limit(points)
         if curve.degree > MAX_OCCT_BEZIER_DEGREE:
             raise Failure("Poles", translate("OpenCASCADE Bézier curves have at most {} poles, got {}").format(
                 MAX_OCCT_BEZIER_DEGREE + 1, len(points)))
@@ -710,6 +724,7 @@ class BezierSurface(RatBezFeature):
             raise Failure("Poles", translate("the net needs (DegreeU + 1) x (DegreeV + 1) = {} poles, got {}")
                           .format(rows * columns, len(poles)))
         net = [poles[i * columns:(i + 1) * columns] for i in range(rows)]
+        _require_coordinates_within_limit(poles)
         flat_weights = _weights_or_none(obj)
         weights = None
         if flat_weights is not None:

@@ -1397,6 +1397,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/features.py"/>
+        <source>pole {} of {} has a coordinate beyond {:g}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>press Select..., select its edges or its sketch in the 3D view or the tree, then press Done</source>
         <translation type="unfinished"></translation>

@@ -1404,6 +1404,11 @@
         <translation>Pol {}</translation>
     </message>
     <message>
+        <location filename="../../ratbez_wb/features.py"/>
+        <source>pole {} of {} has a coordinate beyond {:g}</source>
+        <translation>Pol {} von {} hat eine Koordinate jenseits von {:g}</translation>
+    </message>
+    <message>
         <location filename="../../ratbez_wb/task_panels.py"/>
         <source>press Select..., select its edges or its sketch in the 3D view or the tree, then press Done</source>
         <translation>Auswählen... drücken, seine Kanten oder seine Skizze in der 3D-Ansicht oder der Baumansicht auswählen, dann Fertig drücken</translation>
