@@ -11,6 +11,7 @@ Scripting interface (works in freecadcmd, without the GUI):
     RatBez.export_openscad(cyl, "/tmp/cyl.scad", tolerance=0.01)
     RatBez.export_openscad([cyl, sphere], "/tmp/parts.scad")   # a library: one module per solid, coloured
     RatBez.export_3mf([cyl, sphere], "/tmp/parts.3mf")          # one 3MF object per solid, named and coloured
+    RatBez.export_stl([cyl, sphere], "/tmp/parts.stl")          # binary STL, the solids side by side
     print(RatBez.check_occt(cyl))
     for name, report in RatBez.check_occt_all(part_cut): ...   # any solid: Part, PartDesign, imported STEP
 
@@ -34,7 +35,7 @@ from ratbez_wb import text as text_tools
 
 __all__ = ["make_bezier_curve", "make_bezier_surface", "make_cylinder", "make_cone", "make_sphere",
            "make_torus", "make_revolve", "make_extrude", "make_ruled", "make_loft", "make_sweep", "make_interpolate",
-           "is_solid", "solid_of", "export_openscad", "export_3mf", "exportable", "check_occt", "check_occt_all",
+           "is_solid", "solid_of", "export_openscad", "export_3mf", "export_stl", "exportable", "check_occt", "check_occt_all",
            "format_check_report",
            "check_passed", "safe_label", "export"]
 
@@ -396,6 +397,19 @@ def export_3mf(objects, path, tolerance=None, color=True):
     else:
         colors = {name: c for name, _, c in named if c is not None} if color else None
         rb.write_3mf({name: solid for name, solid, _ in named}, path, tolerance, color=colors or None)
+    return path
+
+
+def export_stl(objects, path, tolerance=None):
+    """Write RatBez solids (and other solids the kernel can read) to `path` as binary STL (ratbez.write_stl): one
+    watertight mesh within `tolerance` of the exact surfaces per solid, checked as its readers get it (float32
+    coordinates), several solids side by side in one file, Placements applied."""
+    rb = kernel.ratbez()
+    named = _named_solids(objects, identifiers=False)
+    if len(named) == 1:
+        rb.write_stl(named[0][1], path, tolerance)
+    else:
+        rb.write_stl({name: solid for name, solid, _ in named}, path, tolerance)
     return path
 
 

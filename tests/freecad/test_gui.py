@@ -569,6 +569,17 @@ def test_export_and_check_commands():
     finally:
         dialogs.ask_export_options = original
     check("module ratbez_gui_holed()" in open(path).read(), "export of the Part Cut")
+    # STL too, as the dialog's third filter: binary, the mesh's triangles after its 80-byte header.
+    path = os.path.join(OUT, "ratbez_gui_holed.stl")
+    dialogs.ask_export_options = lambda objects: (path, 0.05)
+    try:
+        Gui.runCommand("RatBez_ExportOpenSCAD")
+        process_events()
+    finally:
+        dialogs.ask_export_options = original
+    data = open(path, "rb").read()
+    check(len(data) > 84 and len(data) == 84 + 50 * int.from_bytes(data[80:84], "little"), "STL export of the Part Cut")
+    check(any(".stl" in f for f in dialogs.FORMATS[2]), "the dialog offers STL")
     screenshot("RatBez_CheckOCCT_PartCut")
 
 

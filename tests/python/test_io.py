@@ -87,6 +87,33 @@ def test_export_openscad_of_a_list_names_each_module_after_its_solid(tmp_path):
         ratbez.export_openscad({"parts": solids[0]}, tmp_path / "parts.scad", 0.01)
 
 
+@needs_cgal
+def test_every_mesh_writer_takes_several_solids_as_read_step_all_gives_them(tmp_path):
+    # read_step_all returns a list; export_openscad and write_step took it, write_stl, write_off and write_3mf did
+    # not (a dict only for 3MF). Each now writes a list or a dict: one mesh of them all (STL, OFF), one object
+    # each (3MF, named after solid.name, repeats numbered).
+    solids = [ratbez.sphere(1.0), ratbez.sphere(1.0, center=(3, 0, 0)), ratbez.cylinder(0.5, 1.0)]
+    for solid, name in zip(solids, ["ball", "ball", ""]):
+        solid.name = name
+    single = len(solids[0].tessellate(0.01).triangles)
+    ratbez.write_stl(solids, tmp_path / "parts.stl", 0.01)
+    (count,) = struct.unpack_from("<I", (tmp_path / "parts.stl").read_bytes(), 80)
+    assert count == 2 * single + len(solids[2].tessellate(0.01).triangles)
+    ratbez.write_stl({"a": solids[0], "b": solids[1]}, tmp_path / "two.stl", 0.01, binary=False)
+    assert (tmp_path / "two.stl").read_text().count("endfacet") == 2 * single
+    ratbez.write_off(tuple(solids), tmp_path / "parts.off", 0.01)
+    vertices, faces = read_off(tmp_path / "parts.off")
+    assert len(faces) == count
+    ratbez.write_3mf(solids, tmp_path / "parts.3mf", 0.01)
+    import re
+    import zipfile
+    model = zipfile.ZipFile(tmp_path / "parts.3mf").read("3D/3dmodel.model").decode()
+    assert re.findall(r'<object [^>]*name="([^"]*)"', model) == ["ball", "ball_2", "solid"]
+    raises_naming("max_triangles", ratbez.write_stl, solids, tmp_path / "x.stl", max_triangles=10)
+    raises_naming("solid[1]", ratbez.write_off, [solids[0], "x"], tmp_path / "x.off")
+    raises_naming("name", ratbez.write_3mf, solids, tmp_path / "x.3mf", name="one")
+
+
 def read_off(path):
     words = path.read_text().split()
     assert words[0] == "OFF"

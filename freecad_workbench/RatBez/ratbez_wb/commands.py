@@ -299,6 +299,8 @@ class ExportOpenSCADCommand:
         try:
             if path.lower().endswith(".3mf"):
                 RatBez.export_3mf(target, path, tolerance)
+            elif path.lower().endswith(".stl"):
+                RatBez.export_stl(target, path, tolerance)
             else:
                 RatBez.export_openscad(target, path, tolerance)
         except kernel.error_types() + (OSError,) as error:

@@ -31,12 +31,13 @@ def tolerance_field(value):
     return spin
 
 
-FORMATS = (("OpenSCAD library (*.scad)", ".scad"), ("3MF (*.3mf)", ".3mf"))
+FORMATS = (("OpenSCAD library (*.scad)", ".scad"), ("3MF (*.3mf)", ".3mf"), ("STL (*.stl)", ".stl"))
 
 
 def ask_export_options(objects):
     """Ask where to write the solids `objects` (a list) and with which chordal tolerance; the extension
-    chooses the format (.scad: an OpenSCAD library, .3mf: 3MF), the filter chosen when none is typed.
+    chooses the format (.scad: an OpenSCAD library, .3mf: 3MF, .stl: binary STL), the filter chosen when none is
+    typed.
 
     Returns (path, tolerance) with tolerance None for the kernel's automatic choice, or None when
     the user cancels. The folder and tolerance start from the preferences, and the folder used is

@@ -795,10 +795,11 @@ def torus(major_radius: float, minor_radius: float, center: Point = ..., axis: P
     """A torus about axis through center: the tube of minor_radius around the circle of major_radius
     (major_radius > minor_radius > 0)."""
 
-def write_3mf(solid: Union[Solid, Dict[str, Solid]], path: Path, tolerance: Optional[float] = ..., name: Optional[str] = ..., color: Optional[Union[str, Dict[str, str]]] = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
+def write_3mf(solid: Union[Solid, Dict[str, Solid], Sequence[Solid]], path: Path, tolerance: Optional[float] = ..., name: Optional[str] = ..., color: Optional[Union[str, Dict[str, str]]] = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write a 3MF file (lib3mf; OpenSCAD's import() and slicers read it) after the CGAL mesh checks: a Solid
     is tessellated at tolerance (default: as export_openscad) and becomes one object named `name` (default:
-    the file's stem); a dict {name: Solid} gives one object per name, in order. lib3mf writes each
+    the file's stem); a dict {name: Solid} gives one object per name, in order, and a list of solids
+    (read_step_all's) one per solid, named after solid.name (repeats _2, ...). lib3mf writes each
     coordinate as its float32 cut to 6 decimals: the deviation and the checks run on the package read back,
     and a mesh those coordinates move beyond the tolerance (a part far from the origin, or smaller than a
     few thousandths at a fine tolerance) is refused with ratbez.Error naming mesh.
@@ -815,9 +816,10 @@ def write_brep(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: b
     analytic_primitives: as brep_string); a list of solids writes a compound of them, read back by
     read_brep_all."""
 
-def write_off(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
+def write_off(solid_or_mesh: Union[Solid, Mesh, Dict[str, Solid], Sequence[Solid]], path: Path, tolerance: Optional[float] = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with
-    the fewest decimals that keep the written mesh within tolerance).
+    the fewest decimals that keep the written mesh within tolerance). Several solids (a dict {name: Solid}
+    or a list) become one mesh of them all, each checked on its own.
     
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt
@@ -828,9 +830,11 @@ def write_step(solid: Union[Solid, Sequence[Solid]], path: Path, bezier_faces: b
     analytic_primitives: as brep_string). A list of solids (what read_step_all returns) writes one product
     each, named after solid.name, read back by read_step_all."""
 
-def write_stl(solid_or_mesh: Union[Solid, Mesh], path: Path, tolerance: Optional[float] = ..., binary: bool = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
+def write_stl(solid_or_mesh: Union[Solid, Mesh, Dict[str, Solid], Sequence[Solid]], path: Path, tolerance: Optional[float] = ..., binary: bool = ..., max_triangles: Optional[int] = ..., progress: Optional[Callable[[float], object]] = ...) -> None:
     """Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),
     or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance.
+    Several solids (a dict {name: Solid} or a list, as read_step_all returns) become one mesh of them all,
+    each checked on its own.
     
     progress: optional callable(fraction), fraction in [0, 1] rising to 1.0 (called at most every 20 ms,
     and at the end); an exception it raises stops the call and propagates. Ctrl-C raises KeyboardInterrupt

@@ -214,6 +214,30 @@ void export_library(const py::dict& solids, const std::string& file, const py::o
     return solids;
 }
 
+#if RATBEZ_PYTHON_WITH_EXPORT
+// A list or tuple of solids (read_step_all's) as a dict by their names, for the writers whose objects are named
+// by any text (3MF, STL, OFF): an unnamed solid is "solid", a repeated name gets _2, _3, ...
+py::dict solids_by_name(const py::object& list) {
+    py::dict named;
+    for (const Solid& solid : solids_of(list)) {
+        const std::string base = solid.name().empty() ? "solid" : solid.name();
+        std::string name = base;
+        for (int k = 2; named.contains(py::str(name)); ++k) name = base + "_" + std::to_string(k);
+        named[py::str(name)] = py::cast(solid);
+    }
+    return named;
+}
+
+// The solids of a writer's first argument when it holds several (a dict {name: Solid} or a list of them), else
+// nothing: one Solid or Mesh is written as export_shape writes it.
+std::optional<py::dict> several_solids(const py::object& given, const py::object& max_triangles) {
+    const bool list = py::isinstance<py::list>(given) || py::isinstance<py::tuple>(given);
+    if (!list && !py::isinstance<py::dict>(given)) return std::nullopt;
+    if (!max_triangles.is_none()) throw Error("max_triangles", "applies to one solid, not several");
+    return list ? solids_by_name(given) : given.cast<py::dict>();
+}
+#endif
+
 }  // namespace
 
 void bind_io(py::module_& m) {
@@ -293,13 +317,12 @@ void bind_io(py::module_& m) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".3mf")) throw Error("path", "a 3MF file name must end in .3mf");
             exporter::ExportOptions options;
-            if (py::isinstance<py::dict>(solid)) {
-                if (!name.is_none()) throw Error("name", "applies to one solid; a dict names its solids by its keys");
-                if (!max_triangles.is_none()) throw Error("max_triangles", "applies to one solid, not a dict of solids");
+            if (const std::optional<py::dict> several = several_solids(solid, max_triangles)) {
+                if (!name.is_none()) throw Error("name", "applies to one solid; several are named by their keys or names");
                 options.progress = python_progress(progress);
-                return export_library(solid.cast<py::dict>(), file, tolerance, color, options, false);
+                return export_library(*several, file, tolerance, color, options, false);
             }
-            if (!py::isinstance<Solid>(solid)) throw Error("solid", "expected a ratbez.Solid or a dict {name: Solid}");
+            if (!py::isinstance<Solid>(solid)) throw Error("solid", "expected a ratbez.Solid, a dict {name: Solid} or a list of solids");
             if (!name.is_none() && !py::isinstance<py::str>(name)) throw Error("name", "must be a str or None");
             options.openscad.module_name = name.is_none() ? std::filesystem::path(file).stem().string() : name.cast<std::string>();
             if (options.openscad.module_name.empty()) throw Error("name", "is empty");
@@ -311,7 +334,8 @@ void bind_io(py::module_& m) {
         (std::string(
             "Write a 3MF file (lib3mf; OpenSCAD's import() and slicers read it) after the CGAL mesh checks: a Solid\n"
             "is tessellated at tolerance (default: as export_openscad) and becomes one object named `name` (default:\n"
-            "the file's stem); a dict {name: Solid} gives one object per name, in order. lib3mf writes each\n"
+            "the file's stem); a dict {name: Solid} gives one object per name, in order, and a list of solids\n"
+            "(read_step_all's) one per solid, named after solid.name (repeats _2, ...). lib3mf writes each\n"
             "coordinate as its float32 cut to 6 decimals: the deviation and the checks run on the package read back,\n"
             "and a mesh those coordinates move beyond the tolerance (a part far from the origin, or smaller than a\n"
             "few thousandths at a fine tolerance) is refused with ratbez.Error naming mesh.\n"
@@ -328,13 +352,19 @@ void bind_io(py::module_& m) {
             exporter::ExportOptions options;
             options.binary_stl = binary;
             options.openscad.module_name = exporter::openscad_identifier(std::filesystem::path(file).stem().string());
+            if (const std::optional<py::dict> several = several_solids(solid_or_mesh, max_triangles)) {
+                options.progress = python_progress(progress);
+                return export_library(*several, file, tolerance, py::none(), options, false);
+            }
             export_shape(solid_or_mesh, file, tolerance, max_triangles, progress, options);
         },
         py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("binary") = true,
         py::arg("max_triangles") = py::none(), py::arg("progress") = py::none(),
         (std::string(
             "Write an STL after the CGAL mesh checks (a Solid is tessellated at tolerance first): binary (float32),\n"
-            "or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance.") +
+            "or ASCII text (binary=False) with the fewest decimals that keep the written mesh within tolerance.\n"
+            "Several solids (a dict {name: Solid} or a list, as read_step_all returns) become one mesh of them all,\n"
+            "each checked on its own.") +
          "\n\n" + progress_doc).c_str());
     m.def(
         "write_off",
@@ -342,13 +372,19 @@ void bind_io(py::module_& m) {
            const py::object& max_triangles, const py::object& progress) {
             const std::string file = to_path(path, "path");
             if (!has_extension(file, ".off")) throw Error("path", "an OFF file name must end in .off");
-            export_shape(solid_or_mesh, file, tolerance, max_triangles, progress, exporter::ExportOptions{});
+            exporter::ExportOptions options;
+            if (const std::optional<py::dict> several = several_solids(solid_or_mesh, max_triangles)) {
+                options.progress = python_progress(progress);
+                return export_library(*several, file, tolerance, py::none(), options, false);
+            }
+            export_shape(solid_or_mesh, file, tolerance, max_triangles, progress, options);
         },
         py::arg("solid_or_mesh"), py::arg("path"), py::arg("tolerance") = py::none(), py::arg("max_triangles") = py::none(),
         py::arg("progress") = py::none(),
         (std::string(
             "Write an OFF file after the CGAL mesh checks (a Solid is tessellated at tolerance first, written with\n"
-            "the fewest decimals that keep the written mesh within tolerance).") +
+            "the fewest decimals that keep the written mesh within tolerance). Several solids (a dict {name: Solid}\n"
+            "or a list) become one mesh of them all, each checked on its own.") +
          "\n\n" + progress_doc).c_str());
     m.def(
         "check_mesh",

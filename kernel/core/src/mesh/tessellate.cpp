@@ -49,6 +49,7 @@
 #include "ratbez/convex_hull.hpp"
 #include "ratbez/convexity.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/mesh_topology.hpp"
 #include "ratbez/mesh_welding.hpp"
 #include "ratbez/solid_transform.hpp"
 #include "ratbez/surface_grid.hpp"
@@ -1140,8 +1141,12 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
             // Two faces that meet where their edges run tangent may both take the same sliver along the edge they
             // share (a Voron LED mount's fillet ends in a cusp between a plane and a cylinder, its edges 2.6e-3
             // apart there, their tolerance): the plane and the fillet each fanned the edge's samples from the cusp,
-            // the same triangles once each way round. Welding drops such pairs (mesh_welding.hpp).
-            if (!mesh.is_closed()) mesh = welded(mesh);
+            // the same triangles once each way round. Welding drops such pairs (mesh_welding.hpp); taken only when
+            // it leaves a closed 2-manifold, else the faces' gap is reported below as it is.
+            if (!mesh.is_closed()) {
+                Mesh joined = welded(mesh);
+                if (joined.is_closed() && mesh_topology(joined).oriented_manifold()) mesh = std::move(joined);
+            }
             // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
             // solid whose faces fold onto each other — a profile that runs back over itself, found by
             // fuzz_geometry; parts of users' files that touch themselves (065_umbilical_mount) — from handing out
