@@ -609,6 +609,17 @@ def test_every_panel_fits_the_default_combo_view():
             failures.append("{} (wide numbers): {}".format(name, "; ".join(problems)))
         panel.reject()
         process_events()
+    # Interpolate following picked vertices (user trial): the picks' names beside its two buttons pushed "Own
+    # points" past the view's edge.
+    select(*[(sketch, "Vertex{}".format(k)) for k in (1, 2, 3)])
+    obj, panel = run_command("RatBez_Interpolate")
+    process_events(0.2)
+    combo_shot("RatBez_Interpolate_picked")
+    problems = clipping(panel)
+    if problems:
+        failures.append("RatBez_Interpolate (picked vertices): {}".format("; ".join(problems)))
+    panel.reject()
+    process_events()
     check(not failures, "\n".join(failures))
 
 

@@ -16,12 +16,15 @@ class InterpolatePanel(task_panels.TaskPanel):
     TITLE, ICON = "RatBez interpolate", "RatBez_Interpolate"
 
     def build(self):
-        source = QtGui.QWidget()
-        row = QtGui.QHBoxLayout(source)
-        row.setContentsMargins(0, 0, 0, 0)
+        # The picks' names on a row of their own, the buttons below them: beside the buttons, a long sketch name
+        # pushed "Own points" past the Combo View's edge.
         self.source_label = QtGui.QLabel()
         self.source_label.setWordWrap(True)
         self.source_label.setToolTip(self.tooltip("Source"))
+        self.layout.addRow(translate("Points from"), self.source_label)
+        source = QtGui.QWidget()
+        row = QtGui.QHBoxLayout(source)
+        row.setContentsMargins(0, 0, 0, 0)
         use = QtGui.QPushButton(translate("Use selection"))
         use.setToolTip(translate("Interpolate the selected vertices (in the order picked), or the points of the "
                                  "selected Draft wire or B-spline, or the selected object's vertices"))
@@ -29,10 +32,9 @@ class InterpolatePanel(task_panels.TaskPanel):
         clear = QtGui.QPushButton(translate("Own points"))
         clear.setToolTip(translate("Stop following the selection: interpolate the table of points below"))
         clear.clicked.connect(self.own_points)
-        row.addWidget(self.source_label, 1)
         row.addWidget(use)
         row.addWidget(clear)
-        self.layout.addRow(translate("Points from"), source)
+        self.layout.addRow(source)
         self.points = task_panels.PoleTable(self, lambda r: translate("point {}").format(r + 1))
         self.points.table.setToolTip(self.tooltip("Points"))
         self.layout.addRow(self.points.table)
