@@ -152,10 +152,11 @@ class SolidFeature(RatBezFeature):
               "exact surfaces), in mm^3, Placement not applied. FreeCAD's own Shape.Volume, Part > Check "
               "geometry and Measure read the faces RatBez hands to FreeCAD (a primitive's analytic ones, as "
               "Part's; otherwise B-spline faces, one per face, each arc in an exact form OpenCASCADE's fixed "
-              "Gauss rule reads) and agree with this to about 1e-9")),
+              "Gauss rule reads) and agree with this to about 1e-9; within 1e-4 where a profile is a B-spline "
+              "the kernel hands over with its own knots (an extruded sketch spline: 1.5e-5)")),
         ("App::PropertyArea", "ExactArea",
          _tip("Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD's Shape.Area "
-              "agrees with it to about 1e-9 (see ExactVolume)")),
+              "agrees with it as Shape.Volume does (see ExactVolume)")),
     )
 
     def ensure_properties(self, obj):

@@ -441,8 +441,8 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD&apos;s Shape.Area agrees with it to about 1e-9 (see ExactVolume)</source>
-        <translation>Oberfläche des exakten Körpers, berechnet vom ratbez-Kern, in mm^2. FreeCADs Shape.Area stimmt damit auf etwa 1e-9 überein (siehe Exaktes Volumen)</translation>
+        <source>Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD&apos;s Shape.Area agrees with it as Shape.Volume does (see ExactVolume)</source>
+        <translation>Oberfläche des exakten Körpers, berechnet vom ratbez-Kern, in mm^2. FreeCADs Shape.Area stimmt damit überein wie Shape.Volume (siehe Exaktes Volumen)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
@@ -481,8 +481,8 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the faces RatBez hands to FreeCAD (a primitive&apos;s analytic ones, as Part&apos;s; otherwise B-spline faces, one per face, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9</source>
-        <translation>Volumen des exakten Körpers, berechnet vom ratbez-Kern (zertifizierte Gauß-Quadratur auf den exakten Flächen), in mm^3, ohne Platzierung. FreeCADs eigenes Shape.Volume, Part &gt; Geometrie überprüfen und Messen lesen die Flächen, die RatBez an FreeCAD übergibt (die analytischen eines Grundelements, wie bei Part; sonst B-Spline-Flächen, eine je Fläche, jeder Bogen in einer exakten Form, die die feste Gauß-Regel von OpenCASCADE liest), und stimmen damit auf etwa 1e-9 überein</translation>
+        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the faces RatBez hands to FreeCAD (a primitive&apos;s analytic ones, as Part&apos;s; otherwise B-spline faces, one per face, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9; within 1e-4 where a profile is a B-spline the kernel hands over with its own knots (an extruded sketch spline: 1.5e-5)</source>
+        <translation>Volumen des exakten Körpers, berechnet vom ratbez-Kern (zertifizierte Gauß-Quadratur auf den exakten Flächen), in mm^3, ohne Platzierung. FreeCADs eigenes Shape.Volume, Part &gt; Geometrie überprüfen und Messen lesen die Flächen, die RatBez an FreeCAD übergibt (die analytischen eines Grundelements, wie bei Part; sonst B-Spline-Flächen, eine je Fläche, jeder Bogen in einer exakten Form, die die feste Gauß-Regel von OpenCASCADE liest), und stimmen damit auf etwa 1e-9 überein; auf 1e-4, wo ein Profil ein B-Spline ist, den der Kern mit seinen eigenen Knoten übergibt (ein extrudierter Skizzen-Spline: 1.5e-5)</translation>
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>

@@ -441,7 +441,7 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD&apos;s Shape.Area agrees with it to about 1e-9 (see ExactVolume)</source>
+        <source>Surface area of the exact solid computed by the ratbez kernel, in mm^2. FreeCAD&apos;s Shape.Area agrees with it as Shape.Volume does (see ExactVolume)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -481,7 +481,7 @@
     </message>
     <message>
         <location filename="../../ratbez_wb/features.py"/>
-        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the faces RatBez hands to FreeCAD (a primitive&apos;s analytic ones, as Part&apos;s; otherwise B-spline faces, one per face, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9</source>
+        <source>Volume of the exact solid computed by the ratbez kernel (certified Gauss quadrature on the exact surfaces), in mm^3, Placement not applied. FreeCAD&apos;s own Shape.Volume, Part &gt; Check geometry and Measure read the faces RatBez hands to FreeCAD (a primitive&apos;s analytic ones, as Part&apos;s; otherwise B-spline faces, one per face, each arc in an exact form OpenCASCADE&apos;s fixed Gauss rule reads) and agree with this to about 1e-9; within 1e-4 where a profile is a B-spline the kernel hands over with its own knots (an extruded sketch spline: 1.5e-5)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
