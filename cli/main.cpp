@@ -441,10 +441,17 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
     const double share = kTessellationShare / static_cast<double>(shapes.size());
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         const ShapeSpec& shape = shapes[i];
-        meshes.push_back(tessellate_for(shape, request,
-                                        ratbez::progress_part(line, share * static_cast<double>(i), share * static_cast<double>(i + 1))));
         ratbez::exporter::LibraryPart part;
         part.module_name = module_names.empty() ? shape.name : module_names[i];
+        try {
+            meshes.push_back(tessellate_for(shape, request,
+                                            ratbez::progress_part(line, share * static_cast<double>(i), share * static_cast<double>(i + 1))));
+        } catch (const ratbez::TooFine&) {
+            throw;
+        } catch (const ratbez::Error& e) {
+            // Which of the file's solids, as the export's own refusals name them ("solid: 'Nut': ...").
+            throw ratbez::Error(e.argument(), "'" + ratbez::exporter::comment_text(part.module_name) + "': " + std::string(e.reason()));
+        }
         part.solid = &shape.solid;
         part.mesh = &meshes.back();
         part.tolerance = tolerance_for(shape, request);

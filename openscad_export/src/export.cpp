@@ -392,6 +392,19 @@ WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance
     return result;
 }
 
+// prepared_mesh for a part of a library, a refusal naming the part when there are several ("mesh: 'Nut': ...":
+// which of an assembly's solids, by the name its module, object or Label has).
+WrittenMesh prepared_part(const LibraryPart& part, const FixedMesh& fixed, const Progress& progress, bool several) {
+    try {
+        return prepared_mesh(*part.solid, *part.mesh, part.tolerance, fixed, part.checks, progress);
+    } catch (const TooFine&) {
+        throw;
+    } catch (const Error& e) {
+        if (!several) throw;
+        throw Error(e.argument(), "'" + comment_text(part.module_name) + "': " + std::string(e.reason()));
+    }
+}
+
 // The solids of `parts` in one 3MF file, one object each (named after the part's module_name, any text,
 // with its colour), each checked as export_tessellation checks a binary STL: on the coordinates lib3mf
 // wrote, read back.
@@ -418,7 +431,7 @@ std::vector<WrittenMesh> export_three_mf(const std::vector<LibraryPart>& parts, 
         objects, path, options.progress,
         [&](std::size_t i, const Mesh& mesh, const Progress& progress) {
             const LibraryPart& part = parts[i];
-            written[i] = prepared_mesh(*part.solid, *part.mesh, part.tolerance, FixedMesh{&mesh, stores}, part.checks, progress);
+            written[i] = prepared_part(part, FixedMesh{&mesh, stores}, progress, parts.size() > 1);
             const std::vector<std::string> part_lines =
                 header_lines(written[i].mesh, options.source,
                              Measured{part.tolerance, written[i].max_deviation, part.solid->volume(), std::nullopt,
@@ -474,10 +487,9 @@ std::vector<WrittenMesh> export_merged(const std::vector<LibraryPart>& parts, co
         require(part.solid != nullptr && part.mesh != nullptr, "solids", "a part has no solid or mesh");
         const double share = 0.95 / static_cast<double>(parts.size());
         const Mesh rounded = float32 ? float32_mesh(*part.mesh) : Mesh{};
-        written.push_back(prepared_mesh(*part.solid, *part.mesh, part.tolerance,
-                                        FixedMesh{float32 ? &rounded : nullptr, float32 ? fixed_coordinates(format) : std::string()},
-                                        part.checks,
-                                        progress_part(options.progress, share * static_cast<double>(i), share * static_cast<double>(i + 1))));
+        written.push_back(prepared_part(part, FixedMesh{float32 ? &rounded : nullptr, float32 ? fixed_coordinates(format) : std::string()},
+                                        progress_part(options.progress, share * static_cast<double>(i), share * static_cast<double>(i + 1)),
+                                        parts.size() > 1));
         const WrittenMesh& mesh = written.back();
         const std::vector<std::string> lines =
             header_lines(mesh.mesh, options.source,
@@ -514,9 +526,9 @@ std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, c
         require(part.solid != nullptr && part.mesh != nullptr, "solids", "a part has no solid or mesh");
         require_module_name(part.module_name);
         const double share = 0.95 / static_cast<double>(parts.size());
-        written.push_back(prepared_mesh(*part.solid, *part.mesh, part.tolerance, FixedMesh{}, part.checks,
-                                        progress_part(options.progress, share * static_cast<double>(i),
-                                                      share * static_cast<double>(i + 1))));
+        written.push_back(prepared_part(part, FixedMesh{}, progress_part(options.progress, share * static_cast<double>(i),
+                                                                          share * static_cast<double>(i + 1)),
+                                        parts.size() > 1));
         const WrittenMesh& mesh = written.back();
         // The module's lines are export_tessellation's header without its first two (version, source).
         const std::vector<std::string> lines =

@@ -175,6 +175,29 @@ TEST_F(ExportTessellation, AMeshThatIntersectsItselfIsMadeAgainFiner) {
     EXPECT_EQ(tessellate_for_export(tube, options, skip).triangles.size(), tessellate(tube, tolerance).triangles.size());
 }
 
+// Of several solids in one file, a refusal says which (a Voron LED mount's second solid was refused unnamed).
+TEST_F(ExportTessellation, ARefusalOfOneOfSeveralSolidsNamesIt) {
+    const Solid ball = sphere(1), other = sphere(1, {3, 0, 0});
+    const Mesh good = tessellate(ball, 0.01);
+    Mesh open = tessellate(other, 0.01);
+    open.triangles.pop_back();
+    for (const char* file : {"parts.scad", "parts.stl", "parts.3mf"}) {
+        std::vector<LibraryPart> parts(2);
+        parts[0] = {"ball", &ball, &good, 0.01, tessellation_checks(ball, good, 0.01), std::nullopt};
+        parts[1] = {"Nut, M3", &other, &open, 0.01, tessellation_checks(other, open, 0.01), std::nullopt};
+        ExportOptions options;
+        options.openscad.module_name = "parts";
+        if (std::string(file) == "parts.scad") parts[1].module_name = "nut";
+        try {
+            export_library(parts, path(file), options);
+            ADD_FAILURE() << file << ": expected ratbez::Error";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.argument(), "mesh") << e.what();
+            EXPECT_EQ(e.reason().rfind("'" + parts[1].module_name + "': ", 0), 0u) << e.what();
+        }
+    }
+}
+
 // A binary STL as a reader gets it: three float32 vertices per triangle, widened to double.
 std::vector<std::array<Vec3, 3>> read_binary_stl(const std::string& bytes) {
     std::uint32_t count = 0;

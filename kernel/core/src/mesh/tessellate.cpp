@@ -683,7 +683,12 @@ private:
             // file, found by fuzz_read_step) never converges, and 30 doublings would take minutes and gigabytes.
             const std::size_t cap = std::min<std::size_t>(settings_.max_triangles, kMaxTrimmedEdgeSamples);
             require(params.size() + added.size() <= cap, "solid", [&] {
-                return "an edge of a trimmed face needs more than " + std::to_string(cap) +
+                std::vector<std::string> faces;  // the trimmed faces that use the edge, numbered as the solid's faces
+                for (const EdgeUse& use : edge_uses_[edge])
+                    if (use.coedge && (faces.empty() || faces.back() != std::to_string(use.face - faces_.data())))
+                        faces.push_back(std::to_string(use.face - faces_.data()));  // a seam's two uses once
+                const std::string which = faces.size() == 1 ? "face " + faces[0] : "faces " + faces[0] + " and " + faces.back();
+                return "an edge of trimmed " + which + " needs more than " + std::to_string(cap) +
                        " samples to follow the face within the tolerance: its curve on the face strays from the edge";
             });
             settings_.poll();
