@@ -1143,22 +1143,35 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
     const auto whole_mesh = [&](const TessellationOptions& asked) {
         return at_unit_scale(solid, solid.bounding_box(), asked, [](const Solid& s, const TessellationOptions& o) {
             Mesh mesh = run_within_budget(s.faces(), settings_of(o));
+            // Every edge used twice, once each way (Mesh::is_closed, from the topology taken once).
+            const auto closed = [](const Mesh& m, const MeshTopology& t) {
+                return !m.triangles.empty() && t.closed() && t.repeated_edges == 0 && t.degenerate_triangles == 0;
+            };
+            MeshTopology topology = mesh_topology(mesh);
             // Two faces that meet where their edges run tangent may both take the same sliver along the edge they
             // share (a Voron LED mount's fillet ends in a cusp between a plane and a cylinder, its edges 2.6e-3
             // apart there, their tolerance): the plane and the fillet each fanned the edge's samples from the cusp,
             // the same triangles once each way round. Welding drops such pairs (mesh_welding.hpp); taken only when
             // it leaves a closed 2-manifold, else the faces' gap is reported below as it is.
-            if (!mesh.is_closed()) {
+            if (!closed(mesh, topology)) {
                 Mesh joined = welded(mesh);
-                if (joined.is_closed() && mesh_topology(joined).oriented_manifold()) mesh = std::move(joined);
+                const MeshTopology joined_topology = mesh_topology(joined);
+                if (closed(joined, joined_topology) && joined_topology.oriented_manifold())
+                    mesh = std::move(joined), topology = joined_topology;
             }
             // Closed by construction for a valid solid; the check (O(triangles), a few % of the time) keeps a
             // solid whose faces fold onto each other — a profile that runs back over itself, found by
             // fuzz_geometry; parts of users' files that touch themselves (065_umbilical_mount) — from handing out
             // an open mesh.
-            require(mesh.is_closed(), "solid", "its faces do not close up into a watertight mesh: they overlap, fold "
-                                               "back or touch each other (a profile that runs back over itself, a "
-                                               "part read from a file that touches itself)");
+            require(closed(mesh, topology), "solid", "its faces do not close up into a watertight mesh: they overlap, fold "
+                                                     "back or touch each other (a profile that runs back over itself, a "
+                                                     "part read from a file that touches itself)");
+            // A void touching the outer skin (or another void) at a vertex joins two sheets at one mesh vertex: no
+            // 2-manifold mesh holds that (pythonocc's 11752.stp), and the export's checks refused it only after the
+            // rest of their work (4 minutes).
+            require(topology.singular_vertices == 0, "solid",
+                    "two of its shells, or its faces, touch at a single point (a void meeting the skin at a vertex): no "
+                    "2-manifold mesh can hold that");
             // A convex solid gets a convex mesh: the straddling offsets follow each face's own spacing, and a
             // sphere's came out with half its triangles a little out of plane with their neighbours, which
             // sends OpenSCAD's minkowski() from its convex fast path to decomposition (0.96 s -> 570 s).
