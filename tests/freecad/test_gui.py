@@ -561,23 +561,18 @@ def test_export_and_check_commands():
     at = report.find("OpenCASCADE check of 'Holed'")
     check(at >= 0, "no check report of the Part Cut:\n" + report[-2000:])
     check(re.search(r"passed\s+yes", report[at:]) is not None, "the Part Cut's check:\n" + report[at:])
-    path = os.path.join(OUT, "ratbez_gui_holed.scad")
-    dialogs.ask_export_options = lambda objects: (path, 0.05)
-    try:
-        Gui.runCommand("RatBez_ExportOpenSCAD")
-        process_events()
-    finally:
-        dialogs.ask_export_options = original
-    check("module ratbez_gui_holed()" in open(path).read(), "export of the Part Cut")
+
+    def export_as(name):  # the export command, its file dialog answered with OUT/name at tolerance 0.05
+        dialogs.ask_export_options = lambda objects: (os.path.join(OUT, name), 0.05)
+        try:
+            Gui.runCommand("RatBez_ExportOpenSCAD")
+            process_events()
+        finally:
+            dialogs.ask_export_options = original
+        return os.path.join(OUT, name)
+    check("module ratbez_gui_holed()" in open(export_as("ratbez_gui_holed.scad")).read(), "export of the Part Cut")
     # STL too, as the dialog's third filter: binary, the mesh's triangles after its 80-byte header.
-    path = os.path.join(OUT, "ratbez_gui_holed.stl")
-    dialogs.ask_export_options = lambda objects: (path, 0.05)
-    try:
-        Gui.runCommand("RatBez_ExportOpenSCAD")
-        process_events()
-    finally:
-        dialogs.ask_export_options = original
-    data = open(path, "rb").read()
+    data = open(export_as("ratbez_gui_holed.stl"), "rb").read()
     check(len(data) > 84 and len(data) == 84 + 50 * int.from_bytes(data[80:84], "little"), "STL export of the Part Cut")
     check(any(".stl" in f for f in dialogs.FORMATS[2]), "the dialog offers STL")
     screenshot("RatBez_CheckOCCT_PartCut")

@@ -98,3 +98,10 @@ def test_settable_properties_are_settable_in_the_stubs():
     settable = {name for name, value in public_members() if isinstance(value, property) and value.fset is not None}
     assert "Solid.name" in settable
     assert setters == settable
+
+
+def test_the_stubs_lie_beside_the_built_module():
+    # User trial: with PYTHONPATH=build/kernel/python (as the README runs it) editors found no stubs; the build
+    # puts them beside the module as ratbez.pyi.
+    beside = Path(ratbez.__file__).with_name("ratbez.pyi")
+    assert beside.read_text() == STUBS.read_text()
