@@ -203,8 +203,9 @@ def make_interpolate(doc=None, **properties):
     """The B-spline curve through points (ratbez.interpolate, The NURBS Book A9.1). Properties: Source (a list,
     in order, of (object, "VertexN") or (object, ["Vertex1", ...]) picks, or whole objects: a Draft wire or
     B-spline gives its points, any other object its vertices), or Points (a list of vectors) when Source is
-    empty; Degree (default 3, or what fewer points allow: a line through 2, a parabola through 3), Parameterization ("chord", "centripetal" or "uniform"), Closed (periodic through the
-    first point), EndTangents with StartTangent and EndTangent."""
+    empty; Degree (default 3, or what fewer points allow: a line through 2, a parabola through 3),
+    Parameterization ("chord", "centripetal" or "uniform"), Closed (periodic through the first point),
+    EndTangents with StartTangent and EndTangent."""
     if "Source" in properties:
         links = []
         for value in properties["Source"] or []:
@@ -213,7 +214,10 @@ def make_interpolate(doc=None, **properties):
         properties["Source"] = links
     if "Degree" not in properties:
         links = [(obj, subs) for obj, subs in properties.get("Source") or [] if obj is not None]
-        given = curve_tools.source_points(links) if links else properties.get("Points")
+        try:
+            given = curve_tools.source_points(links) if links else properties.get("Points")
+        except features.Failure:
+            given = None  # a source without points: the object reports it, as for any bad property
         conditions = (len(given) if given is not None else 4) + (2 if properties.get("EndTangents") else 0)
         if given is not None and len(given) >= 2 and conditions < 4:
             properties["Degree"] = conditions - 1

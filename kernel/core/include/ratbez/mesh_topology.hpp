@@ -21,6 +21,8 @@ struct MeshTopology {
 
     // Every edge used by exactly two triangles.
     bool closed() const { return border_edges == 0 && non_manifold_edges == 0; }
+    // Closed, every edge used once each way and no triangle naming a vertex twice (Mesh::is_closed).
+    bool watertight() const { return closed() && repeated_edges == 0 && degenerate_triangles == 0; }
     // A consistently oriented 2-manifold, with or without boundary.
     bool oriented_manifold() const {
         return degenerate_triangles == 0 && non_manifold_edges == 0 && repeated_edges == 0 && singular_vertices == 0;

@@ -66,8 +66,7 @@ bool Mesh::is_closed() const {
         for (const std::uint32_t v : t)
             if (v >= vertices.size()) return false;
     if (triangles.empty()) return false;
-    const MeshTopology topology = mesh_topology(*this);
-    return topology.closed() && topology.repeated_edges == 0 && topology.degenerate_triangles == 0;
+    return mesh_topology(*this).watertight();
 }
 
 double Mesh::volume() const {

@@ -687,7 +687,9 @@ private:
                 for (const EdgeUse& use : edge_uses_[edge])
                     if (use.coedge && (faces.empty() || faces.back() != std::to_string(use.face - faces_.data())))
                         faces.push_back(std::to_string(use.face - faces_.data()));  // a seam's two uses once
-                const std::string which = faces.size() == 1 ? "face " + faces[0] : "faces " + faces[0] + " and " + faces.back();
+                const std::string which = faces.empty()      ? "face"
+                                          : faces.size() == 1 ? "face " + faces[0]
+                                                              : "faces " + faces[0] + " and " + faces.back();
                 return "an edge of trimmed " + which + " needs more than " + std::to_string(cap) +
                        " samples to follow the face within the tolerance: its curve on the face strays from the edge";
             });
@@ -1143,10 +1145,8 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
     const auto whole_mesh = [&](const TessellationOptions& asked) {
         return at_unit_scale(solid, solid.bounding_box(), asked, [](const Solid& s, const TessellationOptions& o) {
             Mesh mesh = run_within_budget(s.faces(), settings_of(o));
-            // Every edge used twice, once each way (Mesh::is_closed, from the topology taken once).
-            const auto closed = [](const Mesh& m, const MeshTopology& t) {
-                return !m.triangles.empty() && t.closed() && t.repeated_edges == 0 && t.degenerate_triangles == 0;
-            };
+            // Mesh::is_closed, from the topology taken once for it and the fans below.
+            const auto closed = [](const Mesh& m, const MeshTopology& t) { return !m.triangles.empty() && t.watertight(); };
             MeshTopology topology = mesh_topology(mesh);
             // Two faces that meet where their edges run tangent may both take the same sliver along the edge they
             // share (a Voron LED mount's fillet ends in a cusp between a plane and a cylinder, its edges 2.6e-3
