@@ -530,7 +530,7 @@ int command_check(const std::vector<std::string>& raw) {
             continue;
         }
         if (&spec != &input.shapes.front()) std::cout << '\n';
-        std::cout << ratbez::exporter::comment_text(spec.name) << " (" << spec.type << ")\n" << ratbez::occt::format_report(report);
+        std::cout << ratbez::printable(spec.name) << " (" << spec.type << ")\n" << ratbez::occt::format_report(report);
         if (!report.passed) std::cout << "FAILED\n";
     }
     if (args.flag("--json")) print_json(reports, input.model_file);
@@ -588,7 +588,7 @@ int command_info(const std::vector<std::string>& raw) {
             return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
         };
         if (&spec != &input.shapes.front()) std::cout << '\n';
-        std::cout << "name:                 " << ratbez::exporter::comment_text(spec.name) << '\n'
+        std::cout << "name:                 " << ratbez::printable(spec.name) << '\n'
                   << "type:                 " << spec.type << '\n'
                   << "faces:                " << f.faces << '\n'
                   << "edges:                " << f.edges << " (+" << f.degenerate_edges << " degenerate)\n"

@@ -216,7 +216,7 @@ def make_interpolate(doc=None, **properties):
         links = [(obj, subs) for obj, subs in properties.get("Source") or [] if obj is not None]
         try:
             given = curve_tools.source_points(links) if links else properties.get("Points")
-        except features.Failure:
+        except Exception:  # noqa: BLE001 (a Failure, or FreeCAD's for a missing vertex)
             given = None  # a source without points: the object reports it, as for any bad property
         conditions = (len(given) if given is not None else 4) + (2 if properties.get("EndTangents") else 0)
         if given is not None and len(given) >= 2 and conditions < 4:

@@ -208,19 +208,36 @@ Mesh tessellate_for_export(const Solid& solid, TessellationOptions options, cons
     if (!checks.check_self_intersections) return mesh;
     // A coarse mesh of a face that meets another at a shallow angle can poke through it: a Voron bed carriage's
     // bore, meshed at the body's default tolerance 0.145, put a vertex 0.027 beyond the plane it ends in. Such a
-    // solid is meshed again at half the tolerance, up to three times: finer, so still within the tolerance asked
-    // (the budget permitting; else the export's checks refuse the first mesh and say why).
+    // solid is meshed again at half the tolerance, up to three times: finer, so still within the tolerance asked.
+    // Where that does not help (the solid itself touches itself, or a finer mesh is over the budget or refused),
+    // the first mesh goes to the export's checks, which refuse it and say why. The progress reported never goes
+    // back (each mesh again reports what was reached) and keeps polling, so Ctrl-C stops the checks too.
+    const Progress given = options.progress;
+    double reached = 0;
+    const Progress monotonic = [&given, &reached](double fraction) {
+        reached = std::max(reached, fraction);
+        if (given) given(reached);
+    };
+    options.progress = monotonic;
     MeshCheckOptions intersections;
     intersections.max_triangles = checks.max_triangles;
-    for (int halving = 0; halving < 3; ++halving) {
-        const MeshReport report = check_mesh(mesh, intersections);
-        if (!report.manifold || report.self_intersection_free != false) break;
+    intersections.progress = [&monotonic](double) { monotonic(0); };
+    const auto intersects_itself = [&](const Mesh& m) {
+        const MeshReport report = check_mesh(m, intersections);
+        return report.manifold && report.self_intersection_free == false;
+    };
+    if (!intersects_itself(mesh)) return mesh;
+    for (int halving = 1; halving <= 3; ++halving) {
         options.tolerance *= 0.5;
+        Mesh finer;
         try {
-            mesh = tessellate(solid, options);
-        } catch (const TooFine&) {
-            break;
+            finer = tessellate(solid, options);
+        } catch (const Cancelled&) {
+            throw;
+        } catch (const Error&) {
+            break;  // TooFine, or a refusal at a tolerance the user did not ask for
         }
+        if (!intersects_itself(finer)) return finer;
     }
     return mesh;
 }

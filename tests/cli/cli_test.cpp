@@ -598,7 +598,8 @@ TEST_F(Cli, DerivedModuleNamesThatAreBuiltinsGetASuffixAndSaySo) {
     EXPECT_EQ(scad.find("module cylinder()"), std::string::npos);
 }
 
-// A name from a model file goes to the terminal escaped: an ESC in a STEP product's name would otherwise recolour it.
+// A name from a model file goes to the terminal escaped: an ESC in a STEP product's name recoloured it; a C1
+// control (U+009B, CSI) or a bidirectional override (U+202E) would too, or reorder the line.
 TEST_F(Cli, NamesFromFilesArePrintedWithControlCharactersEscaped) {
     ASSERT_EQ(ratbez({"export", example("sphere.json"), "-o", path("ball.step")}).exit_code, 0);
     std::string step = read_file(path("ball.step"));
@@ -606,13 +607,15 @@ TEST_F(Cli, NamesFromFilesArePrintedWithControlCharactersEscaped) {
     for (int field = 0; field < 2; ++field) {
         const std::size_t at = step.find(translator);
         ASSERT_NE(at, std::string::npos) << step.substr(0, 2000);
-        step.replace(at, translator.size(), "'\x1b[31mred'");
+        step.replace(at, translator.size(), "'\x1b[31mred\xc2\x9b" "2J\xe2\x80\xae" "desrever'");
     }
     std::ofstream(path("ball_red.step"), std::ios::binary) << step;
     for (const char* command : {"info", "check"}) {
         const CommandResult run = ratbez({command, path("ball_red.step")});
-        EXPECT_EQ(run.out.find('\x1b'), std::string::npos) << command;
+        for (const char* raw : {"\x1b", "\xc2\x9b", "\xe2\x80\xae"})
+            EXPECT_EQ(run.out.find(raw), std::string::npos) << command << ": " << run.out;
         EXPECT_NE(run.out.find("\\x1b[31mred"), std::string::npos) << command << ": " << run.out;
+        EXPECT_NE(run.out.find("desrever"), std::string::npos) << command << ": " << run.out;
     }
 }
 

@@ -599,10 +599,11 @@ public:
         std::unordered_map<std::uint64_t, std::vector<Candidate>> per_cell;
         grid_->for_each_near(p, radius, [&](const Seed& s) {
             const double d = distance(s.point, p);
-            // A face's foot lies within its own seed spacing of one of its seeds: a face whose seeds here are all
-            // farther than nearest + 2 of its spacing cannot hold it (the radius is the largest face's reach). One
-            // large face sent every query to all 1481 small faces of a Voron lock body (10.9 s for 2,242 triangles).
-            if (d > nearest + 2 * face_spacing_[s.face]) return;
+            // A face's foot lies within about twice its own seed spacing of one of its seeds (a cell's corner):
+            // a face whose seeds here are all farther than nearest + 3 of its spacing cannot hold it (the radius
+            // is the largest face's reach). One large face sent every query to all 1481 small faces of a Voron
+            // lock body (10.9 s for 2,242 triangles).
+            if (d > nearest + 3 * face_spacing_[s.face]) return;
             per_cell[(std::uint64_t{s.face} << 32) | s.patch].emplace_back(d, &s);
             auto& list = best[s.face];
             if (list.size() == kSeedsPerFace && d >= list.back().first) return;

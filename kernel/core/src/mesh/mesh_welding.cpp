@@ -55,7 +55,7 @@ void mark_cancelling_pairs(const std::vector<Triangle>& triangles, std::vector<b
 
 }  // namespace
 
-Mesh welded(const Mesh& mesh) {
+Mesh welded(const Mesh& mesh, OppositePairs pairs) {
     for (const Triangle& tri : mesh.triangles)
         for (const std::uint32_t v : tri)
             require(v < mesh.vertices.size(), "mesh", "a triangle refers to a vertex past the table");
@@ -68,7 +68,7 @@ Mesh welded(const Mesh& mesh) {
         triangles.push_back(moved);
         dropped.push_back(moved[0] == moved[1] || moved[1] == moved[2] || moved[2] == moved[0]);
     }
-    mark_cancelling_pairs(triangles, dropped);
+    if (pairs == OppositePairs::dropped) mark_cancelling_pairs(triangles, dropped);
     Mesh result;
     std::vector<std::uint32_t> renumbered(mesh.vertices.size(), 0);
     std::vector<bool> named(mesh.vertices.size(), false);

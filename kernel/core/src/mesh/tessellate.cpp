@@ -1154,7 +1154,7 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
             // the same triangles once each way round. Welding drops such pairs (mesh_welding.hpp); taken only when
             // it leaves a closed 2-manifold, else the faces' gap is reported below as it is.
             if (!closed(mesh, topology)) {
-                Mesh joined = welded(mesh);
+                Mesh joined = welded(mesh, OppositePairs::dropped);
                 const MeshTopology joined_topology = mesh_topology(joined);
                 if (closed(joined, joined_topology) && joined_topology.oriented_manifold())
                     mesh = std::move(joined), topology = joined_topology;
