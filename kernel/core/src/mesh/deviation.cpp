@@ -511,7 +511,6 @@ class DeviationMeter {
 public:
     explicit DeviationMeter(const Solid& solid) : solid_(solid) {
         std::vector<Seed> seeds;
-        double spacing = 0;
         const auto& faces = solid.faces();
         regions_.resize(faces.size());
         trimmed_.resize(faces.size());
@@ -529,7 +528,6 @@ public:
                 regions_[f] = make_region(face);
                 for (const auto& s : regions_[f].segments) {
                     seeds.push_back({regions_[f].curves[s.curve].curve->point(s.ta), id, 0, 0, 0});
-                    spacing = std::max(spacing, std::hypot(s.b.x - s.a.x, s.b.y - s.a.y));
                     face_spacing_[f] = std::max(face_spacing_[f], std::hypot(s.b.x - s.a.x, s.b.y - s.a.y));
                 }
             }
@@ -566,7 +564,6 @@ public:
                     cell_box_[f][cell].add(p);
                     // A gap between neighbouring seeds counts for the cells of both.
                     auto gap = [&](double d, std::uint32_t other) {
-                        spacing = std::max(spacing, d);
                         face_spacing_[f] = std::max(face_spacing_[f], d);
                         cell_spacing_[f][cell] = std::max(cell_spacing_[f][cell], d);
                         cell_spacing_[f][other] = std::max(cell_spacing_[f][other], d);
@@ -578,8 +575,8 @@ public:
                 row_previous = std::move(row);
             }
         }
-        spacing_ = spacing;
-        grid_ = std::make_unique<SeedGrid>(std::move(seeds), spacing);
+        spacing_ = face_spacing_.empty() ? 0.0 : *std::max_element(face_spacing_.begin(), face_spacing_.end());
+        grid_ = std::make_unique<SeedGrid>(std::move(seeds), spacing_);
     }
 
     // The exact distance from p to the solid's boundary; `warm` is set to the winning face and foot.
