@@ -25,6 +25,15 @@
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Writer.hxx>
+#include <Geom_BezierSurface.hxx>
+#include <Geom_OffsetSurface.hxx>
+#include <STEPCAFControl_Writer.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <gp_Ax2.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRep_Builder.hxx>
@@ -53,6 +62,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "build_paths.hpp"
@@ -322,10 +332,10 @@ TEST_F(HostileFiles, AVertexOffItsEdgesByTheFilesSlackIsKeptItsToleranceRaised) 
     EXPECT_NE(small.find("is 1e-05 from the end of its edge's curve"), std::string::npos) << small;
 }
 
-// A face whose boundary turns back on itself, where two arcs of internally tangent circles meet (a crescent's
-// cusp: a SolidWorks idler on Voron's BMG extruder has two): OpenCASCADE's BRepCheck calls its loop
-// self-intersecting and the face unorientable. The refusal names the loop's fault in words, not only the face's.
-TEST_F(HostileFiles, FacesOpenCascadeCannotHoldAreRefusedWithTheirLoopsFault) {
+// A prism on a face whose boundary turns back on itself, where two arcs of internally tangent circles meet (a
+// crescent's cusp: a SolidWorks idler on Voron's BMG extruder has two): OpenCASCADE's BRepCheck calls its loop
+// self-intersecting and the face unorientable.
+TopoDS_Shape crescent_prism() {
     // The idler's arcs: radius 6 to the cusp and 4.2 back from it, closed by a line. As there, the circles are not
     // quite tangent (the smaller one's centre 5e-8 off): they cross 1.2e-3 from the cusp, beyond its vertex.
     const gp_Circ big(gp_Ax2(gp::Origin(), gp::DZ()), 6), small(gp_Ax2(gp_Pnt(1.8 + 5e-8, 0, 0), gp::DZ()), 4.2);
@@ -336,7 +346,12 @@ TEST_F(HostileFiles, FacesOpenCascadeCannotHoldAreRefusedWithTheirLoopsFault) {
     wire.Add(TopoDS::Edge(BRepBuilderAPI_MakeEdge(small, at_end, at_cusp).Edge().Reversed()));
     wire.Add(BRepBuilderAPI_MakeEdge(at_end, at_start).Edge());
     const TopoDS_Face crescent = BRepBuilderAPI_MakeFace(gp_Pln(gp::XOY()), wire.Wire()).Face();
-    const TopoDS_Shape solid = BRepPrimAPI_MakePrism(crescent, gp_Vec(0, 0, 1)).Shape();
+    return BRepPrimAPI_MakePrism(crescent, gp_Vec(0, 0, 1)).Shape();
+}
+
+// The refusal names the loop's fault in words, not only the face's.
+TEST_F(HostileFiles, FacesOpenCascadeCannotHoldAreRefusedWithTheirLoopsFault) {
+    const TopoDS_Shape solid = crescent_prism();
     ASSERT_FALSE(BRepCheck_Analyzer(solid).IsValid());
     ASSERT_TRUE(BRepTools::Write(solid, path("cusp.brep").c_str()));
     const std::string reason = error_of([&] { read_brep(path("cusp.brep")); });
@@ -344,6 +359,57 @@ TEST_F(HostileFiles, FacesOpenCascadeCannotHoldAreRefusedWithTheirLoopsFault) {
                           "(SelfIntersectingWire)"),
               std::string::npos)
         << reason;
+}
+
+// A STEP file of the shapes, each a product of the given name (XCAF), as CAD systems write assemblies.
+void write_named_step(const std::vector<std::pair<TopoDS_Shape, std::string>>& parts, const std::string& file) {
+    Handle(TDocStd_Document) document;
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", document);
+    const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
+    for (const auto& [shape, name] : parts) TDataStd_Name::Set(tool->AddShape(shape, false), name.c_str());
+    STEPCAFControl_Writer writer;
+    ASSERT_TRUE(writer.Transfer(document, STEPControl_AsIs));
+    ASSERT_EQ(writer.Write(file.c_str()), IFSelect_RetDone);
+    XCAFApp_Application::GetApplication()->Close(document);
+}
+
+// One bad part does not cost an assembly's others: read_step_all leaves out a solid OpenCASCADE finds invalid
+// (the BMGobius idler file's two crescents: its two sound solids were refused with them) and one that does not
+// convert, says which and why, and names the others as the file does. Where no one hears of it (no `left_out`),
+// or no solid is left, the file is refused as before.
+TEST_F(HostileFiles, AFileOfSeveralSolidsIsReadWithoutThoseThatDoNotHold) {
+    TColgp_Array2OfPnt poles(1, 3, 1, 3);
+    for (int i = 1; i <= 3; ++i)
+        for (int j = 1; j <= 3; ++j) poles(i, j) = gp_Pnt(i, j, (i == 2 && j == 2) ? 1.0 : 0.0);
+    // An offset of a B-spline face: no exact NURBS form.
+    const TopoDS_Face offset =
+        BRepBuilderAPI_MakeFace(Handle(Geom_Surface)(new Geom_OffsetSurface(new Geom_BezierSurface(poles), 0.5)), 1e-7).Face();
+    const TopoDS_Shape slab = BRepPrimAPI_MakePrism(offset, gp_Vec(0, 0, -1)).Shape();
+    const std::string file = path("assembly.step");
+    write_named_step({{BRepPrimAPI_MakeBox(gp_Pnt(-20, 0, 0), 1, 2, 3).Shape(), "Alpha"},
+                      {crescent_prism(), "Crescent"},
+                      {slab, "Slab"},
+                      {BRepPrimAPI_MakeBox(gp_Pnt(20, 0, 0), 4, 5, 6).Shape(), "Omega"}},
+                     file);
+    std::string left_out;
+    const std::vector<Solid> solids = read_step_all(file, {}, &left_out);
+    ASSERT_EQ(solids.size(), 2u) << left_out;
+    EXPECT_EQ(solids[0].name(), "Alpha");
+    EXPECT_NEAR(solids[0].volume(), 6, 1e-9);
+    EXPECT_EQ(solids[1].name(), "Omega");
+    EXPECT_NEAR(solids[1].volume(), 120, 1e-9);
+    EXPECT_EQ(left_out.rfind("left out 2 of 4 solids: solid 1 ('Crescent'): face ", 0), 0u) << left_out;
+    EXPECT_NE(left_out.find("(SelfIntersectingWire); solid 2 ('Slab'): face "), std::string::npos) << left_out;
+    EXPECT_NE(left_out.find("Geom_OffsetSurface face has no exact NURBS form"), std::string::npos) << left_out;
+    // Without `left_out`, the first bad solid refuses the file.
+    const std::string refused = error_of([&] { read_step_all(file); });
+    EXPECT_NE(refused.find("solid 1: face "), std::string::npos) << refused;
+    // Nothing sound left: the first fault is the error.
+    const std::string bad = path("bad.step");
+    write_named_step({{crescent_prism(), "Crescent"}, {slab, "Slab"}}, bad);
+    const std::string none = error_of([&] { read_step_all(bad, {}, &left_out); });
+    EXPECT_NE(none.find("solid 0: face "), std::string::npos) << none;
+    EXPECT_NE(none.find("(SelfIntersectingWire)"), std::string::npos) << none;
 }
 
 // Tolerances the conversion sets to a distance it measures (SameParameter, BRepLib::UpdateTolerances) hold with no

@@ -8,6 +8,7 @@
 #include <Standard_OutOfMemory.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopTools_MapOfShape.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
@@ -47,6 +48,8 @@
 #include <fstream>
 #include <istream>
 #include <mutex>
+#include <numeric>
+#include <optional>
 #include <sstream>
 #include <streambuf>
 #include <utility>
@@ -149,6 +152,18 @@ struct NamedShape {
     std::string name;
 };
 
+// What a reader hands back: the file's shapes, and those of their solids (numbered in the order TopExp_Explorer
+// meets them in the shapes in turn) that do not hold against themselves, where the caller asked to read a file
+// of several solids without them (Faults).
+struct FileShapes {
+    std::vector<NamedShape> shapes;
+    std::vector<SolidLeftOut> faulty;
+};
+
+// What a solid that does not hold against itself costs: the whole file (read_step, and read_step_all when no one
+// is told what it leaves out), or only that solid when the file has others that hold.
+enum class Faults { refuse_the_file, leave_the_solid_out };
+
 // Conversion errors blamed on the file: "path: 'a.step': face 7: ...".
 template <class Convert>
 auto blamed_on(const std::string& path, Convert&& convert) {
@@ -166,24 +181,95 @@ Progress second_half(const Progress& progress) {
     };
 }
 
-// The solids of the named shapes, in order, each named; conversion errors blamed on the file.
-std::vector<Solid> solids_from_file(const std::vector<NamedShape>& shapes, const std::string& path, const Progress& progress,
+// The shape without the given solids: the compounds around them rebuilt (of their other parts, placed).
+TopoDS_Shape without_solids(const TopoDS_Shape& shape, const TopTools_MapOfShape& dropped) {
+    if (dropped.Contains(shape)) return {};
+    if (shape.ShapeType() != TopAbs_COMPOUND && shape.ShapeType() != TopAbs_COMPSOLID) return shape;
+    TopoDS_Compound rest;
+    BRep_Builder builder;
+    builder.MakeCompound(rest);
+    for (TopoDS_Iterator it(shape); it.More(); it.Next())
+        if (const TopoDS_Shape part = without_solids(it.Value(), dropped); !part.IsNull()) builder.Add(rest, part);
+    return rest;
+}
+
+// The solids of the file's shapes, in order, each named; conversion errors blamed on the file. With `left_out`
+// given, a solid the reader found faulty or that does not convert is left out when others are read, and
+// `left_out` says which and why, by its place among the file's solids and its name.
+std::vector<Solid> solids_from_file(const FileShapes& file, const std::string& path, const Progress& progress,
                                     std::string* left_out) {
+    TopTools_MapOfShape faulty;
+    std::vector<std::size_t> kept;  // the file's number of each solid handed to from_occt_all
+    std::vector<std::string> names;  // the file's name of each solid, by the file's number
+    std::size_t k = 0;
+    auto fault = file.faulty.begin();
+    for (const NamedShape& s : file.shapes)
+        for (TopExp_Explorer it(s.shape, TopAbs_SOLID); it.More(); it.Next(), ++k) {
+            names.push_back(s.name);
+            if (fault != file.faulty.end() && fault->index == k) {
+                faulty.Add(it.Current());
+                ++fault;
+            } else {
+                kept.push_back(k);
+            }
+        }
     TopoDS_Compound all;
     BRep_Builder builder;
     builder.MakeCompound(all);
-    for (const NamedShape& s : shapes) builder.Add(all, s.shape);
-    std::vector<Solid> solids = blamed_on(path, [&] { return from_occt_all(all, second_half(progress), left_out); });
-    // from_occt_all meets the solids in the compound's order: the shapes', each one's own in turn.
-    std::size_t k = 0;
-    for (const NamedShape& s : shapes)
-        for (TopExp_Explorer it(s.shape, TopAbs_SOLID); it.More() && k < solids.size(); it.Next()) solids[k++].set_name(s.name);
+    for (const NamedShape& s : file.shapes)
+        if (const TopoDS_Shape rest = without_solids(s.shape, faulty); !rest.IsNull()) builder.Add(all, rest);
+    std::vector<SolidLeftOut> not_converted;
+    std::string faces_left_out;
+    std::vector<Solid> solids;
+    try {
+        solids = blamed_on(path, [&] {
+            return from_occt_all(all, second_half(progress), left_out != nullptr ? &faces_left_out : nullptr,
+                                 left_out != nullptr ? &not_converted : nullptr);
+        });
+    } catch (const Error&) {
+        // No solid converts: the first the reader found faulty refuses the file, as it would without `left_out`.
+        if (file.faulty.empty()) throw;
+        const SolidLeftOut& first = file.faulty.front();
+        throw Error("path", "'" + path + "': solid " + std::to_string(first.index) + ": " + first.reason);
+    }
+    if (names.empty()) {  // a file of faces, sewn into solids: numbered as sewn, named by none
+        names.assign(solids.size() + not_converted.size(), "");
+        kept.resize(names.size());
+        std::iota(kept.begin(), kept.end(), std::size_t{0});
+    }
+    // from_occt_all meets the solids in the compound's order.
+    std::vector<SolidLeftOut> solids_left_out = file.faulty;
+    auto refused = not_converted.begin();
+    for (std::size_t j = 0, out = 0; j < kept.size() && out < solids.size(); ++j) {
+        if (refused != not_converted.end() && refused->index == j) {
+            solids_left_out.push_back({kept[j], refused->reason});
+            ++refused;
+            continue;
+        }
+        solids[out++].set_name(names[kept[j]]);
+    }
+    if (left_out == nullptr) return solids;
+    std::sort(solids_left_out.begin(), solids_left_out.end(),
+              [](const SolidLeftOut& a, const SolidLeftOut& b) { return a.index < b.index; });
+    std::string words;
+    if (!solids_left_out.empty()) {
+        words = "left out " + std::to_string(solids_left_out.size()) + " of " + std::to_string(names.size()) + " solids";
+        for (std::size_t i = 0; i < solids_left_out.size(); ++i) {
+            const SolidLeftOut& solid = solids_left_out[i];
+            const std::string& name = names[solid.index];
+            words += (i == 0 ? ": solid " : "; solid ") + std::to_string(solid.index) +
+                     (name.empty() ? "" : " ('" + name + "')") + ": " + solid.reason;
+        }
+    }
+    if (!faces_left_out.empty()) words += (words.empty() ? "" : "; ") + faces_left_out;
+    *left_out = words;
     return solids;
 }
 
 // The file's one solid (exactly one, else the error says to read them all).
-Solid one_solid(std::vector<NamedShape> shapes, const std::string& path, const Progress& progress, const char* all,
+Solid one_solid(const FileShapes& file, const std::string& path, const Progress& progress, const char* all,
                 std::string* left_out) {
+    const std::vector<NamedShape>& shapes = file.shapes;
     std::size_t count = 0;
     for (const NamedShape& s : shapes)
         for (TopExp_Explorer it(s.shape, TopAbs_SOLID); it.More(); it.Next()) ++count;
@@ -247,7 +333,8 @@ void flatten(const Handle(XCAFDoc_ShapeTool)& tool, const TDF_Label& label, cons
 }
 
 // The shapes as the file gives them, held against themselves (self_consistency.hpp), errors blamed on the file.
-std::vector<NamedShape> checked(std::vector<NamedShape> shapes, const std::string& path);
+// Faults::leave_the_solid_out reads a file of several solids without those that do not hold, when others do.
+FileShapes checked(std::vector<NamedShape> shapes, const std::string& path, Faults faults);
 
 // Whether OpenCASCADE's STEP translation keeps the orientation the file gives each face's bounds or turns a bound
 // it takes for the wrong way round (ShapeFix_Face::FixOrientation, FixOrientationMode in the FromSTEP sequence of
@@ -346,20 +433,30 @@ std::vector<NamedShape> translated_step(const std::string& path, const Progress&
 // The shapes of a STEP file, checked: with the face bounds as written where those make consistent solids, else as
 // OpenCASCADE turns them (FaceBounds; its errors are the ones reported). Runs in the reader's child process
 // (isolated_shapes).
-std::vector<NamedShape> read_step_shapes_here(const std::string& path, const Progress& progress) {
+FileShapes read_step_shapes_here(const std::string& path, const Progress& progress, Faults faults) {
     QuietMessenger quiet(QuietMessenger::Lock::skip_in_child);
-    std::vector<NamedShape> as_written = translated_step(path, progress, FaceBounds::as_written);
+    std::optional<FileShapes> as_written;
     try {
-        return checked(std::move(as_written), path);
+        as_written = checked(translated_step(path, progress, FaceBounds::as_written), path, faults);
+        if (as_written->faulty.empty()) return *std::move(as_written);
     } catch (const Error&) {
-        // The file's bounds make no consistent solid as written: translated again, OpenCASCADE turning them.
+        // The file's bounds make no consistent solid as written.
     }
-    return checked(translated_step(path, progress, FaceBounds::as_turned_by_occt), path);
+    // Translated again, OpenCASCADE turning the bounds; of the two readings, the one that leaves fewer solids
+    // out (the file's own on a tie).
+    try {
+        FileShapes turned = checked(translated_step(path, progress, FaceBounds::as_turned_by_occt), path, faults);
+        if (as_written && as_written->faulty.size() <= turned.faulty.size()) return *std::move(as_written);
+        return turned;
+    } catch (const Error&) {
+        if (as_written) return *std::move(as_written);
+        throw;
+    }
 }
 
 // The shape of a .brep file (one, possibly a compound of several solids).
 // Runs in the reader's child process (isolated_shapes).
-std::vector<NamedShape> read_brep_shapes_here(const std::string& path, const Progress& progress) {
+FileShapes read_brep_shapes_here(const std::string& path, const Progress& progress, Faults faults) {
     QuietMessenger quiet(QuietMessenger::Lock::skip_in_child);
     {
         // BRepTools::Read prints to stdout when a file is not .brep: look at its first non-blank line first. A
@@ -384,11 +481,10 @@ std::vector<NamedShape> read_brep_shapes_here(const std::string& path, const Pro
     } catch (const Standard_Failure& failure) {
         throw Error("path", "reading .brep from '" + path + "' failed: " + failure.GetMessageString());
     }
-    return checked({NamedShape{shape, ""}}, path);
+    return checked({NamedShape{shape, ""}}, path, faults);
 }
 
-// The child's answer: the names, then the shapes as one compound in OpenCASCADE's binary format (exact
-// doubles, unlike the .brep text's 15 digits).
+// The shapes as one compound, in order.
 TopoDS_Compound compound_of(const std::vector<NamedShape>& shapes) {
     TopoDS_Compound all;
     BRep_Builder builder;
@@ -397,40 +493,66 @@ TopoDS_Compound compound_of(const std::vector<NamedShape>& shapes) {
     return all;
 }
 
-std::vector<NamedShape> checked(std::vector<NamedShape> shapes, const std::string& path) {
+FileShapes checked(std::vector<NamedShape> shapes, const std::string& path, Faults faults) {
     try {
-        // Held against itself where OpenCASCADE's checks on a hostile shape cannot hurt the caller.
-        blamed_on(path, [&] { detail::check_self_consistency(compound_of(shapes)); });
+        const TopoDS_Compound all = compound_of(shapes);
+        try {
+            // Held against itself where OpenCASCADE's checks on a hostile shape cannot hurt the caller.
+            blamed_on(path, [&] { detail::check_self_consistency(all); });
+            return {std::move(shapes), {}};
+        } catch (const Error&) {
+            if (faults == Faults::refuse_the_file) throw;
+            std::vector<SolidLeftOut> faulty = detail::solid_faults(all);
+            std::size_t solids = 0;
+            for (TopExp_Explorer it(all, TopAbs_SOLID); it.More(); it.Next()) ++solids;
+            if (faulty.size() == solids) throw;  // none holds (or the file has no solid): the first fault refuses it
+            return {std::move(shapes), std::move(faulty)};
+        }
     } catch (const Standard_OutOfMemory&) {
         throw std::bad_alloc();
     } catch (const Standard_Failure& failure) {
         throw Error("path", "reading '" + path + "' failed: " + failure.GetMessageString());
     }
-    return shapes;
 }
 
-std::string pack(const std::vector<NamedShape>& shapes) {
+// The child's answer: the names, the faulty solids, then the shapes as one compound in OpenCASCADE's binary
+// format (exact doubles, unlike the .brep text's 15 digits).
+std::string pack(const FileShapes& file) {
     std::ostringstream out(std::ios::binary);
-    out << shapes.size() << '\n';
-    for (const NamedShape& s : shapes) out << s.name.size() << '\n' << s.name;
-    const TopoDS_Compound all = compound_of(shapes);
+    out << file.shapes.size() << '\n';
+    for (const NamedShape& s : file.shapes) out << s.name.size() << '\n' << s.name;
+    out << file.faulty.size() << '\n';
+    for (const SolidLeftOut& f : file.faulty) out << f.index << '\n' << f.reason.size() << '\n' << f.reason;
+    const TopoDS_Compound all = compound_of(file.shapes);
     BinTools::Write(all, out, /*theWithTriangles=*/false, /*theWithNormals=*/false, BinTools_FormatVersion_CURRENT);
     return out.str();
 }
 
 // pack's inverse, in the parent: the bytes come from our own child, not from the file.
-std::vector<NamedShape> unpack(const std::string& bytes, const std::string& path) {
+FileShapes unpack(const std::string& bytes, const std::string& path) {
     std::istringstream in(bytes, std::ios::binary);
-    std::size_t count = 0;
-    in >> count;
-    in.get();
-    std::vector<NamedShape> shapes(count);
-    for (NamedShape& s : shapes) {
+    const auto text = [&in] {
         std::size_t size = 0;
         in >> size;
         in.get();
-        s.name.resize(size);
-        in.read(s.name.data(), static_cast<std::streamsize>(size));
+        std::string out(size, '\0');
+        in.read(out.data(), static_cast<std::streamsize>(size));
+        return out;
+    };
+    std::size_t count = 0;
+    in >> count;
+    in.get();
+    FileShapes file{std::vector<NamedShape>(count), {}};
+    std::vector<NamedShape>& shapes = file.shapes;
+    for (NamedShape& s : shapes) s.name = text();
+    std::size_t faults = 0;
+    in >> faults;
+    in.get();
+    file.faulty.resize(faults);
+    for (SolidLeftOut& f : file.faulty) {
+        in >> f.index;
+        in.get();
+        f.reason = text();
     }
     TopoDS_Shape all;
     try {
@@ -442,7 +564,7 @@ std::vector<NamedShape> unpack(const std::string& bytes, const std::string& path
     std::size_t k = 0;
     for (TopoDS_Iterator it(all); it.More() && k < count; it.Next()) shapes[k++].shape = it.Value();
     require(k == count, "path", "'" + path + "': the reader's answer is damaged");
-    return shapes;
+    return file;
 }
 
 // The shapes `read_here` reads from the file and holds against themselves (checked), read in a child process
@@ -450,9 +572,9 @@ std::vector<NamedShape> unpack(const std::string& bytes, const std::string& path
 // hostile file ends the child, not the caller, and the caller's Progress (Ctrl-C) kills it within a poll
 // interval. The reading is the first half of the progress.
 // `prescan` looks at the file's text first (file_prescan.hpp), in the parent: its refusals name the count.
-std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress& progress,
-                                        std::vector<NamedShape> (*read_here)(const std::string&, const Progress&),
-                                        void (*prescan)(const std::string&, const std::string&)) {
+FileShapes isolated_shapes(const std::string& path, const Progress& progress, Faults faults,
+                           FileShapes (*read_here)(const std::string&, const Progress&, Faults),
+                           void (*prescan)(const std::string&, const std::string&)) {
     require_readable(path);
     std::error_code error;
     const auto size = static_cast<std::size_t>(std::filesystem::file_size(path, error));
@@ -468,7 +590,7 @@ std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress&
             // The child reports the whole read as [0, 1] of its part; the readers report [0, 0.5] of theirs.
             const Progress child_progress = [&report](double fraction) { report(2 * fraction); };
             try {
-                return pack(read_here(path, child_progress));  // checked by the reader
+                return pack(read_here(path, child_progress, faults));  // checked by the reader
             } catch (const Standard_OutOfMemory&) {
                 throw std::bad_alloc();
             } catch (const Standard_Failure& failure) {
@@ -478,12 +600,12 @@ std::vector<NamedShape> isolated_shapes(const std::string& path, const Progress&
     return unpack(packed, path);
 }
 
-std::vector<NamedShape> read_step_shapes(const std::string& path, const Progress& progress) {
-    return isolated_shapes(path, progress, read_step_shapes_here, detail::prescan_step);
+FileShapes read_step_shapes(const std::string& path, const Progress& progress, Faults faults = Faults::refuse_the_file) {
+    return isolated_shapes(path, progress, faults, read_step_shapes_here, detail::prescan_step);
 }
 
-std::vector<NamedShape> read_brep_shapes(const std::string& path, const Progress& progress) {
-    return isolated_shapes(path, progress, read_brep_shapes_here, detail::prescan_brep);
+FileShapes read_brep_shapes(const std::string& path, const Progress& progress, Faults faults = Faults::refuse_the_file) {
+    return isolated_shapes(path, progress, faults, read_brep_shapes_here, detail::prescan_brep);
 }
 
 }  // namespace
@@ -599,12 +721,21 @@ Solid read_brep(const std::string& path, const Progress& progress, std::string* 
     return named_after_file({std::move(solid)}, path).front();
 }
 
+namespace {
+
+// A faulty solid among others is left out only where the caller hears of it.
+Faults faults_for(const std::string* left_out) {
+    return left_out != nullptr ? Faults::leave_the_solid_out : Faults::refuse_the_file;
+}
+
+}  // namespace
+
 std::vector<Solid> read_step_all(const std::string& path, const Progress& progress, std::string* left_out) {
-    return named_after_file(solids_from_file(read_step_shapes(path, progress), path, progress, left_out), path);
+    return named_after_file(solids_from_file(read_step_shapes(path, progress, faults_for(left_out)), path, progress, left_out), path);
 }
 
 std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress, std::string* left_out) {
-    return named_after_file(solids_from_file(read_brep_shapes(path, progress), path, progress, left_out), path);
+    return named_after_file(solids_from_file(read_brep_shapes(path, progress, faults_for(left_out)), path, progress, left_out), path);
 }
 
 }  // namespace ratbez::occt

@@ -13,6 +13,8 @@
 #include <Geom_Curve.hxx>
 #include <Geom_Surface.hxx>
 #include <ShapeAnalysis_Surface.hxx>
+#include <Standard_Failure.hxx>
+#include <Standard_OutOfMemory.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_DataMapOfShapeReal.hxx>
@@ -309,30 +311,51 @@ void check_with_brepcheck(const TopoDS_Shape& solid, const TopTools_IndexedMapOf
     fail("shape", "OpenCASCADE's BRepCheck finds the solid invalid");
 }
 
+// One solid held against itself: its faces, its shells, then BRepCheck. Errors say "face f: ..." (from 0).
+void check_solid(const TopoDS_Shape& solid) {
+    TopTools_IndexedMapOfShape faces;
+    const double size = size_of(solid);
+    int f = 0;
+    for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next(), ++f) {
+        faces.Add(it.Current());
+        try {
+            check_face(TopoDS::Face(it.Current()), size);
+        } catch (const Error& error) {
+            throw Error("shape", "face " + std::to_string(f) + ": " + std::string(error.reason()));
+        }
+    }
+    for (TopExp_Explorer shells(solid, TopAbs_SHELL); shells.More(); shells.Next()) check_shell(shells.Current(), faces);
+    check_with_brepcheck(solid, faces);
+}
+
 }  // namespace
+
+std::vector<SolidLeftOut> solid_faults(const TopoDS_Shape& shape) {
+    std::vector<SolidLeftOut> faults;
+    std::size_t s = 0;
+    for (TopExp_Explorer solids(shape, TopAbs_SOLID); solids.More(); solids.Next(), ++s) {
+        try {
+            check_solid(solids.Current());
+        } catch (const Error& error) {
+            faults.push_back({s, std::string(error.reason())});
+        } catch (const Standard_OutOfMemory&) {
+            throw;
+        } catch (const Standard_Failure& failure) {
+            faults.push_back({s, std::string("OpenCASCADE failed checking it: ") + failure.GetMessageString()});
+        }
+    }
+    return faults;
+}
 
 void check_self_consistency(const TopoDS_Shape& shape) {
     int s = 0;
     bool any_solid = false;
     for (TopExp_Explorer solids(shape, TopAbs_SOLID); solids.More(); solids.Next(), ++s) {
         any_solid = true;
-        const std::string solid = "solid " + std::to_string(s) + ": ";
-        TopTools_IndexedMapOfShape faces;
-        const double size = size_of(solids.Current());
-        int f = 0;
-        for (TopExp_Explorer it(solids.Current(), TopAbs_FACE); it.More(); it.Next(), ++f) {
-            faces.Add(it.Current());
-            try {
-                check_face(TopoDS::Face(it.Current()), size);
-            } catch (const Error& error) {
-                throw Error("shape", solid + "face " + std::to_string(f) + ": " + std::string(error.reason()));
-            }
-        }
         try {
-            for (TopExp_Explorer shells(solids.Current(), TopAbs_SHELL); shells.More(); shells.Next()) check_shell(shells.Current(), faces);
-            check_with_brepcheck(solids.Current(), faces);
+            check_solid(solids.Current());
         } catch (const Error& error) {
-            throw Error("shape", solid + std::string(error.reason()));
+            throw Error("shape", "solid " + std::to_string(s) + ": " + std::string(error.reason()));
         }
     }
     if (any_solid) return;

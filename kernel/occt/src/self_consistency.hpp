@@ -6,7 +6,11 @@
 // tolerance bounds its curves' distance, a vertex's its distance from its edges); a gap beyond them by no more
 // than the file's slack (file_slack) raises the edge's or vertex's tolerance to it.
 
+#include <vector>
+
 #include <TopoDS_Shape.hxx>
+
+#include "ratbez/occt/shape_import.hpp"
 
 namespace ratbez::occt::detail {
 
@@ -15,6 +19,9 @@ namespace ratbez::occt::detail {
 // then BRepCheck's verdict on each solid. Shapes without solids (surface models, sewn later) are checked face
 // by face only. Raises the tolerances of the shape's edges and vertices where it keeps a gap (above).
 void check_self_consistency(const TopoDS_Shape& shape);
+// Every solid of the shape that check_self_consistency refuses, each checked on its own (not stopping at the
+// first), its fault without the "solid s: " prefix: what a file of several solids can be read without.
+std::vector<SolidLeftOut> solid_faults(const TopoDS_Shape& shape);
 
 // How far beyond its stated tolerances a file may hold two things it puts together and still be read, the
 // tolerance raised to the gap: its rounding (1e-9 of `coordinate_scale`, the largest coordinate there, at least 1)

@@ -968,12 +968,14 @@ Solid from_occt(const TopoDS_Shape& shape, const Progress& progress, std::string
     return Importer(solids.front()).run(progress);
 }
 
-std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress, std::string* left_out) {
+std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress, std::string* left_out,
+                                 std::vector<SolidLeftOut>* solids_left_out) {
     require(!shape.IsNull(), "shape", "is empty");
     const std::vector<TopoDS_Shape> solids = solids_of(shape, left_out);
     require(!solids.empty(), "shape", "holds no solid" + what_instead(shape));
     std::vector<Solid> out;
     out.reserve(solids.size());
+    std::vector<SolidLeftOut> refused;
     for (std::size_t k = 0; k < solids.size(); ++k) {
         const Progress part = [&](double fraction) {
             if (progress) progress((static_cast<double>(k) + fraction) / static_cast<double>(solids.size()));
@@ -982,9 +984,13 @@ std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& prog
             out.push_back(Importer(solids[k]).run(part));
         } catch (const Error& e) {
             if (solids.size() == 1) throw;
-            throw Error("shape", "solid " + std::to_string(k) + ": " + std::string(e.reason()));
+            if (solids_left_out == nullptr) throw Error("shape", "solid " + std::to_string(k) + ": " + std::string(e.reason()));
+            refused.push_back({k, std::string(e.reason())});
         }
     }
+    // When no solid converts, the first refusal is the error.
+    if (out.empty()) throw Error("shape", "solid " + std::to_string(refused.front().index) + ": " + refused.front().reason);
+    if (solids_left_out != nullptr) *solids_left_out = std::move(refused);
     return out;
 }
 

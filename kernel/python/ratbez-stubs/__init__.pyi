@@ -731,7 +731,8 @@ def read_brep(path: Path, progress: Optional[Callable[[float], object]] = ...) -
     while the call runs (the GIL is released)."""
 
 def read_brep_all(path: Path, progress: Optional[Callable[[float], object]] = ...) -> List[Solid]:
-    """Every solid of an OpenCASCADE .brep file, in the order its shape holds them.
+    """Every solid of an OpenCASCADE .brep file, in the order its shape holds them; one that is invalid or
+    does not convert is left out while others read, with a ratbez.ReadWarning naming it.
     Surfaces convert exactly: planes, B-spline and Bezier surfaces, and cylinders, cones, spheres, tori,
     revolutions and extrusions through their exact rational forms, trimmed by any loops (holes, seams,
     poles); edges and vertices stay shared, voids stay voids. Rounding in the file (a full turn one ulp
@@ -760,7 +761,8 @@ def read_step(path: Path, progress: Optional[Callable[[float], object]] = ...) -
 
 def read_step_all(path: Path, progress: Optional[Callable[[float], object]] = ...) -> List[Solid]:
     """Every solid of a STEP file, in file order, as a list of exact Solids: assemblies flattened with each
-    instance's placement, each solid named after its product (Solid.name).
+    instance's placement, each solid named after its product (Solid.name). A solid OpenCASCADE finds
+    invalid or that does not convert is left out while others read, with a ratbez.ReadWarning naming it.
     Surfaces convert exactly: planes, B-spline and Bezier surfaces, and cylinders, cones, spheres, tori,
     revolutions and extrusions through their exact rational forms, trimmed by any loops (holes, seams,
     poles); edges and vertices stay shared, voids stay voids. Rounding in the file (a full turn one ulp

@@ -464,14 +464,16 @@ void bind_io(py::module_& m) {
         [](const py::object& path, const py::object& progress) { return read_released(path, progress, occt::read_step_all); },
         py::arg("path"), py::arg("progress") = py::none(),
         ("Every solid of a STEP file, in file order, as a list of exact Solids: assemblies flattened with each\n"
-         "instance's placement, each solid named after its product (Solid.name).\n" +
+         "instance's placement, each solid named after its product (Solid.name). A solid OpenCASCADE finds\n"
+         "invalid or that does not convert is left out while others read, with a ratbez.ReadWarning naming it.\n" +
          std::string(read_doc) + progress_doc)
             .c_str());
     m.def(
         "read_brep_all",
         [](const py::object& path, const py::object& progress) { return read_released(path, progress, occt::read_brep_all); },
         py::arg("path"), py::arg("progress") = py::none(),
-        ("Every solid of an OpenCASCADE .brep file, in the order its shape holds them.\n" + std::string(read_doc) +
+        ("Every solid of an OpenCASCADE .brep file, in the order its shape holds them; one that is invalid or\n"
+         "does not convert is left out while others read, with a ratbez.ReadWarning naming it.\n" + std::string(read_doc) +
          progress_doc)
             .c_str());
     m.def(

@@ -38,7 +38,10 @@ Solid read_brep(const std::string& path, const Progress& progress = {}, std::str
 // product structure through OpenCASCADE's XCAF reader) and each solid named after its product; a .brep file's
 // solids in the order its shape holds them. Every solid has a name and no two alike (Solid::name): the file's,
 // else the file's stem (stem_k among several), repeats numbered _2, _3 (instances of one part). Errors as
-// above, a solid's prefixed "solid k: ".
+// above, a solid's prefixed "solid k: " (from 0, in file order). With `left_out` given, a solid OpenCASCADE finds
+// invalid or that does not convert is left out when others are read, and `left_out` says so ("left out 1 of 3
+// solids: solid 1 ('Idler'): face 57: ..."): one bad part does not cost an assembly's others. Without it, or
+// when no solid is read, the file is refused.
 std::vector<Solid> read_step_all(const std::string& path, const Progress& progress = {}, std::string* left_out = nullptr);
 std::vector<Solid> read_brep_all(const std::string& path, const Progress& progress = {}, std::string* left_out = nullptr);
 

@@ -31,6 +31,7 @@
 // valid shells (Face and Solid validation, brep.hpp). `progress` is called with the fraction of faces done, and
 // may throw to cancel (progress.hpp).
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,17 @@ namespace ratbez::occt {
 // ("left out 12 face(s) outside every solid: ..."), or "" when nothing: faces of open shells and loose faces
 // bound no volume, and a user should hear that they are not in the solid.
 Solid from_occt(const TopoDS_Shape& shape, const Progress& progress = {}, std::string* left_out = nullptr);
+// A solid of a shape left out of what is read: its place among the shape's solids (from 0, in the order
+// TopExp_Explorer meets them) and why, in words.
+struct SolidLeftOut {
+    std::size_t index = 0;
+    std::string reason;
+};
+
 // Every solid of the shape in the order the shape holds them (TopExp_Explorer), errors prefixed "solid k: ".
-std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress = {}, std::string* left_out = nullptr);
+// With `solids_left_out` given, a solid that does not convert is listed there and left out, as long as another
+// converts: one bad part of an assembly does not cost the others (the caller tells the user which it left out).
+std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress = {}, std::string* left_out = nullptr,
+                                 std::vector<SolidLeftOut>* solids_left_out = nullptr);
 
 }  // namespace ratbez::occt
