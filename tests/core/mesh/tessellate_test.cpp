@@ -554,5 +554,25 @@ TEST(Tessellate, RationalProfileWithOffCentreBulgeStaysWithinTolerance) {
     EXPECT_LE(max_deviation(solid, mesh), tolerance);
 }
 
+// The sliver between an arc and its chord, the chord broken at a vertex just beside it on the arc's side (Voron's
+// BMGobius idler has 12 such faces). The arc's sag (8.8e-3) is below the tolerance, so the chord may stand for it,
+// and the chord passes the vertex on the far side: the cap's samples ran round it the wrong way and its triangle
+// faced its neighbours' (an open mesh, refused). Only the cap's edges are sampled finer.
+TEST(Tessellate, ASliverBesideAnArcsChordMeshesTheRightWayRound) {
+    const double half = 6.2;  // degrees either side of +x, radius 1.5
+    const NurbsCurve rim = arc(1.5, -half, half);
+    const Vec3 start = rim.start_point(), end = rim.end_point();
+    const Vec3 beside{1.5 * std::cos(half * kPi / 180) + 2.75e-3, 0, 0};  // 2.75e-3 off the chord x = 1.4912
+    const Solid solid = extrude(Profile({rim, line_segment(end, beside), line_segment(beside, start)}), {0, 0, 1}, 1.0);
+    const double tolerance = 0.05;
+    const Mesh mesh = tessellate(solid, tolerance);
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_GT(mesh.volume(), 0.0);
+    EXPECT_LE(max_deviation(solid, mesh), tolerance);
+    EXPECT_LE(std::abs(mesh.volume() - solid.volume()), tolerance * solid.area());
+    // The sides keep the samples the tolerance asks for: the arc gets a few more, nothing else does.
+    EXPECT_LE(mesh.triangles.size(), 24u);
+}
+
 }  // namespace
 }  // namespace ratbez

@@ -169,6 +169,8 @@ public:
                 throw;
             } catch (const detail::CrossingLoops& e) {
                 throw detail::CrossingLoops("solid", "face " + std::to_string(i) + ": " + e.what());
+            } catch (const detail::InsideOutLoop& e) {
+                throw detail::InsideOutLoop("solid", "face " + std::to_string(i) + ": " + e.what(), e.edges());
             } catch (const Error& e) {
                 throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
             }
@@ -565,7 +567,8 @@ private:
                     surface_use = true;
                 }
             if (!straddled) bound = settings_.check_tolerance();
-            if (surface_use && is_crease(edge.get())) {
+            // Chords that stray from the curve by more than `limit` split at their middle, in rounds.
+            const auto split_chords_beyond = [&](double limit) {
                 for (int round = 0; round < 8; ++round) {
                     std::vector<double> added;
                     for (std::size_t k = 0; k + 1 < samples.params.size(); ++k) {
@@ -574,14 +577,18 @@ private:
                         for (double f : {0.25, 0.5, 0.75})
                             error = std::max(error, detail::point_segment_distance(edge->curve.point(a + f * (b - a)), points[k],
                                                                            points[k + 1]));
-                        if (error > bound) added.push_back(0.5 * (a + b));
+                        if (error > limit) added.push_back(0.5 * (a + b));
                     }
                     if (added.empty()) break;
                     added.insert(added.end(), samples.params.begin(), samples.params.end());
                     samples.params = detail::merge_params(std::move(added), d.min, d.max);
                     place();
                 }
-            }
+            };
+            if (surface_use && is_crease(edge.get())) split_chords_beyond(bound);
+            // An edge of a loop that came out inside out on an earlier attempt (InsideOutLoop).
+            if (const auto finer = settings_.finer_edges.find(edge.get()); finer != settings_.finer_edges.end())
+                split_chords_beyond(std::ldexp(settings_.check_tolerance(), -finer->second));
             const double crease_bound = surface_use && is_crease(edge.get()) ? bound : 0;
             if (used_by_trimmed(edge.get()) && refine_for_trimmed(edge.get(), samples.params, crease_bound, !surface_use)) place();
             const std::size_t n = samples.params.size();
@@ -910,6 +917,8 @@ private:
 
     void mesh_planar(const Face& face) {
         const Plane& plane = face.plane();
+        // Counterclockwise in the (x, y) frame is along x × y; flip if the frame is left-handed to the normal.
+        const bool flip = dot(cross(plane.x_axis, plane.y_axis), plane.normal) < 0;
         std::vector<std::vector<detail::Point2>> loops;
         std::vector<Id> flat_ids;
         for (const auto& loop : face.loops()) {
@@ -930,15 +939,25 @@ private:
                 const Vec3 d = assembler_.point(id) - plane.origin;
                 points.push_back({dot(d, plane.x_axis), dot(d, plane.y_axis)});
             }
+            // The outer loop runs counterclockwise seen from the normal, holes clockwise (brep.hpp); samples that
+            // run the other way would mesh the outside of the loop.
+            const bool counterclockwise = (detail::twice_signed_area(points) > 0) != flip;
+            if (counterclockwise != loops.empty()) throw inside_out(loop);
             loops.push_back(std::move(points));
             flat_ids.insert(flat_ids.end(), cleaned.begin(), cleaned.end());
         }
-        // Counterclockwise in the (x, y) frame is along x × y; flip if the frame is left-handed to the normal.
-        const bool flip = dot(cross(plane.x_axis, plane.y_axis), plane.normal) < 0;
         for (const auto& t : detail::triangulate_polygon(loops)) {
             if (flip) assembler_.add_triangle(flat_ids[t[0]], flat_ids[t[2]], flat_ids[t[1]]);
             else assembler_.add_triangle(flat_ids[t[0]], flat_ids[t[1]], flat_ids[t[2]]);
         }
+    }
+
+    // The refusal of a loop whose samples run round it the wrong way, naming its edges to be sampled finer.
+    static detail::InsideOutLoop inside_out(const std::vector<Coedge>& loop) {
+        std::vector<const Edge*> edges;
+        for (const Coedge& coedge : loop)
+            if (!coedge.edge->degenerate) edges.push_back(coedge.edge.get());
+        return detail::InsideOutLoop("loops", "a loop's samples run round it the wrong way (a sliver beside an arc's chord)", std::move(edges));
     }
 
     // A trimmed face: its loops as boundary samples in (u, v) (each coedge's samples in the direction the face
@@ -965,6 +984,10 @@ private:
                     samples.push_back({uv.x, uv.y, e.ids[at], assembler_.point(e.ids[at])});
                 }
             }
+            // The outer loop counterclockwise in (u, v), holes clockwise (brep.hpp), as in mesh_planar.
+            std::vector<detail::Point2> uv;
+            for (const detail::BoundarySample& sample : samples) uv.push_back({sample.u, sample.v});
+            if ((detail::twice_signed_area(uv) > 0) != (loops.size() == 1)) throw inside_out(loop);
         }
         const detail::SurfaceEvaluator evaluator(face.surface());
         const std::function<Id(const Vec3&)> add = [this](const Vec3& p) { return assembler_.add_point(p); };
@@ -1085,17 +1108,23 @@ detail::TessellationSettings settings_of(const TessellationOptions& options) {
 // Tessellates the faces; a request over the budget is reported with the estimate for all of them. Where a
 // face's boundary samples cross (detail::CrossingLoops: edges closer than the tolerance), the whole solid is
 // tessellated again at half the tolerance, a few times at most: finer, so still within the tolerance asked.
+// Where a loop's samples run round it the wrong way (detail::InsideOutLoop), only its edges are sampled finer.
 Mesh run_within_budget(std::span<const Face> faces, const detail::TessellationSettings& settings) {
     detail::TessellationSettings attempt = settings;
-    for (int halving = 0;; ++halving) {
+    for (int halvings = 0;;) {
         try {
             return Tessellator(faces, attempt).run();
         } catch (const TooFine& e) {
             const Estimate estimate = estimate_triangles(faces, attempt, e.estimated_triangles());
             throw TooFine(estimate.triangles, settings.max_triangles, estimate.fitting_tolerance);
         } catch (const detail::CrossingLoops& e) {
-            if (halving == 6) throw Error("solid", std::string(e.reason()) + " (also at 1/64 of the tolerance)");
+            if (halvings++ == 6) throw Error("solid", std::string(e.reason()) + " (also at 1/64 of the tolerance)");
             attempt.tolerance *= 0.5;
+        } catch (const detail::InsideOutLoop& e) {
+            // The bound on the chords of the loop's edges halved per attempt.
+            for (const Edge* edge : e.edges())
+                if (++attempt.finer_edges[edge] > 8)
+                    throw Error("solid", std::string(e.reason()) + " (also with its edges at 1/256 of the tolerance)");
         }
     }
 }

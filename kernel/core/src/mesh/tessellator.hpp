@@ -21,9 +21,18 @@
 // Not installed, not part of the public API.
 
 #include <cstddef>
+#include <map>
+#include <memory>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "ratbez/error.hpp"
 #include "ratbez/progress.hpp"
+
+namespace ratbez {
+struct Edge;  // brep.hpp
+}  // namespace ratbez
 
 namespace ratbez::detail {
 
@@ -36,12 +45,29 @@ public:
     using Error::Error;
 };
 
+// A face's loop whose samples run round it the other way (the polygon encloses the outside of the face): a
+// sliver between an arc and a vertex just beside the arc's chord, as Voron's BMGobius idler has 12 of, where the
+// chord the tolerance allows for the arc passes on the far side of the vertex. The driver samples the loop's
+// edges finer (TessellationSettings::finer_edges) and tessellates again; the rest is sampled as before.
+class InsideOutLoop : public Error {
+public:
+    InsideOutLoop(std::string_view argument, std::string_view reason, std::vector<const Edge*> edges)
+        : Error(argument, reason), edges_(std::make_shared<const std::vector<const Edge*>>(std::move(edges))) {}
+    const std::vector<const Edge*>& edges() const noexcept { return *edges_; }
+
+private:
+    std::shared_ptr<const std::vector<const Edge*>> edges_;  // shared: copying an Error cannot throw
+};
+
 // What the caller of tessellate() asked for.
 struct TessellationSettings {
     double tolerance = 0;  // the distance allowed between mesh and surface, either way
     double angle_rad = 0;  // 0: no angle limit
     std::size_t max_triangles = 0;
     const Progress* progress = nullptr;  // TessellationOptions::progress, or none
+    // Edges whose chords keep within tolerance / 2^n (n the value) where a loop they bound came out inside out
+    // (InsideOutLoop); every other edge is sampled to the tolerance.
+    std::map<const Edge*, int> finer_edges;
 
     // Reports `fraction` of the whole tessellation done (the caller's callback may throw to cancel).
     void report(double fraction) const {
