@@ -263,23 +263,39 @@ def exportable(obj):
     return shape is not None and not shape.isNull() and bool(shape.Solids)
 
 
+def _global_placement(obj):
+    """Where the 3D view shows `obj`: its Placement within those of the App::Part containers (and other
+    geometry groups) around it."""
+    if hasattr(obj, "getGlobalPlacement"):
+        return obj.getGlobalPlacement()
+    return obj.Placement
+
+
 def _placed_solid(obj):
-    """The ratbez.Solid of a RatBez feature with its Placement applied (on its control points: exact)."""
+    """The ratbez.Solid of a RatBez feature where the 3D view shows it: its Placement and its containers'
+    applied (on its control points: exact)."""
     solid = solid_of(obj)
-    placement = obj.Placement
+    placement = _global_placement(obj)
     if not placement.isIdentity():
         solid = solid.transformed(_placement_matrix_rows(placement))
     return solid
 
 
 def _read_solids(obj):
-    """The solids of another object's shape (its Placement included), read by the kernel from a .brep of it:
-    every solid where the module reads several (read_brep_all), else the one."""
+    """The solids of another object's shape where the 3D view shows it (its Placement, in its containers'),
+    read by the kernel from a .brep of it: every solid where the module reads several (read_brep_all), else
+    the one."""
     rb = kernel.ratbez()
     handle, path = tempfile.mkstemp(prefix="ratbez-", suffix=".brep")
     os.close(handle)
     try:
-        obj.Shape.exportBrep(path)
+        shape = obj.Shape
+        # The shape carries the object's own Placement; the containers' goes on top of it.
+        containers = _global_placement(obj).multiply(obj.Placement.inverse()) if hasattr(obj, "Placement") else None
+        if containers is not None and not containers.isIdentity():
+            shape = shape.copy()
+            shape.Placement = containers.multiply(shape.Placement)
+        shape.exportBrep(path)
         try:
             if hasattr(rb, "read_brep_all"):
                 return list(rb.read_brep_all(path))
@@ -350,8 +366,9 @@ def export_openscad(objects, path, tolerance=None, module=None, color=True):
     default). One object: `module NAME() { polyhedron(...); }` then `NAME();`, NAME being `module`, else the
     file's stem made an identifier. A list: one module per solid, named after its Label, and the module NAME
     placing them all. With `color`, each module's body is wrapped in color() of the object's ShapeColor (and
-    Transparency). A non-identity Placement is applied to the solid (on its control points) before
-    tessellating, so `use <file>` imports the solids where FreeCAD shows them."""
+    Transparency). The Placement, within those of the App::Part containers around the object, is applied to the
+    solid (on its control points) before tessellating, so `use <file>` imports the solids where FreeCAD shows
+    them."""
     rb = kernel.ratbez()
     named = _named_solids(objects, identifiers=True)
     # One object holding several solids (a compound, an imported assembly) is a library too: a module per solid

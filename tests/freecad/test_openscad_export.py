@@ -147,6 +147,45 @@ def test_several_solids_make_one_library_and_one_3mf():
     check(800 + PI * 40 < volume < 800 + PI * 40 + 36 * PI, "union volume {}".format(volume))
 
 
+@suite.test
+def test_solids_in_a_moved_part_export_where_freecad_shows_them():
+    """An App::Part container moves what it holds in the 3D view: a RatBez solid and a Part box in a Part turned
+    and moved export there, to .scad and STL alike (they were exported at their own Placement alone)."""
+    doc = App.newDocument("Container")
+    container = doc.addObject("App::Part", "Part")
+    peg = RatBez.make_cylinder(doc, Radius=2, Height=10)
+    peg.Placement.Base = V(0, 5, 0)
+    box = doc.addObject("Part::Box", "Box")
+    box.Placement.Base = V(10, 0, 0)
+    container.addObject(peg)
+    container.addObject(box)
+    container.Placement = App.Placement(V(30, 0, 0), App.Rotation(V(0, 0, 1), 90))
+    doc.recompute()
+    shown = {}
+    for obj in (peg, box):
+        placed = obj.Shape.copy()
+        placed.Placement = obj.getGlobalPlacement()
+        shown[obj.Name] = placed.optimalBoundingBox()
+    folder = os.path.join(OUT, "container")
+    os.makedirs(folder, exist_ok=True)
+    for obj in (peg, box):
+        scad = os.path.join(folder, obj.Name + ".scad")
+        RatBez.export_openscad(obj, scad, TOLERANCE)
+        rendered = Mesh.Mesh(render_in_boolean(scad, "container_" + obj.Name)).BoundBox
+        expected = shown[obj.Name]
+        for got, want in ((rendered.XMin, expected.XMin), (rendered.YMin, expected.YMin), (rendered.ZMax, expected.ZMax),
+                          (rendered.XMax, expected.XMax), (rendered.YMax, expected.YMax)):
+            check(abs(got - want) <= TOLERANCE, "{} exported at {}, FreeCAD shows it at {}".format(obj.Label, rendered, expected))
+    stl = os.path.join(folder, "both.stl")
+    RatBez.export_stl([peg, box], stl, TOLERANCE)
+    together = Mesh.Mesh(stl).BoundBox
+    everything = shown[peg.Name]
+    everything.add(shown[box.Name])
+    for got, want in ((together.XMin, everything.XMin), (together.YMin, everything.YMin), (together.XMax, everything.XMax),
+                      (together.YMax, everything.YMax)):
+        check(abs(got - want) <= TOLERANCE, "STL at {}, shown at {}".format(together, everything))
+
+
 def freecads_own_solids(doc):
     """Solids FreeCAD makes with its own tools, as users combine them: a Part Cut (a box with a cylindrical hole),
     a Part Fillet, a PartDesign Body (pad, pocket and a revolution), and one Part compound of two solids."""
