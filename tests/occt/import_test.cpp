@@ -20,6 +20,7 @@
 #include <TColgp_Array2OfPnt.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <Geom2d_Curve.hxx>
 #include <Geom2d_Line.hxx>
@@ -63,6 +64,7 @@
 #include <gp_Pln.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -84,6 +86,7 @@
 #include "ratbez/occt/shape_import.hpp"
 #include "ratbez/occt/topology.hpp"
 #include "ratbez/deviation.hpp"
+#include "ratbez/mesh_topology.hpp"
 #include "ratbez/tessellate.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
@@ -605,6 +608,29 @@ TEST(ImportShapes, SurfacesWithoutAnExactFormAreRefusedNamingTheFace) {
     const std::string reason = refusal(slab);
     EXPECT_EQ(reason.rfind("face ", 0), 0u) << reason;
     EXPECT_NE(reason.find("Geom_OffsetSurface face has no exact NURBS form"), std::string::npos) << reason;
+}
+
+// A tetrahedral pocket in the top of a box, one of its corners the box's corner: the top face's hole meets its
+// outer boundary at a vertex of both (Voron's blower duct has such a face). The face meshes with the loops
+// touching there, one mesh vertex, and the solid's mesh is a closed 2-manifold (the surface round the corner
+// is one disc).
+TEST(ImportShapes, APlanarFaceWhoseHoleTouchesItsBoundaryAtACornerMeshes) {
+    const gp_Pnt corner(2, 2, 2), a(1.5, 0.8, 2), b(0.8, 1.5, 2), apex(1.4, 1.4, 1.2);
+    BRepBuilderAPI_Sewing sewing;
+    for (const auto& [p, q, r] : {std::array{corner, a, b}, std::array{corner, b, apex}, std::array{b, a, apex}, std::array{a, corner, apex}})
+        sewing.Add(BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakePolygon(p, q, r, /*Close=*/true).Wire()).Face());
+    sewing.Perform();
+    TopoDS_Solid tetrahedron = BRepBuilderAPI_MakeSolid(TopoDS::Shell(sewing.SewedShape())).Solid();
+    ASSERT_TRUE(BRepLib::OrientClosedSolid(tetrahedron));
+    const TopoDS_Shape pocketed = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 2, 2, 2).Shape(), tetrahedron).Shape();
+    const Solid solid = occt::from_occt(pocketed);
+    const double pocket = std::abs(((a.XYZ() - corner.XYZ()).Crossed(b.XYZ() - corner.XYZ())).Dot(apex.XYZ() - corner.XYZ())) / 6;
+    EXPECT_NEAR(solid.volume(), 8 - pocket, 1e-12);
+    const Mesh mesh = tessellate(solid, 1e-3);
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_NEAR(mesh.volume(), 8 - pocket, 1e-9);
+    const MeshTopology topology = mesh_topology(mesh);
+    EXPECT_EQ(topology.singular_vertices, 0u);
 }
 
 TEST(ImportShapes, ASolidWithAVoidHasTwoShells) {

@@ -145,6 +145,28 @@ TEST(PolygonTriangulation, CollinearSamplesOnOneSideGetNoZeroAreaTriangle) {
     expect_valid(loops, triangulate_polygon(loops), 0.5);
 }
 
+// A hole meeting the outer boundary at a corner of both: one vertex (one id), the triangles numbered by id.
+// Two points in one place with different ids are a boundary touching itself by accident, refused.
+TEST(PolygonTriangulation, LoopsSharingAVertexTouchThere) {
+    const std::vector<std::vector<Point2>> loops{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {{2, 2}, {1.5, 0.8}, {0.8, 1.5}}};
+    const std::vector<MeshVertexId> ids{10, 11, 12, 13, 12, 14, 15};
+    const Triangles triangles = triangulate_polygon(loops, ids);
+    double total = 0;
+    std::map<std::size_t, Point2> at{{10, {0, 0}}, {11, {2, 0}}, {12, {2, 2}}, {13, {0, 2}}, {14, {1.5, 0.8}}, {15, {0.8, 1.5}}};
+    for (const auto& t : triangles) {
+        for (std::size_t id : t) ASSERT_EQ(at.count(id), 1u) << id;
+        const double a = twice_area(at[t[0]], at[t[1]], at[t[2]]);
+        EXPECT_GT(a, 0.0);
+        total += a / 2;
+    }
+    const double hole = std::abs(twice_signed_area(loops[1])) / 2;
+    EXPECT_NEAR(total, 4 - hole, 1e-12);
+    std::vector<MeshVertexId> apart = ids;
+    apart[4] = 16;
+    EXPECT_THROW(triangulate_polygon(loops, apart), Error);
+    EXPECT_THROW(triangulate_polygon(loops, std::vector<MeshVertexId>(ids.begin(), ids.end() - 1)), Error);
+}
+
 TEST(PolygonTriangulation, RejectsDegenerateInput) {
     EXPECT_THROW(triangulate_polygon({}), Error);
     EXPECT_THROW(triangulate_polygon({{{0, 0}, {1, 0}}}), Error);

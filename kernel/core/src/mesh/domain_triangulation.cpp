@@ -555,10 +555,14 @@ private:
 
 }  // namespace
 
-std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<std::vector<Point2>>& loops) {
+std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<std::vector<Point2>>& loops,
+                                                            std::span<const MeshVertexId> ids) {
     require(!loops.empty(), "loops", "a polygon needs an outer loop");
+    std::size_t count = 0;
+    for (const auto& loop : loops) count += loop.size();
+    require(ids.empty() || ids.size() == count, "ids", "must number every point of the loops");
     Region region;
-    MeshVertexId index = 0;
+    std::size_t index = 0;
     for (const auto& loop : loops) {
         require(loop.size() >= 3, "loops", "a loop needs at least three points");
         std::vector<Point> points;
@@ -566,7 +570,9 @@ std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<st
         for (const Point2& p : loop) {
             require(std::isfinite(p.x) && std::isfinite(p.y), "loops", "points must be finite");
             points.emplace_back(p.x, p.y);
-            info.push_back(VertexInfo{p.x, p.y, index++, Vec3{p.x, p.y, 0}, true});
+            const MeshVertexId id = ids.empty() ? index : ids[index];
+            ++index;
+            info.push_back(VertexInfo{p.x, p.y, id, Vec3{p.x, p.y, 0}, true});
         }
         region.add_loop(points, info);
     }

@@ -30,11 +30,14 @@ struct Point2 {
 };
 
 // loops[0] is the outer boundary, further loops are holes; any orientation is accepted. Vertices are
-// numbered by their position in the concatenation of the loops. Every returned triangle is
-// counterclockwise and has positive area; every polygon edge appears in exactly one triangle, so the
-// result shares its boundary exactly with whatever meshes the neighbouring faces. Throws ratbez::Error
-// naming "loops" for fewer than three vertices in a loop, non-finite points, or loops that cross.
-std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<std::vector<Point2>>& loops);
+// numbered by their position in the concatenation of the loops, or by `ids` (one per point of the
+// concatenation) where given: points of one id are one vertex, where loops touch (a hole meeting the outer
+// boundary at a corner of both). Every returned triangle is counterclockwise and has positive area; every
+// polygon edge appears in exactly one triangle, so the result shares its boundary exactly with whatever
+// meshes the neighbouring faces. Throws ratbez::Error naming "loops" for fewer than three vertices in a
+// loop, non-finite points, loops that cross, or two points in one place that are not one vertex.
+std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<std::vector<Point2>>& loops,
+                                                            std::span<const MeshVertexId> ids = {});
 
 // Twice the signed area of a closed polygon (positive when counterclockwise).
 double twice_signed_area(const std::vector<Point2>& polygon);

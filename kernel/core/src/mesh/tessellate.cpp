@@ -946,9 +946,11 @@ private:
             loops.push_back(std::move(points));
             flat_ids.insert(flat_ids.end(), cleaned.begin(), cleaned.end());
         }
-        for (const auto& t : detail::triangulate_polygon(loops)) {
-            if (flip) assembler_.add_triangle(flat_ids[t[0]], flat_ids[t[2]], flat_ids[t[1]]);
-            else assembler_.add_triangle(flat_ids[t[0]], flat_ids[t[1]], flat_ids[t[2]]);
+        // Numbered by mesh vertex: loops that share a vertex (a hole meeting the outer boundary at a corner of
+        // both, as in Voron's blower duct) touch there.
+        for (const auto& t : detail::triangulate_polygon(loops, flat_ids)) {
+            if (flip) assembler_.add_triangle(t[0], t[2], t[1]);
+            else assembler_.add_triangle(t[0], t[1], t[2]);
         }
     }
 
