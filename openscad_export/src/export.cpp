@@ -348,7 +348,7 @@ WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance
     WrittenMesh result{text ? mesh : *fixed.mesh, 0, std::nullopt};
     bool chosen = false;
     // The work, in shares of the progress reported: the deviation of the mesh as given, then for each
-    // decimal candidate (fewest first) its deviation and checks, which end at the first that passes; then the
+    // decimal candidate (fewest first) its checks and deviation, which end at the first that passes; then the
     // checks of the mesh as given when none did, and the writing.
     constexpr double kFirstDeviation = 0.15, kCandidatesEnd = 0.9;
     const auto measured = [&](const Mesh& m, double from, double to) {
@@ -372,9 +372,11 @@ WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance
             const double from = kFirstDeviation + share * static_cast<double>(k);
             Mesh candidate = rounded_mesh(mesh, candidates[k]);
             if (convex && !is_convex_mesh(candidate)) candidate = convex_hull(candidate);
-            const double deviation = measured(candidate, from, from + share / 3);
-            const bool passed = deviation <= tolerance && checked(candidate, from + share / 3, from + share).ok();
-            if (!passed) continue;
+            // The checks first: a fraction of the deviation's time (2242 triangles of a lock body of 1481 faces:
+            // 7 ms against 4.5 s), and where rounding breaks the mesh the deviation is not measured at all.
+            if (!checked(candidate, from, from + share / 3).ok()) continue;
+            const double deviation = measured(candidate, from + share / 3, from + share);
+            if (!(deviation <= tolerance)) continue;
             result = WrittenMesh{std::move(candidate), deviation, candidates[k]};
             chosen = true;
             break;

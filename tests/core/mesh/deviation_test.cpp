@@ -118,6 +118,25 @@ TEST(MaxDeviation, EmptyMeshIsZeroAndBadInputIsRejected) {
     EXPECT_THROW(max_deviation(sphere(1.0), nan_mesh), Error);
 }
 
+// A triangle's samples may each search many faces (a part with 1481 of them took 2 ms a triangle): the progress,
+// and with it Ctrl-C, comes every few triangles, not every thousand (2 s on that part).
+TEST(MaxDeviation, ReportsProgressEveryFewTriangles) {
+    const Solid solid = sphere(1.0);
+    const Mesh mesh = tessellate(solid, 1e-3);
+    ASSERT_GT(mesh.triangles.size(), 2000u);
+    std::size_t calls = 0;
+    double last = -1;
+    DeviationOptions options;
+    options.progress = [&](double fraction) {
+        EXPECT_GE(fraction, last);
+        last = fraction;
+        ++calls;
+    };
+    max_deviation(solid, mesh, options);
+    EXPECT_GE(calls, mesh.triangles.size() / 32);
+    EXPECT_EQ(last, 1.0);
+}
+
 }  // namespace
 }  // namespace ratbez
 

@@ -829,7 +829,9 @@ double max_deviation(const Solid& solid, const Mesh& mesh, const DeviationOption
     std::uint32_t face = 0;
     Foot warm;
     bool have_warm = false;
-    constexpr std::size_t kTrianglesPerReport = 1024;
+    // A triangle's samples can each take a region search over many faces (a lock body's 1481: 2 ms a triangle),
+    // so the progress, and with it Ctrl-C, is polled every few triangles.
+    constexpr std::size_t kTrianglesPerReport = 16;
     for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
         if (options.progress && k % kTrianglesPerReport == 0)
             options.progress(static_cast<double>(k) / static_cast<double>(mesh.triangles.size()));
