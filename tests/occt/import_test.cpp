@@ -20,7 +20,7 @@
 #include <TColgp_Array2OfPnt.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <Geom2d_Curve.hxx>
 #include <Geom2d_Line.hxx>
@@ -65,6 +65,8 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
+#include <utility>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -610,18 +612,46 @@ TEST(ImportShapes, SurfacesWithoutAnExactFormAreRefusedNamingTheFace) {
     EXPECT_NE(reason.find("Geom_OffsetSurface face has no exact NURBS form"), std::string::npos) << reason;
 }
 
+// The shell of the tetrahedron on four vertices, oriented outward.
+TopoDS_Shell tetrahedron_shell(const std::array<TopoDS_Vertex, 4>& v) {
+    std::map<std::pair<int, int>, TopoDS_Edge> edges;
+    const auto edge = [&](int a, int b) {
+        const auto key = std::minmax(a, b);
+        if (!edges.count(key)) edges[key] = BRepBuilderAPI_MakeEdge(v[key.first], v[key.second]).Edge();
+        return edges[key];
+    };
+    BRep_Builder builder;
+    TopoDS_Shell shell;
+    builder.MakeShell(shell);
+    for (const auto& [a, b, c] : {std::array{0, 1, 2}, std::array{0, 2, 3}, std::array{0, 3, 1}, std::array{1, 3, 2}})
+        builder.Add(shell, BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(edge(a, b), edge(b, c), edge(c, a)).Wire(), true).Face());
+    TopoDS_Solid solid;
+    builder.MakeSolid(solid);
+    builder.Add(solid, shell);
+    BRepLib::OrientClosedSolid(solid);
+    return TopoDS::Shell(TopExp_Explorer(solid, TopAbs_SHELL).Current());
+}
+
+// A box [0, 2]^3 with the tetrahedron on `v` as a void.
+TopoDS_Solid box_with_tetrahedral_void(const TopoDS_Shape& box, const std::array<TopoDS_Vertex, 4>& v) {
+    BRep_Builder builder;
+    TopoDS_Solid hollow;
+    builder.MakeSolid(hollow);
+    builder.Add(hollow, TopExp_Explorer(box, TopAbs_SHELL).Current());
+    builder.Add(hollow, tetrahedron_shell(v).Reversed());
+    return hollow;
+}
+
+TopoDS_Vertex vertex_at(const gp_Pnt& p) { return BRepBuilderAPI_MakeVertex(p).Vertex(); }
+
 // A tetrahedral pocket in the top of a box, one of its corners the box's corner: the top face's hole meets its
 // outer boundary at a vertex of both (Voron's blower duct has such a face). The face meshes with the loops
 // touching there, one mesh vertex, and the solid's mesh is a closed 2-manifold (the surface round the corner
 // is one disc).
 TEST(ImportShapes, APlanarFaceWhoseHoleTouchesItsBoundaryAtACornerMeshes) {
     const gp_Pnt corner(2, 2, 2), a(1.5, 0.8, 2), b(0.8, 1.5, 2), apex(1.4, 1.4, 1.2);
-    BRepBuilderAPI_Sewing sewing;
-    for (const auto& [p, q, r] : {std::array{corner, a, b}, std::array{corner, b, apex}, std::array{b, a, apex}, std::array{a, corner, apex}})
-        sewing.Add(BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakePolygon(p, q, r, /*Close=*/true).Wire()).Face());
-    sewing.Perform();
-    TopoDS_Solid tetrahedron = BRepBuilderAPI_MakeSolid(TopoDS::Shell(sewing.SewedShape())).Solid();
-    ASSERT_TRUE(BRepLib::OrientClosedSolid(tetrahedron));
+    const TopoDS_Solid tetrahedron =
+        BRepBuilderAPI_MakeSolid(tetrahedron_shell({vertex_at(corner), vertex_at(a), vertex_at(b), vertex_at(apex)})).Solid();
     const TopoDS_Shape pocketed = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 2, 2, 2).Shape(), tetrahedron).Shape();
     const Solid solid = occt::from_occt(pocketed);
     const double pocket = std::abs(((a.XYZ() - corner.XYZ()).Crossed(b.XYZ() - corner.XYZ())).Dot(apex.XYZ() - corner.XYZ())) / 6;
@@ -631,6 +661,35 @@ TEST(ImportShapes, APlanarFaceWhoseHoleTouchesItsBoundaryAtACornerMeshes) {
     EXPECT_NEAR(mesh.volume(), 8 - pocket, 1e-9);
     const MeshTopology topology = mesh_topology(mesh);
     EXPECT_EQ(topology.singular_vertices, 0u);
+}
+
+// A void touching the skin at one vertex of both (pythonocc's 11752.stp has such voids): the solid reads (the
+// void's plane patches reach past the skin, its vertices do not), but no 2-manifold mesh holds two sheets meeting
+// at a point, and tessellate says so at once instead of handing out a mesh with a singular vertex.
+TEST(ImportShapes, AVoidTouchingTheSkinAtAVertexIsRefusedByTheTessellation) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 2, 2, 2).Shape();
+    TopoDS_Vertex corner;
+    for (TopExp_Explorer it(box, TopAbs_VERTEX); it.More(); it.Next())
+        if (BRep_Tool::Pnt(TopoDS::Vertex(it.Current())).Distance(gp::Origin()) < 1e-12) corner = TopoDS::Vertex(it.Current());
+    ASSERT_FALSE(corner.IsNull());
+    const Solid solid = occt::from_occt(box_with_tetrahedral_void(
+        box, {corner, vertex_at(gp_Pnt(0.6, 0.2, 0.2)), vertex_at(gp_Pnt(0.2, 0.6, 0.2)), vertex_at(gp_Pnt(0.2, 0.2, 0.6))}));
+    ASSERT_EQ(solid.shells().size(), 2u);
+    EXPECT_NEAR(solid.volume(), 8 - 0.16 / 6, 1e-12);  // the tetrahedron: det(v1 - v0, v2 - v0, v3 - v0) = 0.16
+    try {
+        tessellate(solid, 1e-3);
+        ADD_FAILURE() << "a mesh with a singular vertex was handed out";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("touch at a single point"), std::string::npos) << e.what();
+    }
+}
+
+// A void must lie inside the outer shell: one beside the box is refused.
+TEST(ImportShapes, AVoidOutsideTheOuterShellIsRefused) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 2, 2, 2).Shape();
+    const std::string reason = refusal(box_with_tetrahedral_void(
+        box, {vertex_at(gp_Pnt(3, 0, 0)), vertex_at(gp_Pnt(3.6, 0.2, 0.2)), vertex_at(gp_Pnt(3.2, 0.6, 0.2)), vertex_at(gp_Pnt(3.2, 0.2, 0.6))}));
+    EXPECT_NE(reason.find("is a void but lies outside the outer shell's box"), std::string::npos) << reason;
 }
 
 TEST(ImportShapes, ASolidWithAVoidHasTwoShells) {

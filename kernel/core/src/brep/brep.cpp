@@ -316,17 +316,27 @@ Solid::Solid(std::vector<Face> faces, Construction construction) : construction_
     // tells outward from inward: positive for the outer shell, negative for a void (its normals point into it).
     std::vector<std::vector<std::size_t>> shells = connected_shells(faces);
     std::vector<double> volumes;
-    std::vector<Box> boxes;
+    // Each shell's control box (it holds the shell), and the box of its vertices and the slack of its faces'
+    // tolerances (the vertices lie on it): a void's vertices lie inside the outer shell's control box. Its own
+    // control box need not: a plane patch spans its loops' rectangle, a trimmed face its surface, and a void
+    // that touches the skin (at a vertex of both, as in pythonocc's 11752.stp) reaches past the skin with them.
+    std::vector<Box> boxes, vertex_boxes;
+    std::vector<double> slacks;
     for (const auto& shell : shells) {
         std::vector<Face> shell_faces;
-        Box shell_box;
+        Box shell_box, vertex_box;
+        double slack = 0;
         for (std::size_t i : shell) {
             shell_faces.push_back(faces[i]);
             shell_box.add(faces[i].surface().control_box());
+            ratbez::for_each_coedge(faces[i], [&](const Coedge& c) { vertex_box.add(c.edge->start->point); });
+            slack = std::max(slack, faces[i].tolerance());
         }
         volumes.push_back(shells.size() == 1 ? detail::faces_volume(faces, "faces", /*quick=*/true)
                                              : detail::faces_volume(shell_faces, "faces", /*quick=*/true));
         boxes.push_back(shell_box);
+        vertex_boxes.push_back(vertex_box);
+        slacks.push_back(slack + 1e-9 * shell_box.diagonal());
     }
     const auto outer = static_cast<std::size_t>(std::max_element(volumes.begin(), volumes.end()) - volumes.begin());
     require(volumes[outer] > 0, "faces",
@@ -338,10 +348,11 @@ Solid::Solid(std::vector<Face> faces, Construction construction) : construction_
             return describe_shell(shells[k]) + " encloses a positive volume beside " + describe_shell(shells[outer]) +
                    ": a Solid has one outer shell, any others are voids inside it with their normals pointing into the void";
         });
-        const Box& inner = boxes[k];
+        const Box& inner = vertex_boxes[k];
         const Box& hull = boxes[outer];
-        require(inner.min.x >= hull.min.x && inner.min.y >= hull.min.y && inner.min.z >= hull.min.z &&
-                    inner.max.x <= hull.max.x && inner.max.y <= hull.max.y && inner.max.z <= hull.max.z,
+        const double slack = slacks[k];
+        require(inner.min.x >= hull.min.x - slack && inner.min.y >= hull.min.y - slack && inner.min.z >= hull.min.z - slack &&
+                    inner.max.x <= hull.max.x + slack && inner.max.y <= hull.max.y + slack && inner.max.z <= hull.max.z + slack,
                 "faces", [&] { return describe_shell(shells[k]) + " is a void but lies outside the outer shell's box"; });
     }
     std::rotate(shells.begin(), shells.begin() + static_cast<std::ptrdiff_t>(outer), shells.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
