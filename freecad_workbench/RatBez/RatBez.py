@@ -26,6 +26,7 @@ the report view, exactly as when the value is typed into the property editor.
 import os
 import re
 import tempfile
+import warnings
 
 import FreeCAD as App
 import Part
@@ -281,6 +282,11 @@ def _placed_solid(obj):
     return solid
 
 
+def _without_path(reason, path):
+    """A reader's words about the temporary .brep file `path` said about the object's shape."""
+    return reason.replace("'{}': ".format(path), "").replace(path, "its shape")
+
+
 def _read_solids(obj):
     """The solids of another object's shape where the 3D view shows it (its Placement, in its containers'),
     read by the kernel from a .brep of it: every solid where the module reads several (read_brep_all), else
@@ -296,14 +302,24 @@ def _read_solids(obj):
             shape = shape.copy()
             shape.Placement = containers.multiply(shape.Placement)
         shape.exportBrep(path)
+        cannot = "'{}': the ratbez kernel cannot read this solid yet: {}"
         try:
-            if hasattr(rb, "read_brep_all"):
-                return list(rb.read_brep_all(path))
-            return [rb.read_brep(path)]
+            if not hasattr(rb, "read_brep_all"):
+                return [rb.read_brep(path)]
+            # The reader leaves out a solid it cannot read when others read (a ReadWarning says which); an export
+            # of the object the user picked holds every solid of it, or none.
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always", rb.ReadWarning)
+                solids = list(rb.read_brep_all(path))
         except rb.Error as error:
             _, reason = kernel.error_parts(error)
-            raise ValueError("'{}': the ratbez kernel cannot read this solid yet: {}".format(
-                safe_label(obj.Label), reason.replace("'{}': ".format(path), "").replace(path, "its shape")))
+            raise ValueError(cannot.format(safe_label(obj.Label), _without_path(reason, path)))
+        said = [str(w.message) for w in caught if issubclass(w.category, rb.ReadWarning)]
+        if len(solids) < len(shape.Solids):
+            raise ValueError(cannot.format(safe_label(obj.Label), _without_path("; ".join(said), path)))
+        for w in caught:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+        return solids
     finally:
         os.remove(path)
 

@@ -186,6 +186,23 @@ def test_solids_in_a_moved_part_export_where_freecad_shows_them():
         check(abs(got - want) <= TOLERANCE, "STL at {}, shown at {}".format(together, everything))
 
 
+@suite.test
+def test_an_object_with_a_solid_the_kernel_cannot_read_is_refused_whole():
+    """The kernel's reader reads a file's other solids without one it cannot read; the export of an object the
+    user picked holds all its solids or refuses, naming the one and why (not a library short of a part)."""
+    doc = App.newDocument("PartlyBroken")
+    open_box = Part.Solid(Part.Shell(Part.makeBox(1, 1, 1, V(5, 0, 0)).Faces[:5]))  # no lid: an open shell
+    pair = doc.addObject("Part::Feature", "Pair")
+    pair.Shape = Part.makeCompound([Part.makeBox(1, 1, 1), open_box])
+    doc.recompute()
+    try:
+        RatBez.export_openscad(pair, os.path.join(OUT, "pair.scad"), TOLERANCE)
+        check(False, "an object with an unreadable solid exported")
+    except ValueError as error:
+        check("'Pair': the ratbez kernel cannot read this solid yet: left out 1 of 2 solids: solid 1: " in str(error) and
+              "(the shell is open)" in str(error), str(error))
+
+
 def freecads_own_solids(doc):
     """Solids FreeCAD makes with its own tools, as users combine them: a Part Cut (a box with a cylindrical hole),
     a Part Fillet, a PartDesign Body (pad, pocket and a revolution), and one Part compound of two solids."""
