@@ -124,6 +124,24 @@ TEST(TrimmedFace, RejectsBoundariesThatDoNotBoundARegion) {
     EXPECT_ERROR_NAMING(Face::trimmed(patch.surface, {patch.square(0.1, 0.9)}, -1), "tolerance");
 }
 
+// pcurve_gap measures what Face::trimmed holds to the tolerance, where it does: the least tolerance that passes
+// (the reader gives a face read from a file at least that: its fit measures at other parameters).
+TEST(TrimmedFace, PcurveGapIsTheLeastToleranceThatPasses) {
+    const FlatPatch patch;
+    std::vector<Coedge> loose = patch.square(0.1, 0.9);
+    loose[1].pcurve = straight_pcurve({0.9, 0.1, 0}, {0.95, 0.9, 0}, 0, 1);  // the edge runs at u = 0.9
+    loose[2].pcurve = straight_pcurve({0.95, 0.9, 0}, {0.1, 0.9, 0}, 0, 1);
+    double gap = 0;
+    for (const Coedge& c : loose) gap = std::max(gap, pcurve_gap(patch.surface, c));
+    EXPECT_NEAR(gap, 0.1, 1e-12);  // 0.05 in u is 0.1 in space, at the corner (0.9, 0.9)
+    EXPECT_NO_THROW(Face::trimmed(patch.surface, {loose}, gap));
+    EXPECT_ERROR_NAMING(Face::trimmed(patch.surface, {loose}, 0.999 * gap), "loops");
+    EXPECT_LT(pcurve_gap(patch.surface, patch.square(0.1, 0.9)[1]), 1e-15);
+    Coedge bare = loose[0];
+    bare.pcurve = nullptr;
+    EXPECT_ERROR_NAMING(pcurve_gap(patch.surface, bare), "coedge");
+}
+
 // Every kind of solid the kernel builds: poles, apexes, seams, planar caps with holes, rational weights.
 std::vector<std::pair<std::string, Solid>> kernel_solids() {
     std::vector<std::pair<std::string, Solid>> out;

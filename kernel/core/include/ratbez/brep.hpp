@@ -135,6 +135,11 @@ private:
     double tolerance_ = 0;
 };
 
+// The largest distance between `surface` along the coedge's p-curve and its edge, at the parameters Face::trimmed
+// checks (the knots of both curves and 4 points in each span between them): the least tolerance a trimmed face
+// of such coedges takes.
+double pcurve_gap(const NurbsSurface& surface, const Coedge& coedge);
+
 // Every coedge of a face's boundary: the four sides of a surface face, the loops of the others.
 template <class Visitor>
 void for_each_coedge(const Face& face, Visitor&& visit) {

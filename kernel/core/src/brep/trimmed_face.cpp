@@ -54,7 +54,31 @@ std::vector<double> check_parameters(const NurbsCurve& pcurve, const NurbsCurve&
     return ts;
 }
 
+struct Gap {
+    double distance = 0;
+    double t = 0;  // where it is largest
+};
+
+// The largest distance between the surface along the coedge's p-curve and its edge, at check_parameters.
+Gap largest_gap(const NurbsSurface& surface, const Coedge& c) {
+    const Interval du = surface.domain_u(), dv = surface.domain_v(), ed = c.edge->curve.domain();
+    Gap largest;
+    for (double t : check_parameters(*c.pcurve, c.edge->curve)) {
+        const auto [u, v] = uv_at(*c.pcurve, t, du, dv);
+        const Vec3 on_edge = c.edge->degenerate ? c.edge->start->point : c.edge->curve.point(std::clamp(t, ed.min, ed.max));
+        const double gap = distance(surface.point(u, v), on_edge);
+        if (!(gap <= largest.distance)) largest = {gap, t};  // a NaN gap is the largest
+    }
+    return largest;
+}
+
 }  // namespace
+
+double pcurve_gap(const NurbsSurface& surface, const Coedge& coedge) {
+    require(coedge.edge != nullptr && coedge.edge->start != nullptr && coedge.pcurve != nullptr, "coedge",
+            "needs an edge with its vertices and a p-curve");
+    return largest_gap(surface, coedge).distance;
+}
 
 Face Face::trimmed(NurbsSurface surface, std::vector<std::vector<Coedge>> loops, double tolerance) {
     const double size = surface.control_box().diagonal();
@@ -92,15 +116,11 @@ Face Face::trimmed(NurbsSurface surface, std::vector<std::vector<Coedge>> loops,
                         return where + "'s p-curve leaves the surface's domain [" + detail::number(du.min) + ", " +
                                detail::number(du.max) + "] x [" + detail::number(dv.min) + ", " + detail::number(dv.max) + "]";
                     });
-            for (double t : check_parameters(pcurve, curve)) {
-                const auto [u, v] = uv_at(pcurve, t, du, dv);
-                const Vec3 on_edge = c.edge->degenerate ? c.edge->start->point : curve.point(std::clamp(t, ed.min, ed.max));
-                const double gap = distance(surface.point(u, v), on_edge);
-                require(gap <= distance_tolerance, "loops", [&] {
-                    return where + ": the surface along the p-curve is " + detail::number(gap) + " away from the edge at t = " +
-                           detail::number(t) + ", more than the face's tolerance " + detail::number(distance_tolerance);
-                });
-            }
+            const Gap gap = largest_gap(surface, c);
+            require(gap.distance <= distance_tolerance, "loops", [&] {
+                return where + ": the surface along the p-curve is " + detail::number(gap.distance) + " away from the edge at t = " +
+                       detail::number(gap.t) + ", more than the face's tolerance " + detail::number(distance_tolerance);
+            });
             const Coedge& next = loop[(k + 1) % loop.size()];
             require(traversal_end(c) == traversal_start(next), "loops",
                     where + " does not end at the Vertex object where the next coedge starts");
