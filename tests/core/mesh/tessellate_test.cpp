@@ -574,5 +574,18 @@ TEST(Tessellate, ASliverBesideAnArcsChordMeshesTheRightWayRound) {
     EXPECT_LE(mesh.triangles.size(), 24u);
 }
 
+// A cap of two edges, an arc and its chord (a flat on a Fusion 360 servo's shaft), where the arc sags less than the
+// tolerance: the chord could stand for it, and the cap's loop had two points and no area (refused). Its edges are
+// sampled finer until the loop encloses the cap.
+TEST(Tessellate, ACapOfAnArcAndItsChordMeshes) {
+    const NurbsCurve rim = arc(10.0, -5.0, 5.0);  // sags 10 (1 - cos 5 deg) = 0.038
+    const Solid solid = extrude(Profile({rim, line_segment(rim.end_point(), rim.start_point())}), {0, 0, 1}, 1.0);
+    const double tolerance = 0.05;
+    const Mesh mesh = tessellate(solid, tolerance);
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_GT(mesh.volume(), 0.0);
+    EXPECT_LE(max_deviation(solid, mesh), tolerance);
+}
+
 }  // namespace
 }  // namespace ratbez

@@ -32,6 +32,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -933,7 +934,9 @@ private:
             for (Id id : ids)
                 if (cleaned.empty() || cleaned.back() != id) cleaned.push_back(id);
             while (cleaned.size() > 1 && cleaned.back() == cleaned.front()) cleaned.pop_back();
-            require(cleaned.size() >= 3, "solid", "a planar face has a loop with fewer than three distinct points");
+            // A loop of two edges (an arc closed by a line, a Fusion 360 servo's flat) whose arc the tolerance lets
+            // its chord stand for: two points, no area. Its edges are sampled finer.
+            if (cleaned.size() < 3) throw inside_out(loop, "a loop's samples enclose no area (an arc its chord stands for)");
             std::vector<detail::Point2> points;
             for (Id id : cleaned) {
                 const Vec3 d = assembler_.point(id) - plane.origin;
@@ -942,7 +945,7 @@ private:
             // The outer loop runs counterclockwise seen from the normal, holes clockwise (brep.hpp); samples that
             // run the other way would mesh the outside of the loop.
             const bool counterclockwise = (detail::twice_signed_area(points) > 0) != flip;
-            if (counterclockwise != loops.empty()) throw inside_out(loop);
+            if (counterclockwise != loops.empty()) throw inside_out(loop, kWrongWayRound);
             loops.push_back(std::move(points));
             flat_ids.insert(flat_ids.end(), cleaned.begin(), cleaned.end());
         }
@@ -954,13 +957,14 @@ private:
         }
     }
 
-    // The refusal of a loop whose samples run round it the wrong way, naming its edges to be sampled finer.
-    static detail::InsideOutLoop inside_out(const std::vector<Coedge>& loop) {
+    // The refusal of a loop whose samples do not run round it as it does, naming its edges to be sampled finer.
+    static detail::InsideOutLoop inside_out(const std::vector<Coedge>& loop, std::string_view reason) {
         std::vector<const Edge*> edges;
         for (const Coedge& coedge : loop)
             if (!coedge.edge->degenerate) edges.push_back(coedge.edge.get());
-        return detail::InsideOutLoop("loops", "a loop's samples run round it the wrong way (a sliver beside an arc's chord)", std::move(edges));
+        return detail::InsideOutLoop("loops", reason, std::move(edges));
     }
+    static constexpr std::string_view kWrongWayRound = "a loop's samples run round it the wrong way (a sliver beside an arc's chord)";
 
     // A trimmed face: its loops as boundary samples in (u, v) (each coedge's samples in the direction the face
     // runs it, its last one left to the next coedge; a degenerate coedge contributes the start of its pole
@@ -989,7 +993,7 @@ private:
             // The outer loop counterclockwise in (u, v), holes clockwise (brep.hpp), as in mesh_planar.
             std::vector<detail::Point2> uv;
             for (const detail::BoundarySample& sample : samples) uv.push_back({sample.u, sample.v});
-            if ((detail::twice_signed_area(uv) > 0) != (loops.size() == 1)) throw inside_out(loop);
+            if ((detail::twice_signed_area(uv) > 0) != (loops.size() == 1)) throw inside_out(loop, kWrongWayRound);
         }
         const detail::SurfaceEvaluator evaluator(face.surface());
         const std::function<Id(const Vec3&)> add = [this](const Vec3& p) { return assembler_.add_point(p); };

@@ -67,7 +67,7 @@ struct TessellationSettings {
     const Progress* progress = nullptr;  // TessellationOptions::progress, or none
     // Edges whose chords keep within tolerance / 2^n (n the value) where a loop they bound came out inside out
     // (InsideOutLoop); every other edge is sampled to the tolerance.
-    std::map<const Edge*, int> finer_edges;
+    std::map<const Edge*, int> finer_edges = {};
 
     // Reports `fraction` of the whole tessellation done (the caller's callback may throw to cancel).
     void report(double fraction) const {
