@@ -8,10 +8,14 @@
 
 #include <cmath>
 #include <map>
+#include <vector>
 #include <numbers>
+#include <string>
 #include <utility>
 
+#include "geometry/surface_evaluator.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/nurbs_surface.hpp"
 
 namespace ratbez::detail {
 namespace {
@@ -165,6 +169,40 @@ TEST(PolygonTriangulation, LoopsSharingAVertexTouchThere) {
     apart[4] = 16;
     EXPECT_THROW(triangulate_polygon(loops, apart), Error);
     EXPECT_THROW(triangulate_polygon(loops, std::vector<MeshVertexId>(ids.begin(), ids.end() - 1)), Error);
+}
+
+// A boundary sample held off its surface by more than the tolerance (a file's vertex with a tolerance of its own,
+// an Inventor extruder body): the triangles at it cannot come within the tolerance, and refining them toward it,
+// round after round, put 182 mesh vertices in one place. A new vertex within a thousandth of the tolerance of a
+// corner is not made, and the region is refused, naming the place.
+TEST(TrimmedDomainTriangulation, ASampleOffItsSurfaceIsNotRefinedIntoOnePoint) {
+    const NurbsSurface plane(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}}});
+    const SurfaceEvaluator evaluator(plane);
+    std::vector<Vec3> points;
+    const auto add = [&points](const Vec3& p) {
+        points.push_back(p);
+        return static_cast<MeshVertexId>(points.size() - 1);
+    };
+    std::vector<BoundarySample> loop;
+    for (const auto& [u, v] : {std::pair{0.1, 0.1}, std::pair{0.9, 0.1}, std::pair{0.9, 0.9}, std::pair{0.1, 0.9}})
+        loop.push_back({u, v, add({u, v, 0}), {u, v, 0}});
+    loop[2].point.z = 0.05;  // five times the tolerance off the plane
+    points[loop[2].id].z = 0.05;
+    TessellationSettings settings;
+    settings.tolerance = 0.01;
+    settings.max_triangles = 1'000'000;
+    const std::vector<std::vector<BoundarySample>> loops{loop};
+    try {
+        triangulate_trimmed_domain(evaluator, loops, settings, add);
+        ADD_FAILURE() << "a region no mesh follows within the tolerance was meshed";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("keeps further from its surface than the tolerance near (0.89"),
+                  std::string::npos) << e.what();
+    }
+    EXPECT_LT(points.size(), 1000u);
+    for (std::size_t a = 0; a < points.size(); ++a)
+        for (std::size_t b = a + 1; b < points.size(); ++b)
+            EXPECT_GT(distance(points[a], points[b]), 1e-5 * settings.tolerance) << a << " " << b;
 }
 
 TEST(PolygonTriangulation, RejectsDegenerateInput) {

@@ -173,6 +173,10 @@ public:
             if (!refine_once()) break;
             mark_domains();
         }
+        if (unimprovable_)
+            fail("solid", "its boundary keeps further from its surface than the tolerance near (" + number(unimprovable_->x) + ", " +
+                              number(unimprovable_->y) + ", " + number(unimprovable_->z) +
+                              ") (a vertex or an edge of the file off the face): no mesh follows it closer");
         remove_slivers();
         return triangles();
     }
@@ -527,10 +531,20 @@ private:
             if (c.lattice[m] == 0) edge = f->index(c.corners[m]);
         }
         if (edge >= 0 && cdt_.is_constrained(Cdt::Edge(f, edge))) return false;  // never on the boundary
+        // A triangle whose new vertex would fall a thousandth of the tolerance from a corner cannot be improved:
+        // its error is the boundary's own gap from the surface (a vertex of an Inventor extruder body 0.1 off a
+        // face it bounds), and halving toward it round after round left 182 mesh vertices in one place. The
+        // region is refused instead (run), naming where.
+        const Vec3 point = surface_point(u, v);
+        for (const VertexHandle& corner : c.corners)
+            if (distance(corner->info().point, point) < 1e-3 * settings_.tolerance) {
+                f->info().checked = true;
+                if (!unimprovable_) unimprovable_ = corner->info().point;
+                return false;
+            }
         const Point p = to_point(u, v);
         const VertexHandle h = edge >= 0 ? cdt_.insert(p, Cdt::EDGE, f, edge) : cdt_.insert(p, Cdt::FACE, f, 0);
         if (h->info().known) return false;  // fell on an existing vertex (rounding)
-        const Vec3 point = surface_point(u, v);
         h->info() = VertexInfo{u, v, add_point_(point), point, true};
         touched(h);
         return true;
@@ -549,6 +563,7 @@ private:
     const SurfaceEvaluator& surface_;
     const TessellationSettings& settings_;
     const std::function<MeshVertexId(const Vec3&)>& add_point_;
+    std::optional<Vec3> unimprovable_;  // a corner a failing triangle could not be refined toward (insert)
     double scale_u_ = 1, scale_v_ = 1, origin_u_ = 0, origin_v_ = 0, longest_ = 1;
     std::array<double, 4> box_{};  // the loops' (u, v) box: u0, u1, v0, v1
 };
