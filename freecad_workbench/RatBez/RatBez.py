@@ -287,6 +287,16 @@ def _without_path(reason, path):
     return reason.replace("'{}': ".format(path), "").replace(path, "its shape")
 
 
+def _solid_occurrences(shape):
+    """The solids of `shape` as the kernel's reader counts them: every occurrence in its compounds (Shape.Solids
+    counts a solid placed twice once)."""
+    if shape.ShapeType == "Solid":
+        return 1
+    if shape.ShapeType in ("Compound", "CompSolid"):
+        return sum(_solid_occurrences(child) for child in shape.childShapes(False, False))
+    return 0
+
+
 def _read_solids(obj):
     """The solids of another object's shape where the 3D view shows it (its Placement, in its containers'),
     read by the kernel from a .brep of it: every solid where the module reads several (read_brep_all), else
@@ -314,11 +324,11 @@ def _read_solids(obj):
         except rb.Error as error:
             _, reason = kernel.error_parts(error)
             raise ValueError(cannot.format(safe_label(obj.Label), _without_path(reason, path)))
-        said = [str(w.message) for w in caught if issubclass(w.category, rb.ReadWarning)]
-        if len(solids) < len(shape.Solids):
-            raise ValueError(cannot.format(safe_label(obj.Label), _without_path("; ".join(said), path)))
-        for w in caught:
-            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+        said = [_without_path(str(w.message), path) for w in caught if issubclass(w.category, rb.ReadWarning)]
+        if len(solids) < _solid_occurrences(shape):
+            raise ValueError(cannot.format(safe_label(obj.Label), "; ".join(said)))
+        for text in said:
+            warnings.warn("'{}': {}".format(safe_label(obj.Label), text), rb.ReadWarning)
         return solids
     finally:
         os.remove(path)

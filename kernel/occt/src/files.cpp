@@ -435,9 +435,10 @@ std::vector<NamedShape> translated_step(const std::string& path, const Progress&
 // (isolated_shapes).
 FileShapes read_step_shapes_here(const std::string& path, const Progress& progress, Faults faults) {
     QuietMessenger quiet(QuietMessenger::Lock::skip_in_child);
+    std::vector<NamedShape> written = translated_step(path, progress, FaceBounds::as_written);
     std::optional<FileShapes> as_written;
     try {
-        as_written = checked(translated_step(path, progress, FaceBounds::as_written), path, faults);
+        as_written = checked(std::move(written), path, faults);
         if (as_written->faulty.empty()) return *std::move(as_written);
     } catch (const Error&) {
         // The file's bounds make no consistent solid as written.
@@ -495,19 +496,19 @@ TopoDS_Compound compound_of(const std::vector<NamedShape>& shapes) {
 
 FileShapes checked(std::vector<NamedShape> shapes, const std::string& path, Faults faults) {
     try {
+        // Held against itself where OpenCASCADE's checks on a hostile shape cannot hurt the caller.
         const TopoDS_Compound all = compound_of(shapes);
-        try {
-            // Held against itself where OpenCASCADE's checks on a hostile shape cannot hurt the caller.
-            blamed_on(path, [&] { detail::check_self_consistency(all); });
-            return {std::move(shapes), {}};
-        } catch (const Error&) {
-            if (faults == Faults::refuse_the_file) throw;
+        std::size_t solids = 0;
+        for (TopExp_Explorer it(all, TopAbs_SOLID); it.More(); it.Next()) ++solids;
+        if (faults == Faults::leave_the_solid_out && solids > 1) {
+            // Each solid checked on its own, once: those that do not hold are left out while others do.
             std::vector<SolidLeftOut> faulty = detail::solid_faults(all);
-            std::size_t solids = 0;
-            for (TopExp_Explorer it(all, TopAbs_SOLID); it.More(); it.Next()) ++solids;
-            if (faulty.size() == solids) throw;  // none holds (or the file has no solid): the first fault refuses it
-            return {std::move(shapes), std::move(faulty)};
+            if (faulty.size() < solids) return {std::move(shapes), std::move(faulty)};
+            const SolidLeftOut& first = faulty.front();
+            throw Error("path", "'" + path + "': solid " + std::to_string(first.index) + ": " + first.reason);
         }
+        blamed_on(path, [&] { detail::check_self_consistency(all); });
+        return {std::move(shapes), {}};
     } catch (const Standard_OutOfMemory&) {
         throw std::bad_alloc();
     } catch (const Standard_Failure& failure) {

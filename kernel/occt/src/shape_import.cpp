@@ -782,7 +782,10 @@ private:
         // what it measures, within what a fit may carry, and a little room above the fit's own measure.
         double gap = 0;
         for (const auto& loop : loops)
-            for (const Coedge& c : loop) gap = std::max(gap, pcurve_gap(nurbs, c));
+            for (const Coedge& c : loop) {
+                const double g = pcurve_gap(nurbs, c);
+                if (!(g <= gap)) gap = g;  // NaN kept, and refused below
+            }
         require(gap <= carried, "shape", [&] { return unfitted(gap); });
         return Face::trimmed(std::move(nurbs), std::move(loops), std::max(1.5 * tolerance, gap));
     }

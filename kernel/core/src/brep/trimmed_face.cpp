@@ -67,7 +67,8 @@ Gap largest_gap(const NurbsSurface& surface, const Coedge& c) {
         const auto [u, v] = uv_at(*c.pcurve, t, du, dv);
         const Vec3 on_edge = c.edge->degenerate ? c.edge->start->point : c.edge->curve.point(std::clamp(t, ed.min, ed.max));
         const double gap = distance(surface.point(u, v), on_edge);
-        if (!(gap <= largest.distance)) largest = {gap, t};  // a NaN gap is the largest
+        if (std::isnan(gap)) return {gap, t};  // beyond every tolerance
+        if (gap > largest.distance) largest = {gap, t};
     }
     return largest;
 }

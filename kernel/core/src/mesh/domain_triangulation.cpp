@@ -537,7 +537,7 @@ private:
         // region is refused instead (run), naming where.
         const Vec3 point = surface_point(u, v);
         for (const VertexHandle& corner : c.corners)
-            if (distance(corner->info().point, point) < 1e-3 * settings_.tolerance) {
+            if (distance(corner->info().point, point) < 1e-3 * settings_.check_tolerance()) {
                 f->info().checked = true;
                 if (!unimprovable_) unimprovable_ = corner->info().point;
                 return false;
@@ -599,11 +599,15 @@ std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<st
 }
 
 double twice_signed_area(const std::vector<Point2>& polygon) {
+    if (polygon.empty()) return 0;
+    // About the first point: far from the origin the products of raw coordinates cancel, and a sliver's sign
+    // (the loops tessellate.cpp holds to their orientation) would be rounding.
+    const Point2 o = polygon.front();
     double sum = 0;
     for (std::size_t k = 0; k < polygon.size(); ++k) {
         const Point2& a = polygon[k];
         const Point2& b = polygon[(k + 1) % polygon.size()];
-        sum += a.x * b.y - b.x * a.y;
+        sum += (a.x - o.x) * (b.y - o.y) - (b.x - o.x) * (a.y - o.y);
     }
     return sum;
 }

@@ -30,6 +30,7 @@
 #include <tuple>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -159,6 +160,9 @@ public:
             mesh_surface(plan);
             done += step;
         }
+        // Every loop that comes out inside out is gathered, so that one more attempt samples all their edges finer.
+        std::optional<std::string> inside_out_first;
+        std::vector<const Edge*> inside_out_edges;
         for (std::size_t i = 0; i < faces_.size(); ++i) {
             const Face& face = faces_[i];
             if (face.kind() == Face::Kind::surface) continue;
@@ -171,12 +175,14 @@ public:
             } catch (const detail::CrossingLoops& e) {
                 throw detail::CrossingLoops("solid", "face " + std::to_string(i) + ": " + e.what());
             } catch (const detail::InsideOutLoop& e) {
-                throw detail::InsideOutLoop("solid", "face " + std::to_string(i) + ": " + e.what(), e.edges());
+                if (!inside_out_first) inside_out_first = "face " + std::to_string(i) + ": " + e.what();
+                inside_out_edges.insert(inside_out_edges.end(), e.edges().begin(), e.edges().end());
             } catch (const Error& e) {
                 throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
             }
             done += step;
         }
+        if (inside_out_first) throw detail::InsideOutLoop("solid", *inside_out_first, std::move(inside_out_edges));
         // The plans were held against the count their mesh cannot fall below; the zippers, split cells and
         // trimmed faces may add more. The mesh's own count decides, so that max_triangles holds exactly.
         Mesh mesh = assembler_.take();
@@ -1032,6 +1038,27 @@ struct Estimate {
     double fitting_tolerance = 0;  // 0: no coarser tessellation fitted
 };
 
+// Tessellates the faces. Where a face's boundary samples cross (detail::CrossingLoops: edges closer than the
+// tolerance), the whole solid is tessellated again at half the tolerance, a few times at most: finer, so still
+// within the tolerance asked. Where loops' samples run round them the wrong way (detail::InsideOutLoop), only
+// their edges are sampled finer.
+Mesh run_retrying(std::span<const Face> faces, detail::TessellationSettings attempt) {
+    for (int halvings = 0;;) {
+        try {
+            return Tessellator(faces, attempt).run();
+        } catch (const detail::CrossingLoops& e) {
+            if (halvings++ == 6) throw Error("solid", std::string(e.reason()) + " (also at 1/64 of the tolerance)");
+            attempt.tolerance *= 0.5;
+        } catch (const detail::InsideOutLoop& e) {
+            // The bound on the chords of the loops' edges halved per attempt.
+            require(!e.edges().empty(), "solid", e.reason());
+            for (const Edge* edge : std::set<const Edge*>(e.edges().begin(), e.edges().end()))
+                if (++attempt.finer_edges[edge] > 8)
+                    throw Error("solid", std::string(e.reason()) + " (also with its edges at 1/256 of the tolerance)");
+        }
+    }
+}
+
 Estimate estimate_triangles(std::span<const Face> faces, detail::TessellationSettings settings, double lower_bound) {
     const double requested = settings.tolerance;
     const double budget = static_cast<double>(settings.max_triangles);
@@ -1049,7 +1076,7 @@ Estimate estimate_triangles(std::span<const Face> faces, detail::TessellationSet
     for (int step = 0; step < 64; ++step) {
         settings.tolerance *= 4;
         try {
-            const double count = static_cast<double>(Tessellator(faces, settings).run().triangles.size());
+            const double count = static_cast<double>(run_retrying(faces, settings).triangles.size());
             const double estimate = std::max(lower_bound, count * settings.tolerance / requested);
             // Scaled from the coarse mesh, and from the estimate at the requested tolerance (which does not fit,
             // so the answer must be coarser than it).
@@ -1062,7 +1089,7 @@ Estimate estimate_triangles(std::span<const Face> faces, detail::TessellationSet
             detail::TessellationSettings check = settings;
             check.tolerance = scaled;
             try {
-                (void)Tessellator(faces, check).run();
+                (void)run_retrying(faces, check);
                 return {estimate, scaled};
             } catch (const TooFine&) {
                 return {estimate, settings.tolerance};
@@ -1111,27 +1138,13 @@ detail::TessellationSettings settings_of(const TessellationOptions& options) {
     return settings;
 }
 
-// Tessellates the faces; a request over the budget is reported with the estimate for all of them. Where a
-// face's boundary samples cross (detail::CrossingLoops: edges closer than the tolerance), the whole solid is
-// tessellated again at half the tolerance, a few times at most: finer, so still within the tolerance asked.
-// Where a loop's samples run round it the wrong way (detail::InsideOutLoop), only its edges are sampled finer.
+// Tessellates the faces; a request over the budget is reported with the estimate for all of them.
 Mesh run_within_budget(std::span<const Face> faces, const detail::TessellationSettings& settings) {
-    detail::TessellationSettings attempt = settings;
-    for (int halvings = 0;;) {
-        try {
-            return Tessellator(faces, attempt).run();
-        } catch (const TooFine& e) {
-            const Estimate estimate = estimate_triangles(faces, attempt, e.estimated_triangles());
-            throw TooFine(estimate.triangles, settings.max_triangles, estimate.fitting_tolerance);
-        } catch (const detail::CrossingLoops& e) {
-            if (halvings++ == 6) throw Error("solid", std::string(e.reason()) + " (also at 1/64 of the tolerance)");
-            attempt.tolerance *= 0.5;
-        } catch (const detail::InsideOutLoop& e) {
-            // The bound on the chords of the loop's edges halved per attempt.
-            for (const Edge* edge : e.edges())
-                if (++attempt.finer_edges[edge] > 8)
-                    throw Error("solid", std::string(e.reason()) + " (also with its edges at 1/256 of the tolerance)");
-        }
+    try {
+        return run_retrying(faces, settings);
+    } catch (const TooFine& e) {
+        const Estimate estimate = estimate_triangles(faces, settings, e.estimated_triangles());
+        throw TooFine(estimate.triangles, settings.max_triangles, estimate.fitting_tolerance);
     }
 }
 
