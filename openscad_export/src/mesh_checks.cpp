@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "ratbez/error.hpp"
+#include "ratbez/mesh_welding.hpp"
 #include "ratbez/mesh_topology.hpp"
 
 namespace ratbez::exporter {
@@ -43,16 +44,9 @@ std::string count_of(std::size_t n, const char* singular, const char* plural) {
 // Vertices with identical coordinates at different indices: the mesh was not welded, so CGAL (and
 // OpenSCAD) would see a crack there even when the surface looks closed.
 std::size_t count_duplicate_vertices(const std::vector<Vec3>& vertices) {
-    std::vector<std::uint32_t> order(vertices.size());
-    std::iota(order.begin(), order.end(), std::uint32_t{0});
-    const auto key = [&](std::uint32_t i) {
-        const Vec3& p = vertices[i];
-        return std::array<double, 3>{p.x, p.y, p.z};
-    };
-    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
+    const std::vector<std::uint32_t> first = first_at_same_place(vertices);
     std::size_t duplicates = 0;
-    for (std::size_t i = 1; i < order.size(); ++i)
-        if (key(order[i]) == key(order[i - 1])) ++duplicates;
+    for (std::size_t i = 0; i < first.size(); ++i) duplicates += first[i] != i;
     return duplicates;
 }
 

@@ -6,6 +6,9 @@
 // same sliver along an edge they share are reconciled (tessellate.cpp); no file reader does that, so an exporter
 // keeps them. Triangles keep their order and orientation; the vertices kept keep theirs.
 
+#include <cstdint>
+#include <vector>
+
 #include "ratbez/mesh.hpp"
 
 namespace ratbez {
@@ -13,5 +16,9 @@ namespace ratbez {
 enum class OppositePairs { kept, dropped };
 
 Mesh welded(const Mesh& mesh, OppositePairs pairs = OppositePairs::kept);
+
+// For each vertex, the index of the first vertex at exactly its coordinates (itself where it is the first): the
+// vertices welded makes one. Equality is exact: only what rounding made equal.
+std::vector<std::uint32_t> first_at_same_place(const std::vector<Vec3>& vertices);
 
 }  // namespace ratbez

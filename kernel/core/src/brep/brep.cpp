@@ -316,31 +316,17 @@ Solid::Solid(std::vector<Face> faces, Construction construction) : construction_
     // tells outward from inward: positive for the outer shell, negative for a void (its normals point into it).
     std::vector<std::vector<std::size_t>> shells = connected_shells(faces);
     std::vector<double> volumes;
-    // Each shell's control box (it holds the shell), and the box of points on its edges and the slack of its
-    // faces' tolerances (the points lie on it): a void's edges lie inside the outer shell's control box. Its own
-    // control box need not: a plane patch spans its loops' rectangle, a trimmed face its surface, and a void
-    // that touches the skin (at a vertex of both, as in pythonocc's 11752.stp) reaches past the skin with them.
-    std::vector<Box> boxes, edge_boxes;
-    std::vector<double> slacks;
+    std::vector<Box> boxes;
     for (const auto& shell : shells) {
         std::vector<Face> shell_faces;
-        Box shell_box, edge_box;
-        double slack = 0;
+        Box shell_box;
         for (std::size_t i : shell) {
             shell_faces.push_back(faces[i]);
             shell_box.add(faces[i].surface().control_box());
-            // Its edges at 9 points each: a void sphere's vertices are its two poles only.
-            ratbez::for_each_coedge(faces[i], [&](const Coedge& c) {
-                const Interval d = c.edge->curve.domain();
-                for (int k = 0; k <= 8; ++k) edge_box.add(c.edge->curve.point(std::min(d.max, d.min + d.width() * k / 8)));
-            });
-            slack = std::max(slack, faces[i].tolerance());
         }
         volumes.push_back(shells.size() == 1 ? detail::faces_volume(faces, "faces", /*quick=*/true)
                                              : detail::faces_volume(shell_faces, "faces", /*quick=*/true));
         boxes.push_back(shell_box);
-        edge_boxes.push_back(edge_box);
-        slacks.push_back(slack + 1e-9 * shell_box.diagonal());
     }
     const auto outer = static_cast<std::size_t>(std::max_element(volumes.begin(), volumes.end()) - volumes.begin());
     require(volumes[outer] > 0, "faces",
@@ -352,9 +338,21 @@ Solid::Solid(std::vector<Face> faces, Construction construction) : construction_
             return describe_shell(shells[k]) + " encloses a positive volume beside " + describe_shell(shells[outer]) +
                    ": a Solid has one outer shell, any others are voids inside it with their normals pointing into the void";
         });
-        const Box& inner = edge_boxes[k];
+        // A void's edges lie inside the outer shell's control box (which holds the outer shell), within its faces'
+        // tolerances. Its own control box need not: a plane patch spans its loops' rectangle, a trimmed face its
+        // surface, and a void that touches the skin (at a vertex of both, as in pythonocc's 11752.stp) reaches
+        // past the skin with them. Its edges at 9 points each: a void sphere's vertices are its two poles only.
+        Box inner;
+        double tolerance = 0;
+        for (std::size_t i : shells[k]) {
+            ratbez::for_each_coedge(faces[i], [&](const Coedge& c) {
+                const Interval d = c.edge->curve.domain();
+                for (int j = 0; j <= 8; ++j) inner.add(c.edge->curve.point(std::min(d.max, d.min + d.width() * j / 8)));
+            });
+            tolerance = std::max(tolerance, faces[i].tolerance());
+        }
+        const double slack = tolerance + 1e-9 * boxes[k].diagonal();
         const Box& hull = boxes[outer];
-        const double slack = slacks[k];
         require(inner.min.x >= hull.min.x - slack && inner.min.y >= hull.min.y - slack && inner.min.z >= hull.min.z - slack &&
                     inner.max.x <= hull.max.x + slack && inner.max.y <= hull.max.y + slack && inner.max.z <= hull.max.z + slack,
                 "faces", [&] { return describe_shell(shells[k]) + " is a void but lies outside the outer shell's box"; });

@@ -15,17 +15,6 @@ namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
 
-// The index of the first vertex at each vertex's coordinates (exact comparison: only what rounding made equal).
-std::vector<std::uint32_t> first_at_same_place(const std::vector<Vec3>& vertices) {
-    std::vector<std::uint32_t> order(vertices.size()), first(vertices.size());
-    std::iota(order.begin(), order.end(), std::uint32_t{0});
-    const auto place = [&](std::uint32_t i) { return std::tie(vertices[i].x, vertices[i].y, vertices[i].z); };
-    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return place(a) < place(b); });
-    for (std::size_t k = 0; k < order.size(); ++k)
-        first[order[k]] = k > 0 && place(order[k]) == place(order[k - 1]) ? first[order[k - 1]] : order[k];
-    return first;
-}
-
 // Marks the triangles that come in pairs with the same corners once each way round: a triangle's corners rotated
 // to start at the smallest index, the other way round the last two swap.
 void mark_cancelling_pairs(const std::vector<Triangle>& triangles, std::vector<bool>& dropped) {
@@ -54,6 +43,16 @@ void mark_cancelling_pairs(const std::vector<Triangle>& triangles, std::vector<b
 }
 
 }  // namespace
+
+std::vector<std::uint32_t> first_at_same_place(const std::vector<Vec3>& vertices) {
+    std::vector<std::uint32_t> order(vertices.size()), first(vertices.size());
+    std::iota(order.begin(), order.end(), std::uint32_t{0});
+    const auto place = [&](std::uint32_t i) { return std::tie(vertices[i].x, vertices[i].y, vertices[i].z); };
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return place(a) < place(b); });
+    for (std::size_t k = 0; k < order.size(); ++k)
+        first[order[k]] = k > 0 && place(order[k]) == place(order[k - 1]) ? first[order[k - 1]] : order[k];
+    return first;
+}
 
 Mesh welded(const Mesh& mesh, OppositePairs pairs) {
     for (const Triangle& tri : mesh.triangles)
