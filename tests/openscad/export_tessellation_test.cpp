@@ -20,6 +20,7 @@
 #include "ratbez/deviation.hpp"
 #include "temp_directory_test_support.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/bezier_curve.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
@@ -151,15 +152,17 @@ TEST_F(ExportTessellation, BadModuleNameIsRefusedBeforeAnyWork) {
     EXPECT_FALSE(fs::exists(path("x.scad")));
 }
 
-// A tube whose wall (0.02) is thinner than the tolerance (0.08): the inner and outer faces' meshes cross each
-// other. The export's tessellation meshes it again at half the tolerance, where they do not: within the
-// tolerance still, and an export instead of a refusal (a Voron carriage's bore poked through a plane so).
+// A shell whose wall (0.02) is thinner than the tolerance (0.1): the half of a torus tube, 1 and 1.02 round,
+// its two walls sampled each for its own curvature, their meshes straddling each one by up to the tolerance,
+// cross each other. The export's tessellation meshes it again at half the tolerance, where they do not: within
+// the tolerance still, and an export instead of a refusal (a Voron carriage's bore poked through a plane so).
 TEST_F(ExportTessellation, AMeshThatIntersectsItselfIsMadeAgainFiner) {
-    const std::vector<Vec3> corners = {{1, 0, 0}, {1.02, 0, 0}, {1.02, 0, 1}, {1, 0, 1}};
-    std::vector<NurbsCurve> sides;
-    for (std::size_t k = 0; k < corners.size(); ++k) sides.push_back(line_segment(corners[k], corners[(k + 1) % corners.size()]));
-    const Solid tube = revolve(Profile(sides));
-    const double tolerance = 0.08;
+    const Vec3 centre{3, 0, 0};
+    const NurbsCurve outer = arc(1.02, -90, 90, centre), inner = arc(1.0, -90, 90, centre).reversed();
+    const Solid tube = revolve(Profile({outer, line_segment(outer.end_point(), inner.start_point()), inner,
+                                        line_segment(inner.end_point(), outer.start_point())}),
+                               {0, 0, 0}, {0, 1, 0});
+    const double tolerance = 0.1;
     ASSERT_EQ(check_mesh(tessellate(tube, tolerance)).self_intersection_free, false);
     TessellationOptions options;
     options.tolerance = tolerance;
@@ -173,6 +176,31 @@ TEST_F(ExportTessellation, AMeshThatIntersectsItselfIsMadeAgainFiner) {
     MeshCheckOptions skip;
     skip.check_self_intersections = false;
     EXPECT_EQ(tessellate_for_export(tube, options, skip).triangles.size(), tessellate(tube, tolerance).triangles.size());
+}
+
+// A flat ring `width` wide at the foot of a wall of radius 10, the floor curving up from it (the x-z profile,
+// revolved about z): the ring's inner circle is sampled for the wall, its samples moved out across the ring by
+// the wall's straddling offsets, the outer one for the floor.
+Solid ring_at_a_wall(double width) {
+    return revolve(Profile::from_beziers({BezierCurve({{10, 0, 0}, {10 + width, 0, 0}}),
+                                          BezierCurve({{10 + width, 0, 0}, {16, 0, 0}, {16, 0, 6}}, {1, 0.7, 1}),
+                                          BezierCurve({{16, 0, 6}, {16, 0, 8}}), BezierCurve({{16, 0, 8}, {10, 0, 8}}),
+                                          BezierCurve({{10, 0, 8}, {10, 0, 0}})}));
+}
+
+// The ring narrower than those offsets and chords: its triangles folded back over the wall's and the floor's,
+// and the tessellation handed out a mesh that intersects itself (14 of these 20 cases). Its edges are now
+// sampled finer, on their curves, until no triangle folds.
+TEST(Tessellation, AFlatRingNarrowerThanTheSamplesBesideItMeshesUnfolded) {
+    for (double width : {0.001, 0.004, 0.02, 0.1, 0.5}) {
+        const Solid solid = ring_at_a_wall(width);
+        for (double tolerance : {0.03, 0.1, 0.3, 1.0}) {
+            const Mesh mesh = tessellate(solid, tolerance);
+            const MeshReport report = check_mesh(mesh);
+            EXPECT_TRUE(report.ok()) << "width " << width << ", tolerance " << tolerance << ": " << testing::PrintToString(report.problems);
+            EXPECT_LE(max_deviation(solid, mesh), tolerance) << "width " << width << ", tolerance " << tolerance;
+        }
+    }
 }
 
 // Of several solids in one file, a refusal says which (a Voron LED mount's second solid was refused unnamed).

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "geometry/surface_evaluator.hpp"
+#include "mesh/tessellator.hpp"
 #include "ratbez/error.hpp"
 #include "ratbez/nurbs_surface.hpp"
 
@@ -203,6 +204,16 @@ TEST(TrimmedDomainTriangulation, ASampleOffItsSurfaceIsNotRefinedIntoOnePoint) {
     for (std::size_t a = 0; a < points.size(); ++a)
         for (std::size_t b = a + 1; b < points.size(); ++b)
             EXPECT_GT(distance(points[a], points[b]), 1e-5 * settings.tolerance) << a << " " << b;
+}
+
+// Loops sampled too coarsely can pass each other without crossing: a band's inner circle, its samples straddling
+// out from the wall beside it, all beyond the samples of its outer circle. The region between them is still
+// bounded, but nested the wrong way round, and meshed it faced backwards (the mesh intersected itself). A hole
+// must lie inside the first loop, as the tessellator's retry (CrossingLoops: sample finer) needs to hear.
+TEST(PolygonTriangulation, AHoleOutsideItsOuterLoopIsRefused) {
+    const std::vector<Point2> small{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, large{{-1, -1}, {2, -1}, {2, 2}, {-1, 2}};
+    EXPECT_THROW(triangulate_polygon({small, large}), CrossingLoops);
+    expect_valid({large, small}, triangulate_polygon({large, small}), 9.0 - 1.0);
 }
 
 TEST(PolygonTriangulation, RejectsDegenerateInput) {

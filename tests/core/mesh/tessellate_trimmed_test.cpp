@@ -1,7 +1,7 @@
 // Tessellation of trimmed faces (tessellate.hpp, domain_triangulation.hpp): the kernel's solids rebuilt with
 // trimmed faces (trimmed_test_support.hpp) mesh closed, outward, within the tolerance both ways, with no
 // zero-area triangle; mixed with untrimmed faces they stay watertight; the angle limit holds; a flat patch with
-// a hole meshes around the hole; faces whose boundary samples would cross are meshed finer instead.
+// a hole meshes around the hole; faces whose boundary samples would cross have their edges sampled finer instead.
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "ratbez/affine_map.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/deviation.hpp"
 #include "ratbez/extrude.hpp"
@@ -120,18 +121,64 @@ TEST(TessellateTrimmed, AFaceOnItsOwnMeshesItsRegionOnly) {
     EXPECT_NEAR(mesh.area(), 16 * std::numbers::pi, 1e-3 * solid.area());
 }
 
-TEST(TessellateTrimmed, ThinBandsCloserThanTheToleranceAreMeshedFiner) {
-    // A ring 0.05 wide, meshed at 0.2: its two circles' chords would cross each other; the mesh still closes and
-    // keeps within the tolerance (the tessellation halves its tolerance until the boundaries separate).
+// A ring 0.05 wide between circles of radius 1 and 0.95, 0.5 high.
+Solid thin_ring() {
     const Profile outer(std::vector<NurbsCurve>{circle(1.0)});
     const Profile hole(std::vector<NurbsCurve>{circle(0.95, {0, 0, 0}, {0, 0, -1})});
-    const Solid ring = extrude(outer, {0, 0, 1}, 0.5, {hole});
-    for (const Solid& solid : {ring, as_trimmed(ring)}) {
+    return extrude(outer, {0, 0, 1}, 0.5, {hole});
+}
+
+// The index of thin_ring's face that `is` picks.
+std::size_t ring_face(const Solid& ring, const std::function<bool(const Face&)>& is) {
+    for (std::size_t i = 0; i < ring.faces().size(); ++i)
+        if (is(ring.faces()[i])) return i;
+    ADD_FAILURE() << "no such face";
+    return 0;
+}
+bool is_hole_wall(const Face& f) {
+    if (f.kind() != Face::Kind::surface) return false;
+    const Interval u = f.surface().domain_u(), v = f.surface().domain_v();
+    const Vec3 p = f.point(0.5 * (u.min + u.max), 0.5 * (v.min + v.max));
+    return std::hypot(p.x, p.y) < 0.975;
+}
+bool is_top(const Face& f) { return f.kind() == Face::Kind::planar && f.plane().normal.z > 0.5; }
+
+// The ring with its hole's wall trimmed, as a file's would be: that circle's samples lie on it while the outer
+// one's straddle it, their chords dipping up to the tolerance inside it, across the band.
+Solid thin_ring_apart() {
+    const Solid ring = thin_ring();
+    const std::size_t hole = ring_face(ring, is_hole_wall);
+    return as_trimmed(ring, [&](std::size_t i) { return i == hole; });
+}
+
+TEST(TessellateTrimmed, ThinBandsCloserThanTheToleranceAreMeshedFiner) {
+    // Meshed at 0.2, the ring's two circles' chords would cross each other; the mesh still closes and keeps within
+    // the tolerance (the edges of the loops that cross are sampled finer until they separate).
+    for (const Solid& solid : {thin_ring(), as_trimmed(thin_ring()), thin_ring_apart()}) {
         const Mesh mesh = tessellate(solid, 0.2);
         EXPECT_TRUE(mesh.is_closed());
         EXPECT_LE(max_deviation(solid, mesh), 0.2);
         EXPECT_GT(mesh.volume(), 0.0);
     }
+}
+
+// The thin ring beside a face read loosely, as from a file: its top's surface lies 0.095 from its edges (the file's
+// tolerance 0.1). The tessellation used to retry the crossing circles at half the tolerance for the whole solid,
+// down below the loose face's own tolerance, where no mesh follows its boundary, and refused it (a Prusa extruder
+// body: a band 0.0044 wide between two arcs, at its default tolerance and most others). Only the ring's edges are
+// sampled finer now.
+TEST(TessellateTrimmed, AThinBandBesideALooseFaceMeshesAtTheToleranceAsked) {
+    const Solid ring = thin_ring_apart();
+    std::vector<Face> faces = ring.faces();
+    const std::size_t top = ring_face(ring, is_top);
+    const Face trimmed = as_trimmed(faces[top]);
+    faces[top] = Face::trimmed(transformed(trimmed.surface(), AffineMap::translation({0, 0, 0.095})), trimmed.loops(), 0.1);
+    const Solid solid(std::move(faces));
+    const double tolerance = 0.2;
+    const Mesh mesh = tessellate(solid, tolerance);
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_GT(mesh.volume(), 0.0);
+    EXPECT_LE(max_deviation(solid, mesh), tolerance);
 }
 
 }  // namespace

@@ -91,6 +91,7 @@ public:
             const VertexHandle a = handles[k], b = handles[(k + 1) % handles.size()];
             if (a != b) cdt_.insert_constraint(a, b);
         }
+        loops_.push_back(std::move(handles));
     }
     // Once every loop is in: a vertex CGAL made itself sits where two boundary segments cross.
     void require_simple_loops() const {
@@ -98,6 +99,28 @@ public:
             if (!v->info().known)
                 throw CrossingLoops("loops", "the boundary crosses itself (near (" + number(v->point().x()) + ", " + number(v->point().y()) +
                                   ") in the triangulated plane): its loops overlap");
+    }
+
+    // Once the domains are marked: the first loop has the outside beyond it, and every further loop is a hole in
+    // the region it bounds. Loops sampled too coarsely can pass each other without crossing: a band's inner
+    // circle, its samples straddling out from its wall, all beyond the samples of its outer circle (a band 0.004
+    // wide between a trimmed shoulder and a cylinder). The loops then nest the wrong way round, and the band
+    // meshed facing backwards, folded into its neighbours.
+    void require_nested_loops() const {
+        for (std::size_t l = 0; l < loops_.size(); ++l) {
+            const int beyond = l == 0 ? 0 : 1;  // the nesting on the side of the loop away from the region
+            const std::vector<VertexHandle>& loop = loops_[l];
+            for (std::size_t k = 0; k < loop.size(); ++k) {
+                const VertexHandle a = loop[k], b = loop[(k + 1) % loop.size()];
+                FaceHandle f;
+                int i = 0;
+                if (a == b || !cdt_.is_edge(a, b, f, i)) continue;  // a segment split where loops cross or touch
+                const int one = f->info().nesting, other = f->neighbor(i)->info().nesting;
+                if (std::min(one, other) != beyond || std::max(one, other) != beyond + 1)
+                    throw CrossingLoops("loops", "the loops pass each other (near (" + number(a->point().x()) + ", " +
+                                                     number(a->point().y()) + ") in the triangulated plane): a hole lies outside its outer loop");
+            }
+        }
     }
 
     // Nesting levels by flood fill from the infinite face; crossing a constrained segment adds one.
@@ -144,6 +167,7 @@ protected:
     }
 
     Cdt cdt_;
+    std::vector<std::vector<VertexHandle>> loops_;  // as added: the outer loop first
 };
 
 // A trimmed face's region, refined on its surface.
@@ -167,6 +191,7 @@ public:
         }
         require_simple_loops();
         mark_domains();
+        require_nested_loops();
         if (seed_interior()) mark_domains();
         for (int round = 0; round < kMaxRounds; ++round) {
             settings_.poll();
@@ -593,6 +618,7 @@ std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<st
     }
     region.require_simple_loops();
     region.mark_domains();
+    region.require_nested_loops();
     std::vector<std::array<std::size_t, 3>> out;
     for (const auto& t : region.triangles()) out.push_back({t[0], t[1], t[2]});
     return out;

@@ -145,7 +145,9 @@ std::vector<double> sample_curve(const NurbsCurve& curve, double tolerance) {
 class Tessellator {
 public:
     Tessellator(std::span<const Face> faces, const detail::TessellationSettings& settings)
-        : faces_(faces), settings_(settings) {}
+        : faces_(faces), settings_(settings) {
+        for (const auto& [edge, halvings] : settings_.finer_edges) finer_vertices_.insert({edge->start.get(), edge->end.get()});
+    }
 
     // Progress: planning reports up to kPlannedFraction, then each face meshed takes an equal share of
     // the rest (rows of a surface face poll in between).
@@ -153,16 +155,25 @@ public:
         detail::plan_surfaces(
             faces_, settings_, [this](const SurfacePlan& p, std::vector<Vec3>& out) { grid_points(p, out); }, plans_);
         sample_edges();
+        // Every face whose boundary comes out too coarse is gathered, so that one more attempt samples all their
+        // edges finer.
+        std::optional<std::string> coarse_first;
+        std::vector<const Edge*> coarse_edges;
+        const auto gather_coarse = [&](std::size_t i, const Error& e, std::span<const Edge* const> edges) {
+            if (!coarse_first) coarse_first = "face " + std::to_string(i) + ": " + e.what();
+            coarse_edges.insert(coarse_edges.end(), edges.begin(), edges.end());
+        };
         const double step = (1 - detail::kPlannedFraction) / static_cast<double>(faces_.size());
         double done = detail::kPlannedFraction;
         for (const SurfacePlan& plan : plans_) {
             settings_.report(done);
-            mesh_surface(plan);
+            try {
+                mesh_surface(plan);
+            } catch (const detail::CoarseBoundary& e) {
+                gather_coarse(static_cast<std::size_t>(plan.face - faces_.data()), e, e.edges());
+            }
             done += step;
         }
-        // Every loop that comes out inside out is gathered, so that one more attempt samples all their edges finer.
-        std::optional<std::string> inside_out_first;
-        std::vector<const Edge*> inside_out_edges;
         for (std::size_t i = 0; i < faces_.size(); ++i) {
             const Face& face = faces_[i];
             if (face.kind() == Face::Kind::surface) continue;
@@ -173,16 +184,15 @@ public:
             } catch (const TooFine&) {
                 throw;
             } catch (const detail::CrossingLoops& e) {
-                throw detail::CrossingLoops("solid", "face " + std::to_string(i) + ": " + e.what());
-            } catch (const detail::InsideOutLoop& e) {
-                if (!inside_out_first) inside_out_first = "face " + std::to_string(i) + ": " + e.what();
-                inside_out_edges.insert(inside_out_edges.end(), e.edges().begin(), e.edges().end());
+                gather_coarse(i, e, edges_of(face));  // where they cross is a place in (u, v), not an edge
+            } catch (const detail::CoarseBoundary& e) {
+                gather_coarse(i, e, e.edges());
             } catch (const Error& e) {
                 throw Error("solid", "face " + std::to_string(i) + ": " + e.what());
             }
             done += step;
         }
-        if (inside_out_first) throw detail::InsideOutLoop("solid", *inside_out_first, std::move(inside_out_edges));
+        if (coarse_first) throw detail::CoarseBoundary("solid", *coarse_first, std::move(coarse_edges));
         // The plans were held against the count their mesh cannot fall below; the zippers, split cells and
         // trimmed faces may add more. The mesh's own count decides, so that max_triangles holds exactly.
         Mesh mesh = assembler_.take();
@@ -310,7 +320,7 @@ private:
     // (longer moves towards the centre of curvature would fold the edge's polygon, and a cap with it) and the
     // offset_room its neighbours leave; at a crease leaning towards centring the edge's polyline on its curve.
     Vec3 edge_offset(const Edge* edge, double t, double gap, double chord) {
-        if (used_by_trimmed(edge)) return {};
+        if (used_by_trimmed(edge) || settings_.finer_edges.contains(edge)) return {};
         wishes_.clear();
         double cap = std::numeric_limits<double>::infinity();
         for (const EdgeUse& use : edge_uses_[edge]) {
@@ -408,7 +418,7 @@ private:
         return known->second;
     }
     Vec3 wished_vertex_offset(const Vertex* vertex) {
-        if (used_by_trimmed(vertex)) return {};
+        if (used_by_trimmed(vertex) || finer_vertices_.contains(vertex)) return {};
         wishes_.clear();
         double cap = std::numeric_limits<double>::infinity();
         const auto& uses = vertex_uses_[vertex];
@@ -593,7 +603,7 @@ private:
                 }
             };
             if (surface_use && is_crease(edge.get())) split_chords_beyond(bound);
-            // An edge of a loop that came out inside out on an earlier attempt (InsideOutLoop).
+            // An edge of a loop that came out too coarse on an earlier attempt (CoarseBoundary).
             if (const auto finer = settings_.finer_edges.find(edge.get()); finer != settings_.finer_edges.end())
                 split_chords_beyond(std::ldexp(settings_.check_tolerance(), -finer->second));
             const double crease_bound = surface_use && is_crease(edge.get()) ? bound : 0;
@@ -868,8 +878,25 @@ private:
                     const Vec3 p = s.point(u, v) + (n ? *n * plan.offsets.at(u, v) : Vec3{});
                     center = CellVertex{u, v, p, assembler_.add_point(p)};
                 }
+                if (nu == 2 || nv == 2) require_unfolded(plan, triangles, 0.5 * (g.u[i] + g.u[i + 1]), 0.5 * (g.v[j] + g.v[j + 1]));
                 for (const auto& t : triangles) assembler_.add_triangle(t[0]->id, t[1]->id, t[2]->id);
             }
+        }
+    }
+
+    // A face one cell across (a flat ring 0.004 wide at the foot of a wall) has the samples of two edges as the
+    // corners of every triangle: where one edge's samples are moved across the face by a neighbour's straddling
+    // offsets, or the other's chords dip past them, its triangles fold back over its neighbours' (the mesh
+    // intersected itself, and was handed out). Each triangle must face as the surface does at (u, v), within 120
+    // degrees (a sliver's normal is rounding); else the face's edges are sampled finer, on their curves.
+    void require_unfolded(const SurfacePlan& plan, std::span<const CellTriangle> triangles, double u, double v) {
+        const std::optional<Vec3> n = face_normal(plan, u, v);
+        if (!n) return;
+        for (const CellTriangle& t : triangles) {
+            const Vec3 normal = cross(t[1]->point - t[0]->point, t[2]->point - t[0]->point);
+            if (dot(normal, *n) < -0.5 * norm(normal))
+                throw detail::CoarseBoundary("boundary", "the triangles across it fold back (the face is narrower than its edges' samples are apart)",
+                                             edges_of(*plan.face));
         }
     }
 
@@ -917,6 +944,15 @@ private:
             rail(j + 1, top);
             triangles.clear();
             detail::triangulate_strip(bottom, top, lower, upper, triangles);
+            if (count == 2)
+                for (const CellTriangle& t : triangles) {
+                    // At the triangle's middle, its u taken across the seam as its row closes (row_rail).
+                    double u = t[0]->u;
+                    for (int k : {1, 2}) u += std::remainder(t[k]->u - t[0]->u, period) / 3;
+                    if (u > du.max) u -= period;
+                    if (u < du.min) u += period;
+                    require_unfolded(plan, std::span<const CellTriangle>(&t, 1), u, (t[0]->v + t[1]->v + t[2]->v) / 3);
+                }
             for (const auto& t : triangles) assembler_.add_triangle(t[0]->id, t[1]->id, t[2]->id);
             std::swap(bottom, top);
         }
@@ -964,11 +1000,20 @@ private:
     }
 
     // The refusal of a loop whose samples do not run round it as it does, naming its edges to be sampled finer.
-    static detail::InsideOutLoop inside_out(const std::vector<Coedge>& loop, std::string_view reason) {
+    static detail::CoarseBoundary inside_out(const std::vector<Coedge>& loop, std::string_view reason) {
         std::vector<const Edge*> edges;
+        append_edges(loop, edges);
+        return detail::CoarseBoundary("loops", reason, std::move(edges));
+    }
+    static void append_edges(std::span<const Coedge> loop, std::vector<const Edge*>& edges) {
         for (const Coedge& coedge : loop)
             if (!coedge.edge->degenerate) edges.push_back(coedge.edge.get());
-        return detail::InsideOutLoop("loops", reason, std::move(edges));
+    }
+    static std::vector<const Edge*> edges_of(const Face& face) {
+        std::vector<const Edge*> edges;
+        if (face.kind() == Face::Kind::surface) append_edges(face.sides(), edges);
+        for (const auto& loop : face.loops()) append_edges(loop, edges);
+        return edges;
     }
     static constexpr std::string_view kWrongWayRound = "a loop's samples run round it the wrong way (a sliver beside an arc's chord)";
 
@@ -1021,6 +1066,7 @@ private:
     // vertex_offset's answers while the plans stay as they are (a vertex is asked for at every corner and
     // edge end that meets it): cleared by grid_points and once more by sample_edges.
     std::map<const Vertex*, Vec3> vertex_offsets_;
+    std::set<const Vertex*> finer_vertices_;  // the ends of settings_.finer_edges: on their edges' curves, as those
     std::vector<Vec3> side_points_;
 };
 
@@ -1038,23 +1084,22 @@ struct Estimate {
     double fitting_tolerance = 0;  // 0: no coarser tessellation fitted
 };
 
-// Tessellates the faces. Where a face's boundary samples cross (detail::CrossingLoops: edges closer than the
-// tolerance), the whole solid is tessellated again at half the tolerance, a few times at most: finer, so still
-// within the tolerance asked. Where loops' samples run round them the wrong way (detail::InsideOutLoop), only
-// their edges are sampled finer.
+// Tessellates the faces. Where faces' boundaries come out too coarse to mesh (detail::CoarseBoundary: samples
+// running round a loop the wrong way, loops crossing or passing each other, triangles folded beside a narrow
+// face), only their edges are sampled finer, their chords' bound halved per attempt. Crossing loops took the whole
+// solid to half the tolerance per attempt: a band 0.0044 wide between two arcs of a Prusa extruder body to 1/32,
+// 20,000 triangles where 5,000 do, and below the file's own edge tolerance, which no mesh follows (refused).
 Mesh run_retrying(std::span<const Face> faces, detail::TessellationSettings attempt) {
-    for (int halvings = 0;;) {
+    constexpr int kMaxHalvings = 12;
+    for (;;) {
         try {
             return Tessellator(faces, attempt).run();
-        } catch (const detail::CrossingLoops& e) {
-            if (halvings++ == 6) throw Error("solid", std::string(e.reason()) + " (also at 1/64 of the tolerance)");
-            attempt.tolerance *= 0.5;
-        } catch (const detail::InsideOutLoop& e) {
-            // The bound on the chords of the loops' edges halved per attempt.
+        } catch (const detail::CoarseBoundary& e) {
             require(!e.edges().empty(), "solid", e.reason());
             for (const Edge* edge : std::set<const Edge*>(e.edges().begin(), e.edges().end()))
-                if (++attempt.finer_edges[edge] > 8)
-                    throw Error("solid", std::string(e.reason()) + " (also with its edges at 1/256 of the tolerance)");
+                if (++attempt.finer_edges[edge] > kMaxHalvings)
+                    throw Error("solid", std::string(e.reason()) + " (also with its edges at 1/" +
+                                             std::to_string(1 << kMaxHalvings) + " of the tolerance)");
         }
     }
 }

@@ -37,21 +37,25 @@ struct Edge;  // brep.hpp
 namespace ratbez::detail {
 
 // A face's boundary samples whose polygon crosses itself in the face's plane or (u, v): two edges closer than
-// the tolerance, each sampled only as finely as the tolerance asks (a thin ring, the band between two arcs
-// 0.04 apart at a tolerance of 0.08), or a neighbour's straddling offsets pushing one across the other. The
-// driver tessellates again at a finer tolerance (tessellate.cpp), which samples the edges finer.
+// the tolerance, each sampled only as finely as the tolerance asks (a thin ring, the band 0.0044 wide between
+// two arcs of an extruder body at a tolerance of 0.11), or a neighbour's straddling offsets pushing one across
+// the other. Thrown by the triangulation, which knows no edges; the tessellator names the face's edges
+// (CoarseBoundary).
 class CrossingLoops : public Error {
 public:
     using Error::Error;
 };
 
-// A face's loop whose samples run round it the other way (the polygon encloses the outside of the face): a
-// sliver between an arc and a vertex just beside the arc's chord, as Voron's BMGobius idler has 12 of, where the
-// chord the tolerance allows for the arc passes on the far side of the vertex. The driver samples the loop's
-// edges finer (TessellationSettings::finer_edges) and tessellates again; the rest is sampled as before.
-class InsideOutLoop : public Error {
+// Faces whose boundary is sampled too coarsely to mesh: samples running round a loop the other way (the polygon
+// encloses the outside of the face: a sliver between an arc and a vertex just beside the arc's chord, as Voron's
+// BMGobius idler has 12 of, where the chord the tolerance allows for the arc passes on the far side of the
+// vertex), loops that cross or pass each other (CrossingLoops), or a surface face's triangles folded back beside
+// its boundary (a ring narrower than the chords and straddling offsets of the wall beside it). The driver samples
+// only these edges finer and on their curves (TessellationSettings::finer_edges) and tessellates again; the rest
+// of the solid is meshed as before.
+class CoarseBoundary : public Error {
 public:
-    InsideOutLoop(std::string_view argument, std::string_view reason, std::vector<const Edge*> edges)
+    CoarseBoundary(std::string_view argument, std::string_view reason, std::vector<const Edge*> edges)
         : Error(argument, reason), edges_(std::make_shared<const std::vector<const Edge*>>(std::move(edges))) {}
     const std::vector<const Edge*>& edges() const noexcept { return *edges_; }
 
@@ -65,8 +69,10 @@ struct TessellationSettings {
     double angle_rad = 0;  // 0: no angle limit
     std::size_t max_triangles = 0;
     const Progress* progress = nullptr;  // TessellationOptions::progress, or none
-    // Edges whose chords keep within tolerance / 2^n (n the value) where a loop they bound came out inside out
-    // (InsideOutLoop); every other edge is sampled to the tolerance.
+    // Edges of loops that came out too coarse on an earlier attempt (CoarseBoundary): their chords keep within
+    // tolerance / 2^n of the curve (n the value), and their samples lie on it (no straddling offset, which a
+    // neighbour's coarse grid would make as large as its own cells ask). Every other edge is sampled to the
+    // tolerance.
     std::map<const Edge*, int> finer_edges = {};
 
     // Reports `fraction` of the whole tessellation done (the caller's callback may throw to cancel).
