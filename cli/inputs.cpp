@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "ratbez/error.hpp"
 #include "ratbez/occt/files.hpp"
 
 namespace ratbez::cli {
@@ -26,12 +27,13 @@ bool is_model_file(const std::string& path) {
     return extension == ".step" || extension == ".stp" || extension == ".brep";
 }
 
-Input load_input(const std::string& path, const Progress& progress) {
+Input load_input(const std::string& path, const Progress& progress, bool strict) {
     if (!is_model_file(path)) return Input{{spec::load_spec(path)}, false};
     const bool brep = lowercase_extension(path) == ".brep";
     std::string left_out;
     std::vector<Solid> solids = brep ? occt::read_brep_all(path, progress, &left_out) : occt::read_step_all(path, progress, &left_out);
     // Faces no solid holds bound no volume: the export goes on without them, and says so.
+    if (!left_out.empty() && strict) throw Error("path", "'" + path + "': " + left_out + " (--strict: refused)");
     if (!left_out.empty()) std::cerr << "note: '" << path << "': " << left_out << '\n';
     Input input{{}, true};
     input.shapes.reserve(solids.size());

@@ -1,9 +1,9 @@
 // The `ratbez` command: a JSON shape spec or a STEP/BREP model file in, files and reports out.
 //
 //   ratbez export INPUT -o OUT.{scad,stl,off,3mf,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]
-//                [--import-stl] [--max-triangles N] [--skip-self-intersection-check]
-//   ratbez check INPUT [--json]
-//   ratbez info INPUT [--json]
+//                [--import-stl] [--max-triangles N] [--skip-self-intersection-check] [--strict]
+//   ratbez check INPUT [--json] [--strict]
+//   ratbez info INPUT [--json] [--strict]
 //
 // INPUT is SPEC.json (one solid) or a .step/.stp/.brep file (every solid in it: several export into one library,
 // check and info report each; inputs.hpp).
@@ -67,17 +67,18 @@ using ratbez::spec::ShapeSpec;
 constexpr const char* usage_text =
     "usage: ratbez <command> ...\n"
     "  ratbez export INPUT -o OUT.{scad,stl,off,3mf,step,brep} [--tolerance T] [--angle A] [--module NAME] [--ascii]\n"
-    "                [--max-triangles N] [--import-stl] [--skip-self-intersection-check]\n"
+    "                [--max-triangles N] [--import-stl] [--skip-self-intersection-check] [--strict]\n"
     "                --import-stl: a .scad whose module import()s the mesh from a binary STL beside it (faster in\n"
     "                OpenSCAD for large meshes); --skip-self-intersection-check: for very large meshes\n"
-    "  ratbez check INPUT [--json]          check against OpenCASCADE; exit 1 when a check fails\n"
-    "  ratbez info INPUT [--json]           faces, edges, vertices, shells, Euler characteristic, area, volume, box\n"
+    "  ratbez check INPUT [--json] [--strict]  check against OpenCASCADE; exit 1 when a check fails\n"
+    "  ratbez info INPUT [--json] [--strict]   faces, edges, vertices, shells, Euler characteristic, area, volume, box\n"
     "  ratbez demo [DIR] [--examples DIR] [--no-render]\n"
     "                                       build, export and check every example into DIR (default ratbez-demo)\n"
     "  ratbez --version                     the version of ratbez\n"
     "INPUT is a JSON shape spec (documented in examples/README.md) or a .step/.stp/.brep file: every solid in it\n"
     "is read (an assembly with its placements); several export into one library (.scad: a module each and one\n"
-    "placing them all) and check and info report each (--json: an array).\n";
+    "placing them all) and check and info report each (--json: an array). Faces that bound no volume and solids\n"
+    "of several that cannot be read are left out with a note; --strict refuses such a file instead (exit 2).\n";
 
 // Bad command-line arguments: exit 2, reported as "usage error: <argument>: <reason>".
 class UsageError : public std::runtime_error {
@@ -288,9 +289,9 @@ private:
 };
 
 // The input of a command, with a progress line while a large model file is read.
-ratbez::cli::Input load_for(const std::string& path) {
+ratbez::cli::Input load_for(const std::string& path, bool strict) {
     ProgressLine progress("reading " + path);
-    return ratbez::cli::load_input(path, [&progress](double fraction) { progress(fraction); });
+    return ratbez::cli::load_input(path, [&progress](double fraction) { progress(fraction); }, strict);
 }
 
 // The tessellation's share of an export's progress line (it is usually less than the checks').
@@ -302,13 +303,13 @@ struct ExportRequest {
     std::optional<double> tolerance, angle;
     std::optional<std::size_t> max_triangles;
     std::optional<std::string> module_name;
-    bool ascii = false, import_stl = false, skip_self_intersection_check = false;
+    bool ascii = false, import_stl = false, skip_self_intersection_check = false, strict = false;
     bool exact() const { return extension == ".step" || extension == ".stp" || extension == ".brep"; }
 };
 
 ExportRequest parse_export(const std::vector<std::string>& raw) {
     const Arguments args = parse_arguments("export", raw, {"--output", "--tolerance", "--angle", "--module", "--max-triangles"},
-                                            {"--ascii", "--import-stl", "--skip-self-intersection-check"});
+                                            {"--ascii", "--import-stl", "--skip-self-intersection-check", "--strict"});
     ExportRequest request;
     request.input = single_input(args, "export");
     const auto output = args.value("--output");
@@ -338,6 +339,7 @@ ExportRequest parse_export(const std::vector<std::string>& raw) {
     request.ascii = args.flag("--ascii");
     request.import_stl = args.flag("--import-stl");
     request.skip_self_intersection_check = args.flag("--skip-self-intersection-check");
+    request.strict = args.flag("--strict");
     return request;
 }
 
@@ -477,7 +479,7 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
 
 int command_export(const std::vector<std::string>& raw) {
     const ExportRequest request = parse_export(raw);
-    const ratbez::cli::Input input = load_for(request.input);
+    const ratbez::cli::Input input = load_for(request.input, request.strict);
     if (request.exact()) {
         std::vector<ratbez::Solid> solids;
         std::size_t faces = 0;
@@ -516,8 +518,8 @@ void print_json(const std::vector<nlohmann::json>& reports, bool model_file) {
 }
 
 int command_check(const std::vector<std::string>& raw) {
-    const Arguments args = parse_arguments("check", raw, {}, {"--json"});
-    const ratbez::cli::Input input = load_for(single_input(args, "check"));
+    const Arguments args = parse_arguments("check", raw, {}, {"--json", "--strict"});
+    const ratbez::cli::Input input = load_for(single_input(args, "check"), args.flag("--strict"));
     bool passed = true;
     std::vector<nlohmann::json> reports;
     for (const ShapeSpec& spec : input.shapes) {
@@ -563,8 +565,8 @@ Facts facts_of(const ratbez::Solid& solid) {
 }
 
 int command_info(const std::vector<std::string>& raw) {
-    const Arguments args = parse_arguments("info", raw, {}, {"--json"});
-    const ratbez::cli::Input input = load_for(single_input(args, "info"));
+    const Arguments args = parse_arguments("info", raw, {}, {"--json", "--strict"});
+    const ratbez::cli::Input input = load_for(single_input(args, "info"), args.flag("--strict"));
     std::vector<nlohmann::json> reports;
     for (const ShapeSpec& spec : input.shapes) {
         const Facts f = facts_of(spec.solid);

@@ -748,6 +748,17 @@ TEST_F(Cli, FacesOutsideEverySolidAreLeftOutWithANote) {
     EXPECT_NE(run.err.find("note: '" + part + "': left out 17 face(s) outside every solid"), std::string::npos) << run.err;
     const CommandResult clean = ratbez({"info", corpus("two_solids.step")});
     EXPECT_EQ(clean.err.find("left out"), std::string::npos) << clean.err;
+    // --strict: a script that must not go on with part of a model gets the note as its refusal, and no file.
+    for (const char* command : {"export", "check", "info"}) {
+        std::vector<std::string> arguments{command, part, "--strict"};
+        if (std::string(command) == "export") arguments.insert(arguments.end(), {"-o", path("strict.scad")});
+        const CommandResult refused = ratbez(arguments);
+        EXPECT_EQ(refused.exit_code, 2) << command << ": " << refused.err;
+        EXPECT_EQ(refused.err, "error: path: '" + part + "': left out 17 face(s) outside every solid: they bound no volume (open "
+                               "shells or loose faces) (--strict: refused)\n") << command;
+    }
+    EXPECT_FALSE(fs::exists(path("strict.scad")));
+    EXPECT_EQ(ratbez({"info", corpus("two_solids.step"), "--strict"}).exit_code, 0);
 }
 
 TEST_F(Cli, OneSolidOfAModelFileIsNamedAfterTheOutput) {
