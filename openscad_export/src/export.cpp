@@ -255,7 +255,9 @@ namespace {
 // reaching at least half of itself along itself. Coordinates rounded to a grid coarser than a sliver's height (a
 // KiCad capacitor's band 1e-5 wide between two arcs, at 5 decimals: a triangle 1.2e-6 high left 2.6e-16 high)
 // flatten it where CGAL's exact predicates still see a triangle, and every check passes; OpenSCAD, whose grid of
-// 2^-20 then flattens it altogether, fails in CGAL_Nef_polyhedron3() on `use` of the library.
+// 2^-20 then flattens it altogether, fails in CGAL_Nef_polyhedron3() on `use` of the library. A triangle flat
+// already (its height below 1e-9 of its longest side: a sample on the chord of its neighbours) has no shape to
+// keep: any rounding is as good for it as the exact coordinates.
 bool keeps_triangles(const Mesh& exact, const Mesh& rounded) {
     const auto area_vector = [](const Mesh& m, const std::array<std::uint32_t, 3>& t) {
         const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
@@ -263,6 +265,9 @@ bool keeps_triangles(const Mesh& exact, const Mesh& rounded) {
     };
     for (const auto& t : exact.triangles) {
         const Vec3 before = area_vector(exact, t), after = area_vector(rounded, t);
+        const Vec3 &a = exact.vertices[t[0]], &b = exact.vertices[t[1]], &c = exact.vertices[t[2]];
+        const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
+        if (norm(before) <= 1e-9 * longest * longest) continue;
         if (!(dot(before, after) >= 0.5 * dot(before, before))) return false;
     }
     return true;

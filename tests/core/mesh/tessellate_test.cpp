@@ -26,6 +26,7 @@
 #include "ratbez/nurbs_curve.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/profile.hpp"
+#include "ratbez/properties.hpp"
 #include "ratbez/revolve.hpp"
 
 namespace ratbez {
@@ -585,6 +586,32 @@ TEST(Tessellate, ACapOfAnArcAndItsChordMeshes) {
     EXPECT_TRUE(mesh.is_closed());
     EXPECT_GT(mesh.volume(), 0.0);
     EXPECT_LE(max_deviation(solid, mesh), tolerance);
+}
+
+// The same cap with its chord in two line edges that meet on it (a Voron idler's segment faces: an arc 0.325 long
+// of radius 1.5 closed by lines 0.044 and 0.281 long, meeting 1e-14 off the chord). With the arc as its chord the
+// loop's samples are three points on one line, which the triangulation took for a triangle that high where their
+// area came out positive: no shape, and OpenSCAD's CGAL_Nef_polyhedron3() failed on the library. The loop's edges
+// are sampled finer instead. (The cap on its own: the solid's mesh is the convex hull of its vertices.)
+TEST(Tessellate, ACapOfAnArcAndTwoLinesOnItsChordHasNoFlatTriangle) {
+    const NurbsCurve rim = arc(1.5, -6.2, 6.2);
+    const Vec3 a = rim.start_point(), b = rim.end_point();
+    for (double off : {-1e-13, 1e-13}) {  // towards the arc and away from it
+        const Vec3 on_chord = a + (b - a) * (0.044 / 0.325) + Vec3{off, 0, 0};
+        const Solid solid = extrude(Profile({rim, line_segment(b, on_chord), line_segment(on_chord, a)}), {0, 0, 1}, 1.0);
+        for (const Face& face : solid.faces()) {
+            if (face.kind() != Face::Kind::planar) continue;
+            TessellationOptions options;
+            options.tolerance = 0.0387;
+            const Mesh mesh = tessellate(face, options);
+            EXPECT_NEAR(mesh.area(), surface_area(face), options.tolerance * 0.65);  // within the tolerance times the perimeter
+            for (const auto& t : mesh.triangles) {
+                const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
+                const double longest = std::max({distance(p, q), distance(q, r), distance(r, p)});
+                EXPECT_GT(norm(cross(q - p, r - p)), 1e-9 * longest * longest) << "a flat triangle, the lines meeting " << off << " off the chord";
+            }
+        }
+    }
 }
 
 }  // namespace

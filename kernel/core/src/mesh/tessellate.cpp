@@ -978,7 +978,7 @@ private:
             while (cleaned.size() > 1 && cleaned.back() == cleaned.front()) cleaned.pop_back();
             // A loop of two edges (an arc closed by a line, a Fusion 360 servo's flat) whose arc the tolerance lets
             // its chord stand for: two points, no area. Its edges are sampled finer.
-            if (cleaned.size() < 3) throw inside_out(loop, "a loop's samples enclose no area (an arc its chord stands for)");
+            if (cleaned.size() < 3) throw inside_out(loop, kNoArea);
             std::vector<detail::Point2> points;
             for (Id id : cleaned) {
                 const Vec3 d = assembler_.point(id) - plane.origin;
@@ -986,6 +986,7 @@ private:
             }
             // The outer loop runs counterclockwise seen from the normal, holes clockwise (brep.hpp); samples that
             // run the other way would mesh the outside of the loop.
+            if (!encloses_area(points)) throw inside_out(loop, kNoArea);
             const bool counterclockwise = (detail::twice_signed_area(points) > 0) != flip;
             if (counterclockwise != loops.empty()) throw inside_out(loop, kWrongWayRound);
             loops.push_back(std::move(points));
@@ -1016,6 +1017,19 @@ private:
         return edges;
     }
     static constexpr std::string_view kWrongWayRound = "a loop's samples run round it the wrong way (a sliver beside an arc's chord)";
+    static constexpr std::string_view kNoArea = "a loop's samples enclose no area (an arc its chord stands for)";
+
+    // Whether a loop's samples enclose more than 1e-9 of the square of their perimeter. An arc its chord stands
+    // for, closed by two line edges that meet on that chord (a Voron idler's segment faces), encloses 1e-14: its
+    // one triangle had no shape, which OpenSCAD's CGAL_Nef_polyhedron3() fails on. Its edges are sampled finer.
+    static bool encloses_area(const std::vector<detail::Point2>& points) {
+        double perimeter = 0;
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const detail::Point2 &a = points[k], &b = points[(k + 1) % points.size()];
+            perimeter += std::hypot(b.x - a.x, b.y - a.y);
+        }
+        return std::abs(detail::twice_signed_area(points)) > 2e-9 * perimeter * perimeter;
+    }
 
     // A trimmed face: its loops as boundary samples in (u, v) (each coedge's samples in the direction the face
     // runs it, its last one left to the next coedge; a degenerate coedge contributes the start of its pole
@@ -1044,6 +1058,7 @@ private:
             // The outer loop counterclockwise in (u, v), holes clockwise (brep.hpp), as in mesh_planar.
             std::vector<detail::Point2> uv;
             for (const detail::BoundarySample& sample : samples) uv.push_back({sample.u, sample.v});
+            if (!encloses_area(uv)) throw inside_out(loop, kNoArea);
             if ((detail::twice_signed_area(uv) > 0) != (loops.size() == 1)) throw inside_out(loop, kWrongWayRound);
         }
         const detail::SurfaceEvaluator evaluator(face.surface());
