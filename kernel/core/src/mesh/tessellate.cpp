@@ -978,7 +978,7 @@ private:
             while (cleaned.size() > 1 && cleaned.back() == cleaned.front()) cleaned.pop_back();
             // A loop of two edges (an arc closed by a line, a Fusion 360 servo's flat) whose arc the tolerance lets
             // its chord stand for: two points, no area. Its edges are sampled finer.
-            if (cleaned.size() < 3) throw inside_out(loop, kNoArea);
+            if (cleaned.size() < 3) throw too_coarse(loop, kNoArea);
             std::vector<detail::Point2> points;
             for (Id id : cleaned) {
                 const Vec3 d = assembler_.point(id) - plane.origin;
@@ -986,9 +986,9 @@ private:
             }
             // The outer loop runs counterclockwise seen from the normal, holes clockwise (brep.hpp); samples that
             // run the other way would mesh the outside of the loop.
-            if (!encloses_area(points)) throw inside_out(loop, kNoArea);
+            if (!encloses_area(points)) throw too_coarse(loop, kNoArea);
             const bool counterclockwise = (detail::twice_signed_area(points) > 0) != flip;
-            if (counterclockwise != loops.empty()) throw inside_out(loop, kWrongWayRound);
+            if (counterclockwise != loops.empty()) throw too_coarse(loop, kWrongWayRound);
             loops.push_back(std::move(points));
             flat_ids.insert(flat_ids.end(), cleaned.begin(), cleaned.end());
         }
@@ -1000,8 +1000,9 @@ private:
         }
     }
 
-    // The refusal of a loop whose samples do not run round it as it does, naming its edges to be sampled finer.
-    static detail::CoarseBoundary inside_out(const std::vector<Coedge>& loop, std::string_view reason) {
+    // The refusal of a loop sampled too coarsely to mesh (its samples enclose no area or run round it the other way),
+    // naming its edges to be sampled finer.
+    static detail::CoarseBoundary too_coarse(const std::vector<Coedge>& loop, std::string_view reason) {
         std::vector<const Edge*> edges;
         append_edges(loop, edges);
         return detail::CoarseBoundary("loops", reason, std::move(edges));
@@ -1058,8 +1059,8 @@ private:
             // The outer loop counterclockwise in (u, v), holes clockwise (brep.hpp), as in mesh_planar.
             std::vector<detail::Point2> uv;
             for (const detail::BoundarySample& sample : samples) uv.push_back({sample.u, sample.v});
-            if (!encloses_area(uv)) throw inside_out(loop, kNoArea);
-            if ((detail::twice_signed_area(uv) > 0) != (loops.size() == 1)) throw inside_out(loop, kWrongWayRound);
+            if (!encloses_area(uv)) throw too_coarse(loop, kNoArea);
+            if ((detail::twice_signed_area(uv) > 0) != (loops.size() == 1)) throw too_coarse(loop, kWrongWayRound);
         }
         const detail::SurfaceEvaluator evaluator(face.surface());
         const std::function<Id(const Vec3&)> add = [this](const Vec3& p) { return assembler_.add_point(p); };
