@@ -14,6 +14,7 @@
 #include "ratbez/convexity.hpp"
 #include "ratbez/deviation.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/mesh.hpp"
 #include "ratbez/export/three_mf.hpp"
 #include "ratbez/output_file.hpp"
 
@@ -256,18 +257,16 @@ namespace {
 // KiCad capacitor's band 1e-5 wide between two arcs, at 5 decimals: a triangle 1.2e-6 high left 2.6e-16 high)
 // flatten it where CGAL's exact predicates still see a triangle, and every check passes; OpenSCAD, whose grid of
 // 2^-20 then flattens it altogether, fails in CGAL_Nef_polyhedron3() on `use` of the library. A triangle flat
-// already (its height below 1e-9 of its longest side: a sample on the chord of its neighbours) has no shape to
-// keep: any rounding is as good for it as the exact coordinates.
+// already (is_flat_triangle: a sample on the chord of its neighbours) has no shape to keep: any rounding is as
+// good for it as the exact coordinates.
 bool keeps_triangles(const Mesh& exact, const Mesh& rounded) {
     const auto area_vector = [](const Mesh& m, const std::array<std::uint32_t, 3>& t) {
         const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
         return cross(b - a, c - a);
     };
     for (const auto& t : exact.triangles) {
+        if (is_flat_triangle(exact.vertices[t[0]], exact.vertices[t[1]], exact.vertices[t[2]])) continue;
         const Vec3 before = area_vector(exact, t), after = area_vector(rounded, t);
-        const Vec3 &a = exact.vertices[t[0]], &b = exact.vertices[t[1]], &c = exact.vertices[t[2]];
-        const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
-        if (norm(before) <= 1e-9 * longest * longest) continue;
         if (!(dot(before, after) >= 0.5 * dot(before, before))) return false;
     }
     return true;

@@ -21,4 +21,9 @@ struct Mesh {
     double area() const;
 };
 
+// Whether the triangle (a, b, c) has no shape: its height below 1e-9 of its longest side, its corners on one line
+// to rounding. The tessellator flips such triangles away where it can, and the export's rounding has nothing of
+// theirs to keep.
+bool is_flat_triangle(const Vec3& a, const Vec3& b, const Vec3& c);
+
 }  // namespace ratbez

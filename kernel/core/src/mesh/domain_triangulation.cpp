@@ -35,6 +35,7 @@
 
 #include "math/numeric_internal.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/mesh.hpp"
 #include "ratbez/tessellate.hpp"
 
 namespace ratbez::detail {
@@ -504,8 +505,7 @@ private:
         const auto sliver = [](FaceHandle f) {
             const VertexInfo &a = f->vertex(0)->info(), &b = f->vertex(1)->info(), &c = f->vertex(2)->info();
             if (a.id == b.id || b.id == c.id || c.id == a.id) return false;  // a pole's collapsed triangle, left out
-            const double longest = std::max({norm(b.point - a.point), norm(c.point - b.point), norm(a.point - c.point)});
-            return norm(cross(b.point - a.point, c.point - a.point)) <= 1e-9 * longest * longest;
+            return is_flat_triangle(a.point, b.point, c.point);
         };
         for (int pass = 0; pass < 3; ++pass) {
             std::vector<std::array<VertexHandle, 3>> found;

@@ -91,4 +91,9 @@ double Mesh::area() const {
     return area;
 }
 
+bool is_flat_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double longest = std::max({norm(b - a), norm(c - b), norm(a - c)});
+    return norm(cross(b - a, c - a)) <= 1e-9 * longest * longest;
+}
+
 }  // namespace ratbez
