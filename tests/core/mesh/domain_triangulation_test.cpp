@@ -216,6 +216,61 @@ TEST(PolygonTriangulation, AHoleOutsideItsOuterLoopIsRefused) {
     expect_valid({large, small}, triangulate_polygon({large, small}), 9.0 - 1.0);
 }
 
+// A Creo touch screen's corner blend: the p-curve of its bottom edge runs 4.7e-7 past the corner in u, a few 1e-12
+// into the face, and turns back to it (in space 5e-6, within the file's vertex tolerance of 1.3e-3). Its last
+// sample then lay beyond the side edge rising from the corner, and the loop crossed itself at any sampling. Placed
+// on the chord to the corner, the loop is simple and the face meshes; the mesh vertices stay as they were.
+TEST(TrimmedDomainTriangulation, ASamplePastItsCornerIsPlacedBackOnTheChord) {
+    const NurbsSurface plane(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}}});
+    const SurfaceEvaluator evaluator(plane);
+    std::vector<Vec3> points;
+    const auto add = [&points](const Vec3& p) {
+        points.push_back(p);
+        return static_cast<MeshVertexId>(points.size() - 1);
+    };
+    // The unit square, counterclockwise from (0, 0), 8 samples a side; each side's samples start at its corner.
+    std::vector<BoundarySample> loop;
+    std::vector<std::size_t> corners;
+    const Point2 corner_at[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int side = 0; side < 4; ++side) {
+        corners.push_back(loop.size());
+        const Point2 a = corner_at[side], b = corner_at[(side + 1) % 4];
+        for (int k = 0; k < 8; ++k) {
+            const double f = k / 8.0, u = a.x + f * (b.x - a.x), v = a.y + f * (b.y - a.y);
+            loop.push_back({u, v, add({u, v, 0}), {u, v, 0}});
+        }
+    }
+    // The bottom side's last sample, its p-curve's, past the corner (1, 0) and into the face; its edge's point is
+    // 5e-6 before the corner.
+    BoundarySample& past = loop[corners[1] - 1];
+    past.u = 1 + 4.7e-7;
+    past.v = 4e-12;
+    past.point = {1 - 5e-6, 0, 0};
+    TessellationSettings settings;
+    settings.tolerance = 0.01;
+    settings.max_triangles = 1'000'000;
+    EXPECT_THROW(triangulate_trimmed_domain(evaluator, std::vector<std::vector<BoundarySample>>{loop}, settings, add), CrossingLoops);
+
+    std::vector<BoundarySample> unhooked = loop;
+    unhook_corners(unhooked, corners);
+    const BoundarySample& placed = unhooked[corners[1] - 1];
+    EXPECT_LT(placed.u, 1.0);
+    EXPECT_NEAR(placed.u, 1 - 5e-6, 1e-9);  // as far along the chord from (7/8, 0) as its edge's point is
+    EXPECT_NEAR(placed.v, 0.0, 1e-12);
+    EXPECT_EQ(placed.id, past.id);
+    for (std::size_t k = 0; k < loop.size(); ++k)  // nothing else moved: no other sample turns back
+        EXPECT_TRUE(k == corners[1] - 1 || (unhooked[k].u == loop[k].u && unhooked[k].v == loop[k].v)) << k;
+    const auto triangles =
+        triangulate_trimmed_domain(evaluator, std::vector<std::vector<BoundarySample>>{unhooked}, settings, add);
+    double area = 0;
+    for (const auto& t : triangles) {
+        const Vec3 p = points[t[0]], q = points[t[1]], r = points[t[2]];
+        EXPECT_GT(cross(q - p, r - p).z, 0.0);
+        area += cross(q - p, r - p).z / 2;
+    }
+    EXPECT_NEAR(area, 1.0, 1e-9);
+}
+
 TEST(PolygonTriangulation, RejectsDegenerateInput) {
     EXPECT_THROW(triangulate_polygon({}), Error);
     EXPECT_THROW(triangulate_polygon({{{0, 0}, {1, 0}}}), Error);

@@ -638,6 +638,28 @@ double twice_signed_area(const std::vector<Point2>& polygon) {
     return sum;
 }
 
+void unhook_corners(std::vector<BoundarySample>& loop, std::span<const std::size_t> corners) {
+    const std::size_t n = loop.size();
+    if (n < 3) return;
+    // Sample `at` between `from` and `corner` on the loop.
+    const auto place = [&](std::size_t at, std::size_t from, std::size_t corner) {
+        BoundarySample &s = loop[at], &a = loop[from], &c = loop[corner];
+        if ((c.u - s.u) * (s.u - a.u) + (c.v - s.v) * (s.v - a.v) >= 0) return;  // no turn back at s
+        const double along = distance(a.point, s.point), rest = distance(s.point, c.point);
+        const double f = along + rest > 0 ? along / (along + rest) : 0.5;
+        s.u = a.u + f * (c.u - a.u);
+        s.v = a.v + f * (c.v - a.v);
+    };
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+        const std::size_t corner = corners[k];
+        // The samples of the coedges ending and starting at the corner, the corner counted with the later one.
+        const std::size_t before = k == 0 ? n - corners.back() : corner - corners[k - 1];
+        const std::size_t after = (k + 1 < corners.size() ? corners[k + 1] : n) - corner;
+        if (before >= 2) place((corner + n - 1) % n, (corner + n - 2) % n, corner);
+        if (after >= 2) place((corner + 1) % n, (corner + 2) % n, corner);
+    }
+}
+
 std::vector<std::array<MeshVertexId, 3>> triangulate_trimmed_domain(
     const SurfaceEvaluator& surface, std::span<const std::vector<BoundarySample>> loops,
     const TessellationSettings& settings, const std::function<MeshVertexId(const Vec3&)>& add_point) {

@@ -51,6 +51,15 @@ struct BoundarySample {
     Vec3 point;
 };
 
+// A p-curve that runs past its vertex and turns back to it within the file's tolerance (a Creo touch screen's
+// corner blend: 4.7e-7 past in u, 5e-6 in space against a vertex tolerance of 1.3e-3) puts its last sample
+// beyond the corner, and the loop crossed itself there at any sampling. Each sample next to a corner (loop[k]
+// for k in `corners`: where a coedge's samples start) whose chord to the corner turns back on the chord before
+// it (an angle over 90 degrees in (u, v)) is placed on the chord from the sample before it to the corner
+// instead, as far along as it lies in space. Only its (u, v) moves: its mesh vertex is the edge's, which the
+// neighbouring face shares.
+void unhook_corners(std::vector<BoundarySample>& loop, std::span<const std::size_t> corners);
+
 // The triangles (counterclockwise in (u, v), so along S_u x S_v) covering the region a trimmed face's loops
 // bound: loops[0] the outer loop, counterclockwise, further loops holes, clockwise; each closed (its last
 // sample is followed by its first). Triangles collapsed at a pole (two corners on one mesh vertex) are left

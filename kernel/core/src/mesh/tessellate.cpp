@@ -1040,7 +1040,9 @@ private:
         std::vector<std::vector<detail::BoundarySample>> loops;
         for (const auto& loop : face.loops()) {
             auto& samples = loops.emplace_back();
+            std::vector<std::size_t> corners;  // where each coedge's samples start: at its first vertex
             for (const Coedge& coedge : loop) {
+                corners.push_back(samples.size());
                 const EdgeSamples& e = samples_of(coedge.edge.get());
                 const NurbsCurve& pcurve = *coedge.pcurve;
                 const Interval d = pcurve.domain();
@@ -1056,6 +1058,7 @@ private:
                     samples.push_back({uv.x, uv.y, e.ids[at], assembler_.point(e.ids[at])});
                 }
             }
+            detail::unhook_corners(samples, corners);
             // The outer loop counterclockwise in (u, v), holes clockwise (brep.hpp), as in mesh_planar.
             std::vector<detail::Point2> uv;
             for (const detail::BoundarySample& sample : samples) uv.push_back({sample.u, sample.v});
