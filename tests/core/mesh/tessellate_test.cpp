@@ -614,5 +614,41 @@ TEST(Tessellate, ACapOfAnArcAndTwoLinesOnItsChordHasNoFlatTriangle) {
     }
 }
 
+// A plate's face whose outline runs along a line to the circle inside it, round the circle and back along the
+// line (a StealthChanger Orbiter base from Fusion 360: the face lies on both sides of the line). Its polygon
+// overlapped itself along that bridge, and the loops were refused "also at 1/4096 of the tolerance". Split at
+// the bridge, it is an outline and a hole; the bridge is inside the face.
+TEST(Tessellate, AFaceWhoseLoopRunsToItsHoleAndBackMeshes) {
+    const Profile outline({line_segment({0, 0, 0}, {4, 0, 0}), line_segment({4, 0, 0}, {4, 3, 0}), line_segment({4, 3, 0}, {0, 3, 0}),
+                           line_segment({0, 3, 0}, {0, 0, 0})});
+    const Profile hole(std::vector<NurbsCurve>{circle(0.8, {2, 1.5, 0}, {0, 0, -1})});
+    const Solid plate = extrude(outline, {0, 0, 1}, 0.5, {hole});
+    std::vector<Face> faces = plate.faces();
+    const auto bottom = std::find_if(faces.begin(), faces.end(), [](const Face& f) {
+        return f.kind() == Face::Kind::planar && f.plane().normal.z < -0.5;
+    });
+    ASSERT_NE(bottom, faces.end());
+    ASSERT_EQ(bottom->loops().size(), 2u);
+    std::vector<Coedge> around = bottom->loops()[0];
+    const std::vector<Coedge>& circle_loop = bottom->loops()[1];
+    ASSERT_EQ(circle_loop.size(), 1u);
+    // The bridge from the outline's first vertex to the circle's.
+    const auto start_of = [](const Coedge& c) { return c.reversed ? c.edge->end : c.edge->start; };
+    const VertexPtr from = start_of(around.front()), to = start_of(circle_loop.front());
+    const auto bridge = std::make_shared<const Edge>(Edge{line_segment(from->point, to->point), from, to});
+    std::vector<Coedge> bridged{Coedge{bridge, false}};
+    bridged.insert(bridged.end(), circle_loop.begin(), circle_loop.end());
+    bridged.push_back(Coedge{bridge, true});
+    bridged.insert(bridged.end(), around.begin(), around.end());
+    *bottom = Face::planar(bottom->plane(), {bridged});
+    const Solid solid(std::move(faces));
+    const double tolerance = 0.01;
+    const Mesh mesh = tessellate(solid, tolerance);
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_NEAR(mesh.volume(), plate.volume(), tolerance * plate.area());
+    EXPECT_LE(max_deviation(solid, mesh), tolerance);
+    EXPECT_EQ(mesh.triangles.size(), tessellate(plate, tolerance).triangles.size());  // the plate's own mesh, in size
+}
+
 }  // namespace
 }  // namespace ratbez

@@ -3,7 +3,10 @@
 // triangles around each vertex form one fan. What Mesh::is_closed and the export's CGAL checks
 // (openscad_export) read: CGAL's polygon_soup_to_polygon_mesh requires an oriented 2-manifold soup.
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 
 #include "ratbez/mesh.hpp"
 #include "ratbez/progress.hpp"
@@ -18,6 +21,9 @@ struct MeshTopology {
                                            // orientations disagree (or a non-manifold edge)
     std::size_t singular_vertices = 0;     // vertices whose triangles form more than one fan: sheets that
                                            // touch at a point
+    // One edge {a, b} (a < b) that keeps the mesh from being watertight (a border, non-manifold or repeated edge), the
+    // first by its smaller vertex: where an error can point the user. None when there is no such edge.
+    std::optional<std::array<std::uint32_t, 2>> defective_edge;
 
     // Every edge used by exactly two triangles.
     bool closed() const { return border_edges == 0 && non_manifold_edges == 0; }

@@ -963,8 +963,11 @@ private:
         // Counterclockwise in the (x, y) frame is along x × y; flip if the frame is left-handed to the normal.
         const bool flip = dot(cross(plane.x_axis, plane.y_axis), plane.normal) < 0;
         std::vector<std::vector<detail::Point2>> loops;
-        std::vector<Id> flat_ids;
-        for (const auto& loop : face.loops()) {
+        std::vector<std::vector<Id>> loop_ids;
+        std::size_t outer = 0, outers = 0;  // the counterclockwise loops
+        const std::vector<std::vector<Coedge>> face_loops = without_bridges(face.loops());
+        const bool bridged = face_loops.size() != face.loops().size();
+        for (const auto& loop : face_loops) {
             std::vector<Id> ids;
             for (const Coedge& coedge : loop) {
                 const EdgeSamples& e = samples_of(coedge.edge.get());
@@ -988,10 +991,20 @@ private:
             // run the other way would mesh the outside of the loop.
             if (!encloses_area(points)) throw too_coarse(loop, kNoArea);
             const bool counterclockwise = (detail::twice_signed_area(points) > 0) != flip;
-            if (counterclockwise != loops.empty()) throw too_coarse(loop, kWrongWayRound);
+            if (counterclockwise != loops.empty() && !bridged) throw too_coarse(loop, kWrongWayRound);
+            if (counterclockwise) outer = loops.size();
+            outers += counterclockwise;
             loops.push_back(std::move(points));
-            flat_ids.insert(flat_ids.end(), cleaned.begin(), cleaned.end());
+            loop_ids.push_back(std::move(cleaned));
         }
+        // A bridged loop's parts come in any order: its one outer part goes first.
+        if (bridged) {
+            if (outers != 1) throw too_coarse(face_loops.front(), kWrongWayRound);
+            std::rotate(loops.begin(), loops.begin() + static_cast<std::ptrdiff_t>(outer), loops.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
+            std::rotate(loop_ids.begin(), loop_ids.begin() + static_cast<std::ptrdiff_t>(outer), loop_ids.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
+        }
+        std::vector<Id> flat_ids;
+        for (const std::vector<Id>& ids : loop_ids) flat_ids.insert(flat_ids.end(), ids.begin(), ids.end());
         // Numbered by mesh vertex: loops that share a vertex (a hole meeting the outer boundary at a corner of
         // both, as in Voron's blower duct) touch there.
         for (const auto& t : detail::triangulate_polygon(loops, flat_ids)) {
@@ -1002,6 +1015,36 @@ private:
 
     // The refusal of a loop sampled too coarsely to mesh (its samples enclose no area or run round it the other way),
     // naming its edges to be sampled finer.
+    // A loop that runs along an edge and later back along it (a bridge: a Fusion 360 plate's outline joined to
+    // the circle inside it by a line the face lies on both sides of) bounds the same region as its two parts
+    // without the bridge, an outer loop and a hole; as it is, its polygon overlaps itself along the bridge and
+    // was refused. Each such loop is split there, repeatedly; the bridge's edge is then inside the face, like
+    // any of its triangles' edges.
+    static std::vector<std::vector<Coedge>> without_bridges(const std::vector<std::vector<Coedge>>& loops) {
+        std::vector<std::vector<Coedge>> result;
+        std::vector<std::vector<Coedge>> pending(loops.rbegin(), loops.rend());
+        while (!pending.empty()) {
+            std::vector<Coedge> loop = std::move(pending.back());
+            pending.pop_back();
+            std::optional<std::pair<std::size_t, std::size_t>> bridge;
+            for (std::size_t i = 0; i < loop.size() && !bridge; ++i)
+                for (std::size_t j = i + 1; j < loop.size() && !bridge; ++j)
+                    if (loop[i].edge == loop[j].edge && loop[i].reversed != loop[j].reversed && !loop[i].edge->degenerate)
+                        bridge = std::pair{i, j};
+            if (!bridge) {
+                result.push_back(std::move(loop));
+                continue;
+            }
+            const auto [i, j] = *bridge;
+            std::vector<Coedge> inner(loop.begin() + static_cast<std::ptrdiff_t>(i + 1), loop.begin() + static_cast<std::ptrdiff_t>(j));
+            std::vector<Coedge> outer(loop.begin() + static_cast<std::ptrdiff_t>(j + 1), loop.end());
+            outer.insert(outer.end(), loop.begin(), loop.begin() + static_cast<std::ptrdiff_t>(i));
+            for (auto* part : {&inner, &outer})
+                if (!part->empty()) pending.push_back(std::move(*part));
+        }
+        return result;
+    }
+
     static detail::CoarseBoundary too_coarse(const std::vector<Coedge>& loop, std::string_view reason) {
         std::vector<const Edge*> edges;
         append_edges(loop, edges);
@@ -1255,7 +1298,7 @@ Mesh at_unit_scale(const Shape& shape, const Box& box, const TessellationOptions
 Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
     detail::require_tessellatable_weights(solid.faces(), "solid");
     const auto whole_mesh = [&](const TessellationOptions& asked) {
-        return at_unit_scale(solid, solid.bounding_box(), asked, [](const Solid& s, const TessellationOptions& o) {
+        return at_unit_scale(solid, solid.bounding_box(), asked, [&asked](const Solid& s, const TessellationOptions& o) {
             Mesh mesh = run_within_budget(s.faces(), settings_of(o));
             // Mesh::is_closed, from the topology taken once for it and the fans below.
             const auto closed = [](const Mesh& m, const MeshTopology& t) { return !m.triangles.empty() && t.watertight(); };
@@ -1275,9 +1318,18 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
             // solid whose faces fold onto each other — a profile that runs back over itself, found by
             // fuzz_geometry; parts of users' files that touch themselves (065_umbilical_mount) — from handing out
             // an open mesh.
-            require(closed(mesh, topology), "solid", "its faces do not close up into a watertight mesh: they overlap, fold "
-                                                     "back or touch each other (a profile that runs back over itself, a "
-                                                     "part read from a file that touches itself)");
+            if (!closed(mesh, topology)) {
+                // Where: a solid that touches itself (an audio jack's two pins meeting along an edge, a switch body whose
+                // two walls share a face) can only be mended by the user, in the model. `asked` may be at another scale.
+                std::string where;
+                if (const auto edge = topology.defective_edge) {
+                    const Vec3 at = 0.5 * (mesh.vertices[(*edge)[0]] + mesh.vertices[(*edge)[1]]) * (asked.tolerance / o.tolerance);
+                    where = " near (" + detail::number(at.x) + ", " + detail::number(at.y) + ", " + detail::number(at.z) + ")";
+                }
+                throw Error("solid", "its faces do not close up into a watertight mesh" + where +
+                                         ": they overlap, fold back or touch each other (a profile that runs back over "
+                                         "itself, a part read from a file that touches itself)");
+            }
             // A void touching the outer skin (or another void) at a vertex joins two sheets at one mesh vertex: no
             // 2-manifold mesh holds that (pythonocc's 11752.stp), and the export's checks refused it only after the
             // rest of their work (4 minutes).
