@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <vector>
 #include <numbers>
@@ -172,38 +173,47 @@ TEST(PolygonTriangulation, LoopsSharingAVertexTouchThere) {
     EXPECT_THROW(triangulate_polygon(loops, std::vector<MeshVertexId>(ids.begin(), ids.end() - 1)), Error);
 }
 
+// The unit square of the plane z = 0 as a surface to triangulate, and the mesh vertices the triangulation makes
+// (`add`). Not copied: `add` refers to it.
+struct UnitSquareDomain {
+    NurbsSurface plane{1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}}}};
+    SurfaceEvaluator evaluator{plane};
+    std::vector<Vec3> points;
+    std::function<MeshVertexId(const Vec3&)> add = [this](const Vec3& p) {
+        points.push_back(p);
+        return static_cast<MeshVertexId>(points.size() - 1);
+    };
+    UnitSquareDomain() = default;
+    UnitSquareDomain(const UnitSquareDomain&) = delete;
+    UnitSquareDomain& operator=(const UnitSquareDomain&) = delete;
+};
+
 // A boundary sample held off its surface by more than the tolerance (a file's vertex with a tolerance of its own,
 // an Inventor extruder body): the triangles at it cannot come within the tolerance, and refining them toward it,
 // round after round, put 182 mesh vertices in one place. A new vertex within a thousandth of the tolerance of a
 // corner is not made, and the region is refused, naming the place.
 TEST(TrimmedDomainTriangulation, ASampleOffItsSurfaceIsNotRefinedIntoOnePoint) {
-    const NurbsSurface plane(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}}});
-    const SurfaceEvaluator evaluator(plane);
-    std::vector<Vec3> points;
-    const auto add = [&points](const Vec3& p) {
-        points.push_back(p);
-        return static_cast<MeshVertexId>(points.size() - 1);
-    };
+    UnitSquareDomain domain;
     std::vector<BoundarySample> loop;
     for (const auto& [u, v] : {std::pair{0.1, 0.1}, std::pair{0.9, 0.1}, std::pair{0.9, 0.9}, std::pair{0.1, 0.9}})
-        loop.push_back({u, v, add({u, v, 0}), {u, v, 0}});
+        loop.push_back({u, v, domain.add({u, v, 0}), {u, v, 0}});
     loop[2].point.z = 0.05;  // five times the tolerance off the plane
-    points[loop[2].id].z = 0.05;
+    domain.points[loop[2].id].z = 0.05;
     TessellationSettings settings;
     settings.tolerance = 0.01;
     settings.max_triangles = 1'000'000;
     const std::vector<std::vector<BoundarySample>> loops{loop};
     try {
-        triangulate_trimmed_domain(evaluator, loops, settings, add);
+        triangulate_trimmed_domain(domain.evaluator, loops, settings, domain.add);
         ADD_FAILURE() << "a region no mesh follows within the tolerance was meshed";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("keeps further from its surface than the tolerance near (0.89"),
                   std::string::npos) << e.what();
     }
-    EXPECT_LT(points.size(), 1000u);
-    for (std::size_t a = 0; a < points.size(); ++a)
-        for (std::size_t b = a + 1; b < points.size(); ++b)
-            EXPECT_GT(distance(points[a], points[b]), 1e-5 * settings.tolerance) << a << " " << b;
+    EXPECT_LT(domain.points.size(), 1000u);
+    for (std::size_t a = 0; a < domain.points.size(); ++a)
+        for (std::size_t b = a + 1; b < domain.points.size(); ++b)
+            EXPECT_GT(distance(domain.points[a], domain.points[b]), 1e-5 * settings.tolerance) << a << " " << b;
 }
 
 // Loops sampled too coarsely can pass each other without crossing: a band's inner circle, its samples straddling
@@ -221,13 +231,7 @@ TEST(PolygonTriangulation, AHoleOutsideItsOuterLoopIsRefused) {
 // sample then lay beyond the side edge rising from the corner, and the loop crossed itself at any sampling. Placed
 // on the chord to the corner, the loop is simple and the face meshes; the mesh vertices stay as they were.
 TEST(TrimmedDomainTriangulation, ASamplePastItsCornerIsPlacedBackOnTheChord) {
-    const NurbsSurface plane(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, {{{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}}});
-    const SurfaceEvaluator evaluator(plane);
-    std::vector<Vec3> points;
-    const auto add = [&points](const Vec3& p) {
-        points.push_back(p);
-        return static_cast<MeshVertexId>(points.size() - 1);
-    };
+    UnitSquareDomain domain;
     // The unit square, counterclockwise from (0, 0), 8 samples a side; each side's samples start at its corner.
     std::vector<BoundarySample> loop;
     std::vector<std::size_t> corners;
@@ -237,7 +241,7 @@ TEST(TrimmedDomainTriangulation, ASamplePastItsCornerIsPlacedBackOnTheChord) {
         const Point2 a = corner_at[side], b = corner_at[(side + 1) % 4];
         for (int k = 0; k < 8; ++k) {
             const double f = k / 8.0, u = a.x + f * (b.x - a.x), v = a.y + f * (b.y - a.y);
-            loop.push_back({u, v, add({u, v, 0}), {u, v, 0}});
+            loop.push_back({u, v, domain.add({u, v, 0}), {u, v, 0}});
         }
     }
     // The bottom side's last sample, its p-curve's, past the corner (1, 0) and into the face; its edge's point is
@@ -249,7 +253,8 @@ TEST(TrimmedDomainTriangulation, ASamplePastItsCornerIsPlacedBackOnTheChord) {
     TessellationSettings settings;
     settings.tolerance = 0.01;
     settings.max_triangles = 1'000'000;
-    EXPECT_THROW(triangulate_trimmed_domain(evaluator, std::vector<std::vector<BoundarySample>>{loop}, settings, add), CrossingLoops);
+    EXPECT_THROW(triangulate_trimmed_domain(domain.evaluator, std::vector<std::vector<BoundarySample>>{loop}, settings, domain.add),
+                 CrossingLoops);
 
     std::vector<BoundarySample> unhooked = loop;
     unhook_corners(unhooked, corners);
@@ -261,10 +266,10 @@ TEST(TrimmedDomainTriangulation, ASamplePastItsCornerIsPlacedBackOnTheChord) {
     for (std::size_t k = 0; k < loop.size(); ++k)  // nothing else moved: no other sample turns back
         EXPECT_TRUE(k == corners[1] - 1 || (unhooked[k].u == loop[k].u && unhooked[k].v == loop[k].v)) << k;
     const auto triangles =
-        triangulate_trimmed_domain(evaluator, std::vector<std::vector<BoundarySample>>{unhooked}, settings, add);
+        triangulate_trimmed_domain(domain.evaluator, std::vector<std::vector<BoundarySample>>{unhooked}, settings, domain.add);
     double area = 0;
     for (const auto& t : triangles) {
-        const Vec3 p = points[t[0]], q = points[t[1]], r = points[t[2]];
+        const Vec3 p = domain.points[t[0]], q = domain.points[t[1]], r = domain.points[t[2]];
         EXPECT_GT(cross(q - p, r - p).z, 0.0);
         area += cross(q - p, r - p).z / 2;
     }
