@@ -265,6 +265,11 @@ TEST(TrimmedDomainTriangulation, ASamplePastItsCornerIsPlacedBackOnTheChord) {
     EXPECT_EQ(placed.id, past.id);
     for (std::size_t k = 0; k < loop.size(); ++k)  // nothing else moved: no other sample turns back
         EXPECT_TRUE(k == corners[1] - 1 || (unhooked[k].u == loop[k].u && unhooked[k].v == loop[k].v)) << k;
+    // A step back a third as long as the chord before it is the edge's own turn in (u, v), not a hook: it stays.
+    std::vector<BoundarySample> turning = loop;
+    turning[corners[1] - 1].u = 1 + 0.04;
+    unhook_corners(turning, corners);
+    EXPECT_EQ(turning[corners[1] - 1].u, 1 + 0.04);
     const auto triangles =
         triangulate_trimmed_domain(domain.evaluator, std::vector<std::vector<BoundarySample>>{unhooked}, settings, domain.add);
     double area = 0;

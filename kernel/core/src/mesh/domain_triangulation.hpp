@@ -55,8 +55,9 @@ struct BoundarySample {
 // corner blend: 4.7e-7 past in u, 5e-6 in space against a vertex tolerance of 1.3e-3) puts its last sample
 // beyond the corner, and the loop crossed itself there at any sampling. Each sample next to a corner (loop[k]
 // for k in `corners`: where a coedge's samples start) whose chord to the corner turns back on the chord before
-// it (an angle over 90 degrees in (u, v)) is placed on the chord from the sample before it to the corner
-// instead, as far along as it lies in space. Only its (u, v) moves: its mesh vertex is the edge's, which the
+// it (an angle over 90 degrees in (u, v)) and is under a hundredth of its length is placed on the chord from the
+// sample before it to the corner instead, as far along as it lies in space. A longer step back is the edge's own
+// sharp turn in (u, v) and stays. Only its (u, v) moves: its mesh vertex is the edge's, which the
 // neighbouring face shares.
 void unhook_corners(std::vector<BoundarySample>& loop, std::span<const std::size_t> corners);
 
