@@ -1000,8 +1000,8 @@ private:
         // A bridged loop's parts come in any order: its one outer part goes first.
         if (bridged) {
             if (outers != 1) throw too_coarse(face_loops.front(), kWrongWayRound);
-            std::rotate(loops.begin(), loops.begin() + static_cast<std::ptrdiff_t>(outer), loops.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
-            std::rotate(loop_ids.begin(), loop_ids.begin() + static_cast<std::ptrdiff_t>(outer), loop_ids.begin() + static_cast<std::ptrdiff_t>(outer) + 1);
+            std::swap(loops.front(), loops[outer]);  // the holes' order does not matter
+            std::swap(loop_ids.front(), loop_ids[outer]);
         }
         std::vector<Id> flat_ids;
         for (const std::vector<Id>& ids : loop_ids) flat_ids.insert(flat_ids.end(), ids.begin(), ids.end());
@@ -1013,8 +1013,6 @@ private:
         }
     }
 
-    // The refusal of a loop sampled too coarsely to mesh (its samples enclose no area or run round it the other way),
-    // naming its edges to be sampled finer.
     // A loop that runs along an edge and later back along it (a bridge: a Fusion 360 plate's outline joined to
     // the circle inside it by a line the face lies on both sides of) bounds the same region as its two parts
     // without the bridge, an outer loop and a hole; as it is, its polygon overlaps itself along the bridge and
@@ -1045,6 +1043,8 @@ private:
         return result;
     }
 
+    // The refusal of a loop sampled too coarsely to mesh (its samples enclose no area or run round it the other way),
+    // naming its edges to be sampled finer.
     static detail::CoarseBoundary too_coarse(const std::vector<Coedge>& loop, std::string_view reason) {
         std::vector<const Edge*> edges;
         append_edges(loop, edges);
