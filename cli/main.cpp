@@ -49,6 +49,7 @@
 #include "ratbez/occt/check.hpp"
 #include "ratbez/occt/files.hpp"
 #include "ratbez/output_file.hpp"
+#include "ratbez/properties.hpp"
 #include "ratbez/tessellate.hpp"
 #include "inputs.hpp"
 #include "spec.hpp"
@@ -558,8 +559,9 @@ Facts facts_of(const ratbez::Solid& solid) {
     facts.vertices = solid.vertices().size();
     facts.shells = solid.shells().size();
     facts.euler = solid.euler_characteristic();
-    facts.area = solid.area();
-    facts.volume = solid.volume();
+    const ratbez::SolidMeasures measured = ratbez::measure(solid);
+    facts.area = measured.area;
+    facts.volume = measured.volume;
     facts.box = solid.bounding_box();
     return facts;
 }

@@ -190,7 +190,8 @@ TEST(Properties, BeyondTheCellBudgetMeasurementsAreRefused) {
     }
     const Solid solid = revolve(Profile(pieces));
     for (const auto& measure : {std::function<double()>([&] { return solid.volume(); }),
-                                std::function<double()>([&] { return solid.area(); })}) {
+                                std::function<double()>([&] { return solid.area(); }),
+                                std::function<double()>([&] { return ratbez::measure(solid).volume; })}) {
         try {
             const double value = measure();
             ADD_FAILURE() << "measured " << value << " beyond the cell budget";
@@ -198,6 +199,18 @@ TEST(Properties, BeyondTheCellBudgetMeasurementsAreRefused) {
             EXPECT_NE(std::string(error.what()).find("cannot reach a relative accuracy"), std::string::npos) << error.what();
             EXPECT_EQ(std::string(error.what()).rfind("solid: ", 0), 0u) << error.what();
         }
+    }
+}
+
+// measure() runs the two cubatures side by side: the numbers are surface_area's and enclosed_volume's, to the bit.
+TEST(Properties, MeasureGivesTheAreaAndTheVolumeAsTheyAre) {
+    for (const Solid& solid : {sphere(1.5), torus(3.0, 1.0), cylinder(1.0, 2.0, {1, 2, 3}, {1, 0, 1}),
+                               revolve(Profile({line_segment({2, 0, 0}, {3, 0, 1}), line_segment({3, 0, 1}, {2, 0, 1}),
+                                                line_segment({2, 0, 1}, {2, 0, 0})}),
+                                       {0, 0, 0}, {0, 0, 1}, 270)}) {
+        const SolidMeasures measured = measure(solid);
+        EXPECT_EQ(measured.area, surface_area(solid));
+        EXPECT_EQ(measured.volume, enclosed_volume(solid));
     }
 }
 

@@ -22,4 +22,11 @@ double enclosed_volume(const Solid& solid);
 double surface_area(const Solid& solid, const Progress& progress);
 double enclosed_volume(const Solid& solid, const Progress& progress);
 
+// Both, measured side by side on two threads: for a solid read from a file each cubature takes seconds (a 51-face
+// screw: 2.4 s apiece). The same numbers as surface_area and enclosed_volume.
+struct SolidMeasures {
+    double area = 0, volume = 0;
+};
+SolidMeasures measure(const Solid& solid);
+
 }  // namespace ratbez

@@ -3,6 +3,8 @@
 // totals refused.
 #include "ratbez/properties.hpp"
 
+#include <future>
+
 #include <cmath>
 
 #include "analysis/cubature.hpp"
@@ -32,6 +34,14 @@ double enclosed_volume(const Solid& solid, const Progress& progress) {
     require(std::isfinite(volume), "solid", "its volume is not a finite double (the solid is too large to measure)");
     if (progress) progress(1.0);
     return volume;
+}
+
+SolidMeasures measure(const Solid& solid) {
+    // The kernel keeps no mutable state, so the two integrals may run at once; the area's thread is joined before
+    // an error of the volume's leaves (std::async's future waits in its destructor).
+    std::future<double> area = std::async(std::launch::async, [&solid] { return surface_area(solid); });
+    const double volume = enclosed_volume(solid);
+    return SolidMeasures{area.get(), volume};
 }
 
 }  // namespace ratbez
