@@ -3,6 +3,7 @@
 // folder per test under the system's temporary folder, removed afterwards, and a whole-file read.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -17,14 +18,16 @@ inline std::string read_file(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(in), {}};
 }
 
-// directory_ is "<temp>/ratbez_<prefix>_<test name>", empty when each test starts.
+// directory_ is "<temp>/ratbez_<prefix>_<test name>_<process id>", empty when each test starts. The process id
+// keeps two runs of the suite apart (two build trees tested at once: one's TearDown removed the other's folder).
 class TempDirectoryTest : public ::testing::Test {
 protected:
     explicit TempDirectoryTest(std::string prefix) : prefix_(std::move(prefix)) {}
 
     void SetUp() override {
         directory_ = std::filesystem::temp_directory_path() /
-                     ("ratbez_" + prefix_ + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+                     ("ratbez_" + prefix_ + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                      std::to_string(getpid()));
         std::filesystem::remove_all(directory_);
         std::filesystem::create_directories(directory_);
     }
