@@ -273,10 +273,6 @@ bool keeps_triangles(const Mesh& exact, const Mesh& rounded) {
     return true;
 }
 
-}  // namespace
-
-namespace {
-
 // The solid's volume for a header: the one its checks hold (tessellation_checks measured it), else measured now.
 // A solid read from a file takes seconds to integrate (2.4 s for a 51-face screw, whose mesh takes 0.08 s), and
 // the export measured it twice.

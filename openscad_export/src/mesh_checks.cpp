@@ -191,7 +191,8 @@ std::string first_crossing(const SurfaceMesh& surface) {
         std::pair<Face, Face> faces;
     };
     try {
-        PMP::self_intersections(surface, boost::make_function_output_iterator([](const std::pair<Face, Face>& pair) { throw Found{pair}; }));
+        const auto stop_at_first = [](const std::pair<Face, Face>& pair) { throw Found{pair}; };
+        PMP::self_intersections(surface, boost::make_function_output_iterator(stop_at_first));
     } catch (const Found& found) {
         double sum[3] = {0, 0, 0};
         for (const Face f : {found.faces.first, found.faces.second})

@@ -3,9 +3,8 @@
 // totals refused.
 #include "ratbez/properties.hpp"
 
-#include <future>
-
 #include <cmath>
+#include <future>
 
 #include "analysis/cubature.hpp"
 #include "brep/face_integrals.hpp"
