@@ -79,7 +79,8 @@ constexpr const char* usage_text =
     "INPUT is a JSON shape spec (documented in examples/README.md) or a .step/.stp/.brep file: every solid in it\n"
     "is read (an assembly with its placements); several export into one library (.scad: a module each and one\n"
     "placing them all) and check and info report each (--json: an array). Faces that bound no volume and solids\n"
-    "of several that cannot be read are left out with a note; --strict refuses such a file instead (exit 2).\n";
+    "of several that cannot be read (or, by export, meshed) are left out with a note; --strict refuses such a\n"
+    "file instead (exit 2).\n";
 
 // Bad command-line arguments: exit 2, reported as "usage error: <argument>: <reason>".
 class UsageError : public std::runtime_error {
@@ -441,6 +442,8 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
     std::vector<ratbez::Mesh> meshes;
     meshes.reserve(shapes.size());  // the parts point into it
     std::vector<ratbez::exporter::LibraryPart> parts;
+    std::vector<std::string> kept_modules, left_out;
+    std::optional<ratbez::Error> first_refusal;
     const double share = kTessellationShare / static_cast<double>(shapes.size());
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         const ShapeSpec& shape = shapes[i];
@@ -453,8 +456,15 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
             throw;
         } catch (const ratbez::Error& e) {
             // Which of the file's solids, as the export's own refusals name them ("solid: 'Nut': ...").
-            throw ratbez::Error(e.argument(), "'" + ratbez::exporter::comment_text(part.module_name) + "': " + std::string(e.reason()));
+            ratbez::Error named(e.argument(), "'" + ratbez::exporter::comment_text(part.module_name) + "': " + std::string(e.reason()));
+            // A solid of several that does not mesh (a part that touches itself) is left out with a note, as a
+            // solid the reader cannot take is; --strict refuses the file instead.
+            if (request.strict) throw named;
+            left_out.push_back(std::string(named.what()));
+            if (!first_refusal) first_refusal = named;
+            continue;
         }
+        kept_modules.push_back(part.module_name);
         part.solid = &shape.solid;
         part.mesh = &meshes.back();
         part.tolerance = tolerance_for(shape, request);
@@ -462,6 +472,13 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
         part.checks.check_self_intersections = !request.skip_self_intersection_check;
         part.color = color_of(shape);
         parts.push_back(std::move(part));
+    }
+    if (parts.empty()) throw *first_refusal;
+    if (!left_out.empty()) {
+        std::cerr << "note: '" << request.input << "': left out " << left_out.size() << " of " << shapes.size()
+                  << " solids that do not mesh:";
+        for (const std::string& why : left_out) std::cerr << (left_out.size() > 1 ? "\n  " : " ") << why;
+        std::cerr << '\n';
     }
     options.binary_stl = !request.ascii;
     options.source = "file " + request.input;
@@ -471,9 +488,11 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
         return failed;
     std::size_t triangles = 0;
     for (const auto& w : written) triangles += w.mesh.triangles.size();
-    std::cout << "wrote " << request.output << " (" << shapes.size() << " solids"
-              << (request.extension == ".scad" ? " in modules " + joined(module_names) + " placed by " + options.openscad.module_name + "()"
-                                               : std::string())
+    const bool one = parts.size() == 1;  // the others left out
+    std::cout << "wrote " << request.output << " (" << parts.size() << (one ? " solid" : " solids")
+              << (request.extension == ".scad"
+                      ? (one ? " in module " : " in modules ") + joined(kept_modules) + " placed by " + options.openscad.module_name + "()"
+                      : std::string())
               << ", " << triangles << " triangles)\n";
     return 0;
 }

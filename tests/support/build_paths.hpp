@@ -9,6 +9,7 @@ extern const char* const examples_dir;           // examples/
 extern const char* const corpus_dir;             // tests/corpus/freecad
 extern const char* const fuzz_corpus_dir;        // fuzz/corpus
 extern const char* const reliability_files_dir;  // tests/reliability/files
+extern const char* const cli_data_dir;           // tests/cli/data
 extern const char* const cli;                    // the built `ratbez` command
 extern const char* const openscad;               // the openscad executable found when configuring
 
