@@ -475,6 +475,7 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
     }
     if (parts.empty()) throw *first_refusal;
     if (!left_out.empty()) {
+        progress.finish();  // the note on a line of its own; the progress goes on below it
         std::cerr << "note: '" << request.input << "': left out " << left_out.size() << " of " << shapes.size()
                   << " solids that do not mesh:";
         for (const std::string& why : left_out) std::cerr << (left_out.size() > 1 ? "\n  " : " ") << why;
