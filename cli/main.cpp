@@ -79,8 +79,8 @@ constexpr const char* usage_text =
     "INPUT is a JSON shape spec (documented in examples/README.md) or a .step/.stp/.brep file: every solid in it\n"
     "is read (an assembly with its placements); several export into one library (.scad: a module each and one\n"
     "placing them all) and check and info report each (--json: an array). Faces that bound no volume and solids\n"
-    "of several that cannot be read (or, by export, meshed) are left out with a note; --strict refuses such a\n"
-    "file instead (exit 2).\n";
+    "of several that cannot be read (or, by export, meshed and checked) are left out with a note; --strict\n"
+    "refuses such a file instead (exit 2, or 1 for a mesh that fails the checks).\n";
 
 // Bad command-line arguments: exit 2, reported as "usage error: <argument>: <reason>".
 class UsageError : public std::runtime_error {
@@ -458,7 +458,7 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
             // Which of the file's solids, as the export's own refusals name them ("solid: 'Nut': ...").
             ratbez::Error named(e.argument(), "'" + ratbez::exporter::comment_text(part.module_name) + "': " + std::string(e.reason()));
             // A solid of several that does not mesh (a part that touches itself) is left out with a note, as a
-            // solid the reader cannot take is; --strict refuses the file instead.
+            // solid the reader cannot take is; --strict refuses the file instead. The note follows the export.
             if (request.strict) throw named;
             left_out.push_back(std::string(named.what()));
             if (!first_refusal) first_refusal = named;
@@ -474,19 +474,33 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
         parts.push_back(std::move(part));
     }
     if (parts.empty()) throw *first_refusal;
-    if (!left_out.empty()) {
-        progress.finish();  // the note on a line of its own; the progress goes on below it
-        std::cerr << "note: '" << request.input << "': left out " << left_out.size() << " of " << shapes.size()
-                  << " solids that do not mesh:";
-        for (const std::string& why : left_out) std::cerr << (left_out.size() > 1 ? "\n  " : " ") << why;
-        std::cerr << '\n';
-    }
     options.binary_stl = !request.ascii;
     options.source = "file " + request.input;
     options.progress = ratbez::progress_part(line, kTessellationShare, 1);
     std::vector<ratbez::exporter::WrittenMesh> written;
-    if (const int failed = checked_export(progress, [&] { written = ratbez::exporter::export_library(parts, request.output, options); }))
-        return failed;
+    const auto write_library = [&] {
+        for (;;) {
+            try {
+                written = ratbez::exporter::export_library(parts, request.output, options);
+                return;
+            } catch (const ratbez::exporter::PartRefused& e) {
+                // A part whose mesh the export's checks refuse (a file's part that intersects itself) is left out
+                // the same way, and the others are written without it.
+                if (request.strict || parts.size() == 1) throw;
+                left_out.push_back(std::string(e.what()));
+                parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(e.part()));
+                kept_modules.erase(kept_modules.begin() + static_cast<std::ptrdiff_t>(e.part()));
+            }
+        }
+    };
+    const int failed = checked_export(progress, write_library);
+    if (!left_out.empty()) {
+        std::cerr << "note: '" << request.input << "': left out " << left_out.size() << " of " << shapes.size()
+                  << " solids that do not mesh or whose meshes fail the export's checks:";
+        for (const std::string& why : left_out) std::cerr << (left_out.size() > 1 ? "\n  " : " ") << why;
+        std::cerr << '\n';
+    }
+    if (failed) return failed;
     std::size_t triangles = 0;
     for (const auto& w : written) triangles += w.mesh.triangles.size();
     const bool one = parts.size() == 1;  // the others left out

@@ -445,16 +445,17 @@ WrittenMesh prepared_mesh(const Solid& solid, const Mesh& mesh, double tolerance
     return result;
 }
 
-// prepared_mesh for a part of a library, a refusal naming the part when there are several ("mesh: 'Nut': ...":
-// which of an assembly's solids, by the name its module, object or Label has).
-WrittenMesh prepared_part(const LibraryPart& part, const FixedMesh& fixed, const Progress& progress, bool several) {
+// prepared_mesh for part `index` of a library, a refusal naming the part when there are several (PartRefused,
+// "mesh: 'Nut': ...": which of an assembly's solids, by the name its module, object or Label has).
+WrittenMesh prepared_part(const std::vector<LibraryPart>& parts, std::size_t index, const FixedMesh& fixed, const Progress& progress) {
+    const LibraryPart& part = parts[index];
     try {
         return prepared_mesh(*part.solid, *part.mesh, part.tolerance, fixed, part.checks, progress);
     } catch (const TooFine&) {
         throw;
     } catch (const Error& e) {
-        if (!several) throw;
-        throw Error(e.argument(), "'" + comment_text(part.module_name) + "': " + std::string(e.reason()));
+        if (parts.size() == 1) throw;
+        throw PartRefused(Error(e.argument(), "'" + comment_text(part.module_name) + "': " + std::string(e.reason())), index);
     }
 }
 
@@ -484,7 +485,7 @@ std::vector<WrittenMesh> export_three_mf(const std::vector<LibraryPart>& parts, 
         objects, path, options.progress,
         [&](std::size_t i, const Mesh& mesh, const Progress& progress) {
             const LibraryPart& part = parts[i];
-            written[i] = prepared_part(part, FixedMesh{&mesh, stores}, progress, parts.size() > 1);
+            written[i] = prepared_part(parts, i, FixedMesh{&mesh, stores}, progress);
             const std::vector<std::string> part_lines =
                 header_lines(written[i].mesh, options.source,
                              Measured{part.tolerance, written[i].max_deviation, volume_of(*part.solid, part.checks), std::nullopt,
@@ -540,9 +541,8 @@ std::vector<WrittenMesh> export_merged(const std::vector<LibraryPart>& parts, co
         require(part.solid != nullptr && part.mesh != nullptr, "solids", "a part has no solid or mesh");
         const double share = 0.95 / static_cast<double>(parts.size());
         const Mesh rounded = float32 ? float32_mesh(*part.mesh) : Mesh{};
-        written.push_back(prepared_part(part, FixedMesh{float32 ? &rounded : nullptr, float32 ? fixed_coordinates(format) : std::string()},
-                                        progress_part(options.progress, share * static_cast<double>(i), share * static_cast<double>(i + 1)),
-                                        parts.size() > 1));
+        written.push_back(prepared_part(parts, i, FixedMesh{float32 ? &rounded : nullptr, float32 ? fixed_coordinates(format) : std::string()},
+                                        progress_part(options.progress, share * static_cast<double>(i), share * static_cast<double>(i + 1))));
         const WrittenMesh& mesh = written.back();
         const std::vector<std::string> lines =
             header_lines(mesh.mesh, options.source,
@@ -579,9 +579,8 @@ std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, c
         require(part.solid != nullptr && part.mesh != nullptr, "solids", "a part has no solid or mesh");
         require_module_name(part.module_name);
         const double share = 0.95 / static_cast<double>(parts.size());
-        written.push_back(prepared_part(part, FixedMesh{}, progress_part(options.progress, share * static_cast<double>(i),
-                                                                          share * static_cast<double>(i + 1)),
-                                        parts.size() > 1));
+        written.push_back(prepared_part(parts, i, FixedMesh{},
+                                        progress_part(options.progress, share * static_cast<double>(i), share * static_cast<double>(i + 1))));
         const WrittenMesh& mesh = written.back();
         // The module's lines are export_tessellation's header without its first two (version, source).
         const std::vector<std::string> lines =

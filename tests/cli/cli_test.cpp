@@ -761,25 +761,39 @@ TEST_F(Cli, FacesOutsideEverySolidAreLeftOutWithANote) {
     EXPECT_EQ(ratbez({"info", corpus("two_solids.step"), "--strict"}).exit_code, 0);
 }
 
-TEST_F(Cli, ASolidOfSeveralThatDoesNotMeshIsLeftOutWithANote) {
-    // tests/cli/data/touching_parts.brep (make_touching_parts.py): a cylinder, and a prism that touches itself along an
-    // edge, as parts of users' files do (a keyboard's audio jack in a STEP assembly of five). The export had refused
-    // the whole file; the cylinder is written, and the note names the prism and why, as for a solid the reader leaves out.
-    const std::string file = std::string(ratbez::build_paths::cli_data_dir) + "/touching_parts.brep";
-    const CommandResult run = ratbez({"export", file, "-o", path("parts.scad")});
-    ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_NE(run.out.find("(1 solid in module touching_parts_1 placed by parts()"), std::string::npos) << run.out;
-    EXPECT_EQ(run.err, "note: '" + file + "': left out 1 of 2 solids that do not mesh: solid: 'touching_parts_2': face 8: loops: "
-                       "two points of the boundary fall on one place (0, 0): the loops touch themselves or each other\n");
-    const std::string scad = read_file(path("parts.scad"));
-    EXPECT_NE(scad.find("module touching_parts_1() {"), std::string::npos);
-    EXPECT_EQ(scad.find("touching_parts_2"), std::string::npos);
-    // --strict: the solid's refusal is the file's, and nothing is written.
-    const CommandResult strict = ratbez({"export", file, "-o", path("strict.scad"), "--strict"});
-    EXPECT_EQ(strict.exit_code, 2);
-    EXPECT_EQ(strict.err, "error: solid: 'touching_parts_2': face 8: loops: two points of the boundary fall on one place (0, 0): the "
-                          "loops touch themselves or each other\n");
-    EXPECT_FALSE(fs::exists(path("strict.scad")));
+TEST_F(Cli, ASolidOfSeveralThatCannotBeHandedOutIsLeftOutWithANote) {
+    // tests/cli/data (make_parts.py): a cylinder beside a prism that touches itself along an edge, which does not mesh
+    // (a keyboard's audio jack in a STEP assembly of five), or beside a bipyramid that intersects itself, whose mesh
+    // the export's checks refuse (an ODrive board's leader). The export had refused the whole file; the cylinder is
+    // written, and the note names the other solid and why, as for a solid the reader leaves out. --strict refuses
+    // the file with that solid's refusal (exit 2 for the mesh not made, 1 for the mesh refused) and writes nothing.
+    struct Case {
+        const char* file;
+        std::string why;
+        int strict_exit;
+    };
+    const std::vector<Case> cases = {
+        {"touching_parts", "solid: 'touching_parts_2': face 8: loops: two points of the boundary fall on one place (0, 0): the loops "
+                           "touch themselves or each other",
+         2},
+        {"crossing_parts", "mesh: 'crossing_parts_2': refusing to export an invalid mesh: the surface intersects itself near (", 1},
+    };
+    for (const Case& c : cases) {
+        const std::string file = std::string(ratbez::build_paths::cli_data_dir) + "/" + c.file + ".brep";
+        const CommandResult run = ratbez({"export", file, "-o", path("parts.scad")});
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        const std::string kept = std::string(c.file) + "_1";
+        EXPECT_NE(run.out.find("(1 solid in module " + kept + " placed by parts()"), std::string::npos) << run.out;
+        EXPECT_EQ(run.err.rfind("note: '" + file + "': left out 1 of 2 solids that do not mesh or whose meshes fail the export's "
+                                "checks: " + c.why, 0), 0u) << run.err;
+        const std::string scad = read_file(path("parts.scad"));
+        EXPECT_NE(scad.find("module " + kept + "() {"), std::string::npos) << c.file;
+        EXPECT_EQ(scad.find(std::string(c.file) + "_2"), std::string::npos) << c.file;
+        const CommandResult strict = ratbez({"export", file, "-o", path("strict.scad"), "--strict"});
+        EXPECT_EQ(strict.exit_code, c.strict_exit) << c.file;
+        EXPECT_EQ(strict.err.rfind("error: " + c.why, 0), 0u) << strict.err;
+        EXPECT_FALSE(fs::exists(path("strict.scad"))) << c.file;
+    }
 }
 
 TEST_F(Cli, OneSolidOfAModelFileIsNamedAfterTheOutput) {

@@ -255,10 +255,12 @@ TEST_F(ExportTessellation, ARefusalOfOneOfSeveralSolidsNamesIt) {
         try {
             export_library(parts, path(file), options);
             ADD_FAILURE() << file << ": expected ratbez::Error";
-        } catch (const Error& e) {
+        } catch (const PartRefused& e) {  // which part, by its index, for a caller that leaves it out (the command)
+            EXPECT_EQ(e.part(), 1u) << file;
             EXPECT_EQ(e.argument(), "mesh") << e.what();
             EXPECT_EQ(e.reason().rfind("'" + parts[1].module_name + "': ", 0), 0u) << e.what();
         }
+        EXPECT_FALSE(std::filesystem::exists(path(file))) << file;
     }
 }
 

@@ -4,6 +4,7 @@
 // extensions throw ratbez::Error naming "path". Every file goes through the one safe writer
 // (ratbez/output_file.hpp); a 3MF package is made in memory by lib3mf first (three_mf.hpp).
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -80,6 +81,17 @@ struct LibraryPart {
 // as an assembly's parts do), the OFF comments / ASCII STL header listing them.
 std::vector<WrittenMesh> export_library(const std::vector<LibraryPart>& parts, const std::string& path,
                                         const ExportOptions& options = {});
+
+// export_library's refusal of one part of several by the checks of its mesh ("mesh: 'Nut': ..."): part() is its
+// index in the parts given, so that a caller may leave it out and export the others (the command does, with a note).
+class PartRefused : public Error {
+public:
+    PartRefused(const Error& error, std::size_t part) : Error(error), part_(part) {}
+    std::size_t part() const noexcept { return part_; }
+
+private:
+    std::size_t part_;
+};
 
 // The mesh checks for a tessellation of `solid` at `tolerance`: the volume lies within tolerance times
 // the area of the exact one (the mesh stays within tolerance of the surface everywhere).
