@@ -106,9 +106,10 @@ MeshTopology mesh_topology(const Mesh& mesh, const Progress& progress) {
                 if (uses == 1) ++result.border_edges;
                 if (uses > 2) ++result.non_manifold_edges;
             }
-            const std::uint32_t w = neighbours[i].vertex;
-            if ((uses != 2 || outgoing != 1) && !result.defective_edge)
-                result.defective_edge = std::array{std::min(static_cast<std::uint32_t>(v), w), std::max(static_cast<std::uint32_t>(v), w)};
+            if ((uses != 2 || outgoing != 1) && !result.defective_edge) {
+                const auto a = static_cast<std::uint32_t>(v), b = neighbours[i].vertex;
+                result.defective_edge = std::array{std::min(a, b), std::max(a, b)};
+            }
             i = j;
         }
         if (fans > 1) ++result.singular_vertices;
