@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,7 @@ TEST(MeshTopology, TetrahedronIsAClosedOrientedManifold) {
     EXPECT_TRUE(t.closed());
     EXPECT_TRUE(t.oriented_manifold());
     EXPECT_EQ(t.border_edges + t.non_manifold_edges + t.repeated_edges + t.singular_vertices, 0u);
+    EXPECT_FALSE(t.defective_edge.has_value());
 }
 
 TEST(MeshTopology, AFlippedTriangleRepeatsItsThreeEdges) {
@@ -28,6 +30,13 @@ TEST(MeshTopology, AFlippedTriangleRepeatsItsThreeEdges) {
     EXPECT_TRUE(t.closed());
     EXPECT_EQ(t.repeated_edges, 3u);
     EXPECT_FALSE(t.oriented_manifold());
+    // The place an error names: the first of them by its smaller vertex, an edge of the flipped triangle.
+    ASSERT_TRUE(t.defective_edge.has_value());
+    const auto [a, b] = *t.defective_edge;
+    EXPECT_LT(a, b);
+    int on_flipped = 0;
+    for (const std::uint32_t v : m.triangles[3]) on_flipped += v == a || v == b;
+    EXPECT_EQ(on_flipped, 2);
 }
 
 TEST(MeshTopology, AMissingTriangleLeavesThreeBorderEdges) {
@@ -37,6 +46,12 @@ TEST(MeshTopology, AMissingTriangleLeavesThreeBorderEdges) {
     EXPECT_EQ(t.border_edges, 3u);
     EXPECT_FALSE(t.closed());
     EXPECT_TRUE(t.oriented_manifold());  // a disc: a manifold with boundary
+    // The first border edge by its smaller vertex: the missing triangle's edges are the border.
+    const std::array<std::uint32_t, 3> gone = tetrahedron().triangles.back();
+    ASSERT_TRUE(t.defective_edge.has_value());
+    int on_gone = 0;
+    for (const std::uint32_t v : gone) on_gone += v == (*t.defective_edge)[0] || v == (*t.defective_edge)[1];
+    EXPECT_EQ(on_gone, 2);
 }
 
 TEST(MeshTopology, TetrahedraTouchingAtAVertexMakeItSingular) {
