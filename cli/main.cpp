@@ -442,7 +442,7 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
     std::vector<ratbez::Mesh> meshes;
     meshes.reserve(shapes.size());  // the parts point into it
     std::vector<ratbez::exporter::LibraryPart> parts;
-    std::vector<std::string> kept_modules, left_out;
+    std::vector<std::string> left_out;
     std::optional<ratbez::Error> first_refusal;
     const double share = kTessellationShare / static_cast<double>(shapes.size());
     for (std::size_t i = 0; i < shapes.size(); ++i) {
@@ -464,7 +464,6 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
             if (!first_refusal) first_refusal = named;
             continue;
         }
-        kept_modules.push_back(part.module_name);
         part.solid = &shape.solid;
         part.mesh = &meshes.back();
         part.tolerance = tolerance_for(shape, request);
@@ -489,7 +488,6 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
                 if (request.strict || parts.size() == 1) throw;
                 left_out.push_back(std::string(e.what()));
                 parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(e.part()));
-                kept_modules.erase(kept_modules.begin() + static_cast<std::ptrdiff_t>(e.part()));
             }
         }
     };
@@ -503,10 +501,12 @@ int export_several(const std::vector<ShapeSpec>& shapes, const ExportRequest& re
     if (failed) return failed;
     std::size_t triangles = 0;
     for (const auto& w : written) triangles += w.mesh.triangles.size();
+    std::vector<std::string> modules;
+    for (const auto& part : parts) modules.push_back(part.module_name);
     const bool one = parts.size() == 1;  // the others left out
     std::cout << "wrote " << request.output << " (" << parts.size() << (one ? " solid" : " solids")
               << (request.extension == ".scad"
-                      ? (one ? " in module " : " in modules ") + joined(kept_modules) + " placed by " + options.openscad.module_name + "()"
+                      ? (one ? " in module " : " in modules ") + joined(modules) + " placed by " + options.openscad.module_name + "()"
                       : std::string())
               << ", " << triangles << " triangles)\n";
     return 0;

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -181,26 +182,35 @@ private:
     std::size_t* reads_;
 };
 
-// Where a surface that intersects itself does so first, as "(x, y, z)": the middle of the first two triangles CGAL's
-// self_intersections reports, where the user can look (a STEP part whose vertex lies 2e-7 from another face,
-// which 3MF's float32 coordinates move through it). Taken only once does_self_intersect has said so; the search
-// stops at the first pair (an exception out of the output iterator, as does_self_intersect stops itself).
-std::string first_crossing(const SurfaceMesh& surface) {
-    using Face = SurfaceMesh::Face_index;
+using FacePair = std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>;
+
+// The first two triangles CGAL's self-intersection test finds crossing (a degenerate one paired with itself), or
+// none: does_self_intersect's own search, stopped at that pair by an exception out of the output iterator as it
+// stops itself, so that a refusal can say where (a STEP part whose vertex lies 2e-7 from another face, which 3MF's
+// float32 coordinates move through it).
+template <class NamedParameters>
+std::optional<FacePair> first_crossing(const SurfaceMesh& surface, const NamedParameters& parameters) {
     struct Found {
-        std::pair<Face, Face> faces;
+        FacePair faces;
     };
     try {
-        const auto stop_at_first = [](const std::pair<Face, Face>& pair) { throw Found{pair}; };
-        PMP::self_intersections(surface, boost::make_function_output_iterator(stop_at_first));
+        const auto stop_at_first = [](const FacePair& pair) { throw Found{pair}; };
+        PMP::self_intersections(surface, boost::make_function_output_iterator(stop_at_first), parameters);
     } catch (const Found& found) {
-        double sum[3] = {0, 0, 0};
-        for (const Face f : {found.faces.first, found.faces.second})
-            for (const auto v : CGAL::vertices_around_face(surface.halfedge(f), surface))
-                for (int i = 0; i < 3; ++i) sum[i] += surface.point(v)[i] / 6;
-        return "(" + format_number(sum[0]) + ", " + format_number(sum[1]) + ", " + format_number(sum[2]) + ")";
+        return found.faces;
     }
-    return "(a place it did not find again)";
+    return std::nullopt;
+}
+
+// The middle of two triangles, as "(x, y, z)".
+std::string place_of(const SurfaceMesh& surface, const FacePair& pair) {
+    double sum[3] = {0, 0, 0};
+    for (const auto f : {pair.first, pair.second})
+        for (const auto v : CGAL::vertices_around_face(surface.halfedge(f), surface))
+            for (int i = 0; i < 3; ++i) sum[i] += surface.point(v)[i] / 6;
+    std::string text = "(";
+    for (int i = 0; i < 3; ++i) text += format_number(sum[i]) + (i < 2 ? ", " : ")");
+    return text;
 }
 
 // The Surface_mesh of a soup that mesh_topology found an oriented 2-manifold, face by face (what
@@ -324,16 +334,17 @@ MeshReport check_mesh(const Mesh& mesh, const MeshCheckOptions& options) {
         if (options.check_self_intersections) {
             SurfaceMesh surface;
             build_surface(points, polygons, surface, options.progress);
+            std::optional<FacePair> crossing;
             if (options.progress) {
                 options.progress(kSelfIntersectionStart);
                 std::size_t reads = 0;
                 const PollingPointMap points_read(surface, options.progress, kSelfIntersectionStart, reads);
-                report.self_intersection_free =
-                    !PMP::does_self_intersect(surface, CGAL::parameters::vertex_point_map(points_read));
+                crossing = first_crossing(surface, CGAL::parameters::vertex_point_map(points_read));
             } else {
-                report.self_intersection_free = !PMP::does_self_intersect(surface);
+                crossing = first_crossing(surface, CGAL::parameters::all_default());
             }
-            if (!*report.self_intersection_free) report.problems.push_back("the surface intersects itself near " + first_crossing(surface));
+            report.self_intersection_free = !crossing;
+            if (crossing) report.problems.push_back("the surface intersects itself near " + place_of(surface, *crossing));
         }
     }
 

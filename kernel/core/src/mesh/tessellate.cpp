@@ -1324,7 +1324,7 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
                 std::string where;
                 if (const auto edge = topology.defective_edge) {
                     const Vec3 at = 0.5 * (mesh.vertices[(*edge)[0]] + mesh.vertices[(*edge)[1]]) * (asked.tolerance / o.tolerance);
-                    where = " near (" + detail::number(at.x) + ", " + detail::number(at.y) + ", " + detail::number(at.z) + ")";
+                    where = " near " + detail::format_point(at);
                 }
                 throw Error("solid", "its faces do not close up into a watertight mesh" + where +
                                          ": they overlap, fold back or touch each other (a profile that runs back over "
