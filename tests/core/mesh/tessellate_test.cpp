@@ -8,17 +8,21 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <tuple>
 #include <cstdint>
 #include <functional>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ratbez/bezier_curve.hpp"
+#include "ratbez/brep.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/deviation.hpp"
 #include "ratbez/error.hpp"
@@ -206,6 +210,75 @@ TEST(Tessellate, ConvexSolidsGetConvexMeshes) {
     }
     // A torus is not convex: its mesh keeps its inner half.
     EXPECT_GT(convexity_defect(tessellate(torus(10, 3), 0.01)), 1.0);
+}
+
+// A box 3 x 6 x 2 whose middle band (1 < y < 5) is sunk by `d` into every side, as a KiCad model of a cable
+// (SparkFun's Ag9900M) has it: the steps at y = 1 and y = 5 are left out, and the band's corners sit halfway,
+// d/2 off every face they bound, which the faces' tolerance d covers. The box is convex to its edges' sides.
+Solid box_with_a_sunken_band(double d) {
+    const double h = d / 2, size[3] = {3, 6, 2};
+    std::vector<std::pair<Vec3, VertexPtr>> vertices;
+    const auto vertex = [&](const Vec3& p) {
+        for (const auto& [q, v] : vertices)
+            if (norm(p - q) < 1e-12) return v;
+        return vertices.emplace_back(p, std::make_shared<const Vertex>(Vertex{p})).second;
+    };
+    std::vector<std::pair<std::array<const Vertex*, 2>, EdgePtr>> edges;
+    const auto coedge = [&](const VertexPtr& a, const VertexPtr& b) {
+        for (const auto& [ends, e] : edges)
+            if (ends[0] == b.get() && ends[1] == a.get()) return Coedge{e, true};
+        edges.push_back({{a.get(), b.get()}, std::make_shared<const Edge>(Edge{line_segment(a->point, b->point), a, b})});
+        return Coedge{edges.back().second};
+    };
+    std::vector<Face> faces;
+    // A face on the plane through `origin` with outward `normal`, bounded by `corners` in either turn.
+    const auto face = [&](Vec3 origin, Vec3 normal, std::vector<Vec3> corners) {
+        const Vec3 turn = cross(corners[1] - corners[0], corners[2] - corners[1]);
+        if (dot(turn, normal) < 0) std::reverse(corners.begin(), corners.end());
+        const Vec3 x = (corners[1] - corners[0]) / norm(corners[1] - corners[0]), y = cross(normal, x);
+        std::vector<Coedge> loop;
+        for (std::size_t k = 0; k < corners.size(); ++k) loop.push_back(coedge(vertex(corners[k]), vertex(corners[(k + 1) % corners.size()])));
+        faces.push_back(Face::planar(Plane{origin, x, y, normal}, {loop}, d));
+    };
+    // The point at height `y` on the side across axis k (0: x, 2: z) at its `high` end, towards the `m_high` end
+    // of the other axis m: a corner of the box at the ends, the band's corner between.
+    const auto at = [&](int k, bool high, double y, bool m_high) {
+        const double in = (y == 0 || y == size[1]) ? 0 : h;
+        const int m = 2 - k;
+        Vec3 p{0, y, 0};
+        (k == 0 ? p.x : p.z) = high ? size[k] - in : in;
+        (m == 0 ? p.x : p.z) = m_high ? size[m] - in : in;
+        return p;
+    };
+    for (int k : {0, 2})
+        for (bool high : {false, true}) {
+            Vec3 normal{};
+            (k == 0 ? normal.x : normal.z) = high ? 1 : -1;
+            const double levels[4] = {0, 1, 5, 6};
+            for (int piece = 0; piece < 3; ++piece) {
+                const double y0 = levels[piece], y1 = levels[piece + 1];
+                const Vec3 side = at(k, high, 0, false), on = piece == 1 ? side - normal * d : side;  // the band sunk by d
+                face(on, normal, {at(k, high, y0, false), at(k, high, y0, true), at(k, high, y1, true), at(k, high, y1, false)});
+            }
+        }
+    face({0, 0, 0}, {0, -1, 0}, {{0, 0, 0}, {3, 0, 0}, {3, 0, 2}, {0, 0, 2}});
+    face({0, 6, 0}, {0, 1, 0}, {{0, 6, 0}, {3, 6, 0}, {3, 6, 2}, {0, 6, 2}});
+    return Solid(std::move(faces));
+}
+
+TEST(Tessellate, AConvexSolidWhoseFacesMeetWithinTheirToleranceKeepsItsMeshUnhulled) {
+    // The hull of a convex solid's mesh is within the tolerance where the faces close up. These meet only within
+    // their tolerance d: the hull of the mesh's vertices was the box's 8 corners, up to d from the band's faces
+    // here and 1.4 d in the KiCad model, where the mesh with the band's corners keeps d / sqrt(2).
+    const double d = 0.02;
+    const Solid solid = box_with_a_sunken_band(d);
+    ASSERT_EQ(solid.faces().size(), 14u);
+    ASSERT_EQ(default_tolerance(solid), d);
+    const Mesh mesh = tessellate(solid, default_tolerance(solid));
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_EQ(mesh.vertices.size(), 16u);
+    EXPECT_LE(max_deviation(solid, mesh), 0.75 * d);  // d / sqrt(2): a band's corner off a face beside it
+    EXPECT_LE(max_surface_to_mesh_distance(solid, mesh), 0.75 * d);
 }
 
 TEST(Tessellate, AngleLimitIsHonoured) {

@@ -13,7 +13,9 @@
 // A solid whose construction record (construction.hpp) is a cylinder, a cone or a sphere is convex by that
 // record, without sampling: the record is its builder's promise, as for its closed-form volume.
 // tessellate() uses it to hand out convex meshes of convex solids (a mesh within the tolerance of a convex
-// solid has a convex hull within the same tolerance), which OpenSCAD's hull() and minkowski() take fast.
+// solid has a convex hull within the same tolerance), which OpenSCAD's hull() and minkowski() take fast;
+// not where faces read from a file meet only within a tolerance that matters beside the mesh's (the hull
+// bridges their gaps).
 
 #include "ratbez/brep.hpp"
 

@@ -1221,6 +1221,10 @@ std::pair<std::size_t, double> loosest_face(const Solid& solid) {
     return loosest;
 }
 
+// The largest share of the mesh tolerance a face's own tolerance may take for the mesh of a convex solid to be
+// hulled: gaps between faces up to twice that can add to the hull's deviation, a fraction of a percent.
+constexpr double kHullGap = 1e-3;
+
 }  // namespace
 
 double default_tolerance(const Solid& solid) {
@@ -1339,7 +1343,11 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
             // A convex solid gets a convex mesh: the straddling offsets follow each face's own spacing, and a
             // sphere's came out with half its triangles a little out of plane with their neighbours, which
             // sends OpenSCAD's minkowski() from its convex fast path to decomposition (0.96 s -> 570 s).
-            if (is_convex(s)) return convex_hull(mesh);  // a few flips where the mesh is nearly convex already
+            // The hull keeps the tolerance where the faces close up (convex_hull.hpp). Faces read with a loose
+            // tolerance leave gaps of that size, which the hull bridges: a KiCad box whose 0.02 bevels lie
+            // within its file's 0.02 came out as its 8 corners, 0.028 from its faces (0.014 unhulled).
+            if (is_convex(s) && loosest_face(s).second <= kHullGap * o.tolerance)
+                return convex_hull(mesh);  // a few flips where the mesh is nearly convex already
             return mesh;
         });
     };
