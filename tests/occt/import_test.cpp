@@ -38,6 +38,8 @@
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepLib.hxx>
+#include <Geom_BezierCurve.hxx>
+#include <ShapeFix_Shell.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_Circle.hxx>
@@ -705,6 +707,64 @@ TEST(ImportShapes, ASolidWithAVoidHasTwoShells) {
     const TopoDS_Solid back = to_occt(solid);
     EXPECT_TRUE(BRepCheck_Analyzer(back).IsValid());
     EXPECT_NEAR(occt_volume(back), solid.volume(), 1e-6 * solid.volume());
+}
+
+// A tetrahedron whose edge from v0 to v1 was written twice, as a line for the bottom face and as a curve bulging
+// `bulge` out of it for the front face, with a face of no area between the two (a Fusion 360 mount of the Xol
+// toolhead has such slivers between a cone and a cylinder). Each part is within the curve's tolerance `bulge`,
+// and OpenCASCADE's BRepCheck calls it valid.
+TopoDS_Solid tetrahedron_with_a_sliver(double bulge) {
+    const gp_Pnt p0(0, 0, 0), p1(2, 0, 0), p2(1, 2, 0), p3(1, 0.7, 1.5);
+    const TopoDS_Vertex v0 = vertex_at(p0), v1 = vertex_at(p1), v2 = vertex_at(p2), v3 = vertex_at(p3);
+    const TopoDS_Edge line = BRepBuilderAPI_MakeEdge(v0, v1).Edge();
+    // A quadratic Bezier whose middle control point lies 2 bulge out along the bisector of the two faces' normals:
+    // its middle, bulge.
+    TColgp_Array1OfPnt poles(1, 3);
+    poles(1) = p0, poles(2) = gp_Pnt(1, -2 * bulge / std::sqrt(2), -2 * bulge / std::sqrt(2)), poles(3) = p1;
+    const TopoDS_Edge bent = BRepBuilderAPI_MakeEdge(new Geom_BezierCurve(poles), v0, v1).Edge();
+    BRep_Builder builder;
+    builder.UpdateEdge(bent, bulge);
+    const auto edge = [](const TopoDS_Vertex& a, const TopoDS_Vertex& b) { return BRepBuilderAPI_MakeEdge(a, b).Edge(); };
+    const TopoDS_Edge e12 = edge(v1, v2), e20 = edge(v2, v0), e13 = edge(v1, v3), e30 = edge(v3, v0), e23 = edge(v2, v3);
+    const auto face = [](const gp_Pnt& on, const gp_Dir& normal, const TopoDS_Wire& wire) {
+        return BRepBuilderAPI_MakeFace(gp_Pln(on, normal), wire).Face();
+    };
+    const auto normal = [](const gp_Pnt& a, const gp_Pnt& b, const gp_Pnt& c) { return gp_Dir(gp_Vec(a, b).Crossed(gp_Vec(a, c))); };
+    TopoDS_Shell shell;
+    builder.MakeShell(shell);
+    builder.Add(shell, face(p0, normal(p0, p1, p2), BRepBuilderAPI_MakeWire(line, e12, e20).Wire()));
+    builder.Add(shell, face(p0, normal(p0, p1, p3), BRepBuilderAPI_MakeWire(bent, e13, e30).Wire()));
+    builder.Add(shell, face(p0, normal(p0, p2, p3), BRepBuilderAPI_MakeWire(e20, e23, e30).Wire()));
+    builder.Add(shell, face(p1, normal(p1, p2, p3), BRepBuilderAPI_MakeWire(e12, e23, e13).Wire()));
+    builder.Add(shell, face(p0, gp_Dir(0, 1, -1), BRepBuilderAPI_MakeWire(line, bent).Wire()));  // the sliver
+    ShapeFix_Shell orient(shell);
+    orient.Perform();
+    TopoDS_Solid solid;
+    builder.MakeSolid(solid);
+    builder.Add(solid, orient.Shell());
+    BRepLib::OrientClosedSolid(solid);
+    return solid;
+}
+
+// The sliver goes, its two edges one (sliver_faces.hpp): a tetrahedron of four faces that meshes closed (the
+// mount's sliver triangles faced whichever way its two edges' samples put them, and its mesh did not close).
+TEST(ImportShapes, AFaceOfNoAreaBetweenTwoEdgesIsTakenOutAndTheEdgesJoined) {
+    const double bulge = 1e-3;
+    const TopoDS_Solid sliver = tetrahedron_with_a_sliver(bulge);
+    ASSERT_TRUE(BRepCheck_Analyzer(sliver).IsValid());
+    const double volume = 2 * 2 * 1.5 / 6;  // |det(p1 - p0, p2 - p0, p3 - p0)| / 6
+    const Solid solid = from_occt(sliver);
+    EXPECT_EQ(solid.faces().size(), 4u);
+    EXPECT_NEAR(solid.volume(), volume, 4 * bulge);
+    const Mesh mesh = tessellate(solid, default_tolerance(solid));
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_TRUE(mesh_topology(mesh).oriented_manifold());
+    EXPECT_NEAR(mesh.volume(), volume, 4 * bulge);
+    // A face of two edges far apart stays: a half cylinder's ends, each a half circle and its diameter.
+    const TopoDS_Shape half = BRepPrimAPI_MakeCylinder(1, 2, pi).Shape();
+    std::size_t faces = 0;
+    for (TopExp_Explorer it(half, TopAbs_FACE); it.More(); it.Next()) ++faces;
+    EXPECT_EQ(from_occt(half).faces().size(), faces);
 }
 
 TEST_F(Import, BadFilesAreRefusedNamingThePath) {

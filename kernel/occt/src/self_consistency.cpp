@@ -77,6 +77,15 @@ double allowed(double tolerance_a, double tolerance_b, const gp_Pnt& at) {
 // (Importer::plausible_tolerance), so that a vertex or a p-curve moved visibly is still refused.
 double file_slack(double size, double coordinate_scale) { return std::max(1e-9 * coordinate_scale, 1e-4 * size); }
 
+double file_tolerance(const TopoDS_Face& face) {
+    double tolerance = BRep_Tool::Tolerance(face);
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next())
+        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Edge(it.Current())));
+    for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next())
+        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())));
+    return tolerance;
+}
+
 namespace {
 
 bool within_slack(double gap, double limit, const gp_Pnt& at, double size) { return gap <= limit + file_slack(size, coordinate_scale(at)); }

@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
 #include "ratbez/occt/shape_import.hpp"
@@ -27,5 +28,9 @@ std::vector<SolidLeftOut> solid_faults(const TopoDS_Shape& shape);
 // tolerance raised to the gap: its rounding (1e-9 of `coordinate_scale`, the largest coordinate there, at least 1)
 // or a ten-thousandth of the solid's `size`.
 double file_slack(double size, double coordinate_scale);
+
+// The largest tolerance OpenCASCADE gives the face, its edges and its vertices: how far the file lets its
+// boundary curves keep from the surface and from each other.
+double file_tolerance(const TopoDS_Face& face);
 
 }  // namespace ratbez::occt::detail

@@ -72,6 +72,7 @@
 #include "ratbez/error.hpp"
 #include "ratbez/occt/geometry.hpp"
 #include "self_consistency.hpp"
+#include "sliver_faces.hpp"
 
 namespace ratbez::occt {
 namespace {
@@ -214,17 +215,6 @@ struct NaturalRectangle {
     std::array<std::optional<TopoDS_Edge>, 4> sides;  // oriented as the face uses them; OCCT's parameters
 };
 
-// The largest tolerance OpenCASCADE gives the face, its edges and its vertices: how far the file lets its
-// boundary curves keep from the surface and from each other.
-double file_tolerance(const TopoDS_Face& face) {
-    double tolerance = BRep_Tool::Tolerance(face);
-    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next())
-        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Edge(it.Current())));
-    for (TopExp_Explorer it(face, TopAbs_VERTEX); it.More(); it.Next())
-        tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(it.Current())));
-    return tolerance;
-}
-
 // A rectangle of OCCT parameters made to fit the surface: a direction that closes with a period (a full turn)
 // spans at most that period, and a bounded direction (a sphere's latitude, a B-spline's domain) stays inside
 // its bounds. Files overshoot both by rounding: FreeCAD writes a full turn as 6.28318530717959 (one ulp above
@@ -298,18 +288,19 @@ std::array<double, 4> trimmed_rectangle(const TopoDS_Face& face, const Handle(Ge
     };
     widen(u0, u1, basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b);
     widen(v0, v1, basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d);
-    return snapped(basis, {u0, u1, v0, v1}, file_tolerance(face));
+    return snapped(basis, {u0, u1, v0, v1}, detail::file_tolerance(face));
 }
 
 class Importer {
 public:
-    explicit Importer(const TopoDS_Shape& solid) : solid_(solid) {
-        TopExp::MapShapes(solid, TopAbs_VERTEX, vertex_index_);
-        TopExp::MapShapes(solid, TopAbs_EDGE, edge_index_);
+    // Sliver faces go first (sliver_faces.hpp): no mesh closes across them.
+    explicit Importer(const TopoDS_Shape& solid) : solid_(detail::without_sliver_faces(solid)) {
+        TopExp::MapShapes(solid_, TopAbs_VERTEX, vertex_index_);
+        TopExp::MapShapes(solid_, TopAbs_EDGE, edge_index_);
         vertices_.resize(static_cast<std::size_t>(vertex_index_.Extent()));
         edges_.resize(static_cast<std::size_t>(edge_index_.Extent()));
         Bnd_Box box;
-        BRepBndLib::Add(solid, box);
+        BRepBndLib::Add(solid_, box);
         if (!box.IsVoid()) size_ = std::sqrt(box.SquareExtent());
     }
 
@@ -372,8 +363,15 @@ private:
         return !surface.IsNull() && surface->IsKind(STANDARD_TYPE(Geom_Plane));
     }
 
+    // The place of an edge or vertex of the solid in its table (a healed edge not mapped would write past it).
+    static std::size_t index_in(const TopTools_IndexedMapOfShape& map, const TopoDS_Shape& shape) {
+        const int index = map.FindIndex(shape);
+        require(index > 0, "shape", "an edge or vertex of a face is not the solid's");
+        return static_cast<std::size_t>(index - 1);
+    }
+
     VertexPtr vertex(const TopoDS_Vertex& v) {
-        VertexPtr& made = vertices_[static_cast<std::size_t>(vertex_index_.FindIndex(v) - 1)];
+        VertexPtr& made = vertices_[index_in(vertex_index_, v)];
         if (!made) made = std::make_shared<const Vertex>(Vertex{from_occt(BRep_Tool::Pnt(v))});
         return made;
     }
@@ -384,7 +382,7 @@ private:
         bool flipped = false;
         bool same_parameter = false;  // our curve has OCCT's parameter (the 3D curve converted as it is)
     };
-    SharedEdge& shared(const TopoDS_Edge& e) { return edges_[static_cast<std::size_t>(edge_index_.FindIndex(e) - 1)]; }
+    SharedEdge& shared(const TopoDS_Edge& e) { return edges_[index_in(edge_index_, e)]; }
 
     // The OCCT edge's ends in its FORWARD direction.
     static std::pair<TopoDS_Vertex, TopoDS_Vertex> ends(const TopoDS_Edge& e) {
@@ -485,7 +483,7 @@ private:
             uses.emplace_back(e, samples);
         }
         if (!(u1 > u0 && v1 > v0)) return std::nullopt;
-        NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}, file_tolerance(face), /*natural=*/true), {}};
+        NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}, detail::file_tolerance(face), /*natural=*/true), {}};
         // Pcurves made by projection (STEP files without them) sit on the sides to about 1e-7 of the rectangle.
         const double tol_u = 1e-6 * (u1 - u0), tol_v = 1e-6 * (v1 - v0);
         for (const auto& use : uses) {
@@ -876,12 +874,12 @@ private:
         return kept ? farthest * (1 + 1e-9) : 0;
     }
 
-    // The file's tolerance of the face (file_tolerance), refused past 1% of the model's size: a boundary that
+    // The file's tolerance of the face (detail::file_tolerance), refused past 1% of the model's size: a boundary that
     // far from its surface is a file whose geometry disagrees with itself, not rounding (the soak: a plane
     // moved 16 off its loops, which OpenCASCADE's reader covered with tolerances of 16 on a 30 x 20 x 8 part;
     // the volume followed the plane and the mesh the loops, 1,587 against 4,552).
     double plausible_tolerance(const TopoDS_Face& face) const {
-        const double tolerance = file_tolerance(face);
+        const double tolerance = detail::file_tolerance(face);
         require(tolerance <= 1e-2 * size_, "tolerance", [&] {
             return "the file lets the face's boundary keep " + exact_number(tolerance) + " from its surface, more than 1% of "
                    "the model's size " + exact_number(size_) + ": its geometry does not agree with itself";

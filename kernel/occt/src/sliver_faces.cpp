@@ -1,0 +1,80 @@
+// Sliver faces taken out of a read solid (sliver_faces.hpp).
+
+#include "sliver_faces.hpp"
+
+#include "self_consistency.hpp"
+
+#include <ShapeAnalysis_CheckSmallFace.hxx>
+#include <ShapeBuild_ReShape.hxx>
+#include <ShapeFix_FixSmallFace.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <vector>
+
+namespace ratbez::occt::detail {
+
+namespace {
+
+struct Sliver {
+    TopoDS_Face face;
+    TopoDS_Edge first, second;  // the two edges that are one
+    double tolerance = 0;       // within which they are
+};
+
+// The faces with two vertices and two edges that keep within twice the face's file tolerance of each other along
+// their length (CheckSingleStrip): each edge may keep its tolerance from where the other is, as OpenCASCADE lets
+// two things the file puts together be apart by the sum of their tolerances. The check's own choice, the
+// vertices' tolerance alone, missed the mount's lines, whose ends lie 8e-4 from their vertices.
+std::vector<Sliver> slivers_of(const TopoDS_Shape& solid) {
+    std::vector<Sliver> found;
+    ShapeAnalysis_CheckSmallFace check;
+    for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next()) {
+        const TopoDS_Face& face = TopoDS::Face(it.Current());
+        TopTools_IndexedMapOfShape edges;
+        for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) edges.Add(e.Current());
+        if (edges.Extent() != 2) continue;  // a cheap look first: CheckSingleStrip measures the edges apart
+        Sliver sliver{face, {}, {}, 2 * file_tolerance(face)};
+        if (check.CheckSingleStrip(face, sliver.first, sliver.second, sliver.tolerance) && !sliver.first.IsSame(sliver.second))
+            found.push_back(sliver);
+    }
+    return found;
+}
+
+}  // namespace
+
+TopoDS_Shape without_sliver_faces(const TopoDS_Shape& solid) {
+    const std::vector<Sliver> slivers = slivers_of(solid);
+    if (slivers.empty()) return solid;
+    try {
+        ShapeFix_FixSmallFace fix;
+        fix.Init(solid);
+        fix.SetContext(new ShapeBuild_ReShape);
+        std::vector<TopoDS_Edge> joined;
+        for (Sliver sliver : slivers) {
+            if (!fix.ReplaceInCaseOfStrip(sliver.face, sliver.first, sliver.second, sliver.tolerance)) return solid;
+            fix.RemoveFacesInCaseOfStrip(sliver.face);
+            joined.push_back(sliver.first);
+        }
+        TopoDS_Shape healed = fix.Context()->Apply(solid);
+        // The faces beside a sliver now run along an edge made from one of the two: each gets its curve on it.
+        for (TopExp_Explorer it(healed, TopAbs_FACE); it.More(); it.Next()) {
+            const TopoDS_Face& face = TopoDS::Face(it.Current());
+            bool beside = false;
+            for (TopExp_Explorer e(face, TopAbs_EDGE); e.More() && !beside; e.Next())
+                for (const TopoDS_Edge& edge : joined)
+                    beside = beside || e.Current().IsSame(fix.Context()->Apply(edge));
+            if (beside) fix.Context()->Replace(face, fix.FixFace(face));
+        }
+        healed = fix.Context()->Apply(healed);
+        return healed.IsNull() ? solid : healed;
+    } catch (const Standard_Failure&) {
+        return solid;  // as read: the conversion and the mesh say what is wrong with it
+    }
+}
+
+}  // namespace ratbez::occt::detail

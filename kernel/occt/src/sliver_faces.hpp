@@ -1,0 +1,23 @@
+#pragma once
+// Faces of no area between two edges, taken out of a solid read from a file before it is converted. Internal
+// to kernel/occt.
+//
+// Exporters leave such a face where two faces meet along one edge that they wrote twice: a Fusion 360 mount of
+// the Xol toolhead has a planar face bounded by two lines between the same two vertices, 6e-4 apart in the
+// middle within the file's 0.009, a cone on one side and a cylinder on the other. OpenCASCADE's BRepCheck calls
+// it valid, but no mesh closes across it: each line is sampled on its own, and the sliver's triangles face
+// whichever way the samples put them. OpenCASCADE's shape healing has the case (ShapeAnalysis_CheckSmallFace::
+// CheckSingleStrip: two vertices, two edges within tolerance of each other): the face goes, its two edges
+// become one shared by the faces beside it (ShapeFix_FixSmallFace::ReplaceInCaseOfStrip), and those faces get
+// their curves on it projected (ShapeFix_Face). Only faces with two vertices are taken: its search for thin
+// faces of four edges also took fillets narrower than the tolerance, which moved volumes by 1e-4.
+
+#include <TopoDS_Shape.hxx>
+
+namespace ratbez::occt::detail {
+
+// `solid` without its sliver faces (above), the faces beside them sharing one edge; `solid` itself when it has
+// none.
+TopoDS_Shape without_sliver_faces(const TopoDS_Shape& solid);
+
+}  // namespace ratbez::occt::detail
