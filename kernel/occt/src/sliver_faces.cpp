@@ -4,6 +4,7 @@
 
 #include "self_consistency.hpp"
 
+#include <BRepCheck_Analyzer.hxx>
 #include <ShapeAnalysis_CheckSmallFace.hxx>
 #include <ShapeBuild_ReShape.hxx>
 #include <ShapeFix_FixSmallFace.hxx>
@@ -71,7 +72,8 @@ TopoDS_Shape without_sliver_faces(const TopoDS_Shape& solid) {
             if (beside) fix.Context()->Replace(face, fix.FixFace(face));
         }
         healed = fix.Context()->Apply(healed);
-        return healed.IsNull() ? solid : healed;
+        // Healing that leaves the solid invalid is not taken: the solid goes on as read, and its mesh says why.
+        return !healed.IsNull() && BRepCheck_Analyzer(healed).IsValid() ? healed : solid;
     } catch (const Standard_Failure&) {
         return solid;  // as read: the conversion and the mesh say what is wrong with it
     }
