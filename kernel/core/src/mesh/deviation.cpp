@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -39,6 +40,7 @@
 #include "geometry/subdivision.hpp"
 #include "geometry/surface_evaluator.hpp"
 #include "mesh/domain_triangulation.hpp"
+#include "mesh/segment_search.hpp"
 #include "mesh/triangle_grid.hpp"
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/bezier_surface.hpp"
@@ -99,6 +101,19 @@ struct PlanarRegion {
     std::vector<Curve> curves;
     std::vector<Segment> segments;
     double band = 0;  // how far the curves stray from their polyline at most (sampled): the even-odd rule's margin
+    detail::EvenOddBands sides;              // the even-odd rule on the segments (index())
+    detail::NearestSegment nearest_segment;  // the segments in the plane, z = 0 (index())
+
+    void index() {
+        std::vector<std::array<double, 4>> flat;
+        std::vector<std::array<Vec3, 2>> lines;
+        for (const Segment& s : segments) {
+            flat.push_back({s.a.x, s.a.y, s.b.x, s.b.y});
+            lines.push_back({Vec3{s.a.x, s.a.y, 0}, Vec3{s.b.x, s.b.y, 0}});
+        }
+        sides = detail::EvenOddBands(std::move(flat));
+        nearest_segment = detail::NearestSegment(std::move(lines));
+    }
 
     detail::Point2 to_plane(const Vec3& p) const {
         const Vec3 d = p - plane.origin;
@@ -113,21 +128,10 @@ struct PlanarRegion {
     double distance_to(const Vec3& p) const {
         const double height = dot(p - plane.origin, plane.normal);
         const detail::Point2 q = to_plane(p);
-        double best = std::numeric_limits<double>::infinity();
-        const Segment* nearest = nullptr;
-        double fraction = 0;
-        bool crossed = false;  // the even-odd rule on the closed polyline (a ray from q towards +x)
-        for (const Segment& s : segments) {
-            if ((s.a.y <= q.y) != (s.b.y <= q.y) && q.x < s.a.x + (q.y - s.a.y) / (s.b.y - s.a.y) * (s.b.x - s.a.x)) crossed = !crossed;
-            const double ex = s.b.x - s.a.x, ey = s.b.y - s.a.y;
-            const double len2 = ex * ex + ey * ey;
-            double f = len2 > 0 ? ((q.x - s.a.x) * ex + (q.y - s.a.y) * ey) / len2 : 0;
-            f = std::clamp(f, 0.0, 1.0);
-            const double dx = s.a.x + f * ex - q.x, dy = s.a.y + f * ey - q.y;
-            const double d2 = dx * dx + dy * dy;
-            if (d2 < best) best = d2, nearest = &s, fraction = f;
-        }
-        if (nearest == nullptr) return std::abs(height);
+        const std::optional<detail::NearestSegment::Found> found = nearest_segment.nearest(Vec3{q.x, q.y, 0});
+        if (!found) return std::abs(height);
+        const double best = found->squared_distance, fraction = found->fraction;
+        const Segment* nearest = &segments[found->index];
         std::size_t index = nearest->curve;
         double t = detail::newton_foot_on_curve(*curves[index].curve, p, curves[index].curve->domain(),
                                                nearest->ta + fraction * (nearest->tb - nearest->ta));
@@ -161,7 +165,7 @@ struct PlanarRegion {
         // the corners (a loop that doubles back on itself, as the spike where a gull-wing lead's arc meets a
         // short line retracing it, defeats the tangent rules below). Closer, the rules at the foot decide; a
         // wrong decision there errs by less than the band.
-        if (std::sqrt(best) > 2 * band) return crossed ? std::abs(height) : distance(p, foot);
+        if (std::sqrt(best) > 2 * band) return sides.inside(q.x, q.y) ? std::abs(height) : distance(p, foot);
         const Curve& curve = curves[index];
         const Interval dom = curve.curve->domain();
         const detail::Point2 f2 = to_plane(foot);
@@ -281,6 +285,7 @@ PlanarRegion make_region(const Face& face) {
             }
         }
     }
+    region.index();
     return region;
 }
 
@@ -300,99 +305,32 @@ struct TrimmedRegion {
 
     bool empty() const { return uv.empty(); }
 
-    // Even-odd rule: the number of boundary segments a ray from (u, v) towards +u crosses; only the segments
-    // of the band of v the point is in (index()).
-    bool contains(double u, double v) const {
-        if (!(v >= v_min_ && v <= v_max_)) return false;
-        bool inside = false;
-        for (const std::uint32_t k : bands_[band_of(v)]) {
-            const Segment2& s = uv[k];
-            if ((s.v0 <= v) != (s.v1 <= v) && u < s.u0 + (v - s.v0) / (s.v1 - s.v0) * (s.u1 - s.u0)) inside = !inside;
-        }
-        return inside;
-    }
+    // Even-odd rule on the p-curves' polyline.
+    bool contains(double u, double v) const { return sides_.inside(u, v); }
 
-    // The distance from p to the nearest boundary edge: the nearest polyline segment (searched in growing
-    // boxes of the uniform grid of segment middles, index()), then Newton on its curve.
+    // The distance from p to the nearest boundary edge: the nearest polyline segment, then Newton on its curve.
     double boundary_distance(const Vec3& p) const {
-        double best = std::numeric_limits<double>::infinity();
-        const Segment3* nearest = nullptr;
-        double fraction = 0;
-        const auto consider = [&](const Segment3& s) {
-            const Vec3 e = s.b - s.a;
-            const double length2 = dot(e, e);
-            const double f = length2 > 0 ? std::clamp(dot(p - s.a, e) / length2, 0.0, 1.0) : 0.0;
-            const double d = distance(p, s.a + e * f);
-            if (d < best) best = d, nearest = &s, fraction = f;
-        };
-        // Every segment lies within half_length_ of its middle: a box of half-width r + half_length_ around p
-        // holds every segment closer than r.
-        for (double r = cell_;; r *= 2) {
-            visit_cells(p, r + half_length_, [&](std::uint32_t k) { consider(edges[k]); });
-            if (best <= r || r > 4 * extent_) break;
-        }
-        if (nearest == nullptr) return best;
-        const double t = detail::newton_foot_on_curve(*nearest->curve, p, nearest->curve->domain(),
-                                                      nearest->ta + fraction * (nearest->tb - nearest->ta));
-        return std::min(best, distance(p, nearest->curve->point(t)));
+        const std::optional<detail::NearestSegment::Found> found = nearest_.nearest(p);
+        if (!found) return std::numeric_limits<double>::infinity();
+        const Segment3& nearest = edges[found->index];
+        const double t = detail::newton_foot_on_curve(*nearest.curve, p, nearest.curve->domain(),
+                                                      nearest.ta + found->fraction * (nearest.tb - nearest.ta));
+        return std::min(std::sqrt(found->squared_distance), distance(p, nearest.curve->point(t)));
     }
 
-    // The search structures: bands of v for the segments in (u, v), a uniform grid of the 3D segments' middles.
+    // The search structures of the (u, v) and the 3D polylines.
     void index() {
-        if (uv.empty()) return;
-        v_min_ = std::numeric_limits<double>::infinity(), v_max_ = -v_min_;
-        for (const Segment2& s : uv) v_min_ = std::min({v_min_, s.v0, s.v1}), v_max_ = std::max({v_max_, s.v0, s.v1});
-        bands_.assign(std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(static_cast<double>(uv.size()))), 1, 4096), {});
-        for (std::size_t k = 0; k < uv.size(); ++k) {
-            const auto [lo, hi] = std::minmax(uv[k].v0, uv[k].v1);
-            for (std::size_t b = band_of(lo), end = band_of(hi); b <= end; ++b) bands_[b].push_back(static_cast<std::uint32_t>(k));
-        }
-        if (edges.empty()) return;
-        lo_ = hi_ = 0.5 * (edges.front().a + edges.front().b);
-        for (const Segment3& e : edges) {
-            const Vec3 m = 0.5 * (e.a + e.b);
-            lo_ = {std::min(lo_.x, m.x), std::min(lo_.y, m.y), std::min(lo_.z, m.z)};
-            hi_ = {std::max(hi_.x, m.x), std::max(hi_.y, m.y), std::max(hi_.z, m.z)};
-            half_length_ = std::max(half_length_, 0.5 * distance(e.a, e.b));
-        }
-        extent_ = std::max({hi_.x - lo_.x, hi_.y - lo_.y, hi_.z - lo_.z, 1e-300});
-        const double cells = std::max(1.0, std::cbrt(static_cast<double>(edges.size())));
-        cell_ = std::max(extent_ / cells, 2 * half_length_);
-        for (int a = 0; a < 3; ++a) dims_[static_cast<std::size_t>(a)] = 1 + static_cast<int>(((&hi_.x)[a] - (&lo_.x)[a]) / cell_);
-        grid_.assign(static_cast<std::size_t>(dims_[0]) * static_cast<std::size_t>(dims_[1]) * static_cast<std::size_t>(dims_[2]), {});
-        for (std::size_t k = 0; k < edges.size(); ++k) grid_[flat(cell_of(0.5 * (edges[k].a + edges[k].b)))].push_back(static_cast<std::uint32_t>(k));
+        std::vector<std::array<double, 4>> flat;
+        for (const Segment2& s : uv) flat.push_back({s.u0, s.v0, s.u1, s.v1});
+        sides_ = detail::EvenOddBands(std::move(flat));
+        std::vector<std::array<Vec3, 2>> lines;
+        for (const Segment3& e : edges) lines.push_back({e.a, e.b});
+        nearest_ = detail::NearestSegment(std::move(lines));
     }
 
 private:
-    std::size_t band_of(double v) const {
-        const double f = (v - v_min_) / std::max(v_max_ - v_min_, 1e-300);
-        return std::min(bands_.size() - 1, static_cast<std::size_t>(std::max(0.0, f) * static_cast<double>(bands_.size())));
-    }
-    std::array<int, 3> cell_of(const Vec3& p) const {
-        std::array<int, 3> c{};
-        for (int a = 0; a < 3; ++a)
-            c[static_cast<std::size_t>(a)] = std::clamp(static_cast<int>(std::floor(((&p.x)[a] - (&lo_.x)[a]) / cell_)), 0, dims_[static_cast<std::size_t>(a)] - 1);
-        return c;
-    }
-    std::size_t flat(const std::array<int, 3>& c) const {
-        return (static_cast<std::size_t>(c[0]) * static_cast<std::size_t>(dims_[1]) + static_cast<std::size_t>(c[1])) *
-                   static_cast<std::size_t>(dims_[2]) + static_cast<std::size_t>(c[2]);
-    }
-    template <class Visit>
-    void visit_cells(const Vec3& p, double r, Visit&& visit) const {
-        const std::array<int, 3> a = cell_of(p - Vec3{r, r, r}), b = cell_of(p + Vec3{r, r, r});
-        for (int x = a[0]; x <= b[0]; ++x)
-            for (int y = a[1]; y <= b[1]; ++y)
-                for (int z = a[2]; z <= b[2]; ++z)
-                    for (const std::uint32_t k : grid_[flat({x, y, z})]) visit(k);
-    }
-
-    double v_min_ = 0, v_max_ = 0;
-    std::vector<std::vector<std::uint32_t>> bands_;
-    Vec3 lo_, hi_;
-    double cell_ = 1, half_length_ = 0, extent_ = 1;
-    std::array<int, 3> dims_{1, 1, 1};
-    std::vector<std::vector<std::uint32_t>> grid_;
+    detail::EvenOddBands sides_;
+    detail::NearestSegment nearest_;
 };
 
 // 64 parameters per knot span of a curve (its end included), per weight-certified piece at least 8; a curve of
@@ -592,7 +530,13 @@ public:
         // patch the point faces (a polyline profile), and only a start in the right patch finds it.
         constexpr std::size_t kSeedsPerFace = 4;
         using Candidate = std::pair<double, const Seed*>;
-        std::vector<std::vector<Candidate>> best(solid_.faces().size());
+        // The faces within reach, few of a solid's many (a keyboard case's 991): a short list, not a slot per face.
+        std::vector<std::pair<std::uint32_t, std::vector<Candidate>>> best;
+        const auto best_of = [&](std::uint32_t f) -> std::vector<Candidate>& {
+            for (auto& [face_index, list] : best)
+                if (face_index == f) return list;
+            return best.emplace_back(f, std::vector<Candidate>{}).second;
+        };
         std::unordered_map<std::uint64_t, std::vector<Candidate>> per_cell;
         grid_->for_each_near(p, radius, [&](const Seed& s) {
             const double d = distance(s.point, p);
@@ -602,7 +546,7 @@ public:
             // lock body (10.9 s for 2,242 triangles).
             if (d > nearest + 3 * face_spacing_[s.face]) return;
             per_cell[(std::uint64_t{s.face} << 32) | s.patch].emplace_back(d, &s);
-            auto& list = best[s.face];
+            auto& list = best_of(s.face);
             if (list.size() == kSeedsPerFace && d >= list.back().first) return;
             if (list.size() == kSeedsPerFace) list.pop_back();
             list.insert(std::upper_bound(list.begin(), list.end(), std::make_pair(d, &s),
@@ -616,14 +560,14 @@ public:
             if (foot.distance < result) result = foot.distance, face = static_cast<std::uint32_t>(f), warm = foot;
             return result <= enough;
         };
-        for (std::size_t f = 0; f < best.size(); ++f) {
-            if (best[f].empty()) continue;
+        std::sort(best.begin(), best.end(), [](const auto& a, const auto& b) { return a.first < b.first; });  // in face order
+        for (const auto& [f, seeds] : best) {
             if (!regions_[f].curves.empty()) {
                 if (take(f, Foot{0, 0, regions_[f].distance_to(p)})) return result;
                 continue;
             }
             const detail::SurfaceEvaluator& s = *evaluators_[f];
-            for (const auto& [seed_distance, seed] : best[f])
+            for (const auto& [seed_distance, seed] : seeds)
                 if (take(f, detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, seed->u, seed->v, {50, enough}))) return result;
         }
         // Each cell's best seed, with Newton over the whole face and kept inside the cell. Where extreme
@@ -661,7 +605,7 @@ public:
                 const Seed& seed = *seed_pointer;
                 if (take(seed.face, detail::newton_foot_on_surface(s, p, box, seed.u, seed.v, {50, enough}))) return result;
             }
-            const auto& firsts = best[first.face];
+            const auto& firsts = best_of(first.face);
             if (std::none_of(firsts.begin(), firsts.end(), [&](const Candidate& c) { return c.second == &first; }))
                 if (take(first.face, detail::newton_foot_on_surface(s, p, {s.domain_u(), s.domain_v()}, first.u, first.v, {50, enough}))) return result;
         }

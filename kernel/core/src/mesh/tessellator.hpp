@@ -17,6 +17,7 @@
 //                                                             (CGAL's constrained Delaunay triangulation)
 //   a convex solid's mesh          convex_hull.cpp            convex_hull (ratbez/convex_hull.hpp)
 //   the mesh measured afterwards   deviation.cpp              max_deviation (deviation.hpp)
+//   its boundary polyline searches segment_search.hpp/.cpp     EvenOddBands, NearestSegment
 //
 // Not installed, not part of the public API.
 
