@@ -765,6 +765,18 @@ TEST(ImportShapes, AFaceOfNoAreaBetweenTwoEdgesIsTakenOutAndTheEdgesJoined) {
     std::size_t faces = 0;
     for (TopExp_Explorer it(half, TopAbs_FACE); it.More(); it.Next()) ++faces;
     EXPECT_EQ(from_occt(half).faces().size(), faces);
+    // So does a disc of two half circles the second of which runs on its circle's parameters past the period,
+    // [2 pi, 3 pi], as a KiCad Hammond box's: OpenCASCADE's strip check cannot trim that arc and throws (it
+    // stopped the file's reading).
+    const Handle(Geom_Circle) circle = new Geom_Circle(gp_Ax2(gp::Origin(), gp::DZ()), 1);
+    const TopoDS_Vertex left = vertex_at(gp_Pnt(-1, 0, 0)), right = vertex_at(gp_Pnt(1, 0, 0));
+    const TopoDS_Edge lower = BRepBuilderAPI_MakeEdge(circle, left, right, pi, 2 * pi).Edge();
+    const TopoDS_Edge upper = BRepBuilderAPI_MakeEdge(circle, right, left, 0, pi).Edge();
+    BRep_Builder().Range(upper, 2 * pi, 3 * pi);  // MakeEdge brings the range back into the period
+    const TopoDS_Face disc = BRepBuilderAPI_MakeFace(gp_Pln(gp::XOY()), BRepBuilderAPI_MakeWire(lower, upper).Wire()).Face();
+    const TopoDS_Shape slab = BRepPrimAPI_MakePrism(disc, gp_Vec(0, 0, 1)).Shape();
+    ASSERT_TRUE(BRepCheck_Analyzer(slab).IsValid());
+    EXPECT_NEAR(from_occt(slab).volume(), pi, 1e-12);
 }
 
 TEST_F(Import, BadFilesAreRefusedNamingThePath) {

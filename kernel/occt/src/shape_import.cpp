@@ -967,13 +967,28 @@ std::string what_instead(const TopoDS_Shape& shape) {
 
 }  // namespace
 
+namespace {
+
+// One solid converted, an OpenCASCADE exception that escapes the steps' own handling said as the shape's error
+// (a Standard_Failure is no std::exception: the command reported it as an unknown internal error).
+Solid imported(const TopoDS_Shape& solid, const Progress& progress) {
+    try {
+        return Importer(solid).run(progress);
+    } catch (const Standard_Failure& failure) {
+        throw Error("shape", std::string("OpenCASCADE failed reading it (") + failure.DynamicType()->Name() + ": " +
+                                 failure.GetMessageString() + ")");
+    }
+}
+
+}  // namespace
+
 Solid from_occt(const TopoDS_Shape& shape, const Progress& progress, std::string* left_out) {
     require(!shape.IsNull(), "shape", "is empty");
     const std::vector<TopoDS_Shape> solids = solids_of(shape, left_out);
     require(!solids.empty(), "shape", "holds no solid" + what_instead(shape));
     require(solids.size() == 1, "shape",
             "holds " + std::to_string(solids.size()) + " solids; a ratbez Solid is made from exactly one (read them all with read_step_all / read_brep_all)");
-    return Importer(solids.front()).run(progress);
+    return imported(solids.front(), progress);
 }
 
 std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& progress, std::string* left_out,
@@ -989,7 +1004,7 @@ std::vector<Solid> from_occt_all(const TopoDS_Shape& shape, const Progress& prog
             if (progress) progress((static_cast<double>(k) + fraction) / static_cast<double>(solids.size()));
         };
         try {
-            out.push_back(Importer(solids[k]).run(part));
+            out.push_back(imported(solids[k], part));
         } catch (const Error& e) {
             if (solids.size() == 1) throw;
             if (solids_left_out == nullptr) throw Error("shape", "solid " + std::to_string(k) + ": " + std::string(e.reason()));
