@@ -293,8 +293,7 @@ std::array<double, 4> trimmed_rectangle(const TopoDS_Face& face, const Handle(Ge
 
 class Importer {
 public:
-    // Sliver faces go first (sliver_faces.hpp): no mesh closes across them.
-    explicit Importer(const TopoDS_Shape& solid) : solid_(detail::without_sliver_faces(solid)) {
+    explicit Importer(const TopoDS_Shape& solid) : solid_(solid) {
         TopExp::MapShapes(solid_, TopAbs_VERTEX, vertex_index_);
         TopExp::MapShapes(solid_, TopAbs_EDGE, edge_index_);
         vertices_.resize(static_cast<std::size_t>(vertex_index_.Extent()));
@@ -969,11 +968,21 @@ std::string what_instead(const TopoDS_Shape& shape) {
 
 namespace {
 
-// One solid converted, an OpenCASCADE exception that escapes the steps' own handling said as the shape's error
-// (a Standard_Failure is no std::exception: the command reported it as an unknown internal error).
+// One solid converted, its sliver faces taken out first (sliver_faces.hpp: no mesh closes across them), an
+// OpenCASCADE exception that escapes the steps' own handling said as the shape's error (a Standard_Failure is no
+// std::exception: the command reported it as an unknown internal error).
 Solid imported(const TopoDS_Shape& solid, const Progress& progress) {
     try {
-        return Importer(solid).run(progress);
+        const TopoDS_Shape healed = detail::without_sliver_faces(solid);
+        if (healed.IsSame(solid)) return Importer(solid).run(progress);
+        // Healing that the conversion refuses is not taken, and the solid as read says why: a ploopy trackball
+        // part's sliver lies within a file tolerance of 0.056 beside a plane as narrow, whose loop then crossed
+        // itself.
+        try {
+            return Importer(healed).run(progress);
+        } catch (const Error&) {
+            return Importer(solid).run(progress);
+        }
     } catch (const Standard_Failure& failure) {
         throw Error("shape", std::string("OpenCASCADE failed reading it (") + failure.DynamicType()->Name() + ": " +
                                  failure.GetMessageString() + ")");

@@ -7,14 +7,18 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <ShapeAnalysis_CheckSmallFace.hxx>
 #include <ShapeBuild_ReShape.hxx>
-#include <ShapeFix_FixSmallFace.hxx>
+#include <ShapeAnalysis_Edge.hxx>
+#include <ShapeFix_Edge.hxx>
+#include <TopExp.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
 
+#include <algorithm>
 #include <vector>
 
 namespace ratbez::occt::detail {
@@ -57,26 +61,34 @@ TopoDS_Shape without_sliver_faces(const TopoDS_Shape& solid) {
     const std::vector<Sliver> slivers = slivers_of(solid);
     if (slivers.empty()) return solid;
     try {
-        ShapeFix_FixSmallFace fix;
-        fix.Init(solid);
-        fix.SetContext(new ShapeBuild_ReShape);
+        // The second edge becomes the first wherever it is used, turned to run the same way between the two
+        // vertices: the face beside it then runs along the first as it ran along the second. Only that face
+        // changes, where ShapeFix_FixSmallFace::ReplaceInCaseOfStrip also makes a new edge and vertices and heals
+        // the faces beside with all of ShapeFix_Face.
+        Handle(ShapeBuild_ReShape) reshape = new ShapeBuild_ReShape;
         std::vector<TopoDS_Edge> joined;
-        for (Sliver sliver : slivers) {
-            if (!fix.ReplaceInCaseOfStrip(sliver.face, sliver.first, sliver.second, sliver.tolerance)) return solid;
-            fix.RemoveFacesInCaseOfStrip(sliver.face);
-            joined.push_back(sliver.first);
+        for (const Sliver& sliver : slivers) {
+            const TopoDS_Edge first = TopoDS::Edge(sliver.first.Oriented(TopAbs_FORWARD));
+            const TopoDS_Edge second = TopoDS::Edge(sliver.second.Oriented(TopAbs_FORWARD));
+            const bool same_way = TopExp::FirstVertex(first).IsSame(TopExp::FirstVertex(second));
+            reshape->Replace(second, same_way ? first : TopoDS::Edge(first.Reversed()));
+            reshape->Remove(sliver.face);
+            joined.push_back(first);
         }
-        TopoDS_Shape healed = fix.Context()->Apply(solid);
-        // The faces beside a sliver now run along an edge made from one of the two: each gets its curve on it.
+        const TopoDS_Shape healed = reshape->Apply(solid);
+        // The faces beside a sliver now run along the edge that was only the other's: each gets its curve on it,
+        // projected (ShapeFix_Edge), and the edge the tolerance that curve keeps from it.
+        ShapeFix_Edge fix;
         for (TopExp_Explorer it(healed, TopAbs_FACE); it.More(); it.Next()) {
             const TopoDS_Face& face = TopoDS::Face(it.Current());
-            bool beside = false;
-            for (TopExp_Explorer e(face, TopAbs_EDGE); e.More() && !beside; e.Next())
-                for (const TopoDS_Edge& edge : joined)
-                    beside = beside || e.Current().IsSame(fix.Context()->Apply(edge));
-            if (beside) fix.Context()->Replace(face, fix.FixFace(face));
+            for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+                const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+                if (std::none_of(joined.begin(), joined.end(), [&](const TopoDS_Edge& j) { return j.IsSame(edge); })) continue;
+                if (ShapeAnalysis_Edge().HasPCurve(edge, face)) continue;
+                fix.FixAddPCurve(edge, face, false, file_tolerance(face));
+                fix.FixSameParameter(edge);
+            }
         }
-        healed = fix.Context()->Apply(healed);
         // Healing that leaves the solid invalid is not taken: the solid goes on as read, and its mesh says why.
         return !healed.IsNull() && BRepCheck_Analyzer(healed).IsValid() ? healed : solid;
     } catch (const Standard_Failure&) {

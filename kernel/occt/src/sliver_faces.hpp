@@ -6,11 +6,12 @@
 // the Xol toolhead has a planar face bounded by two lines between the same two vertices, 6e-4 apart in the
 // middle within the file's 0.009, a cone on one side and a cylinder on the other. OpenCASCADE's BRepCheck calls
 // it valid, but no mesh closes across it: each line is sampled on its own, and the sliver's triangles face
-// whichever way the samples put them. OpenCASCADE's shape healing has the case (ShapeAnalysis_CheckSmallFace::
-// CheckSingleStrip: two vertices, two edges within tolerance of each other): the face goes, its two edges
-// become one shared by the faces beside it (ShapeFix_FixSmallFace::ReplaceInCaseOfStrip), and those faces get
-// their curves on it projected (ShapeFix_Face). Only faces with two vertices are taken: its search for thin
-// faces of four edges also took fillets narrower than the tolerance, which moved volumes by 1e-4.
+// whichever way the samples put them.
+// OpenCASCADE's shape analysis finds the case (ShapeAnalysis_CheckSmallFace::CheckSingleStrip: two vertices, two
+// edges within tolerance of each other): the face goes, its second edge becomes the first wherever it is used,
+// and the face beside it gets its curve on that edge projected (ShapeFix_Edge). Only faces with two vertices are
+// taken: OpenCASCADE's search for thin faces of four edges also took fillets narrower than the tolerance, which
+// moved volumes by 1e-4.
 
 #include <TopoDS_Shape.hxx>
 
