@@ -975,9 +975,8 @@ Solid imported(const TopoDS_Shape& solid, const Progress& progress) {
     try {
         const TopoDS_Shape healed = detail::without_sliver_faces(solid);
         if (healed.IsSame(solid)) return Importer(solid).run(progress);
-        // Healing that the conversion refuses is not taken, and the solid as read says why: a ploopy trackball
-        // part's sliver lies within a file tolerance of 0.056 beside a plane as narrow, whose loop then crossed
-        // itself.
+        // Healing that the conversion refuses is not taken, and the solid as read says why (a ploopy trackball
+        // part's sliver, within its file's tolerance of 0.056: taken out, a plane of the part failed its loop check).
         try {
             return Importer(healed).run(progress);
         } catch (const Error&) {
