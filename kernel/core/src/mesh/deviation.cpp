@@ -447,7 +447,7 @@ private:
 
 class DeviationMeter {
 public:
-    explicit DeviationMeter(const Solid& solid) : solid_(solid) {
+    explicit DeviationMeter(const Solid& solid) {
         std::vector<Seed> seeds;
         const auto& faces = solid.faces();
         regions_.resize(faces.size());
@@ -634,7 +634,6 @@ private:
         return {pieces_u[cell / pieces_v.size()], pieces_v[cell % pieces_v.size()]};
     }
 
-    const Solid& solid_;
     std::vector<PlanarRegion> regions_;
     std::vector<TrimmedRegion> trimmed_;  // trimmed faces
     // Per face: the weight-certified pieces along u and along v, whose products are its cells.
