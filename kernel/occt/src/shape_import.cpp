@@ -964,10 +964,6 @@ std::string what_instead(const TopoDS_Shape& shape) {
     return "";
 }
 
-}  // namespace
-
-namespace {
-
 // One solid converted, its sliver faces taken out first (sliver_faces.hpp: no mesh closes across them), an
 // OpenCASCADE exception that escapes the steps' own handling said as the shape's error (a Standard_Failure is no
 // std::exception: the command reported it as an unknown internal error).

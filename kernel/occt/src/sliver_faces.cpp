@@ -4,13 +4,14 @@
 
 #include "self_consistency.hpp"
 
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <ShapeAnalysis_CheckSmallFace.hxx>
-#include <ShapeBuild_ReShape.hxx>
 #include <ShapeAnalysis_Edge.hxx>
+#include <ShapeBuild_ReShape.hxx>
 #include <ShapeFix_Edge.hxx>
-#include <TopExp.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
@@ -58,9 +59,12 @@ std::vector<Sliver> slivers_of(const TopoDS_Shape& solid) {
 }  // namespace
 
 TopoDS_Shape without_sliver_faces(const TopoDS_Shape& solid) {
-    const std::vector<Sliver> slivers = slivers_of(solid);
-    if (slivers.empty()) return solid;
+    if (slivers_of(solid).empty()) return solid;
     try {
+        // Healed on a copy: the projection adds to the edge it projects and may raise its tolerance, which the
+        // solid as read, taken when the healing is not, should not carry.
+        const TopoDS_Shape copy = BRepBuilderAPI_Copy(solid).Shape();
+        const std::vector<Sliver> slivers = slivers_of(copy);
         // The second edge becomes the first wherever it is used, turned to run the same way between the two
         // vertices: the face beside it then runs along the first as it ran along the second. Only that face
         // changes, where ShapeFix_FixSmallFace::ReplaceInCaseOfStrip also makes a new edge and vertices and heals
@@ -75,7 +79,7 @@ TopoDS_Shape without_sliver_faces(const TopoDS_Shape& solid) {
             reshape->Remove(sliver.face);
             joined.push_back(first);
         }
-        const TopoDS_Shape healed = reshape->Apply(solid);
+        const TopoDS_Shape healed = reshape->Apply(copy);
         // The faces beside a sliver now run along the edge that was only the other's: each gets its curve on it,
         // projected (ShapeFix_Edge), and the edge the tolerance that curve keeps from it.
         ShapeFix_Edge fix;
