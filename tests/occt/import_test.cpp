@@ -16,6 +16,7 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Geom_OffsetSurface.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -777,6 +778,22 @@ TEST(ImportShapes, AFaceOfNoAreaBetweenTwoEdgesIsTakenOutAndTheEdgesJoined) {
     const TopoDS_Shape slab = BRepPrimAPI_MakePrism(disc, gp_Vec(0, 0, 1)).Shape();
     ASSERT_TRUE(BRepCheck_Analyzer(slab).IsValid());
     EXPECT_NEAR(from_occt(slab).volume(), pi, 1e-12);
+}
+
+// A sphere's B-spline net with one inner control point moved to y = 1e100 (found by fuzz_read_step): a needle that
+// long through a shell folded on itself, which the quick rule of the orientation check called positive and the
+// adaptive rule -2.9e99. Measured properly for want of bulk, it is refused, not read as a solid of negative volume.
+TEST(ImportShapes, AShellThatEnclosesNextToNothingForItsSizeIsOrientedByItsMeasuredVolume) {
+    const TopoDS_Shape sphere = BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeSphere(2).Shape()).Shape();
+    const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(sphere, TopAbs_FACE).Current());
+    const Handle(Geom_BSplineSurface) net = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+    ASSERT_FALSE(net.IsNull());
+    ASSERT_GE(net->NbUPoles(), 4);
+    ASSERT_GE(net->NbVPoles(), 3);
+    const gp_Pnt inner = net->Pole(4, 2);
+    net->SetPole(4, 2, gp_Pnt(inner.X(), 1e100, inner.Z()));
+    const std::string reason = refusal(sphere);
+    EXPECT_NE(reason.find("oriented inward"), std::string::npos) << reason;
 }
 
 TEST_F(Import, BadFilesAreRefusedNamingThePath) {
