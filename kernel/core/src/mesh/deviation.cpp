@@ -5,12 +5,13 @@
 // uniform spatial grid) starts Newton's method on the two orthogonality conditions
 // (S - P) . S_u = (S - P) . S_v = 0 (Piegl and Tiller, The NURBS Book, §6.1, Eq. 6.6–6.8), clamped to the
 // face's domain, with a step-halving line search so it never walks uphill (point_inversion.hpp, shared
-// with closest_point.hpp and the tessellator). Planar faces are handled
-// exactly: the distance to the trimmed plane region is the distance to the plane where the foot lies
-// inside the loops, else the distance to the nearest boundary curve (Newton on the curve). Seeds are
-// placed per weight-certified cell of each face (see detail::weight_cuts), and Newton also runs inside the
-// cell of each nearby cell's best seed, so rational weights that crowd the geometry into a sliver of
-// the parameter domain do not hide the foot.
+// with closest_point.hpp and the tessellator). Planar faces are handled exactly: the distance to the
+// trimmed plane region is the distance to the plane where the foot lies inside the loops, else the distance
+// to the nearest boundary curve (Newton on the curve from the nearest segment of its polyline, which
+// segment_search.hpp finds, and the side, without a scan of every segment). Seeds are placed per
+// weight-certified cell of each face (see detail::weight_cuts), and Newton also runs inside the cell of
+// each nearby cell's best seed, so rational weights that crowd the geometry into a sliver of the parameter
+// domain do not hide the foot.
 //
 // Trimmed faces are measured on their region: a foot whose (u, v) lies outside the region the p-curves bound
 // (even-odd rule on a fine polyline of them) is replaced by the distance to the face's boundary curves, which

@@ -1344,7 +1344,7 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
             // sphere's came out with half its triangles a little out of plane with their neighbours, which
             // sends OpenSCAD's minkowski() from its convex fast path to decomposition (0.96 s -> 570 s).
             // The hull keeps the tolerance where the faces close up (convex_hull.hpp). Faces read with a loose
-            // tolerance leave gaps of that size, which the hull bridges: a KiCad box whose 0.02 bevels lie
+            // tolerance leave gaps of that size, which the hull bridges: a KiCad box whose middle band sinks 0.02
             // within its file's 0.02 came out as its 8 corners, 0.028 from its faces (0.014 unhulled).
             if (is_convex(s) && loosest_face(s).second <= kHullGap * o.tolerance)
                 return convex_hull(mesh);  // a few flips where the mesh is nearly convex already
