@@ -23,6 +23,7 @@
 
 #include "ratbez/bezier_curve.hpp"
 #include "ratbez/brep.hpp"
+#include "ratbez/convexity.hpp"
 #include "ratbez/curves.hpp"
 #include "ratbez/deviation.hpp"
 #include "ratbez/error.hpp"
@@ -273,6 +274,7 @@ TEST(Tessellate, AConvexSolidWhoseFacesMeetWithinTheirToleranceKeepsItsMeshUnhul
     const double d = 0.02;
     const Solid solid = box_with_a_sunken_band(d);
     ASSERT_EQ(solid.faces().size(), 14u);
+    ASSERT_TRUE(is_convex(solid));  // so its mesh would be hulled
     ASSERT_EQ(default_tolerance(solid), d);
     const Mesh mesh = tessellate(solid, default_tolerance(solid));
     EXPECT_TRUE(mesh.is_closed());
