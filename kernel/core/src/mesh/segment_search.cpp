@@ -9,12 +9,21 @@
 
 namespace ratbez::detail {
 
+namespace {
+
+// Below this many segments a scan of them all is as quick as the search structures, which cost memory (a Voron
+// LED channel mount of 1,120 faces, each with a few dozen segments, measured no faster through them).
+constexpr std::size_t kScanBelow = 64;
+
+}  // namespace
+
 // ------------------------------------------------------------------------------------ the even-odd rule
 
 EvenOddBands::EvenOddBands(std::vector<std::array<double, 4>> segments) : segments_(std::move(segments)) {
     if (segments_.empty()) return;
     y_min_ = std::numeric_limits<double>::infinity(), y_max_ = -y_min_;
     for (const auto& s : segments_) y_min_ = std::min({y_min_, s[1], s[3]}), y_max_ = std::max({y_max_, s[1], s[3]});
+    if (segments_.size() < kScanBelow) return;
     // About the square root of the segments' number of bands: each holds about as many segments.
     bands_.assign(std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(static_cast<double>(segments_.size()))), 1, 4096), {});
     for (std::size_t k = 0; k < segments_.size(); ++k) {
@@ -32,9 +41,14 @@ bool EvenOddBands::inside(double x, double y) const {
     // A segment the ray crosses spans y, so it lies in y's band; outside all bands no segment spans y.
     if (segments_.empty() || !(y >= y_min_ && y <= y_max_)) return false;
     bool inside = false;
-    for (const std::uint32_t k : bands_[band_of(y)]) {
-        const auto& [x0, y0, x1, y1] = segments_[k];
+    const auto cross = [&](const std::array<double, 4>& s) {
+        const auto& [x0, y0, x1, y1] = s;
         if ((y0 <= y) != (y1 <= y) && x < x0 + (y - y0) / (y1 - y0) * (x1 - x0)) inside = !inside;
+    };
+    if (bands_.empty()) {
+        for (const auto& s : segments_) cross(s);
+    } else {
+        for (const std::uint32_t k : bands_[band_of(y)]) cross(segments_[k]);
     }
     return inside;
 }
@@ -42,7 +56,7 @@ bool EvenOddBands::inside(double x, double y) const {
 // ------------------------------------------------------------------------------------ the nearest segment
 
 NearestSegment::NearestSegment(std::vector<std::array<Vec3, 2>> segments) : segments_(std::move(segments)) {
-    if (segments_.empty()) return;
+    if (segments_.size() < kScanBelow) return;
     lo_ = hi_ = 0.5 * (segments_.front()[0] + segments_.front()[1]);
     for (const auto& [a, b] : segments_) {
         const Vec3 m = 0.5 * (a + b);
@@ -85,6 +99,10 @@ std::optional<NearestSegment::Found> NearestSegment::nearest(const Vec3& p) cons
         const double d2 = dot(d, d);
         if (!found || d2 < best.squared_distance || (d2 == best.squared_distance && k < best.index)) best = {k, f, d2}, found = true;
     };
+    if (segments_.size() < kScanBelow) {
+        for (std::size_t k = 0; k < segments_.size(); ++k) consider(static_cast<std::uint32_t>(k));
+        return best;
+    }
     // Every segment lies within half_length_ of its middle: a box of half-width r + half_length_ around p holds
     // every segment closer than r, ties included. The box grows until the nearest found lies within r, or it holds
     // the whole grid.

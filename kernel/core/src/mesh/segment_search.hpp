@@ -30,7 +30,7 @@ private:
 };
 
 // The segment of a set nearest to a point, found through a uniform grid of the segments' middles searched in
-// growing boxes. Ties go to the lowest index, as a scan in order would give them.
+// growing boxes (a scan for a few dozen). Ties go to the lowest index, as a scan in order would give them.
 class NearestSegment {
 public:
     struct Found {
