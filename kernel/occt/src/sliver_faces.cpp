@@ -59,12 +59,18 @@ std::vector<Sliver> slivers_of(const TopoDS_Shape& solid) {
 }  // namespace
 
 TopoDS_Shape without_sliver_faces(const TopoDS_Shape& solid) {
-    if (slivers_of(solid).empty()) return solid;
+    std::vector<Sliver> slivers = slivers_of(solid);
+    if (slivers.empty()) return solid;
     try {
         // Healed on a copy: the projection adds to the edge it projects and may raise its tolerance, which the
-        // solid as read, taken when the healing is not, should not carry.
-        const TopoDS_Shape copy = BRepBuilderAPI_Copy(solid).Shape();
-        const std::vector<Sliver> slivers = slivers_of(copy);
+        // solid as read, taken when the healing is not, should not carry. The slivers found are the copy's own.
+        BRepBuilderAPI_Copy copier(solid);
+        const TopoDS_Shape copy = copier.Shape();
+        for (Sliver& sliver : slivers) {
+            sliver.face = TopoDS::Face(copier.ModifiedShape(sliver.face));
+            sliver.first = TopoDS::Edge(copier.ModifiedShape(sliver.first));
+            sliver.second = TopoDS::Edge(copier.ModifiedShape(sliver.second));
+        }
         // The second edge becomes the first wherever it is used, turned to run the same way between the two
         // vertices: the face beside it then runs along the first as it ran along the second. Only that face
         // changes, where ShapeFix_FixSmallFace::ReplaceInCaseOfStrip also makes a new edge and vertices and heals

@@ -1346,7 +1346,7 @@ Mesh tessellate(const Solid& solid, const TessellationOptions& options) {
             // The hull keeps the tolerance where the faces close up (convex_hull.hpp). Faces read with a loose
             // tolerance leave gaps of that size, which the hull bridges: a KiCad box whose middle band sinks 0.02
             // within its file's 0.02 came out as its 8 corners, 0.028 from its faces (0.014 unhulled).
-            if (is_convex(s) && loosest_face(s).second <= kHullGap * o.tolerance)
+            if (loosest_face(s).second <= kHullGap * o.tolerance && is_convex(s))  // the cheap test first
                 return convex_hull(mesh);  // a few flips where the mesh is nearly convex already
             return mesh;
         });
