@@ -548,6 +548,103 @@ TEST(ImportShapes, NaturalFacesEndingJustInsideTheirSurfaceSpanIt) {
     EXPECT_TRUE(BRepCheck_Analyzer(to_occt(solid)).IsValid());
 }
 
+// A 10 mm box whose first face is a B-spline of degree 3 in v over the face's parameter rectangle, its poles and
+// knots then changed by `reshape` (which must keep the face's four sides where they are), its p-curves kept.
+template <class Reshape>
+TopoDS_Shape box_with_a_cubic_face(Reshape&& reshape) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 10, 10).Shape();
+    const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current());
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    const Handle(Geom_BSplineSurface) surface =
+        GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(BRep_Tool::Surface(face), u0, u1, v0, v1));
+    surface->IncreaseDegree(surface->UDegree(), 3);
+    reshape(*surface);
+    std::vector<std::pair<TopoDS_Edge, Handle(Geom2d_Curve)>> pcurves;  // kept on the new surface
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge edge = TopoDS::Edge(it.Current());
+        double first = 0, last = 0;
+        pcurves.emplace_back(edge, BRep_Tool::CurveOnSurface(edge, face, first, last));
+    }
+    BRep_Builder builder;
+    builder.UpdateFace(face, surface, TopLoc_Location(), BRep_Tool::Tolerance(face));
+    for (const auto& [edge, pcurve] : pcurves) builder.UpdateEdge(edge, pcurve, face, BRep_Tool::Tolerance(edge));
+    BRepLib::SameParameter(box, 1e-7, true);
+    return box;
+}
+
+// A keyboard case's edge fillet (Fusion 360, novesce/optimus-tkl) is a natural face whose p-curves run 4.3e-5 past
+// the end u = 0 of its B-spline, where the surface barely moves (8e-13): beyond the parameter its tolerance reaches
+// by the surface's largest derivative, and the solid was refused ("leaves its exact form's domain"). A side comes
+// back inside from wherever the face's boundary stays within its tolerance on the surface; beyond, still refused.
+TEST(ImportShapes, PCurvesPastABSplineEndWhereTheSurfaceStandsStillComeBackInside) {
+    const auto with_side_past_the_end = [](double overshoot) {
+        // The last three rows of poles are one: y(v) = 10 (1 - (1 - v)^3) on [0, 1], still to second order at v = 1,
+        // so a p-curve `overshoot` past it is 10 overshoot^3 off the face's side.
+        const TopoDS_Shape box = box_with_a_cubic_face([](Geom_BSplineSurface& s) {
+            for (int i = 1; i <= s.NbUPoles(); ++i) s.SetPole(i, 2, s.Pole(i, 4)), s.SetPole(i, 3, s.Pole(i, 4));
+        });
+        const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current());
+        double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+        BRep_Tool::Surface(face)->Bounds(u0, u1, v0, v1);
+        for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+            const TopoDS_Edge edge = TopoDS::Edge(it.Current());
+            double first = 0, last = 0;
+            const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+            if (std::abs(pcurve->Value(0.5 * (first + last)).Y() - v1) > 1e-12 * (v1 - v0)) continue;  // the side v = v1
+            BRep_Builder().UpdateEdge(edge, Handle(Geom2d_Curve)::DownCast(pcurve->Translated(gp_Vec2d(0, overshoot * (v1 - v0)))),
+                                      face, BRep_Tool::Tolerance(edge));
+            return box;
+        }
+        ADD_FAILURE() << "no edge on the side v = v1";
+        return box;
+    };
+    // 1e-3 past the end: 1e-8 off, inside the edges' tolerance 1e-7; the largest derivative (30) reaches 3.3e-9.
+    const Solid solid = from_occt(with_side_past_the_end(1e-3));
+    EXPECT_NEAR(solid.volume(), 1000, 1e-9 * 1000);
+    EXPECT_EQ(solid.faces()[0].kind(), Face::Kind::surface);
+    const Mesh mesh = tessellate(solid, 1e-3);
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_LE(max_deviation(solid, mesh), 1e-3);
+    // 1e-2 past it: 1e-5 off.
+    const std::string refused = refusal(with_side_past_the_end(1e-2));
+    EXPECT_NE(refused.find("leaves its"), std::string::npos) << refused;
+}
+
+// A servo's strip (SolidWorks, presigues/centerstage-robot-design) is a B-spline whose first span in u is 1.6e-10
+// of its range, its first two rows of poles one: on it the surface has no tangent plane at its end, and the solid
+// did not mesh ("the surface has no tangent plane at ..."). Such a span, nearer its end than Segment can cut, is
+// cut off and the knots stretched back over the domain, where that moves the surface within the face's tolerance.
+TEST(ImportShapes, ASpanARoundingLongAtABSplinesEndIsCutOff) {
+    const TopoDS_Shape box = box_with_a_cubic_face([](Geom_BSplineSurface& s) {
+        double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+        s.Bounds(u0, u1, v0, v1);
+        s.InsertVKnot(v0 + 1.6e-10 * (v1 - v0), 1, 0);
+        for (int i = 1; i <= s.NbUPoles(); ++i) s.SetPole(i, 2, s.Pole(i, 1));
+    });
+    const Handle(Geom_BSplineSurface) read_surface =
+        Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current())));
+    ASSERT_FALSE(read_surface.IsNull());
+    ASSERT_EQ(read_surface->NbVKnots(), 3);  // the short span is there to be cut off
+    const Solid solid = from_occt(box);
+    EXPECT_NEAR(solid.volume(), 1000, 1e-9 * 1000);
+    const Mesh mesh = tessellate(solid, 1e-3);
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_LE(max_deviation(solid, mesh), 1e-3);
+    EXPECT_TRUE(BRepCheck_Analyzer(to_occt(solid)).IsValid());
+    // A knot 1e-8 of the range from the end, farther than is cut off, stays (its poles apart): the mesh's search for
+    // creases looks either side of it, not past the end ("parameter ... is outside the domain").
+    const Solid kept = from_occt(box_with_a_cubic_face([](Geom_BSplineSurface& s) {
+        double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+        s.Bounds(u0, u1, v0, v1);
+        s.InsertVKnot(v0 + 1e-8 * (v1 - v0), 1, 0);
+    }));
+    EXPECT_EQ(kept.faces()[0].surface().knots_v().size(), 9u);
+    const Mesh kept_mesh = tessellate(kept, 1e-3);
+    EXPECT_TRUE(kept_mesh.is_closed());
+    EXPECT_LE(max_deviation(kept, kept_mesh), 1e-3);
+}
+
 // A Voron LED mount's sliver face (0.4 mm) has a circle 0.36 off its B-spline surface, beyond the surface's corner,
 // at tolerance 0.56: the projections of its points onto the surface land on that corner together, there is no
 // curve through them, and the face was refused ("its projection is not smooth"). The file's own p-curve is then

@@ -59,6 +59,7 @@
 #include <gp_Torus.hxx>
 
 #include <algorithm>
+#include <span>
 #include <array>
 #include <cmath>
 #include <map>
@@ -227,22 +228,42 @@ struct NaturalRectangle {
 // 0.3), where OpenCASCADE's Segment cannot cut (it snaps to a knot within Precision::PConfusion): from that near,
 // it goes out to them. A rectangle wider than the period by more than 1e-9 of it and that reach is left alone
 // (the conversion reports it).
-std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<double, 4> r, double tolerance, bool natural = false) {
+// The resolution is a bound from the surface's largest derivative; near a collapsed end a parameter moves the
+// surface far less. So a bounded direction also comes back inside from wherever the face's `boundary` (points
+// of its p-curves) stays within `tolerance` on the surface of where it comes back to: a keyboard case's edge
+// fillet (Fusion 360, optimus-tkl) runs 4.3e-5 past u = 0 of its B-spline, where the surface moves 8e-13, and a
+// servo's strip 7.2e-7 past its u range, within its edges' tolerance.
+std::array<double, 4> snapped(const Handle(Geom_Surface)& basis, std::array<double, 4> r, double tolerance, bool natural = false,
+                              std::span<const gp_Pnt2d> boundary = {}) {
     double a = 0, b = 0, c = 0, d = 0;
     basis->Bounds(a, b, c, d);
     const GeomAdaptor_Surface adaptor(basis);
-    const auto snap = [natural](double& lo, double& hi, bool periodic, double period, double min, double max, double reach) {
+    // Does every point of the boundary past [min, max] in the direction `in_u` land within the tolerance when it
+    // is brought back to the bound? (OpenCASCADE evaluates a B-spline past its bounds on its end spans.)
+    const auto boundary_lands = [&](bool in_u, double min, double max) {
+        return !boundary.empty() && std::all_of(boundary.begin(), boundary.end(), [&](const gp_Pnt2d& p) {
+                   const double t = in_u ? p.X() : p.Y(), back = std::clamp(t, min, max);
+                   if (t == back) return true;
+                   const gp_Pnt2d q = in_u ? gp_Pnt2d(back, p.Y()) : gp_Pnt2d(p.X(), back);
+                   return basis->Value(p.X(), p.Y()).Distance(basis->Value(q.X(), q.Y())) <= tolerance;
+               });
+    };
+    const auto snap = [&](double& lo, double& hi, bool in_u, bool periodic, double period, double min, double max) {
+        const double reach = in_u ? adaptor.UResolution(tolerance) : adaptor.VResolution(tolerance);
         if (periodic) {
             if (hi - lo > period && hi - lo <= period + std::max(1e-9 * period, reach)) hi = full_turn_end(lo, period);
             return;
         }
         const double slack = std::max(1e-9 * std::max(1.0, max - min), reach);
         const double short_by = std::max(1e-9 * (max - min), Precision::PConfusion());  // what Segment cannot cut
-        if (!Precision::IsInfinite(min) && ((lo < min && min - lo <= slack) || (natural && lo >= min && lo - min <= short_by))) lo = min;
-        if (!Precision::IsInfinite(max) && ((hi > max && hi - max <= slack) || (natural && hi <= max && max - hi <= short_by))) hi = max;
+        const bool lands = (lo < min - slack || hi > max + slack) && boundary_lands(in_u, min, max);
+        if (!Precision::IsInfinite(min) && ((lo < min && (min - lo <= slack || lands)) || (natural && lo >= min && lo - min <= short_by)))
+            lo = min;
+        if (!Precision::IsInfinite(max) && ((hi > max && (hi - max <= slack || lands)) || (natural && hi <= max && max - hi <= short_by)))
+            hi = max;
     };
-    snap(r[0], r[1], basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b, adaptor.UResolution(tolerance));
-    snap(r[2], r[3], basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d, adaptor.VResolution(tolerance));
+    snap(r[0], r[1], true, basis->IsUPeriodic(), basis->IsUPeriodic() ? basis->UPeriod() : 0, a, b);
+    snap(r[2], r[3], false, basis->IsVPeriodic(), basis->IsVPeriodic() ? basis->VPeriod() : 0, c, d);
     return r;
 }
 
@@ -482,7 +503,9 @@ private:
             uses.emplace_back(e, samples);
         }
         if (!(u1 > u0 && v1 > v0)) return std::nullopt;
-        NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}, detail::file_tolerance(face), /*natural=*/true), {}};
+        std::vector<gp_Pnt2d> boundary;
+        for (const auto& use : uses) boundary.insert(boundary.end(), use.second.begin(), use.second.end());
+        NaturalRectangle out{snapped(basis, {u0, u1, v0, v1}, detail::file_tolerance(face), /*natural=*/true, boundary), {}};
         // Pcurves made by projection (STEP files without them) sit on the sides to about 1e-7 of the rectangle.
         const double tol_u = 1e-6 * (u1 - u0), tol_v = 1e-6 * (v1 - v0);
         for (const auto& use : uses) {
@@ -510,8 +533,61 @@ private:
         return out;
     }
 
-    // The exact NURBS of a face's surface over the rectangle [u0, u1] x [v0, v1] of its parameters.
-    static Handle(Geom_BSplineSurface) exact_surface(const Handle(Geom_Surface)& basis, const std::array<double, 4>& r) {
+    // Knots within rounding of an end of a B-spline's domain (nearer than Segment can cut, PConfusion) are a
+    // file's artefact, over whose span the poles often coincide, so that the surface has no tangent plane at that
+    // end (a servo's strip, SolidWorks: a first span of 1.6e-10 in a u range of 0.96, its first two poles one
+    // point). Knot removal (The NURBS Book A5.8, OpenCASCADE's RemoveUKnot) refuses them: its pole test divides
+    // by the short span. So the surface is cut at the innermost such knot (Segment) and its knots are stretched
+    // back over the whole domain, which keeps the domain and the file's p-curves: taken where no point of the
+    // surface moves further than `tolerance` (measured at the knots, the middles of their spans and the ends).
+    static Handle(Geom_BSplineSurface) without_end_slivers(const Handle(Geom_BSplineSurface)& s, double tolerance) {
+        Handle(Geom_BSplineSurface) out = s;
+        for (const bool in_u : {true, false}) {
+            if (in_u ? out->IsUPeriodic() : out->IsVPeriodic()) continue;
+            TColStd_Array1OfReal knots(1, in_u ? out->NbUKnots() : out->NbVKnots());
+            if (in_u) out->UKnots(knots);
+            else out->VKnots(knots);
+            const int n = knots.Upper();
+            const double first = knots(1), last = knots(n);
+            const double short_by = std::max(1e-9 * (last - first), Precision::PConfusion());
+            int lo = 1, hi = n;
+            while (lo + 1 < n && knots(lo + 1) - first <= short_by) ++lo;
+            while (hi - 1 > lo && last - knots(hi - 1) <= short_by) --hi;
+            if ((lo == 1 && hi == n) || hi - lo < 1) continue;
+            const Handle(Geom_BSplineSurface) cut = Handle(Geom_BSplineSurface)::DownCast(out->Copy());
+            double a = 0, b = 0, c = 0, d = 0;
+            out->Bounds(a, b, c, d);
+            if (in_u) cut->Segment(knots(lo), knots(hi), c, d);
+            else cut->Segment(a, b, knots(lo), knots(hi));
+            TColStd_Array1OfReal stretched(1, in_u ? cut->NbUKnots() : cut->NbVKnots());
+            if (in_u) cut->UKnots(stretched);
+            else cut->VKnots(stretched);
+            const double from = stretched(1), to = stretched(stretched.Upper());
+            for (int k = 1; k <= stretched.Upper(); ++k)
+                stretched(k) = k == 1 ? first : k == stretched.Upper() ? last : first + (stretched(k) - from) * ((last - first) / (to - from));
+            if (in_u) cut->SetUKnots(stretched);
+            else cut->SetVKnots(stretched);
+            std::vector<double> along;
+            for (int k = 1; k <= n; ++k) {
+                along.push_back(knots(k));
+                if (k < n) along.push_back(0.5 * (knots(k) + knots(k + 1)));
+            }
+            const double w0 = in_u ? c : a, w1 = in_u ? d : b;
+            bool close = true;
+            for (const double t : along)
+                for (int q = 0; q <= 8 && close; ++q) {
+                    const double w = w0 + (w1 - w0) * q / 8.0;
+                    close = (in_u ? out->Value(t, w).Distance(cut->Value(t, w)) : out->Value(w, t).Distance(cut->Value(w, t))) <= tolerance;
+                }
+            if (close) out = cut;
+        }
+        return out;
+    }
+
+    // The exact NURBS of a face's surface over the rectangle [u0, u1] x [v0, v1] of its parameters; a B-spline
+    // without its spans a rounding long at its ends (without_end_slivers, within `tolerance`).
+    static Handle(Geom_BSplineSurface) exact_surface(const Handle(Geom_Surface)& basis, const std::array<double, 4>& r,
+                                                     double tolerance) {
         // B-splines as they are (a Bézier patch over [0, 1]^2); the quadrics and tori through the Convert_* class
         // over the rectangle; revolutions and extrusions in GeomConvert's rational form over the rectangle.
         Handle(Geom_BSplineSurface) nurbs = elementary_bspline(basis, r);
@@ -519,7 +595,9 @@ private:
         if (nurbs.IsNull())
             nurbs = GeomConvert::SurfaceToBSplineSurface(
                 spline ? basis : Handle(Geom_Surface)(new Geom_RectangularTrimmedSurface(basis, r[0], r[1], r[2], r[3])));
-        if (spline) nurbs = Handle(Geom_BSplineSurface)::DownCast(nurbs->Copy());
+        if (spline) {
+            nurbs = without_end_slivers(Handle(Geom_BSplineSurface)::DownCast(nurbs->Copy()), tolerance);
+        }
         double a = 0, b = 0, c = 0, d = 0;
         nurbs->Bounds(a, b, c, d);
         const double tol_u = 1e-9 * (r[1] - r[0]), tol_v = 1e-9 * (r[3] - r[2]);
@@ -621,7 +699,7 @@ private:
         const Handle(Geom_Surface) basis = required_basis(face);
         const std::optional<NaturalRectangle> rectangle = natural_rectangle(face, basis);
         if (!rectangle) return std::nullopt;
-        NurbsSurface nurbs = checked_surface(exact_surface(basis, rectangle->bounds), basis, rectangle->bounds);
+        NurbsSurface nurbs = checked_surface(exact_surface(basis, rectangle->bounds, detail::file_tolerance(face)), basis, rectangle->bounds);
         // A REVERSED face's outward normal is -(S_u x S_v): run u backwards, which swaps the u sides.
         const bool reversed = face.Orientation() == TopAbs_REVERSED;
         if (reversed) nurbs = reversed_in_u(nurbs);
@@ -705,7 +783,7 @@ private:
             basis->Bounds(a, b, c, d);
             if (!basis->IsUPeriodic() && !basis->IsVPeriodic()) r = {a, b, c, d};
         }
-        const Handle(Geom_BSplineSurface) occt_nurbs = exact_surface(basis, r);
+        const Handle(Geom_BSplineSurface) occt_nurbs = exact_surface(basis, r, detail::file_tolerance(face));
         NurbsSurface nurbs = checked_surface(occt_nurbs, basis, r);
         r = {nurbs.domain_u().min, nurbs.domain_u().max, nurbs.domain_v().min, nurbs.domain_v().max};
         const bool reversed = face.Orientation() == TopAbs_REVERSED;

@@ -290,6 +290,20 @@ TEST(TessellatePlan, CreasesBecomeLines) {
     for (bool u : {true, false}) EXPECT_EQ(crease_lines(surface_face(round).surface(), sphere_evaluator, u).size(), 2u);
 }
 
+// A file's B-spline may keep a knot within rounding of its end (a servo's strip: 1.6e-10 of its u range), its first
+// poles one point, so that the normal there needs the surface's limit: the search for creases looked 1e-7 of the
+// range either side of the knot, past the domain's end ("parameter ... is outside the domain"). A knot that near
+// an end is that end.
+TEST(TessellatePlan, AKnotWithinRoundingOfAnEndIsNoCrease) {
+    const double knot = 1e-9;
+    std::vector<std::vector<Vec3>> poles;
+    for (const double x : {0.0, 0.0, 0.3, 0.6, 1.0}) poles.push_back({Vec3{x, 0, 0}, Vec3{x, 1, 0}});
+    const NurbsSurface strip(3, 1, {0, 0, 0, 0, knot, 1, 1, 1, 1}, {0, 0, 1, 1}, poles);
+    const SurfaceEvaluator evaluator(strip);
+    EXPECT_EQ(crease_lines(strip, evaluator, true), (std::vector<double>{0.0, 1.0}));
+    EXPECT_EQ(crease_lines(strip, evaluator, false), (std::vector<double>{0.0, 1.0}));
+}
+
 TEST(TessellatePlan, ClosedAndPoleToPoleDirectionsKeepTheirMinimumSegments) {
     // A tolerance larger than the solids: only the minimum numbers of intervals remain.
     const Solid ring = torus(3.0, 1.0);

@@ -479,11 +479,16 @@ std::vector<double> crease_lines(const NurbsSurface& s, const SurfaceEvaluator& 
     std::vector<double> result{d.min};
     const double delta = 1e-7 * (d.max - d.min);
     for (std::size_t k = 1; k + 1 < breaks.size(); ++k) {
+        // A knot within delta of an end is that end, already a line of the grid: a file's B-spline may keep one
+        // within rounding of its end (a servo's strip: a span of 2.4e-10 at the start of a u range of 0.96,
+        // its poles there coincident, so no normal at the end).
+        if (breaks[k] - delta <= d.min || breaks[k] + delta >= d.max) continue;
+        const double t0 = breaks[k] - delta, t1 = breaks[k] + delta;
         bool crease = false;
         for (int q = 1; q <= 5 && !crease; ++q) {
             const double w = other.min + (other.max - other.min) * q / 6.0;
-            const Vec3 before = along_u ? normal(breaks[k] - delta, w) : normal(w, breaks[k] - delta);
-            const Vec3 after = along_u ? normal(breaks[k] + delta, w) : normal(w, breaks[k] + delta);
+            const Vec3 before = along_u ? normal(t0, w) : normal(w, t0);
+            const Vec3 after = along_u ? normal(t1, w) : normal(w, t1);
             crease = distance(before, after) > 1e-4;
         }
         if (crease) result.push_back(breaks[k]);
