@@ -56,6 +56,28 @@ TEST(Brep, PlanarFaceRejectsWrongLoops) {
     EXPECT_ERROR_NAMING(Face::planar(Plane{{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {0, 0, 2}}, {s.loop(false)}), "plane");
 }
 
+// A keyboard case read from a file (Bastardkb/charybdis) has a sliver triangle of area 0.03 whose curve ends 0.0097
+// short of its vertex, within the file's tolerance, on a plane whose origin lies 30 mm away. Summed piece by piece
+// from that origin, the open loop's area was off by the gap times the distance (-0.086), and the face was refused
+// as clockwise. The loop is closed by straight bridges across the gaps, wherever the plane's origin lies.
+TEST(Brep, APlanarLoopWithGapsWithinItsToleranceHasItsAreaWhereverThePlanesOriginLies) {
+    // A thin triangle A B C (area 0.032) whose side C -> A ends 0.01 beside A, across the side.
+    const Vec3 a{0, 0, 0}, b{1.6, 0, 0}, c{0.8, 0.04, 0};
+    const VertexPtr va = std::make_shared<const Vertex>(Vertex{a}), vb = std::make_shared<const Vertex>(Vertex{b}),
+                    vc = std::make_shared<const Vertex>(Vertex{c});
+    for (const double gap : {0.01, -0.01}) {
+        const std::vector<Coedge> loop{
+            {std::make_shared<const Edge>(Edge{line_segment(a, b), va, vb, false}), false},
+            {std::make_shared<const Edge>(Edge{line_segment(b, c), vb, vc, false}), false},
+            {std::make_shared<const Edge>(Edge{line_segment(c, a + Vec3{0, gap, 0}), vc, va, false}), false}};
+        for (const double far : {-30.0, 30.0}) {
+            const Plane plane{{far, far, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+            const Face face = Face::planar(plane, {loop}, 0.02);
+            EXPECT_EQ(face.kind(), Face::Kind::planar) << gap << " " << far;
+        }
+    }
+}
+
 TEST(Brep, SurfaceFaceRejectsEdgesThatDoNotMatchItsSides) {
     const Solid cyl = cylinder(1, 2);
     const Face& lateral = cyl.faces()[0];
