@@ -5,10 +5,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 
+#include "ratbez/curves.hpp"
 #include "ratbez/error.hpp"
+#include "ratbez/extrude.hpp"
+#include "ratbez/profile.hpp"
 #include "ratbez/primitives.hpp"
 #include "ratbez/tessellate.hpp"
 
@@ -96,6 +102,69 @@ TEST(MaxDeviation, PointsAboveACapMeasureToThePlane) {
     m.vertices = {{0, 0, 2.3}, {0.3, 0, 2.3}, {0, 0.3, 2.3}};
     m.triangles = {{0, 1, 2}};
     EXPECT_NEAR(max_deviation(cylinder(1.0, 2.0), m), 0.3, 1e-12);
+}
+
+// A D of faces of very different sizes: 200 short sides round a half circle of radius 10, one long side across it
+// and its two caps. The search for the nearest face reaches each class of faces (by their seeds' spacing) only as far as those
+// faces can hold a foot; it must still find every foot. Checked sample by sample, as max_deviation takes them,
+// against the exact distance to every face of a mesh whose vertices were moved off the solid.
+TEST(MaxDeviation, FacesOfVeryDifferentSizesAreAllReached) {
+    constexpr int kSides = 200;
+    constexpr double kHeight = 0.5;
+    std::vector<Vec3> corners;
+    for (int k = 0; k <= kSides; ++k) corners.push_back({10 * std::cos(kPi * k / kSides), 10 * std::sin(kPi * k / kSides), 0});
+    std::vector<NurbsCurve> pieces;
+    for (std::size_t k = 0; k + 1 < corners.size(); ++k) pieces.push_back(line_segment(corners[k], corners[k + 1]));
+    pieces.push_back(line_segment(corners.back(), corners.front()));
+    corners.push_back(corners.front());  // the closed polygon
+    const Solid d = extrude(Profile(pieces), {0, 0, 1}, kHeight);
+
+    Mesh mesh = tessellate(d, 1e-3);
+    std::uint64_t state = 20261208;
+    const auto jitter = [&] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return 0.02 * (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5);
+    };
+    for (Vec3& v : mesh.vertices) v += Vec3{jitter(), jitter(), jitter()};
+
+    // The exact distance to the D's boundary: its sides are segments times [0, h], its caps the polygon at 0 and h.
+    const auto to_segment = [](double x, double y, const Vec3& a, const Vec3& b) {
+        const double dx = b.x - a.x, dy = b.y - a.y;
+        const double t = std::clamp(((x - a.x) * dx + (y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+        return std::hypot(x - a.x - t * dx, y - a.y - t * dy);
+    };
+    const auto exact = [&](const Vec3& p) {
+        double to_boundary = std::numeric_limits<double>::infinity();
+        bool inside = false;
+        for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
+            const Vec3 &a = corners[k], &b = corners[k + 1];
+            to_boundary = std::min(to_boundary, to_segment(p.x, p.y, a, b));
+            if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x)) inside = !inside;
+        }
+        const double below = std::max({0.0, -p.z, p.z - kHeight});
+        const double sides = std::hypot(to_boundary, below);
+        const double caps = std::min(std::abs(p.z), std::abs(p.z - kHeight));
+        return std::min(sides, inside ? caps : std::hypot(to_boundary, caps));
+    };
+    DeviationOptions options;
+    options.samples_per_edge = 3;
+    double expected = 0;
+    for (const auto& t : mesh.triangles)
+        for (int i = 0; i <= 3; ++i)
+            for (int j = 0; i + j <= 3; ++j) {
+                const double wb = i / 3.0, wc = j / 3.0;
+                expected = std::max(expected, exact(mesh.vertices[t[0]] * (1 - wb - wc) + mesh.vertices[t[1]] * wb +
+                                                    mesh.vertices[t[2]] * wc));
+            }
+    EXPECT_GT(expected, 0.005);
+    EXPECT_NEAR(max_deviation(d, mesh, options), expected, 1e-9);
+
+    // A small triangle 0.3 above the top cap just inside the round rim: the nearest seeds are the short sides'
+    // along the rim, the cap's own lie farther, and the distance is 0.3 to the cap all over.
+    Mesh above;
+    above.vertices = {{0, 9.9, kHeight + 0.3}, {0.1, 9.8, kHeight + 0.3}, {-0.1, 9.8, kHeight + 0.3}};
+    above.triangles = {{0, 1, 2}};
+    EXPECT_NEAR(max_deviation(d, above), 0.3, 1e-12);
 }
 
 TEST(MaxDeviation, TorusTubeCircle) {

@@ -33,6 +33,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -384,24 +385,33 @@ struct Seed {
     std::uint32_t patch;  // the face's cell (pair of weight-certified pieces, detail::SeedParams) the seed lies in
 };
 
-// Uniform grid over the seeds: nearest-seed and radius queries visit only nearby cells.
+// Uniform grid over seeds: nearest-seed and radius queries visit only nearby cells. It puts the seeds, which
+// its owner keeps, in the order of their cells, so a query reads them in runs.
 class SeedGrid {
 public:
-    SeedGrid(std::vector<Seed> seeds, double cell) : seeds_(std::move(seeds)) {
-        lo_ = hi_ = seeds_.front().point;
-        for (const Seed& s : seeds_) {
+    SeedGrid(std::span<Seed> seeds, double cell) : seeds_(seeds) {
+        lo_ = hi_ = seeds.front().point;
+        for (const Seed& s : seeds) {
             lo_ = {std::min(lo_.x, s.point.x), std::min(lo_.y, s.point.y), std::min(lo_.z, s.point.z)};
             hi_ = {std::max(hi_.x, s.point.x), std::max(hi_.y, s.point.y), std::max(hi_.z, s.point.z)};
         }
         const double extent = std::max({hi_.x - lo_.x, hi_.y - lo_.y, hi_.z - lo_.z, 1e-300});
+        // At most 128 cells along the box and about as many cells as seeds: a class of a few small faces in a large
+        // solid keeps a few cells, not 128^3 offsets (100 MB for a pulley's classes).
         cell_ = std::max(cell, extent / 128);
+        const auto cells = [&] {
+            double n = 1;
+            for (int a = 0; a < 3; ++a) n *= 1 + std::floor(((&hi_.x)[a] - (&lo_.x)[a]) / cell_);
+            return n;
+        };
+        while (cells() > 2.0 * static_cast<double>(seeds.size()) + 8) cell_ *= 1.25;
         for (int a = 0; a < 3; ++a) dims_[a] = 1 + static_cast<int>(((&hi_.x)[a] - (&lo_.x)[a]) / cell_);
         start_.assign(static_cast<std::size_t>(dims_[0] * dims_[1] * dims_[2]) + 1, 0);
-        for (const Seed& s : seeds_) ++start_[flat(cell_of(s.point)) + 1];
+        for (const Seed& s : seeds) ++start_[flat(cell_of(s.point)) + 1];
         for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
-        order_.resize(seeds_.size());
+        const std::vector<Seed> unsorted(seeds.begin(), seeds.end());
         std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-        for (std::size_t k = 0; k < seeds_.size(); ++k) order_[fill[flat(cell_of(seeds_[k].point))]++] = k;
+        for (const Seed& s : unsorted) seeds[fill[flat(cell_of(s.point))]++] = s;
     }
 
     // Calls visit(seed) for every seed in the cells overlapping the box of half-width r around p.
@@ -416,16 +426,17 @@ public:
             for (int y = a[1]; y <= b[1]; ++y)
                 for (int z = a[2]; z <= b[2]; ++z) {
                     const std::size_t c = flat({x, y, z});
-                    for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) visit(seeds_[order_[k]]);
+                    for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) visit(seeds_[k]);
                 }
     }
 
-    // The distance from p to its nearest seed (grows the search box until it holds the answer).
-    double nearest_distance(const Vec3& p) const {
+    // The distance from p to its nearest seed (grows the search box until it holds the answer), or a
+    // distance above `within` when no seed lies within `within`.
+    double nearest_distance(const Vec3& p, double within = std::numeric_limits<double>::infinity()) const {
         for (double r = cell_;; r *= 2) {
             double best = std::numeric_limits<double>::infinity();
             for_each_near(p, r, [&](const Seed& s) { best = std::min(best, distance(s.point, p)); });
-            if (best <= r || r > 4 * (norm(hi_ - lo_) + distance(p, 0.5 * (lo_ + hi_)) + cell_)) return best;
+            if (best <= r || r > within || r > 4 * (norm(hi_ - lo_) + distance(p, 0.5 * (lo_ + hi_)) + cell_)) return best;
         }
     }
 
@@ -439,8 +450,8 @@ private:
     std::size_t flat(const std::array<int, 3>& c) const {
         return static_cast<std::size_t>((c[0] * dims_[1] + c[1]) * dims_[2] + c[2]);
     }
-    std::vector<Seed> seeds_;
-    std::vector<std::size_t> start_, order_;
+    std::span<const Seed> seeds_;  // in the order of their cells
+    std::vector<std::size_t> start_;
     Vec3 lo_, hi_;
     double cell_ = 1;
     std::array<int, 3> dims_{1, 1, 1};
@@ -458,6 +469,7 @@ public:
         cell_spacing_.resize(faces.size());
         cell_box_.resize(faces.size());
         face_spacing_.assign(faces.size(), 0.0);
+        slot_.assign(faces.size(), kNoSlot);
         for (std::size_t f = 0; f < faces.size(); ++f) {
             const Face& face = faces[f];
             const auto id = static_cast<std::uint32_t>(f);
@@ -514,16 +526,29 @@ public:
                 row_previous = std::move(row);
             }
         }
-        spacing_ = face_spacing_.empty() ? 0.0 : *std::max_element(face_spacing_.begin(), face_spacing_.end());
-        grid_ = std::make_unique<SeedGrid>(std::move(seeds), spacing_);
+        // The seeds in classes of their faces' spacing, powers of two apart, each class in its own grid.
+        double finest = std::numeric_limits<double>::infinity();
+        for (const double h : face_spacing_)
+            if (h > 0) finest = std::min(finest, h);
+        const auto class_of = [&](const Seed& seed) {
+            return std::isfinite(finest) ? std::ilogb(std::max(face_spacing_[seed.face], finest)) : 0;
+        };
+        std::stable_sort(seeds.begin(), seeds.end(), [&](const Seed& a, const Seed& b) { return class_of(a) < class_of(b); });
+        seeds_ = std::move(seeds);
+        for (std::size_t first = 0, last = 0; first < seeds_.size(); first = last) {
+            double reach = 0;
+            for (last = first; last < seeds_.size() && class_of(seeds_[last]) == class_of(seeds_[first]); ++last)
+                reach = std::max(reach, face_spacing_[seeds_[last].face]);
+            classes_.push_back({reach, SeedGrid(std::span(seeds_).subspan(first, last - first), reach)});
+        }
     }
 
     // The exact distance from p to the solid's boundary; `warm` is set to the winning face and foot.
     // The search stops once it has a surface point within `enough` (the caller's running maximum: the
     // sample cannot raise it); the result is then that point's distance, an upper bound.
     double distance_to_solid(const Vec3& p, std::uint32_t& face, Foot& warm, double enough = -1) const {
-        const double nearest = grid_->nearest_distance(p);
-        const double radius = nearest + 2 * spacing_;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const SeedClass& c : classes_) nearest = std::min(nearest, c.grid.nearest_distance(p, nearest));
         // The few best seeds of every face with a seed within reach of the nearest one. Several, not one:
         // at a seam the nearest seed may sit on the far side of the parameter domain (u = 0 for a point at
         // u = 0.98), where Newton's step is clamped away; a neighbouring seed starts on the right side.
@@ -531,20 +556,27 @@ public:
         // patch the point faces (a polyline profile), and only a start in the right patch finds it.
         constexpr std::size_t kSeedsPerFace = 4;
         using Candidate = std::pair<double, const Seed*>;
-        // The faces within reach, few of a solid's many (a keyboard case's 991): a short list, not a slot per face.
+        // The faces within reach, few of a solid's many (a keyboard case's 991): a short list, found through
+        // slot_ (a face's place in it, cleared again on return). A search of the list for every seed took 43 % of
+        // a faceted pulley's export, hundreds of its 2,688 faces within reach of each point.
         std::vector<std::pair<std::uint32_t, std::vector<Candidate>>> best;
+        const SlotsCleared cleared{slot_, best};
         const auto best_of = [&](std::uint32_t f) -> std::vector<Candidate>& {
-            for (auto& [face_index, list] : best)
-                if (face_index == f) return list;
-            return best.emplace_back(f, std::vector<Candidate>{}).second;
+            std::uint32_t& slot = slot_[f];
+            if (slot == kNoSlot) {
+                slot = static_cast<std::uint32_t>(best.size());
+                best.emplace_back(f, std::vector<Candidate>{});
+            }
+            return best[slot].second;
         };
         std::unordered_map<std::uint64_t, std::vector<Candidate>> per_cell;
-        grid_->for_each_near(p, radius, [&](const Seed& s) {
+        // A face's foot lies within about twice its own seed spacing of one of its seeds (a cell's corner): a
+        // face whose seeds here are all farther than nearest + 3 of its spacing cannot hold it. One large face sent
+        // every query to all 1481 small faces of a Voron lock body (10.9 s for 2,242 triangles) before the seeds
+        // were held to that, and through them all (a faceted pulley: 3 cylinders beside 2,685 small planes, 60 %
+        // of its export in this search) before each class of spacing was searched only as far as its own reach.
+        const auto visit = [&](const Seed& s) {
             const double d = distance(s.point, p);
-            // A face's foot lies within about twice its own seed spacing of one of its seeds (a cell's corner):
-            // a face whose seeds here are all farther than nearest + 3 of its spacing cannot hold it (the radius
-            // is the largest face's reach). One large face sent every query to all 1481 small faces of a Voron
-            // lock body (10.9 s for 2,242 triangles).
             if (d > nearest + 3 * face_spacing_[s.face]) return;
             per_cell[(std::uint64_t{s.face} << 32) | s.patch].emplace_back(d, &s);
             auto& list = best_of(s.face);
@@ -553,7 +585,8 @@ public:
             list.insert(std::upper_bound(list.begin(), list.end(), std::make_pair(d, &s),
                                          [](const auto& a, const auto& b) { return a.first < b.first; }),
                         {d, &s});
-        });
+        };
+        for (const SeedClass& c : classes_) c.grid.for_each_near(p, nearest + 3 * c.reach, visit);
         double result = std::numeric_limits<double>::infinity();
         // Keeps the better foot; true once the result is within `enough`.
         auto take = [&](std::size_t f, Foot foot) {
@@ -562,6 +595,7 @@ public:
             return result <= enough;
         };
         std::sort(best.begin(), best.end(), [](const auto& a, const auto& b) { return a.first < b.first; });  // in face order
+        for (std::size_t k = 0; k < best.size(); ++k) slot_[best[k].first] = static_cast<std::uint32_t>(k);
         for (const auto& [f, seeds] : best) {
             if (!regions_[f].curves.empty()) {
                 if (take(f, Foot{0, 0, regions_[f].distance_to(p)})) return result;
@@ -623,6 +657,16 @@ public:
     }
 
 private:
+    static constexpr std::uint32_t kNoSlot = std::numeric_limits<std::uint32_t>::max();
+    // Clears the slots of the faces a query listed, however it returns.
+    struct SlotsCleared {
+        std::vector<std::uint32_t>& slot;
+        const std::vector<std::pair<std::uint32_t, std::vector<std::pair<double, const Seed*>>>>& listed;
+        ~SlotsCleared() {
+            for (const auto& entry : listed) slot[entry.first] = kNoSlot;
+        }
+    };
+
     // A foot on a trimmed face's surface outside its region counts as the distance to its boundary edges.
     Foot on_region(std::size_t f, const Vec3& p, const Foot& foot) const {
         if (trimmed_[f].empty() || trimmed_[f].contains(foot.u, foot.v)) return foot;
@@ -644,8 +688,17 @@ private:
     std::vector<std::vector<double>> cell_spacing_;
     std::vector<std::vector<Box>> cell_box_;
     std::vector<std::unique_ptr<detail::SurfaceEvaluator>> evaluators_;  // surface faces
-    std::unique_ptr<SeedGrid> grid_;
-    double spacing_ = 0;                // the largest of face_spacing_
+    // The seeds of the faces whose spacing is within a power of two, in a grid of that spacing; `reach` is the
+    // largest spacing of those faces.
+    struct SeedClass {
+        double reach;
+        SeedGrid grid;
+    };
+    std::vector<Seed> seeds_;  // by class, then (SeedGrid) by cell
+    std::vector<SeedClass> classes_;
+    // Per face, its place in a query's list of faces within reach (kNoSlot outside a query): scratch of
+    // distance_to_solid, so one query at a time (max_deviation's loop).
+    mutable std::vector<std::uint32_t> slot_;
     std::vector<double> face_spacing_;  // per face, the largest distance between neighbouring seeds
 };
 
