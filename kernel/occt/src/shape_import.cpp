@@ -59,11 +59,11 @@
 #include <gp_Torus.hxx>
 
 #include <algorithm>
-#include <span>
 #include <array>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -536,8 +536,8 @@ private:
     // Knots within rounding of an end of a B-spline's domain (nearer than Segment can cut, PConfusion) are a
     // file's artefact, over whose span the poles often coincide, so that the surface has no tangent plane at that
     // end (a servo's strip, SolidWorks: a first span of 1.6e-10 in a u range of 0.96, its first two poles one
-    // point). Knot removal (The NURBS Book A5.8, OpenCASCADE's RemoveUKnot) refuses them: its pole test divides
-    // by the short span. So the surface is cut at the innermost such knot (Segment) and its knots are stretched
+    // point). Knot removal (The NURBS Book A5.8) does not take them: OpenCASCADE's RemoveUKnot refuses the servo's
+    // at any tolerance. So the surface is cut at the innermost such knot (Segment) and its knots are stretched
     // back over the whole domain, which keeps the domain and the file's p-curves: taken where no point of the
     // surface moves further than `tolerance` (measured at the knots, the middles of their spans and the ends).
     static Handle(Geom_BSplineSurface) without_end_slivers(const Handle(Geom_BSplineSurface)& s, double tolerance) {
