@@ -4,6 +4,7 @@
 // limits::max_curve_points; rational weights are kept scaled by a power of two into (1/2, 1] (see
 // BezierCurve), weights() gives them back as given.
 
+#include <span>
 #include <vector>
 
 #include "ratbez/bezier_curve.hpp"
@@ -36,6 +37,8 @@ public:
     Vec4 homogeneous_point(double u) const;
     // C^(k)(u), k = 0..order: A3.2 on P^w, then the rational quotient rule (A4.2).
     std::vector<Vec3> derivatives(double u, int order) const;
+    // The same into out[0..k] for k = out.size() - 1, without allocating: the form for inner loops.
+    void derivatives(double u, std::span<Vec3> out) const;
     Vec3 derivative(double u, int order = 1) const;
 
     // Knot insertion (A5.1, Boehm): u inserted r more times; the curve is unchanged.

@@ -2,6 +2,7 @@
 
 #include "analysis/point_inversion.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "geometry/subdivision.hpp"
@@ -97,7 +98,8 @@ double newton_foot_on_curve(const NurbsCurve& curve, const Vec3& p, const Interv
     t = std::clamp(t, d.min, d.max);
     double best_t = t, best = distance(curve.point(t), p);
     for (int iteration = 0; iteration < stop.max_iterations; ++iteration) {
-        const auto der = curve.derivatives(best_t, 2);
+        std::array<Vec3, 3> der;
+        curve.derivatives(best_t, der);
         const Vec3 r = der[0] - p;
         const double f = dot(r, der[1]);
         double fp = dot(der[1], der[1]) + dot(r, der[2]);

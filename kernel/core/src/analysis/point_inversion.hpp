@@ -66,9 +66,10 @@ ParameterFoot newton_foot_on_surface(const SurfaceEvaluator& s, const Vec3& p, c
 
 // Newton on a curve for the nearest point to p from t, kept in `box` (the domain, or a piece of it), with
 // the step halved until the distance decreases; returns the foot's parameter. (`stop.good_enough` is not
-// used.)
+// used.) By default it stops once the step moves the curve by rounding only: at the foot, halving on for 60
+// more points took a fifth of a 117-part robot arm's export in the deviation's planar regions.
 double newton_foot_on_curve(const NurbsCurve& curve, const Vec3& p, const Interval& box, double t,
-                            const NewtonStop& stop = {.max_iterations = 30});
+                            const NewtonStop& stop = {.max_iterations = 30, .at_rounding = true});
 
 // An upper bound of the distance from p to a surface, cheap: the distance to the surface point
 // `surface_point` at (u, v), improved (when above `good_enough`) by up to two plain Gauss–Newton steps

@@ -197,29 +197,38 @@ Vec3 NurbsCurve::point(double u) const {
 
 std::vector<Vec3> NurbsCurve::derivatives(double u, int order) const {
     limits::require_derivative_order(order, "order");
+    std::vector<Vec3> result(to_size(order) + 1);
+    derivatives(u, result);
+    return result;
+}
+
+void NurbsCurve::derivatives(double u, std::span<Vec3> out) const {
+    require(!out.empty(), "out", "must hold at least C(u)");
+    const int order = static_cast<int>(out.size()) - 1;
+    limits::require_derivative_order(order, "order");
     const int span = find_span(degree_, knots_, u);  // validates u against the domain
     const int highest = std::min(order, degree_);    // derivatives of C^w above p vanish
     const std::size_t width = to_size(degree_) + 1;
-    std::vector<double> ders(to_size(highest + 1) * width);
-    basis_function_derivatives(span, u, degree_, knots_, highest, ders);
+    // On the stack up to the orders and degrees inner loops ask (Newton's: order 2, cubic and below).
+    detail::Scratch<double, 32> ders(to_size(highest + 1) * width);
+    basis_function_derivatives(span, u, degree_, knots_, highest, ders.values());
 
     // A3.2 on P^w: CK^w[k] = sum_j N^(k)_{span-p+j,p}(u) P^w_{span-p+j}.
-    std::vector<Vec4> ckw(to_size(order) + 1);
+    detail::Scratch<Vec4, 8> ckw(out.size());
+    for (std::size_t k = 0; k < out.size(); ++k) ckw[k] = Vec4{};
     const std::size_t first = to_size(span - degree_);
     for (std::size_t k = 0; k <= to_size(highest); ++k)
         for (std::size_t j = 0; j < width; ++j) ckw[k] += ders[k * width + j] * pw_[first + j];
 
-    std::vector<Vec3> result(to_size(order) + 1);
     if (!rational_) {
         // w = 1 identically: C^(k) = A^(k) with no quotient to form.
-        for (std::size_t k = 0; k < result.size(); ++k) result[k] = weighted_part(ckw[k]);
+        for (std::size_t k = 0; k < out.size(); ++k) out[k] = weighted_part(ckw[k]);
     } else {
-        detail::rational_curve_derivatives(ckw, result);  // A4.2
+        detail::rational_curve_derivatives(ckw.values(), out);  // A4.2
     }
     // Finite control points and knots can still give derivatives past the double range (the k-th one
     // scales like 1 / (knot span)^k: a span of 1e-300 overflows the second): an Error, not inf or NaN.
-    detail::require_finite_derivatives(result, u);
-    return result;
+    detail::require_finite_derivatives(out, u);
 }
 
 Vec3 NurbsCurve::derivative(double u, int order) const {
