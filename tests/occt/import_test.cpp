@@ -20,6 +20,7 @@
 #include <Geom_OffsetSurface.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
@@ -875,6 +876,72 @@ TEST(ImportShapes, AFaceOfNoAreaBetweenTwoEdgesIsTakenOutAndTheEdgesJoined) {
     const TopoDS_Shape slab = BRepPrimAPI_MakePrism(disc, gp_Vec(0, 0, 1)).Shape();
     ASSERT_TRUE(BRepCheck_Analyzer(slab).IsValid());
     EXPECT_NEAR(from_occt(slab).volume(), pi, 1e-12);
+}
+
+// A tetrahedron whose edge from v0 to v1 is one line for the bottom face and two for the front face, through a
+// vertex m `offset` out of the line's middle, with a flat triangle between them (an endgame trackball's shell,
+// Fusion 360: a face of three edges 0.057 long, its third vertex within the file's tolerance of its long edge).
+// The front face's two lines carry the tolerance `offset`; OpenCASCADE's BRepCheck calls it valid.
+TopoDS_Solid tetrahedron_with_a_flat_triangle(double offset) {
+    const gp_Pnt p0(0, 0, 0), p1(2, 0, 0), p2(1, 2, 0), p3(1, 0.7, 1.5);
+    const gp_Pnt pm(1, -offset / std::sqrt(2), -offset / std::sqrt(2));  // out along the bisector of the two faces
+    const TopoDS_Vertex v0 = vertex_at(p0), v1 = vertex_at(p1), v2 = vertex_at(p2), v3 = vertex_at(p3), vm = vertex_at(pm);
+    const auto edge = [](const TopoDS_Vertex& a, const TopoDS_Vertex& b) { return BRepBuilderAPI_MakeEdge(a, b).Edge(); };
+    const TopoDS_Edge line = edge(v0, v1), e0m = edge(v0, vm), em1 = edge(vm, v1);
+    BRep_Builder builder;
+    builder.UpdateEdge(e0m, offset);
+    builder.UpdateEdge(em1, offset);
+    builder.UpdateVertex(vm, offset);
+    const TopoDS_Edge e12 = edge(v1, v2), e20 = edge(v2, v0), e13 = edge(v1, v3), e30 = edge(v3, v0), e23 = edge(v2, v3);
+    const auto face = [](const gp_Pnt& on, const gp_Dir& normal, const TopoDS_Wire& wire) {
+        return BRepBuilderAPI_MakeFace(gp_Pln(on, normal), wire).Face();
+    };
+    const auto normal = [](const gp_Pnt& a, const gp_Pnt& b, const gp_Pnt& c) { return gp_Dir(gp_Vec(a, b).Crossed(gp_Vec(a, c))); };
+    BRepBuilderAPI_MakeWire front;
+    for (const TopoDS_Edge& e : {e0m, em1, e13, e30}) front.Add(e);
+    TopoDS_Shell shell;
+    builder.MakeShell(shell);
+    builder.Add(shell, face(p0, normal(p0, p1, p2), BRepBuilderAPI_MakeWire(line, e12, e20).Wire()));
+    builder.Add(shell, face(p0, normal(p0, p1, p3), front.Wire()));
+    builder.Add(shell, face(p0, normal(p0, p2, p3), BRepBuilderAPI_MakeWire(e20, e23, e30).Wire()));
+    builder.Add(shell, face(p1, normal(p1, p2, p3), BRepBuilderAPI_MakeWire(e12, e23, e13).Wire()));
+    builder.Add(shell, face(p0, normal(p0, p1, pm), BRepBuilderAPI_MakeWire(line, em1, e0m).Wire()));  // the flat triangle
+    ShapeFix_Shell orient(shell);
+    orient.Perform();
+    TopoDS_Solid solid;
+    builder.MakeSolid(solid);
+    builder.Add(solid, orient.Shell());
+    BRepLib::OrientClosedSolid(solid);
+    return solid;
+}
+
+// The flat triangle goes, its long edge replaced by the other two (sliver_faces.hpp): four faces that mesh
+// closed. Triangles that are not flat within the tolerance stay faces.
+TEST(ImportShapes, AFlatTriangleIsTakenOutAndItsLongEdgeReplacedByTheOtherTwo) {
+    const double offset = 1e-3;
+    const TopoDS_Solid flat = tetrahedron_with_a_flat_triangle(offset);
+    ASSERT_TRUE(BRepCheck_Analyzer(flat).IsValid());
+    const double volume = 2 * 2 * 1.5 / 6;
+    const Solid solid = from_occt(flat);
+    EXPECT_EQ(solid.faces().size(), 4u);
+    EXPECT_NEAR(solid.volume(), volume, 4 * offset);
+    const Mesh mesh = tessellate(solid, default_tolerance(solid));
+    EXPECT_TRUE(mesh.is_closed());
+    EXPECT_TRUE(mesh_topology(mesh).oriented_manifold());
+    EXPECT_NEAR(mesh.volume(), volume, 4 * offset);
+    EXPECT_TRUE(BRepCheck_Analyzer(to_occt(solid)).IsValid());
+    // Triangles with area keep their faces: a tetrahedron of four.
+    const gp_Pnt p[4] = {gp_Pnt(0, 0, 0), gp_Pnt(2, 0, 0), gp_Pnt(1, 2, 0), gp_Pnt(1, 0.7, 1.5)};
+    BRepBuilderAPI_Sewing sewing;
+    for (const auto& [a, b, c] : {std::array{0, 2, 1}, std::array{0, 1, 3}, std::array{0, 3, 2}, std::array{1, 2, 3}})
+        sewing.Add(BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakePolygon(p[a], p[b], p[c], true).Wire()).Face());
+    sewing.Perform();
+    TopoDS_Solid tetrahedron;
+    BRep_Builder().MakeSolid(tetrahedron);
+    BRep_Builder().Add(tetrahedron, TopoDS::Shell(TopExp_Explorer(sewing.SewedShape(), TopAbs_SHELL).Current()));
+    BRepLib::OrientClosedSolid(tetrahedron);
+    EXPECT_EQ(from_occt(tetrahedron).faces().size(), 4u);
+    EXPECT_NEAR(from_occt(tetrahedron).volume(), volume, 1e-12);
 }
 
 // A sphere's B-spline net with one inner control point moved to y = 1e100 (found by fuzz_read_step): a needle that

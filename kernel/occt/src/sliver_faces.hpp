@@ -9,9 +9,13 @@
 // samples put them.
 // OpenCASCADE's shape analysis finds the case (ShapeAnalysis_CheckSmallFace::CheckSingleStrip: two vertices, two
 // edges within tolerance of each other): the face goes, its second edge becomes the first wherever it is used,
-// and the face beside it gets its curve on that edge projected (ShapeFix_Edge). Only faces with two vertices are
-// taken: OpenCASCADE's own ShapeFix_FixSmallFace::FixStripFace also takes thin faces of four edges, which on the
-// same file moved volumes by 1e-4 and left a solid invalid.
+// and the face beside it gets its curve on that edge projected (ShapeFix_Edge).
+// A flat triangle is the same with one of the two edges written as two: a face of three edges and three vertices
+// whose two short edges (and so their vertex) keep within twice its tolerance of the long one (an endgame
+// trackball's shell, Fusion 360: a cylinder's face 0.057 long whose loop ran clockwise). The long edge becomes the
+// two short ones wherever it is used, and the face beside it gets its curves on them.
+// Thin faces of four edges are left: OpenCASCADE's own ShapeFix_FixSmallFace::FixStripFace also takes those, which
+// on the Xol file moved volumes by 1e-4 and left a solid invalid.
 
 #include <TopoDS_Shape.hxx>
 
