@@ -808,34 +808,30 @@ TEST(ImportShapes, ASolidWithAVoidHasTwoShells) {
     EXPECT_NEAR(occt_volume(back), solid.volume(), 1e-6 * solid.volume());
 }
 
-// A tetrahedron whose edge from v0 to v1 was written twice, as a line for the bottom face and as a curve bulging
-// `bulge` out of it for the front face, with a face of no area between the two (a Fusion 360 mount of the Xol
-// toolhead has such slivers between a cone and a cylinder). Each part is within the curve's tolerance `bulge`,
-// and OpenCASCADE's BRepCheck calls it valid.
-TopoDS_Solid tetrahedron_with_a_sliver(double bulge) {
+// The tetrahedron (0, 0, 0), (2, 0, 0), (1, 2, 0), (1, 0.7, 1.5) of vertices v0 .. v3, whose edge from v0 to v1 the
+// bottom face runs as `bottom` and the front face as the edges `front`, with `between` as a fifth face.
+TopoDS_Solid tetrahedron_around(const TopoDS_Vertex& v0, const TopoDS_Vertex& v1, const TopoDS_Edge& bottom,
+                                const std::vector<TopoDS_Edge>& front, const TopoDS_Face& between) {
     const gp_Pnt p0(0, 0, 0), p1(2, 0, 0), p2(1, 2, 0), p3(1, 0.7, 1.5);
-    const TopoDS_Vertex v0 = vertex_at(p0), v1 = vertex_at(p1), v2 = vertex_at(p2), v3 = vertex_at(p3);
-    const TopoDS_Edge line = BRepBuilderAPI_MakeEdge(v0, v1).Edge();
-    // A quadratic Bezier whose middle control point lies 2 bulge out along the bisector of the two faces' normals:
-    // its middle, bulge.
-    TColgp_Array1OfPnt poles(1, 3);
-    poles(1) = p0, poles(2) = gp_Pnt(1, -2 * bulge / std::sqrt(2), -2 * bulge / std::sqrt(2)), poles(3) = p1;
-    const TopoDS_Edge bent = BRepBuilderAPI_MakeEdge(new Geom_BezierCurve(poles), v0, v1).Edge();
-    BRep_Builder builder;
-    builder.UpdateEdge(bent, bulge);
+    const TopoDS_Vertex v2 = vertex_at(p2), v3 = vertex_at(p3);
     const auto edge = [](const TopoDS_Vertex& a, const TopoDS_Vertex& b) { return BRepBuilderAPI_MakeEdge(a, b).Edge(); };
     const TopoDS_Edge e12 = edge(v1, v2), e20 = edge(v2, v0), e13 = edge(v1, v3), e30 = edge(v3, v0), e23 = edge(v2, v3);
     const auto face = [](const gp_Pnt& on, const gp_Dir& normal, const TopoDS_Wire& wire) {
         return BRepBuilderAPI_MakeFace(gp_Pln(on, normal), wire).Face();
     };
     const auto normal = [](const gp_Pnt& a, const gp_Pnt& b, const gp_Pnt& c) { return gp_Dir(gp_Vec(a, b).Crossed(gp_Vec(a, c))); };
+    BRepBuilderAPI_MakeWire front_wire;
+    for (const TopoDS_Edge& e : front) front_wire.Add(e);
+    front_wire.Add(e13);
+    front_wire.Add(e30);
+    BRep_Builder builder;
     TopoDS_Shell shell;
     builder.MakeShell(shell);
-    builder.Add(shell, face(p0, normal(p0, p1, p2), BRepBuilderAPI_MakeWire(line, e12, e20).Wire()));
-    builder.Add(shell, face(p0, normal(p0, p1, p3), BRepBuilderAPI_MakeWire(bent, e13, e30).Wire()));
+    builder.Add(shell, face(p0, normal(p0, p1, p2), BRepBuilderAPI_MakeWire(bottom, e12, e20).Wire()));
+    builder.Add(shell, face(p0, normal(p0, p1, p3), front_wire.Wire()));
     builder.Add(shell, face(p0, normal(p0, p2, p3), BRepBuilderAPI_MakeWire(e20, e23, e30).Wire()));
     builder.Add(shell, face(p1, normal(p1, p2, p3), BRepBuilderAPI_MakeWire(e12, e23, e13).Wire()));
-    builder.Add(shell, face(p0, gp_Dir(0, 1, -1), BRepBuilderAPI_MakeWire(line, bent).Wire()));  // the sliver
+    builder.Add(shell, between);
     ShapeFix_Shell orient(shell);
     orient.Perform();
     TopoDS_Solid solid;
@@ -843,6 +839,24 @@ TopoDS_Solid tetrahedron_with_a_sliver(double bulge) {
     builder.Add(solid, orient.Shell());
     BRepLib::OrientClosedSolid(solid);
     return solid;
+}
+
+// The tetrahedron whose edge from v0 to v1 was written twice, as a line for the bottom face and as a curve bulging
+// `bulge` out of it for the front face, with a face of no area between the two (a Fusion 360 mount of the Xol
+// toolhead has such slivers between a cone and a cylinder). Each part is within the curve's tolerance `bulge`,
+// and OpenCASCADE's BRepCheck calls it valid.
+TopoDS_Solid tetrahedron_with_a_sliver(double bulge) {
+    const gp_Pnt p0(0, 0, 0), p1(2, 0, 0);
+    const TopoDS_Vertex v0 = vertex_at(p0), v1 = vertex_at(p1);
+    const TopoDS_Edge line = BRepBuilderAPI_MakeEdge(v0, v1).Edge();
+    // A quadratic Bezier whose middle control point lies 2 bulge out along the bisector of the two faces' normals:
+    // its middle, bulge.
+    TColgp_Array1OfPnt poles(1, 3);
+    poles(1) = p0, poles(2) = gp_Pnt(1, -2 * bulge / std::sqrt(2), -2 * bulge / std::sqrt(2)), poles(3) = p1;
+    const TopoDS_Edge bent = BRepBuilderAPI_MakeEdge(new Geom_BezierCurve(poles), v0, v1).Edge();
+    BRep_Builder().UpdateEdge(bent, bulge);
+    const TopoDS_Face sliver = BRepBuilderAPI_MakeFace(gp_Pln(p0, gp_Dir(0, 1, -1)), BRepBuilderAPI_MakeWire(line, bent).Wire()).Face();
+    return tetrahedron_around(v0, v1, line, {bent}, sliver);
 }
 
 // The sliver goes, its two edges one (sliver_faces.hpp): a tetrahedron of four faces that meshes closed (the
@@ -878,41 +892,23 @@ TEST(ImportShapes, AFaceOfNoAreaBetweenTwoEdgesIsTakenOutAndTheEdgesJoined) {
     EXPECT_NEAR(from_occt(slab).volume(), pi, 1e-12);
 }
 
-// A tetrahedron whose edge from v0 to v1 is one line for the bottom face and two for the front face, through a
+// The tetrahedron whose edge from v0 to v1 is one line for the bottom face and two for the front face, through a
 // vertex m `offset` out of the line's middle, with a flat triangle between them (an endgame trackball's shell,
 // Fusion 360: a face of three edges 0.057 long, its third vertex within the file's tolerance of its long edge).
 // The front face's two lines carry the tolerance `offset`; OpenCASCADE's BRepCheck calls it valid.
 TopoDS_Solid tetrahedron_with_a_flat_triangle(double offset) {
-    const gp_Pnt p0(0, 0, 0), p1(2, 0, 0), p2(1, 2, 0), p3(1, 0.7, 1.5);
+    const gp_Pnt p0(0, 0, 0), p1(2, 0, 0);
     const gp_Pnt pm(1, -offset / std::sqrt(2), -offset / std::sqrt(2));  // out along the bisector of the two faces
-    const TopoDS_Vertex v0 = vertex_at(p0), v1 = vertex_at(p1), v2 = vertex_at(p2), v3 = vertex_at(p3), vm = vertex_at(pm);
+    const TopoDS_Vertex v0 = vertex_at(p0), v1 = vertex_at(p1), vm = vertex_at(pm);
     const auto edge = [](const TopoDS_Vertex& a, const TopoDS_Vertex& b) { return BRepBuilderAPI_MakeEdge(a, b).Edge(); };
     const TopoDS_Edge line = edge(v0, v1), e0m = edge(v0, vm), em1 = edge(vm, v1);
     BRep_Builder builder;
     builder.UpdateEdge(e0m, offset);
     builder.UpdateEdge(em1, offset);
     builder.UpdateVertex(vm, offset);
-    const TopoDS_Edge e12 = edge(v1, v2), e20 = edge(v2, v0), e13 = edge(v1, v3), e30 = edge(v3, v0), e23 = edge(v2, v3);
-    const auto face = [](const gp_Pnt& on, const gp_Dir& normal, const TopoDS_Wire& wire) {
-        return BRepBuilderAPI_MakeFace(gp_Pln(on, normal), wire).Face();
-    };
-    const auto normal = [](const gp_Pnt& a, const gp_Pnt& b, const gp_Pnt& c) { return gp_Dir(gp_Vec(a, b).Crossed(gp_Vec(a, c))); };
-    BRepBuilderAPI_MakeWire front;
-    for (const TopoDS_Edge& e : {e0m, em1, e13, e30}) front.Add(e);
-    TopoDS_Shell shell;
-    builder.MakeShell(shell);
-    builder.Add(shell, face(p0, normal(p0, p1, p2), BRepBuilderAPI_MakeWire(line, e12, e20).Wire()));
-    builder.Add(shell, face(p0, normal(p0, p1, p3), front.Wire()));
-    builder.Add(shell, face(p0, normal(p0, p2, p3), BRepBuilderAPI_MakeWire(e20, e23, e30).Wire()));
-    builder.Add(shell, face(p1, normal(p1, p2, p3), BRepBuilderAPI_MakeWire(e12, e23, e13).Wire()));
-    builder.Add(shell, face(p0, normal(p0, p1, pm), BRepBuilderAPI_MakeWire(line, em1, e0m).Wire()));  // the flat triangle
-    ShapeFix_Shell orient(shell);
-    orient.Perform();
-    TopoDS_Solid solid;
-    builder.MakeSolid(solid);
-    builder.Add(solid, orient.Shell());
-    BRepLib::OrientClosedSolid(solid);
-    return solid;
+    const gp_Dir normal(gp_Vec(p0, p1).Crossed(gp_Vec(p0, pm)));
+    const TopoDS_Face triangle = BRepBuilderAPI_MakeFace(gp_Pln(p0, normal), BRepBuilderAPI_MakeWire(line, em1, e0m).Wire()).Face();
+    return tetrahedron_around(v0, v1, line, {e0m, em1}, triangle);
 }
 
 // The flat triangle goes, its long edge replaced by the other two (sliver_faces.hpp): four faces that mesh
