@@ -487,29 +487,67 @@ TEST(ImportShapes, TrimmedFacesImportExactly) {
 // Ventilator.stp of pythonocc-demos: an exporter's p-curves leave their B-spline surface's domain by 2.3e-9 of its
 // range (the edges' tolerance 2e-4), and the face was refused ("leaves its exact form's domain"). A bounded
 // direction comes back inside from as far as the face's tolerance reaches in its parameter; beyond, still refused.
+// `shape` with the p-curve of its first face's side v = v1 (of its surface's bounds) moved `overshoot` of the v range
+// past it.
+TopoDS_Shape with_side_past_v1(const TopoDS_Shape& shape, double overshoot) {
+    const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(shape, TopAbs_FACE).Current());
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRep_Tool::Surface(face)->Bounds(u0, u1, v0, v1);
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge edge = TopoDS::Edge(it.Current());
+        double first = 0, last = 0;
+        const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
+        if (std::abs(pcurve->Value(0.5 * (first + last)).Y() - v1) > 1e-12 * (v1 - v0)) continue;  // the side v = v1
+        const Handle(Geom2d_Curve) moved = Handle(Geom2d_Curve)::DownCast(pcurve->Translated(gp_Vec2d(0, overshoot * (v1 - v0))));
+        BRep_Builder().UpdateEdge(edge, moved, face, BRep_Tool::Tolerance(edge));
+        return shape;
+    }
+    ADD_FAILURE() << "no edge on the side v = v1";
+    return shape;
+}
+
 TEST(ImportShapes, PCurvesJustOutsideABSplineDomainComeBackInside) {
     const auto with_pcurve_outside = [](double overshoot) {
-        const TopoDS_Shape box = BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeBox(10, 10, 10).Shape()).Shape();
-        const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current());
-        double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-        BRep_Tool::Surface(face)->Bounds(u0, u1, v0, v1);
-        for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
-            const TopoDS_Edge edge = TopoDS::Edge(it.Current());
-            double first = 0, last = 0;
-            const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-            const gp_Pnt2d middle = pcurve->Value(0.5 * (first + last));
-            if (std::abs(middle.Y() - v1) > 1e-12 * (v1 - v0)) continue;  // the side v = v1
-            const Handle(Geom2d_Curve) moved = Handle(Geom2d_Curve)::DownCast(pcurve->Translated(gp_Vec2d(0, overshoot * (v1 - v0))));
-            BRep_Builder().UpdateEdge(edge, moved, face, BRep_Tool::Tolerance(edge));
-            return box;
-        }
-        ADD_FAILURE() << "no edge on the side v = v1";
-        return box;
+        return with_side_past_v1(BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeBox(10, 10, 10).Shape()).Shape(), overshoot);
     };
     // 3e-9 of the range is 3e-8 on the 10 mm face, inside its edges' tolerance 1e-7.
     EXPECT_NEAR(from_occt(with_pcurve_outside(3e-9)).volume(), 1000, 1e-9 * 1000);
     const std::string refused = refusal(with_pcurve_outside(1e-6));
     EXPECT_NE(refused.find("leaves its"), std::string::npos) << refused;
+}
+
+// A box of side `size` whose first face is a B-spline over the face's parameter rectangle (its plane), changed by
+// `reshape` (which must keep the face's four sides where they are, and returns how far the face's p-curves move).
+template <class Reshape>
+TopoDS_Shape box_with_a_bspline_face(double size, Reshape&& reshape) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(size, size, size).Shape();
+    const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current());
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    const Handle(Geom_BSplineSurface) surface =
+        GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(BRep_Tool::Surface(face), u0, u1, v0, v1));
+    const gp_Vec2d shift = reshape(*surface);
+    std::vector<std::pair<TopoDS_Edge, Handle(Geom2d_Curve)>> pcurves;  // kept on the new surface
+    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
+        const TopoDS_Edge edge = TopoDS::Edge(it.Current());
+        double first = 0, last = 0;
+        pcurves.emplace_back(edge, Handle(Geom2d_Curve)::DownCast(BRep_Tool::CurveOnSurface(edge, face, first, last)->Translated(shift)));
+    }
+    BRep_Builder builder;
+    builder.UpdateFace(face, surface, TopLoc_Location(), BRep_Tool::Tolerance(face));
+    for (const auto& [edge, pcurve] : pcurves) builder.UpdateEdge(edge, pcurve, face, BRep_Tool::Tolerance(edge));
+    BRepLib::SameParameter(box, 1e-7, true);
+    return box;
+}
+
+// A 10 mm box whose first face is a B-spline of degree 3 in v, then changed by `reshape` (box_with_a_bspline_face).
+template <class Reshape>
+TopoDS_Shape box_with_a_cubic_face(Reshape&& reshape) {
+    return box_with_a_bspline_face(10, [&](Geom_BSplineSurface& surface) {
+        surface.IncreaseDegree(surface.UDegree(), 3);
+        reshape(surface);
+        return gp_Vec2d(0, 0);
+    });
 }
 
 // A Voron blower duct (Autodesk's translator) has a natural B-spline face whose sides end 7e-10 inside its v range
@@ -519,59 +557,21 @@ TEST(ImportShapes, PCurvesJustOutsideABSplineDomainComeBackInside) {
 TEST(ImportShapes, NaturalFacesEndingJustInsideTheirSurfaceSpanIt) {
     // A box whose first face is a B-spline (its plane over the face's rectangle), a natural face beside planes,
     // its v range moved to start where the duct's does (-1.29855751220281).
-    const TopoDS_Shape box = BRepPrimAPI_MakeBox(0.3, 0.3, 0.3).Shape();
-    const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current());
-    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-    BRepTools::UVBounds(face, u0, u1, v0, v1);
-    const Handle(Geom_BSplineSurface) surface =
-        GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(BRep_Tool::Surface(face), u0, u1, v0, v1));
-    ASSERT_NEAR(v1 - v0, 0.3, 1e-12);
-    const double start = -1.29855751220281;
-    TColStd_Array1OfReal v_knots(1, surface->NbVKnots());
-    surface->VKnots(v_knots);
-    for (int k = v_knots.Lower(); k <= v_knots.Upper(); ++k) v_knots(k) += start - v0;
-    v_knots(v_knots.Lower()) -= 7e-10;  // the surface reaches 7e-10 further than the face (2e-10 in space)
-    surface->SetVKnots(v_knots);
-    std::vector<std::pair<TopoDS_Edge, Handle(Geom2d_Curve)>> pcurves;  // moved with the knots
-    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
-        const TopoDS_Edge edge = TopoDS::Edge(it.Current());
-        double first = 0, last = 0;
-        const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-        pcurves.emplace_back(edge, Handle(Geom2d_Curve)::DownCast(pcurve->Translated(gp_Vec2d(0, start - v0))));
-    }
-    BRep_Builder builder;
-    builder.UpdateFace(face, surface, TopLoc_Location(), BRep_Tool::Tolerance(face));
-    for (const auto& [edge, pcurve] : pcurves) builder.UpdateEdge(edge, pcurve, face, BRep_Tool::Tolerance(edge));
+    const TopoDS_Shape box = box_with_a_bspline_face(0.3, [](Geom_BSplineSurface& surface) {
+        TColStd_Array1OfReal v_knots(1, surface.NbVKnots());
+        surface.VKnots(v_knots);
+        const double v0 = v_knots(1), start = -1.29855751220281;
+        EXPECT_NEAR(v_knots(v_knots.Upper()) - v0, 0.3, 1e-12);
+        for (int k = v_knots.Lower(); k <= v_knots.Upper(); ++k) v_knots(k) += start - v0;
+        v_knots(v_knots.Lower()) -= 7e-10;  // the surface reaches 7e-10 further than the face (2e-10 in space)
+        surface.SetVKnots(v_knots);
+        return gp_Vec2d(0, start - v0);  // the p-curves move with the knots
+    });
     ASSERT_TRUE(BRepCheck_Analyzer(box).IsValid());
     const Solid solid = from_occt(box);
     EXPECT_NEAR(solid.volume(), 0.027, 1e-9 * 0.027);
     EXPECT_EQ(solid.faces()[0].kind(), Face::Kind::surface);
     EXPECT_TRUE(BRepCheck_Analyzer(to_occt(solid)).IsValid());
-}
-
-// A 10 mm box whose first face is a B-spline of degree 3 in v over the face's parameter rectangle, its poles and
-// knots then changed by `reshape` (which must keep the face's four sides where they are), its p-curves kept.
-template <class Reshape>
-TopoDS_Shape box_with_a_cubic_face(Reshape&& reshape) {
-    const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 10, 10).Shape();
-    const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current());
-    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-    BRepTools::UVBounds(face, u0, u1, v0, v1);
-    const Handle(Geom_BSplineSurface) surface =
-        GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(BRep_Tool::Surface(face), u0, u1, v0, v1));
-    surface->IncreaseDegree(surface->UDegree(), 3);
-    reshape(*surface);
-    std::vector<std::pair<TopoDS_Edge, Handle(Geom2d_Curve)>> pcurves;  // kept on the new surface
-    for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
-        const TopoDS_Edge edge = TopoDS::Edge(it.Current());
-        double first = 0, last = 0;
-        pcurves.emplace_back(edge, BRep_Tool::CurveOnSurface(edge, face, first, last));
-    }
-    BRep_Builder builder;
-    builder.UpdateFace(face, surface, TopLoc_Location(), BRep_Tool::Tolerance(face));
-    for (const auto& [edge, pcurve] : pcurves) builder.UpdateEdge(edge, pcurve, face, BRep_Tool::Tolerance(edge));
-    BRepLib::SameParameter(box, 1e-7, true);
-    return box;
 }
 
 // A keyboard case's edge fillet (Fusion 360, novesce/optimus-tkl) is a natural face whose p-curves run 4.3e-5 past
@@ -582,23 +582,10 @@ TEST(ImportShapes, PCurvesPastABSplineEndWhereTheSurfaceStandsStillComeBackInsid
     const auto with_side_past_the_end = [](double overshoot) {
         // The last three rows of poles are one: y(v) = 10 (1 - (1 - v)^3) on [0, 1], still to second order at v = 1,
         // so a p-curve `overshoot` past it is 10 overshoot^3 off the face's side.
-        const TopoDS_Shape box = box_with_a_cubic_face([](Geom_BSplineSurface& s) {
-            for (int i = 1; i <= s.NbUPoles(); ++i) s.SetPole(i, 2, s.Pole(i, 4)), s.SetPole(i, 3, s.Pole(i, 4));
-        });
-        const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(box, TopAbs_FACE).Current());
-        double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-        BRep_Tool::Surface(face)->Bounds(u0, u1, v0, v1);
-        for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next()) {
-            const TopoDS_Edge edge = TopoDS::Edge(it.Current());
-            double first = 0, last = 0;
-            const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-            if (std::abs(pcurve->Value(0.5 * (first + last)).Y() - v1) > 1e-12 * (v1 - v0)) continue;  // the side v = v1
-            BRep_Builder().UpdateEdge(edge, Handle(Geom2d_Curve)::DownCast(pcurve->Translated(gp_Vec2d(0, overshoot * (v1 - v0)))),
-                                      face, BRep_Tool::Tolerance(edge));
-            return box;
-        }
-        ADD_FAILURE() << "no edge on the side v = v1";
-        return box;
+        return with_side_past_v1(box_with_a_cubic_face([](Geom_BSplineSurface& s) {
+                                     for (int i = 1; i <= s.NbUPoles(); ++i) s.SetPole(i, 2, s.Pole(i, 4)), s.SetPole(i, 3, s.Pole(i, 4));
+                                 }),
+                                 overshoot);
     };
     // 1e-3 past the end: 1e-8 off, inside the edges' tolerance 1e-7; the largest derivative (30) reaches 3.3e-9.
     const Solid solid = from_occt(with_side_past_the_end(1e-3));
@@ -859,20 +846,26 @@ TopoDS_Solid tetrahedron_with_a_sliver(double bulge) {
     return tetrahedron_around(v0, v1, line, {bent}, sliver);
 }
 
-// The sliver goes, its two edges one (sliver_faces.hpp): a tetrahedron of four faces that meshes closed (the
-// mount's sliver triangles faced whichever way its two edges' samples put them, and its mesh did not close).
-TEST(ImportShapes, AFaceOfNoAreaBetweenTwoEdgesIsTakenOutAndTheEdgesJoined) {
-    const double bulge = 1e-3;
-    const TopoDS_Solid sliver = tetrahedron_with_a_sliver(bulge);
-    ASSERT_TRUE(BRepCheck_Analyzer(sliver).IsValid());
-    const double volume = 2 * 2 * 1.5 / 6;  // |det(p1 - p0, p2 - p0, p3 - p0)| / 6
-    const Solid solid = from_occt(sliver);
+constexpr double kTetrahedronVolume = 2 * 2 * 1.5 / 6;  // tetrahedron_around's: |det(p1 - p0, p2 - p0, p3 - p0)| / 6
+
+// `shape`, valid to OpenCASCADE, reads as tetrahedron_around's four faces (its fifth face, of no area, taken out)
+// within `off` of its volume, and meshes closed and oriented.
+void expect_the_tetrahedron(const TopoDS_Solid& shape, double off) {
+    ASSERT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+    const Solid solid = from_occt(shape);
     EXPECT_EQ(solid.faces().size(), 4u);
-    EXPECT_NEAR(solid.volume(), volume, 4 * bulge);
+    EXPECT_NEAR(solid.volume(), kTetrahedronVolume, 4 * off);
     const Mesh mesh = tessellate(solid, default_tolerance(solid));
     EXPECT_TRUE(mesh.is_closed());
     EXPECT_TRUE(mesh_topology(mesh).oriented_manifold());
-    EXPECT_NEAR(mesh.volume(), volume, 4 * bulge);
+    EXPECT_NEAR(mesh.volume(), kTetrahedronVolume, 4 * off);
+    EXPECT_TRUE(BRepCheck_Analyzer(to_occt(solid)).IsValid());
+}
+
+// The sliver goes, its two edges one (sliver_faces.hpp): a tetrahedron of four faces that meshes closed (the
+// mount's sliver triangles faced whichever way its two edges' samples put them, and its mesh did not close).
+TEST(ImportShapes, AFaceOfNoAreaBetweenTwoEdgesIsTakenOutAndTheEdgesJoined) {
+    expect_the_tetrahedron(tetrahedron_with_a_sliver(1e-3), 1e-3);
     // A face of two edges far apart stays: a half cylinder's ends, each a half circle and its diameter.
     const TopoDS_Shape half = BRepPrimAPI_MakeCylinder(1, 2, pi).Shape();
     std::size_t faces = 0;
@@ -914,18 +907,7 @@ TopoDS_Solid tetrahedron_with_a_flat_triangle(double offset) {
 // The flat triangle goes, its long edge replaced by the other two (sliver_faces.hpp): four faces that mesh
 // closed. Triangles that are not flat within the tolerance stay faces.
 TEST(ImportShapes, AFlatTriangleIsTakenOutAndItsLongEdgeReplacedByTheOtherTwo) {
-    const double offset = 1e-3;
-    const TopoDS_Solid flat = tetrahedron_with_a_flat_triangle(offset);
-    ASSERT_TRUE(BRepCheck_Analyzer(flat).IsValid());
-    const double volume = 2 * 2 * 1.5 / 6;
-    const Solid solid = from_occt(flat);
-    EXPECT_EQ(solid.faces().size(), 4u);
-    EXPECT_NEAR(solid.volume(), volume, 4 * offset);
-    const Mesh mesh = tessellate(solid, default_tolerance(solid));
-    EXPECT_TRUE(mesh.is_closed());
-    EXPECT_TRUE(mesh_topology(mesh).oriented_manifold());
-    EXPECT_NEAR(mesh.volume(), volume, 4 * offset);
-    EXPECT_TRUE(BRepCheck_Analyzer(to_occt(solid)).IsValid());
+    expect_the_tetrahedron(tetrahedron_with_a_flat_triangle(1e-3), 1e-3);
     // Triangles with area keep their faces: a tetrahedron of four.
     const gp_Pnt p[4] = {gp_Pnt(0, 0, 0), gp_Pnt(2, 0, 0), gp_Pnt(1, 2, 0), gp_Pnt(1, 0.7, 1.5)};
     BRepBuilderAPI_Sewing sewing;
@@ -937,7 +919,7 @@ TEST(ImportShapes, AFlatTriangleIsTakenOutAndItsLongEdgeReplacedByTheOtherTwo) {
     BRep_Builder().Add(tetrahedron, TopoDS::Shell(TopExp_Explorer(sewing.SewedShape(), TopAbs_SHELL).Current()));
     BRepLib::OrientClosedSolid(tetrahedron);
     EXPECT_EQ(from_occt(tetrahedron).faces().size(), 4u);
-    EXPECT_NEAR(from_occt(tetrahedron).volume(), volume, 1e-12);
+    EXPECT_NEAR(from_occt(tetrahedron).volume(), kTetrahedronVolume, 1e-12);
 }
 
 // A sphere's B-spline net with one inner control point moved to y = 1e100 (found by fuzz_read_step): a needle that
