@@ -573,8 +573,8 @@ public:
         // A face's foot lies within about twice its own seed spacing of one of its seeds (a cell's corner): a
         // face whose seeds here are all farther than nearest + 3 of its spacing cannot hold it. One large face sent
         // every query to all 1481 small faces of a Voron lock body (10.9 s for 2,242 triangles) before the seeds
-        // were held to that, and through them all (a faceted pulley: 3 cylinders beside 2,685 small planes, 60 %
-        // of its export in this search) before each class of spacing was searched only as far as its own reach.
+        // were held to that, and still through them all (a faceted pulley: 3 cylinders beside 2,685 small planes,
+        // most of what was left of its export) before each class of spacing was searched only as far as its reach.
         const auto visit = [&](const Seed& s) {
             const double d = distance(s.point, p);
             if (d > nearest + 3 * face_spacing_[s.face]) return;
