@@ -109,8 +109,12 @@ std::vector<Sliver> slivers_of(const TopoDS_Shape& solid) {
         if (edges.Extent() == 3) {
             TopTools_IndexedMapOfShape vertices;
             TopExp::MapShapes(face, TopAbs_VERTEX, vertices);
-            if (vertices.Extent() == 3)
-                if (const std::optional<Sliver> triangle = flat_triangle(face, edges, 2 * file_tolerance(face))) found.push_back(*triangle);
+            try {
+                if (vertices.Extent() == 3)
+                    if (const std::optional<Sliver> triangle = flat_triangle(face, edges, 2 * file_tolerance(face))) found.push_back(*triangle);
+            } catch (const Standard_Failure&) {
+                // Not measured, so not a flat triangle (the face reads as it is).
+            }
             continue;
         }
         if (edges.Extent() != 2) continue;  // a cheap look first: CheckSingleStrip measures the edges apart
