@@ -480,7 +480,7 @@ std::vector<double> crease_lines(const NurbsSurface& s, const SurfaceEvaluator& 
     const double delta = 1e-7 * (d.max - d.min);
     for (std::size_t k = 1; k + 1 < breaks.size(); ++k) {
         // A knot within delta of an end is that end, already a line of the grid: a file's B-spline may keep one
-        // within rounding of its end (a servo's strip: a span of 2.4e-10 at the start of a u range of 0.96,
+        // within rounding of its end (a servo's strip: a span of 1.6e-10 at the start of a u range of 0.96,
         // its poles there coincident, so no normal at the end).
         if (breaks[k] - delta <= d.min || breaks[k] + delta >= d.max) continue;
         const double t0 = breaks[k] - delta, t1 = breaks[k] + delta;
