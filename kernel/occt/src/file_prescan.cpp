@@ -70,7 +70,35 @@ bool whole(std::string_view token, double& value) {
     return parse_number(token, value) && std::isfinite(value) && value >= 0 && value == std::floor(value);
 }
 
-bool flag(std::string_view token) { return token == "0" || token == "1"; }
+// The header fields of a B-spline record read as OpenCASCADE's reader takes them, operator>> on a stream of
+// integers: whitespace, an optional sign and the digits that follow, wherever they stop, across lines. A fuzzed
+// file's "150000000 2PolygonOnTriangulations" read as 150000000 x 2 poles, which OpenCASCADE allocated (7.2 GB)
+// while a check of whole tokens let it pass. Once a read finds no digits the stream has failed, and every later
+// field keeps its 0.
+class HeaderFields {
+public:
+    explicit HeaderFields(std::string_view text) : text_(text) {}
+
+    double next() {
+        if (failed_) return 0;
+        while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
+        const bool negative = at_ < text_.size() && text_[at_] == '-';
+        if (at_ < text_.size() && (text_[at_] == '-' || text_[at_] == '+')) ++at_;
+        const std::size_t digits = at_;
+        double value = 0;
+        while (at_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[at_])))
+            value = 10 * value + (text_[at_++] - '0');
+        failed_ = at_ == digits;
+        return failed_ ? 0 : (negative ? -value : value);
+    }
+    // The next field as a count: a negative one allocates nothing.
+    double count() { return std::max(0.0, next()); }
+
+private:
+    std::string_view text_;
+    std::size_t at_ = 0;
+    bool failed_ = false;
+};
 
 }  // namespace
 
@@ -105,17 +133,18 @@ void prescan_brep(const std::string& path, const std::string& text) {
             }
         }
         // Lower bounds of the bytes a record takes: each coordinate, weight or knot at least a digit and a space.
-        double degree = 0, poles = 0, knots = 0;
-        if ((section == "Curves" || section == "Curve2ds") && t.size() >= 6 && t[0] == "7" && flag(t[1]) && flag(t[2]) &&
-            whole(t[3], degree) && whole(t[4], poles) && whole(t[5], knots)) {
+        const std::size_t after_type = static_cast<std::size_t>(t[0].data() + t[0].size() - text.data());
+        HeaderFields fields(std::string_view(text).substr(after_type));
+        if ((section == "Curves" || section == "Curve2ds") && t[0] == "7") {
+            fields.next(), fields.next(), fields.next();  // rational, periodic, degree
+            const double poles = fields.count(), knots = fields.count();
             const double dimension = section == "Curves" ? 3 : 2;
             claim(line_number, 2 * dimension * poles + 4 * knots,
                   "a B-spline curve claims " + number_text(poles) + " poles and " + number_text(knots) + " knots");
         }
-        double poles_v = 0, knots_v = 0, degree_v = 0;
-        if (section == "Surfaces" && t.size() >= 11 && t[0] == "9" && flag(t[1]) && flag(t[2]) && flag(t[3]) && flag(t[4]) &&
-            whole(t[5], degree) && whole(t[6], degree_v) && whole(t[7], poles) && whole(t[8], poles_v) &&
-            whole(t[9], knots) && whole(t[10], knots_v)) {
+        if (section == "Surfaces" && t[0] == "9") {
+            for (int k = 0; k < 6; ++k) fields.next();  // rational, periodic (u, v), degrees
+            const double poles = fields.count(), poles_v = fields.count(), knots = fields.count(), knots_v = fields.count();
             claim(line_number, 6 * poles * poles_v + 4 * (knots + knots_v),
                   "a B-spline surface claims " + number_text(poles) + " x " + number_text(poles_v) + " poles");
         }
