@@ -73,8 +73,9 @@ bool whole(std::string_view token, double& value) {
 // The header fields of a B-spline record read as OpenCASCADE's reader takes them, operator>> on a stream of
 // integers: whitespace, an optional sign and the digits that follow, wherever they stop, across lines. A fuzzed
 // file's "150000000 2PolygonOnTriangulations" read as 150000000 x 2 poles, which OpenCASCADE allocated (7.2 GB)
-// while a check of whole tokens let it pass. Once a read finds no digits the stream has failed, and every later
-// field keeps its 0.
+// while a check of whole tokens let it pass. Once a read finds no digits, or a flag (a bool) other than 0 or 1, the
+// stream has failed, and every later field keeps its 0: a line of knots or poles that starts with 7 or 9 claims
+// nothing unless it reads as a header.
 class HeaderFields {
 public:
     explicit HeaderFields(std::string_view text) : text_(text) {}
@@ -93,6 +94,11 @@ public:
     }
     // The next field as a count: a negative one allocates nothing.
     double count() { return std::max(0.0, next()); }
+    // The next field as a bool flag.
+    void flag() {
+        const double value = next();
+        failed_ = failed_ || (value != 0 && value != 1);
+    }
 
 private:
     std::string_view text_;
@@ -136,14 +142,15 @@ void prescan_brep(const std::string& path, const std::string& text) {
         const std::size_t after_type = static_cast<std::size_t>(t[0].data() + t[0].size() - text.data());
         HeaderFields fields(std::string_view(text).substr(after_type));
         if ((section == "Curves" || section == "Curve2ds") && t[0] == "7") {
-            fields.next(), fields.next(), fields.next();  // rational, periodic, degree
+            fields.flag(), fields.flag(), fields.next();  // rational, periodic, degree
             const double poles = fields.count(), knots = fields.count();
             const double dimension = section == "Curves" ? 3 : 2;
             claim(line_number, 2 * dimension * poles + 4 * knots,
                   "a B-spline curve claims " + number_text(poles) + " poles and " + number_text(knots) + " knots");
         }
         if (section == "Surfaces" && t[0] == "9") {
-            for (int k = 0; k < 6; ++k) fields.next();  // rational, periodic (u, v), degrees
+            for (int k = 0; k < 4; ++k) fields.flag();  // rational and periodic, in u and v
+            fields.next(), fields.next();                // degrees
             const double poles = fields.count(), poles_v = fields.count(), knots = fields.count(), knots_v = fields.count();
             claim(line_number, 6 * poles * poles_v + 4 * (knots + knots_v),
                   "a B-spline surface claims " + number_text(poles) + " x " + number_text(poles_v) + " poles");
